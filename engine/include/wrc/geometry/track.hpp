@@ -1,0 +1,61 @@
+// Track assembly (DESIGN.md section 2): places the left/right wheel profiles in the wheelset frame and
+// the rail profiles in the track frame, so that the centred, unrotated wheelset at z = 0 just touches.
+#pragma once
+
+#include "wrc/profile/profile.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace wrc {
+
+enum Side : int { kLeft = 0, kRight = 1 };
+inline const char* side_name(int side) { return side == kLeft ? "left" : "right"; }
+
+struct TrackParams {
+  double radius = 0.45;        // wheel nominal radius r0 at the tape circle (m)
+  double back_to_back = 1.360; // flange-back distance (m)
+  double tape_offset = 0.070;  // tape circle from the flange back (m): left tape circle at y_w = 0.750
+  double gauge = 1.435;        // between the gauge points (m)
+  double gauge_depth = 0.014;  // gauge points this far below the top of each rail (m)
+  double cant = 1.0 / 40.0;    // rail inclination (tan of the angle); the head tilts toward the track centre
+};
+
+// Rigid placement of one side. Profile points are given in the left-side frame (+y toward the field
+// side); the right side is the mirror image (y -> -y).
+struct SidePlacement {
+  double sign = 1;        // +1 left, -1 right
+  double tape_y = 0.75;   // |y_w| of the tape circle (m)
+  double radius = 0.45;   // r0 (m)
+  double cant_angle = 0;  // rail rotation (rad) = atan(cant), field side up
+  double rail_dy = 0;     // left-side lateral shift of the canted rail (m, before mirroring)
+  double rail_dz = 0;     // vertical shift of the canted rail (m)
+
+  // Wheel point (s, zs) -> (y_w, z_w) in the wheelset frame; z_w = -(r0 - zs) is the circle's lowest
+  // point, the generatrix of eq. (1).
+  Eigen::Vector2d wheel(double s, double zs) const { return {sign * (tape_y + s), zs - radius}; }
+  // Rail point (y, z) of the profile frame -> (y, z) of the track frame.
+  Eigen::Vector2d rail(double y, double z) const;
+};
+
+struct Track {
+  TrackParams params;
+  std::array<Profile, 2> wheel, rail;       // as given (left-side frame), indexed by Side
+  std::array<SidePlacement, 2> place;
+  // The given profiles placed, ordered by increasing y: wheel in the wheelset frame (y_w, z_w),
+  // rail in the track frame.
+  std::array<std::vector<double>, 2> wheel_y, wheel_z, rail_y, rail_z;
+  std::array<Eigen::Vector2d, 2> gauge_point;  // track frame (m)
+  std::array<Eigen::Vector2d, 2> tape_point;   // wheelset frame (m): tape circle's lowest point
+  std::array<double, 2> rail_top;              // z of each placed rail's highest point (m)
+};
+
+// Assembles the track. Throws wrc::Error when a profile has the wrong kind, the rail does not reach
+// gauge_depth below its top on the gauge side, a parameter is out of range, or wheel and rail do not
+// overlap laterally.
+Track assemble_track(const std::array<Profile, 2>& wheels, const std::array<Profile, 2>& rails,
+                     const TrackParams& params);
+
+}  // namespace wrc

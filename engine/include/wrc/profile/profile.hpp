@@ -1,0 +1,54 @@
+// 2-D wheel and rail profiles (DESIGN.md section 2): ordered points in the LEFT-side frame, metres, z up.
+// wheel: y = s (lateral from the tape circle, + toward the field side), z = height offset (flange tip of
+//        S1002 at z = -0.028); rail: y lateral (+ toward the field side), z up, origin at the top of the
+//        uncanted head unless the source says the profile is already canted.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wrc {
+
+enum class ProfileKind { wheel, rail };
+
+const char* to_string(ProfileKind kind);
+// "wheel" or "rail"; anything else is an error naming `context`.
+ProfileKind parse_profile_kind(std::string_view text, std::string_view context);
+
+struct Profile {
+  ProfileKind kind = ProfileKind::rail;
+  std::string name;                     // e.g. "S1002"
+  std::string source;                   // file path or "wrc.profile.points"
+  std::vector<double> y, z;             // metres, ordered by increasing y
+  int duplicates_dropped = 0;           // consecutive duplicates removed on creation
+  std::vector<std::string> transforms;  // what was applied on the way in, in order ("mirror_y", ...)
+
+  std::size_t size() const { return y.size(); }
+};
+
+// Points closer than this (m) to their predecessor are duplicates.
+inline constexpr double kDuplicateTolerance = 1e-9;
+
+// Builds a validated profile. Checks: at least 3 points, all finite, consecutive duplicates dropped and
+// counted, no fold-back: y must be monotone along the profile (vertical runs allowed, but a vertical run
+// must keep one z direction). A profile given in decreasing y is reversed (noted in `transforms`).
+// `lines` (optional, one per point) are source line numbers used in messages ("file:line: ...").
+// Throws wrc::Error naming `source` (and the line or point index) on bad input.
+Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double> z, std::string name,
+                     std::string source, const std::vector<int>& lines = {});
+
+// Total arc length (m) of the polyline.
+double arc_length(const Profile& p);
+
+// Resampled along the arc: end points kept, interior points every `step` metres of arc (the step is
+// shrunk so that it divides the length evenly). step > 0.
+Profile resample_arc(const Profile& p, double step);
+
+// Resampled along y: points at y_min + k*step (and y_max), z interpolated linearly. step > 0.
+Profile resample_y(const Profile& p, double step);
+
+// Linear interpolation of z at y (y clamped to the profile's range). On a vertical run, the first z.
+double interpolate_z(const Profile& p, double y);
+
+}  // namespace wrc

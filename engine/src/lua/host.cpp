@@ -1,0 +1,162 @@
+// The script host: state creation, package paths, protected calls with tracebacks, `wrc run`.
+#include "wrc/lua/host.hpp"
+
+#include "lua/bindings.hpp"
+#include "wrc/core/error.hpp"
+#include "wrc/core/paths.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <string>
+
+namespace wrc::lua {
+
+int traceback_handler(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (msg == nullptr) {  // error object is not a string: use its __tostring or its type
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
+    msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  }
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+
+int pcall_traceback(lua_State* L, int nargs, int nresults) {
+  const int base = lua_gettop(L) - nargs;  // function index
+  lua_pushcfunction(L, traceback_handler);
+  lua_insert(L, base);
+  const int status = lua_pcall(L, nargs, nresults, base);
+  lua_remove(L, base);
+  return status;
+}
+
+namespace {
+
+// require "wrc.x.y" -> <scripts>/x/y.lua (the engine's own Lua library, from any working directory).
+int search_wrc_scripts(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  const std::string_view prefix = "wrc.";
+  std::string n = name;
+  if (n.rfind(prefix, 0) != 0) {
+    lua_pushstring(L, "\n\tno 'wrc.' prefix");
+    return 1;
+  }
+  std::string rel = n.substr(prefix.size());
+  for (char& c : rel)
+    if (c == '.') c = '/';
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "searchpath");
+  lua_pushstring(L, rel.c_str());
+  lua_pushstring(L, (paths().scripts + "/?.lua;" + paths().scripts + "/?/init.lua").c_str());
+  lua_call(L, 2, 2);
+  if (lua_isnil(L, -2)) return 1;  // message from searchpath
+  const char* file = lua_tostring(L, -2);
+  if (luaL_loadfile(L, file) != LUA_OK)
+    return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name, file, lua_tostring(L, -1));
+  lua_pushstring(L, file);
+  return 2;
+}
+
+void install_searcher(lua_State* L) {
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "searchers");
+  const lua_Integer n = luaL_len(L, -1);
+  // After the preload searcher (1), so the C module `wrc` itself still comes from package.preload.
+  for (lua_Integer i = n; i >= 2; --i) {
+    lua_geti(L, -1, i);
+    lua_seti(L, -2, i + 1);
+  }
+  lua_pushcfunction(L, search_wrc_scripts);
+  lua_seti(L, -2, 2);
+  lua_pop(L, 2);
+}
+
+int open_state(lua_State* L) {
+  luaL_openlibs(L);
+  luaL_getsubtable(L, LUA_REGISTRYINDEX, LUA_PRELOAD_TABLE);
+  lua_pushcfunction(L, luaopen_wrc);
+  lua_setfield(L, -2, "wrc");
+  lua_pop(L, 1);
+  install_searcher(L);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, "wrc");
+  lua_call(L, 1, 1);
+  lua_setglobal(L, "wrc");
+  return 0;
+}
+
+}  // namespace
+
+lua_State* new_state() {
+  lua_State* L = luaL_newstate();
+  if (L == nullptr) throw Error("cannot create a Lua state (out of memory)");
+  lua_pushcfunction(L, open_state);
+  if (pcall_traceback(L, 0, 0) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "unknown error";
+    lua_close(L);
+    throw Error("cannot initialise the Lua state: " + msg);
+  }
+  return L;
+}
+
+namespace {
+
+void push_args(lua_State* L, const std::string& script, const std::vector<std::string>& args) {
+  lua_createtable(L, static_cast<int>(args.size()), 4);
+  lua_pushstring(L, script.c_str());
+  lua_rawseti(L, -2, 0);
+  lua_Integer positional = 0;
+  for (const std::string& a : args) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      lua_pushstring(L, a.c_str());
+      lua_rawseti(L, -2, ++positional);
+      continue;
+    }
+    const std::string key = a.substr(0, eq), value = a.substr(eq + 1);
+    if (lua_stringtonumber(L, value.c_str()) == 0) lua_pushstring(L, value.c_str());
+    lua_setfield(L, -2, key.c_str());
+  }
+  lua_setglobal(L, "arg");
+}
+
+}  // namespace
+
+int run_file(const std::string& path, const std::vector<std::string>& args) {
+  lua_State* L = nullptr;
+  try {
+    L = new_state();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "wrc: %s\n", e.what());
+    return 1;
+  }
+  push_args(L, path, args);
+  int status = luaL_loadfile(L, path.c_str());
+  if (status == LUA_OK) status = pcall_traceback(L, 0, 0);
+  int code = 0;
+  if (status != LUA_OK) {
+    const char* msg = lua_tostring(L, -1);
+    // luaL_loadfile says "cannot open <file>" for a missing file; syntax errors carry file:line.
+    std::fprintf(stderr, "wrc: %s\n", msg ? msg : "error object is not a string");
+    code = 1;
+  }
+  lua_close(L);
+  return code;
+}
+
+Session::Session() : state_(new_state()) {}
+
+Session::~Session() { lua_close(static_cast<lua_State*>(state_)); }
+
+std::optional<std::string> Session::run(std::string_view code, const std::string& chunkname) {
+  auto* L = static_cast<lua_State*>(state_);
+  int status = luaL_loadbuffer(L, code.data(), code.size(), chunkname.c_str());
+  if (status == LUA_OK) status = pcall_traceback(L, 0, 0);
+  if (status == LUA_OK) return std::nullopt;
+  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "error object is not a string";
+  lua_pop(L, 1);
+  return msg;
+}
+
+}  // namespace wrc::lua

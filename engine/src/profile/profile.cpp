@@ -1,0 +1,164 @@
+#include "wrc/profile/profile.hpp"
+
+#include "wrc/core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wrc {
+
+const char* to_string(ProfileKind kind) { return kind == ProfileKind::wheel ? "wheel" : "rail"; }
+
+ProfileKind parse_profile_kind(std::string_view text, std::string_view context) {
+  if (text == "wheel") return ProfileKind::wheel;
+  if (text == "rail") return ProfileKind::rail;
+  fail("{}: kind must be \"wheel\" or \"rail\", got \"{}\"", context, text);
+}
+
+namespace {
+
+std::string where(const std::string& source, const std::vector<int>& lines, std::size_t i) {
+  if (i < lines.size() && lines[i] > 0) return fmt::format("{}:{}", source, lines[i]);
+  return fmt::format("{}: point {}", source, i + 1);
+}
+
+}  // namespace
+
+Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double> z, std::string name,
+                     std::string source, const std::vector<int>& lines) {
+  if (y.size() != z.size())
+    fail("{}: y has {} values but z has {}", source, y.size(), z.size());
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (!std::isfinite(y[i]) || !std::isfinite(z[i]))
+      fail("{}: coordinate is not a finite number (y = {}, z = {})", where(source, lines, i), y[i], z[i]);
+  }
+  // Drop consecutive duplicates, remembering the source line of each kept point.
+  Profile p;
+  p.kind = kind;
+  p.name = std::move(name);
+  p.source = std::move(source);
+  std::vector<int> kept_lines;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (!p.y.empty() && std::hypot(y[i] - p.y.back(), z[i] - p.z.back()) < kDuplicateTolerance) {
+      ++p.duplicates_dropped;
+      continue;
+    }
+    p.y.push_back(y[i]);
+    p.z.push_back(z[i]);
+    kept_lines.push_back(i < lines.size() ? lines[i] : 0);
+  }
+  if (p.duplicates_dropped > 0)
+    p.transforms.push_back(fmt::format("dropped {} duplicate points", p.duplicates_dropped));
+  if (p.y.size() < 3)
+    fail("{}: a profile needs at least 3 distinct points, got {}", p.source, p.y.size());
+
+  // Fold-back: y must keep one direction; a vertical run (dy ~ 0) must keep one z direction.
+  const std::size_t n = p.y.size();
+  int ydir = 0, zdir = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double dy = p.y[i + 1] - p.y[i], dz = p.z[i + 1] - p.z[i];
+    if (std::abs(dy) > kDuplicateTolerance) {
+      const int d = dy > 0 ? 1 : -1;
+      if (ydir == 0) ydir = d;
+      if (d != ydir)
+        fail("{}: the profile folds back on itself at y = {:.6f} m, z = {:.6f} m (y turns from {} to {}); "
+             "a profile must be monotone in y",
+             where(p.source, kept_lines, i + 1), p.y[i + 1], p.z[i + 1], ydir > 0 ? "increasing" : "decreasing",
+             d > 0 ? "increasing" : "decreasing");
+      zdir = 0;
+    } else {
+      const int d = dz > 0 ? 1 : -1;
+      if (zdir != 0 && d != zdir)
+        fail("{}: the profile folds back on itself on a vertical run at y = {:.6f} m, z = {:.6f} m",
+             where(p.source, kept_lines, i + 1), p.y[i + 1], p.z[i + 1]);
+      zdir = d;
+    }
+  }
+  if (ydir == 0) fail("{}: all points have the same y; a profile must extend laterally", p.source);
+  if (ydir < 0) {
+    std::reverse(p.y.begin(), p.y.end());
+    std::reverse(p.z.begin(), p.z.end());
+    p.transforms.push_back("reversed to increasing y");
+  }
+  return p;
+}
+
+double arc_length(const Profile& p) {
+  double L = 0;
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) L += std::hypot(p.y[i + 1] - p.y[i], p.z[i + 1] - p.z[i]);
+  return L;
+}
+
+namespace {
+
+Profile resampled_copy(const Profile& p, std::vector<double> y, std::vector<double> z, std::string what) {
+  Profile r;
+  r.kind = p.kind;
+  r.name = p.name;
+  r.source = p.source;
+  r.y = std::move(y);
+  r.z = std::move(z);
+  r.transforms = p.transforms;
+  r.transforms.push_back(std::move(what));
+  return r;
+}
+
+}  // namespace
+
+Profile resample_arc(const Profile& p, double step) {
+  if (!(step > 0) || !std::isfinite(step)) fail("resample: step must be a positive number of metres, got {}", step);
+  const std::size_t n = p.size();
+  std::vector<double> s(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
+  const double L = s.back();
+  const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil(L / step - 1e-9)));
+  if (m > 50'000'000) fail("resample: step {} m gives {} points over {} m of arc", step, m, L);
+  std::vector<double> y(m + 1), z(m + 1);
+  std::size_t k = 0;
+  for (std::size_t j = 0; j <= m; ++j) {
+    const double t = L * static_cast<double>(j) / static_cast<double>(m);
+    while (k + 2 < n && s[k + 1] < t) ++k;
+    const double seg = s[k + 1] - s[k];
+    const double a = seg > 0 ? std::clamp((t - s[k]) / seg, 0.0, 1.0) : 0.0;
+    y[j] = p.y[k] + a * (p.y[k + 1] - p.y[k]);
+    z[j] = p.z[k] + a * (p.z[k + 1] - p.z[k]);
+  }
+  y.front() = p.y.front();
+  z.front() = p.z.front();
+  y.back() = p.y.back();
+  z.back() = p.z.back();
+  return resampled_copy(p, std::move(y), std::move(z), fmt::format("resampled along the arc every {:.6g} m", L / m));
+}
+
+double interpolate_z(const Profile& p, double yq) {
+  const auto& y = p.y;
+  if (yq <= y.front()) return p.z.front();
+  if (yq >= y.back()) return p.z.back();
+  const auto it = std::lower_bound(y.begin(), y.end(), yq);  // first y >= yq
+  const std::size_t i = static_cast<std::size_t>(it - y.begin());
+  if (y[i] == yq) return p.z[i];
+  const double a = (yq - y[i - 1]) / (y[i] - y[i - 1]);
+  return p.z[i - 1] + a * (p.z[i] - p.z[i - 1]);
+}
+
+Profile resample_y(const Profile& p, double step) {
+  if (!(step > 0) || !std::isfinite(step)) fail("resample: step must be a positive number of metres, got {}", step);
+  const double y0 = p.y.front(), y1 = p.y.back();
+  const auto m = static_cast<std::size_t>(std::floor((y1 - y0) / step + 1e-9));
+  if (m > 50'000'000) fail("resample: step {} m gives {} points over {} m", step, m, y1 - y0);
+  std::vector<double> y, z;
+  y.reserve(m + 2);
+  z.reserve(m + 2);
+  for (std::size_t j = 0; j <= m; ++j) {
+    const double yq = y0 + step * static_cast<double>(j);
+    y.push_back(yq);
+    z.push_back(interpolate_z(p, yq));
+  }
+  if (y1 - y.back() > kDuplicateTolerance) {
+    y.push_back(y1);
+    z.push_back(p.z.back());
+  }
+  return resampled_copy(p, std::move(y), std::move(z), fmt::format("resampled along y every {:.6g} m", step));
+}
+
+}  // namespace wrc
