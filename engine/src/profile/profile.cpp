@@ -99,6 +99,7 @@ Profile resampled_copy(const Profile& p, std::vector<double> y, std::vector<doub
   r.y = std::move(y);
   r.z = std::move(z);
   r.transforms = p.transforms;
+  r.metadata = p.metadata;
   r.transforms.push_back(std::move(what));
   return r;
 }

@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace wrc {
@@ -23,6 +24,7 @@ struct Profile {
   std::vector<double> y, z;             // metres, ordered by increasing y
   int duplicates_dropped = 0;           // consecutive duplicates removed on creation
   std::vector<std::string> transforms;  // what was applied on the way in, in order ("mirror_y", ...)
+  std::vector<std::pair<std::string, std::string>> metadata;  // kept from the source file (header keys)
 
   std::size_t size() const { return y.size(); }
 };

@@ -1,0 +1,70 @@
+// Loading profiles from files (DESIGN.md section 5): what a reader produces (RawProfile), the options
+// every reader shares (LoadOptions) and the host's post-processing that turns raw points into a
+// validated Profile: units, extent check, mirrors, crop window, shift, then make_profile.
+#pragma once
+
+#include "wrc/profile/profile.hpp"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wrc {
+
+// What a reader hands to the host: points in the engine orientation (left-side frame, z up) but still in
+// the file's length unit, with their source lines and what the reader knows and did.
+struct RawProfile {
+  std::vector<double> y, z;                  // file units
+  std::vector<int> lines;                    // source line of each point (0: none)
+  std::optional<ProfileKind> kind;           // as the file says it
+  std::optional<double> metres_per_unit;     // as the file declares it (nullopt: not declared)
+  std::string units_declared_by;             // where the file declares it ("units.len.f = 1000 (line 33)")
+  std::string name;                          // empty: the host uses the file's stem
+  std::vector<std::string> transforms;       // what the reader applied, in order
+  std::vector<std::pair<std::string, std::string>> metadata;
+};
+
+// Axis-aligned window (metres) of the frame after units and mirrors, before the shift.
+struct CropWindow {
+  double y_min = -1e300, y_max = 1e300, z_min = -1e300, z_max = 1e300;
+};
+
+// Options shared by every reader. Reader-specific options travel as strings in `reader_options`.
+struct LoadOptions {
+  std::optional<double> metres_per_unit;  // `units`: explicit unit (skips the extent check)
+  std::string units_text;                 // how the user wrote it ("mm", "m", "0.0254"), for messages
+  bool mirror_y = false;                  // y -> -y
+  bool mirror_z = false;                  // z -> -z
+  std::optional<CropWindow> crop;         // keep only the points inside (one contiguous run)
+  double shift_y = 0, shift_z = 0;        // metres, applied last
+  std::optional<ProfileKind> kind;        // when the file does not say (must agree when it does)
+  std::optional<std::string> reader;      // reader id; default: chosen by the file's extension
+  std::optional<std::string> name;        // overrides the profile's name
+  std::vector<std::pair<std::string, std::string>> reader_options;
+};
+
+// Plausible total chord (sum of the chords between consecutive points) of a profile, metres. Outside this
+// range the units are probably wrong (a file in metres read as millimetres, or the reverse).
+inline constexpr double kMinPlausibleChord = 0.005;
+inline constexpr double kMaxPlausibleChord = 0.500;
+
+// Parses a `units` option: "mm", "cm", "m", "in", or a positive number = metres per file unit.
+double parse_units(const std::string& text, const std::string& context);
+
+// Turns raw points into a validated profile: units -> extent check (unless units were given explicitly)
+// -> mirror_y -> mirror_z -> crop -> shift -> make_profile. Every step taken is recorded in transforms.
+// `source` is the file path used in messages ("file:line: ..."); `reader_id` names the reader.
+Profile finish_profile(RawProfile raw, const LoadOptions& options, const std::string& source,
+                       const std::string& reader_id);
+
+// The same geometric options (mirror_y, mirror_z, crop, shift, name, kind check) applied to a profile
+// that is already in metres (a Lua definition, p:transform{...}). Returns a new validated profile.
+Profile transform_profile(const Profile& p, const LoadOptions& options);
+
+// The file's stem ("MBench_S1002_v3" for ".../MBench_S1002_v3.prw").
+std::string file_stem(const std::string& path);
+// The extension in lower case with its dot (".prw"), or "" when there is none.
+std::string file_extension(const std::string& path);
+
+}  // namespace wrc

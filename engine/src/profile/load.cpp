@@ -1,0 +1,186 @@
+#include "wrc/profile/load.hpp"
+
+#include "wrc/core/error.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+namespace wrc {
+
+std::string file_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+std::string file_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+double parse_units(const std::string& text, const std::string& context) {
+  if (text == "mm") return 1e-3;
+  if (text == "cm") return 1e-2;
+  if (text == "m") return 1.0;
+  if (text == "in") return 0.0254;
+  double v = 0;
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, v);
+  if (r.ec == std::errc() && r.ptr == end && std::isfinite(v) && v > 0) return v;
+  fail("{}: units must be \"mm\", \"cm\", \"m\", \"in\" or a positive number of metres per file unit, got \"{}\"",
+       context, text);
+}
+
+namespace {
+
+std::string at_line(const std::string& source, int line) {
+  return line > 0 ? fmt::format("{}:{}", source, line) : source;
+}
+
+double total_chord(const std::vector<double>& y, const std::vector<double>& z) {
+  double L = 0;
+  for (std::size_t i = 0; i + 1 < y.size(); ++i) L += std::hypot(y[i + 1] - y[i], z[i + 1] - z[i]);
+  return L;
+}
+
+void apply_mirrors(std::vector<double>& y, std::vector<double>& z, const LoadOptions& o,
+                   std::vector<std::string>& transforms) {
+  if (o.mirror_y) {
+    for (double& v : y) v = -v;
+    transforms.push_back("mirror_y (option): y -> -y");
+  }
+  if (o.mirror_z) {
+    for (double& v : z) v = -v;
+    transforms.push_back("mirror_z (option): z -> -z");
+  }
+}
+
+// Keeps the points inside the window; they must form one contiguous run of the profile.
+void apply_crop(std::vector<double>& y, std::vector<double>& z, std::vector<int>& lines, const LoadOptions& o,
+                const std::string& source, std::vector<std::string>& transforms) {
+  if (!o.crop) return;
+  const CropWindow& w = *o.crop;
+  if (!(w.y_min < w.y_max) || !(w.z_min < w.z_max))
+    fail("{}: crop window is empty (y {} .. {}, z {} .. {} m)", source, w.y_min, w.y_max, w.z_min, w.z_max);
+  std::size_t first = y.size(), last = 0, runs = 0;
+  bool inside_prev = false;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const bool inside = y[i] >= w.y_min && y[i] <= w.y_max && z[i] >= w.z_min && z[i] <= w.z_max;
+    if (inside && !inside_prev) ++runs;
+    if (inside) {
+      first = std::min(first, i);
+      last = i;
+    }
+    inside_prev = inside;
+  }
+  if (runs == 0) fail("{}: no point lies inside the crop window (y {} .. {}, z {} .. {} m)", source, w.y_min, w.y_max, w.z_min, w.z_max);
+  if (runs > 1) {
+    // Name the first point that leaves the window between two kept runs.
+    std::size_t gap = first;
+    while (gap <= last && y[gap] >= w.y_min && y[gap] <= w.y_max && z[gap] >= w.z_min && z[gap] <= w.z_max) ++gap;
+    const int line = gap < lines.size() ? lines[gap] : 0;
+    fail("{}: the crop window cuts the profile into {} separate pieces (it leaves the window at y = {:.6f}, z = {:.6f} m "
+         "and comes back); choose a window that keeps one contiguous part",
+         at_line(source, line), runs, y[gap], z[gap]);
+  }
+  const std::size_t dropped = y.size() - (last - first + 1);
+  auto cut = [&](auto& v) { v = std::vector<typename std::decay_t<decltype(v)>::value_type>(v.begin() + first, v.begin() + last + 1); };
+  cut(y);
+  cut(z);
+  if (!lines.empty()) cut(lines);
+  transforms.push_back(fmt::format("crop (option): kept y {:.6g} .. {:.6g} m, z {:.6g} .. {:.6g} m ({} points dropped)",
+                                   w.y_min, w.y_max, w.z_min, w.z_max, dropped));
+}
+
+void apply_shift(std::vector<double>& y, std::vector<double>& z, const LoadOptions& o,
+                 std::vector<std::string>& transforms) {
+  if (o.shift_y == 0 && o.shift_z == 0) return;
+  for (double& v : y) v += o.shift_y;
+  for (double& v : z) v += o.shift_z;
+  transforms.push_back(fmt::format("shift (option): y += {:.6g} m, z += {:.6g} m", o.shift_y, o.shift_z));
+}
+
+}  // namespace
+
+Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& source, const std::string& reader_id) {
+  if (raw.y.size() != raw.z.size()) fail("{}: reader '{}' gave {} y values but {} z values", source, reader_id, raw.y.size(), raw.z.size());
+  if (!raw.lines.empty() && raw.lines.size() != raw.y.size())
+    fail("{}: reader '{}' gave {} line numbers for {} points", source, reader_id, raw.lines.size(), raw.y.size());
+  const std::size_t n = raw.y.size();
+  const int last_line = n > 0 && !raw.lines.empty() ? raw.lines.back() : 0;
+  if (n == 0) fail("{}: no points (an empty file or a header without data)", source);
+  if (n < 3)
+    fail("{}: only {} point{} read; a profile needs at least 3", at_line(source, last_line), n, n == 1 ? "" : "s");
+
+  // Kind: the file's word, the option's, and they must agree.
+  ProfileKind kind;
+  if (raw.kind && o.kind && *raw.kind != *o.kind)
+    fail("{}: the file holds a {} profile but the option kind = \"{}\"", source, to_string(*raw.kind), to_string(*o.kind));
+  if (raw.kind) kind = *raw.kind;
+  else if (o.kind) kind = *o.kind;
+  else fail("{}: the file does not say whether it holds a wheel or a rail profile: pass kind = \"wheel\" or \"rail\"", source);
+
+  std::vector<std::string> transforms = std::move(raw.transforms);
+  // Units: the user's explicit choice, else the file's declaration, else millimetres.
+  double scale = 1e-3;
+  std::string unit_note;
+  if (o.metres_per_unit) {
+    scale = *o.metres_per_unit;
+    unit_note = fmt::format("units (option units = {}): x {:.6g} to metres", o.units_text, scale);
+    if (raw.metres_per_unit && std::abs(*raw.metres_per_unit - scale) > 1e-12 * scale)
+      unit_note += fmt::format(", overriding the file's {} ({})", *raw.metres_per_unit, raw.units_declared_by);
+  } else if (raw.metres_per_unit) {
+    scale = *raw.metres_per_unit;
+    unit_note = fmt::format("units (file: {}): x {:.6g} to metres", raw.units_declared_by, scale);
+  } else {
+    unit_note = "units: millimetres (default): x 0.001 to metres";
+  }
+  if (!(scale > 0) || !std::isfinite(scale)) fail("{}: the length unit must be a positive number of metres, got {}", source, scale);
+  for (double& v : raw.y) v *= scale;
+  for (double& v : raw.z) v *= scale;
+  transforms.push_back(std::move(unit_note));
+
+  // Extent check, before anything that depends on the scale (duplicate tolerance, crop window).
+  const double chord = total_chord(raw.y, raw.z);
+  if (!o.metres_per_unit && !(chord >= kMinPlausibleChord && chord <= kMaxPlausibleChord)) {
+    const int first_line = raw.lines.empty() ? 0 : raw.lines.front();
+    fail("{}: the profile's total chord is {:.6g} mm (points of lines {} .. {}), outside the plausible {:.0f} .. {:.0f} mm: "
+         "the units are probably wrong (taken as {}); pass units = \"mm\", \"m\" or a factor to say what they are",
+         at_line(source, first_line), chord * 1e3, first_line, last_line, kMinPlausibleChord * 1e3,
+         kMaxPlausibleChord * 1e3, raw.metres_per_unit ? raw.units_declared_by : std::string("millimetres (default)"));
+  }
+
+  apply_mirrors(raw.y, raw.z, o, transforms);
+  apply_crop(raw.y, raw.z, raw.lines, o, source, transforms);
+  apply_shift(raw.y, raw.z, o, transforms);
+
+  std::string name = o.name ? *o.name : (raw.name.empty() ? file_stem(source) : raw.name);
+  Profile p = make_profile(kind, std::move(raw.y), std::move(raw.z), std::move(name), source, raw.lines);
+  transforms.insert(transforms.begin(), fmt::format("read by '{}'", reader_id));
+  transforms.insert(transforms.end(), p.transforms.begin(), p.transforms.end());
+  p.transforms = std::move(transforms);
+  p.metadata = std::move(raw.metadata);
+  return p;
+}
+
+Profile transform_profile(const Profile& p, const LoadOptions& o) {
+  if (o.kind && *o.kind != p.kind)
+    fail("{}: the profile is a {} profile but the option kind = \"{}\"", p.source, to_string(p.kind), to_string(*o.kind));
+  std::vector<double> y = p.y, z = p.z;
+  std::vector<int> lines;
+  std::vector<std::string> transforms;
+  apply_mirrors(y, z, o, transforms);
+  apply_crop(y, z, lines, o, p.source, transforms);
+  apply_shift(y, z, o, transforms);
+  if (y.size() < 3) fail("{}: only {} points left after the crop window; a profile needs at least 3", p.source, y.size());
+  Profile r = make_profile(p.kind, std::move(y), std::move(z), o.name ? *o.name : p.name, p.source);
+  std::vector<std::string> all = p.transforms;
+  all.insert(all.end(), transforms.begin(), transforms.end());
+  all.insert(all.end(), r.transforms.begin(), r.transforms.end());
+  r.transforms = std::move(all);
+  r.metadata = p.metadata;
+  r.duplicates_dropped += p.duplicates_dropped;
+  return r;
+}
+
+}  // namespace wrc

@@ -1,0 +1,193 @@
+#include "reader_support.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <new>
+
+namespace wrc::plugin {
+
+std::vector<Line> split_lines(std::string_view data) {
+  std::vector<Line> lines;
+  int number = 1;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const char c = data[i];
+    if (c == '\0') fail_at(number, "unexpected NUL byte: this is not a text file");
+    if (c == '\n' || c == '\r') {
+      lines.push_back({data.substr(start, i - start), number++});
+      if (c == '\r' && i + 1 < data.size() && data[i + 1] == '\n') ++i;
+      start = i + 1;
+    }
+  }
+  if (start < data.size()) lines.push_back({data.substr(start), number});
+  return lines;
+}
+
+std::string_view trim(std::string_view s) {
+  const char* blanks = " \t\v\f";
+  const auto b = s.find_first_not_of(blanks);
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(blanks);
+  return s.substr(b, e - b + 1);
+}
+
+std::string_view strip_comment(std::string_view s, std::string_view comment_chars) {
+  const auto p = s.find_first_of(comment_chars);
+  return p == std::string_view::npos ? s : s.substr(0, p);
+}
+
+std::vector<std::string_view> split_fields(std::string_view s, char separator) {
+  std::vector<std::string_view> out;
+  if (separator == ' ') {
+    std::size_t i = 0;
+    while (i < s.size()) {
+      while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+      if (i >= s.size()) break;
+      std::size_t j = i;
+      while (j < s.size() && s[j] != ' ' && s[j] != '\t') ++j;
+      out.push_back(s.substr(i, j - i));
+      i = j;
+    }
+    return out;
+  }
+  std::size_t start = 0;
+  while (true) {
+    const auto p = s.find(separator, start);
+    out.push_back(trim(s.substr(start, p == std::string_view::npos ? std::string_view::npos : p - start)));
+    if (p == std::string_view::npos) break;
+    start = p + 1;
+  }
+  return out;
+}
+
+std::optional<double> parse_double(std::string_view s) {
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (s.empty() || s.front() == '+') return std::nullopt;
+  double v = 0;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (r.ptr != s.data() + s.size()) return std::nullopt;
+  if (r.ec == std::errc::result_out_of_range) return std::nullopt;
+  if (r.ec != std::errc()) return std::nullopt;
+  return v;
+}
+
+std::string quoted(std::string_view s) {
+  std::string out = "'";
+  std::size_t n = 0;
+  for (char c : s) {
+    if (++n > 40) {
+      out += "...";
+      break;
+    }
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u >= 0x7f) out += fmt::format("\\x{:02x}", u);
+    else out += c;
+  }
+  return out + "'";
+}
+
+double number(std::string_view field, int line, std::string_view what) {
+  const auto v = parse_double(field);
+  if (!v) fail_at(line, "{} must be a number, got {}", what, quoted(field));
+  if (!std::isfinite(*v)) fail_at(line, "{} must be a finite number, got {}", what, quoted(field));
+  return *v;
+}
+
+const std::string* Request::option(std::string_view key) const {
+  for (const auto& [k, v] : options)
+    if (k == key) return &v;
+  return nullptr;
+}
+
+std::optional<bool> Request::flag(std::string_view key) const {
+  const std::string* v = option(key);
+  if (!v) return std::nullopt;
+  if (*v == "true") return true;
+  if (*v == "false") return false;
+  fail_at(0, "option {} must be true or false, got {}", key, quoted(*v));
+}
+
+void Out::point(double y, double z, int line) {
+  if (sink_->point(sink_->host, y, z, line) != 0) throw ParseError(line, "");  // the host has the reason
+  ++points_;
+}
+
+namespace {
+
+Request make_request(const wrc_reader_request* r) {
+  Request q;
+  q.path = r->path ? r->path : "";
+  q.kind_hint = r->kind_hint;
+  for (std::size_t i = 0; i < r->option_count; ++i)
+    q.options.emplace_back(r->options[i].key ? r->options[i].key : "", r->options[i].value ? r->options[i].value : "");
+  return q;
+}
+
+void report(const wrc_reader_sink* sink, int line, const char* message) {
+  if (message && *message) sink->error(sink->host, line, message);
+}
+
+bool read_file(const std::string& path, std::string& data, std::string& why) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    why = fmt::format("cannot open the file: {}", std::strerror(errno));
+    return false;
+  }
+  char buf[65536];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) {
+    if (data.size() + n > kMaxFileBytes) {
+      std::fclose(f);
+      why = fmt::format("the file is larger than {} MB; this is not a profile", kMaxFileBytes >> 20);
+      return false;
+    }
+    data.append(buf, n);
+  }
+  const bool err = std::ferror(f) != 0;
+  std::fclose(f);
+  if (err) {
+    why = "read error";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_reader_on(const ReaderSpec& spec, std::string_view data, const wrc_reader_request* request,
+                  const wrc_reader_sink* sink) {
+  try {
+    const Request q = make_request(request);
+    Out out(sink);
+    spec.parse(data, q, out);
+    return 0;
+  } catch (const ParseError& e) {
+    report(sink, e.line, e.what());
+  } catch (const std::bad_alloc&) {
+    report(sink, 0, "out of memory");
+  } catch (const std::exception& e) {
+    report(sink, 0, e.what());
+  } catch (...) {
+    report(sink, 0, "unknown internal error");
+  }
+  return 1;
+}
+
+int run_reader(const ReaderSpec& spec, const wrc_reader_request* request, const wrc_reader_sink* sink) {
+  try {
+    std::string data, why;
+    if (!read_file(request->path ? request->path : "", data, why)) {
+      report(sink, 0, why.c_str());
+      return 1;
+    }
+    return run_reader_on(spec, data, request, sink);
+  } catch (...) {
+    report(sink, 0, "out of memory");
+    return 1;
+  }
+}
+
+}  // namespace wrc::plugin

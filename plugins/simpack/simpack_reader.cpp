@@ -1,0 +1,257 @@
+// Simpack rail (.prr) and wheel (.prw) profiles. `!` starts a comment. header.begin/end holds version
+// (1) and type (0 rail, 1 wheel); spline.begin/end holds the processing keys and point.begin/end the
+// points `y z [weight]` with z positive DOWN. The file's processing steps are applied in their numbered
+// order: 1 point.dist.min, 2 shift.y/z, 3 rotate, 4 bound.y/z.min/max (ignored when min > max),
+// 5 mirror.y/z, 6 inversion, 7 units.len.f (= file units per metre). Then z -> -z (engine z up).
+#include "reader_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace wrc::plugin {
+namespace {
+
+const char* const kExtensions[] = {".prr", ".prw", nullptr};
+const char* const kOptions[] = {nullptr};
+
+struct Value {
+  std::string text;
+  int line = 0;
+};
+
+// Removes a `!` comment that is not inside a quoted string.
+std::string_view strip_bang(std::string_view s) {
+  char quote = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '!') {
+      return s.substr(0, i);
+    }
+  }
+  return s;
+}
+
+struct Section {
+  std::map<std::string, Value, std::less<>> keys;
+  int begin_line = 0, end_line = 0;
+};
+
+void read_key(std::string_view s, int line, Section& sec) {
+  const auto eq = s.find('=');
+  if (eq == std::string_view::npos) fail_at(line, "expected `key = value`, got {}", quoted(s));
+  const std::string key(trim(s.substr(0, eq)));
+  std::string_view value = trim(s.substr(eq + 1));
+  if (key.empty()) fail_at(line, "a key is missing before '='");
+  if (value.size() >= 2 && (value.front() == '\'' || value.front() == '"') && value.back() == value.front())
+    value = value.substr(1, value.size() - 2);
+  if (const auto it = sec.keys.find(key); it != sec.keys.end())
+    fail_at(line, "key '{}' given twice (first on line {})", key, it->second.line);
+  sec.keys.emplace(key, Value{std::string(value), line});
+}
+
+struct Point {
+  double y, z;
+  int line;
+};
+
+class Keys {
+ public:
+  Keys(const Section& s) : s_(s) {}
+  const Value* find(std::string_view key) const {
+    const auto it = s_.keys.find(key);
+    return it == s_.keys.end() ? nullptr : &it->second;
+  }
+  double num(std::string_view key, double fallback) const {
+    const Value* v = find(key);
+    return v ? number(v->text, v->line, key) : fallback;
+  }
+  bool flag(std::string_view key) const {
+    const Value* v = find(key);
+    if (!v) return false;
+    const double d = number(v->text, v->line, key);
+    if (d != 0 && d != 1) fail_at(v->line, "{} must be 0 or 1, got {}", key, quoted(v->text));
+    return d == 1;
+  }
+  std::string where(std::string_view key) const {
+    const Value* v = find(key);
+    return v ? fmt::format("{} = {} (line {})", key, v->text, v->line) : std::string(key);
+  }
+
+ private:
+  const Section& s_;
+};
+
+void parse(std::string_view data, const Request&, Out& out) {
+  const auto lines = split_lines(data);
+  enum class State { top, header, spline, points, done } st = State::top;
+  Section header, spline;
+  std::vector<Point> pts;
+  int points_begin = 0, points_end = 0;
+  bool seen_header = false, seen_points = false;
+  for (const Line& ln : lines) {
+    const std::string_view s = trim(strip_bang(ln.text));
+    if (s.empty()) continue;
+    switch (st) {
+      case State::top:
+      case State::done:
+        if (s == "header.begin") {
+          if (seen_header) fail_at(ln.number, "a second header.begin (the first is on line {})", header.begin_line);
+          seen_header = true;
+          header.begin_line = ln.number;
+          st = State::header;
+        } else if (s == "spline.begin") {
+          if (spline.begin_line) fail_at(ln.number, "a second spline.begin (the first is on line {}); one profile per file", spline.begin_line);
+          spline.begin_line = ln.number;
+          st = State::spline;
+        } else {
+          fail_at(ln.number, "expected header.begin or spline.begin, got {}", quoted(s));
+        }
+        break;
+      case State::header:
+        if (s == "header.end") {
+          header.end_line = ln.number;
+          st = State::top;
+        } else {
+          read_key(s, ln.number, header);
+        }
+        break;
+      case State::spline:
+        if (s == "spline.end") {
+          spline.end_line = ln.number;
+          st = State::done;
+        } else if (s == "point.begin") {
+          if (seen_points) fail_at(ln.number, "a second point.begin (the first is on line {})", points_begin);
+          seen_points = true;
+          points_begin = ln.number;
+          st = State::points;
+        } else {
+          read_key(s, ln.number, spline);
+        }
+        break;
+      case State::points: {
+        if (s == "point.end") {
+          points_end = ln.number;
+          st = State::spline;
+          break;
+        }
+        if (s.find_first_of(",;") != std::string_view::npos)
+          fail_at(ln.number, "a ',' or ';' in a point line; Simpack points are separated by blanks (mixed separators)");
+        const auto f = split_fields(s, ' ');
+        if (f.size() < 2 || f.size() > 3)
+          fail_at(ln.number, "a point line holds `y z [weight]`, got {} fields", f.size());
+        const double y = number(f[0], ln.number, "y");
+        const double z = number(f[1], ln.number, "z");
+        if (f.size() == 3) number(f[2], ln.number, "weight");
+        pts.push_back({y, z, ln.number});
+        break;
+      }
+    }
+  }
+  const int last = lines.empty() ? 0 : lines.back().number;
+  if (lines.empty() || (!seen_header && !spline.begin_line)) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
+  if (st == State::header) fail_at(last, "the file ends inside header.begin (line {}): no header.end", header.begin_line);
+  if (st == State::points) fail_at(last, "the file ends inside point.begin (line {}): no point.end", points_begin);
+  if (st == State::spline) fail_at(last, "the file ends inside spline.begin (line {}): no spline.end", spline.begin_line);
+  if (!seen_header) fail_at(0, "no header.begin ... header.end (it says version and type)");
+  if (!spline.begin_line) fail_at(header.end_line, "no spline.begin ... spline.end after the header: no points");
+  if (!seen_points) fail_at(spline.end_line, "no point.begin ... point.end in the spline section: no points");
+  if (pts.empty()) fail_at(points_end, "no points between point.begin (line {}) and point.end", points_begin);
+
+  // Header: version 1, type 0 rail / 1 wheel.
+  const Keys hk(header), sk(spline);
+  const Value* version = hk.find("version");
+  if (!version) fail_at(header.begin_line, "the header has no version (expected version = 1)");
+  if (number(version->text, version->line, "version") != 1)
+    fail_at(version->line, "version {} is not supported (expected 1)", quoted(version->text));
+  const Value* type = hk.find("type");
+  if (!type) fail_at(header.begin_line, "the header has no type (0 = rail, 1 = wheel)");
+  const double t = number(type->text, type->line, "type");
+  if (t != 0 && t != 1) fail_at(type->line, "type must be 0 (rail) or 1 (wheel), got {}", quoted(type->text));
+  out.kind(t == 1 ? WRC_KIND_WHEEL : WRC_KIND_RAIL);
+  for (const auto& [k, v] : header.keys) out.metadata("header." + k, v.text);
+  for (const auto& [k, v] : spline.keys) out.metadata(k, v.text);
+
+  if (const Value* sm = sk.find("approx.smooth"); sm && number(sm->text, sm->line, "approx.smooth") != 0)
+    out.transform(fmt::format("{}: smoothing not applied (the points are used as given)", sk.where("approx.smooth")));
+
+  // 1: minimum point distance.
+  const double dmin = sk.num("point.dist.min", 0);
+  if (dmin < 0) fail_at(sk.find("point.dist.min")->line, "point.dist.min must be >= 0");
+  if (dmin > 0) {
+    std::vector<Point> kept;
+    for (const Point& p : pts)
+      if (kept.empty() || std::hypot(p.y - kept.back().y, p.z - kept.back().z) >= dmin) kept.push_back(p);
+    out.transform(fmt::format("1 {}: {} points closer than that to their predecessor dropped", sk.where("point.dist.min"),
+                              pts.size() - kept.size()));
+    pts = std::move(kept);
+  }
+  // 2: shift.
+  const double sy = sk.num("shift.y", 0), sz = sk.num("shift.z", 0);
+  if (sy != 0 || sz != 0) {
+    for (Point& p : pts) p.y += sy, p.z += sz;
+    out.transform(fmt::format("2 {}, {}: y += {}, z += {}", sk.where("shift.y"), sk.where("shift.z"), sy, sz));
+  }
+  // 3: rotation about x by rotate / units.ang.f radians: (y, z) -> (y cos a - z sin a, y sin a + z cos a),
+  // in the file's (y, z-down) frame.
+  const double angf = sk.num("units.ang.f", 1.0);
+  if (!(angf > 0)) fail_at(sk.find("units.ang.f")->line, "units.ang.f must be positive, got {}", angf);
+  const double rot = sk.num("rotate", 0) / angf;
+  if (rot != 0) {
+    const double c = std::cos(rot), s = std::sin(rot);
+    for (Point& p : pts) {
+      const double y = c * p.y - s * p.z, z = s * p.y + c * p.z;
+      p.y = y, p.z = z;
+    }
+    out.transform(fmt::format("3 {}: points rotated by {:.9g} rad about x (file frame, z down)", sk.where("rotate"), rot));
+  }
+  // 4: bounds, each pair only when min <= max.
+  auto bound = [&](const char* kmin, const char* kmax, bool on_y) {
+    const Value* vmin = sk.find(kmin);
+    const Value* vmax = sk.find(kmax);
+    if (!vmin || !vmax) return;
+    const double lo = number(vmin->text, vmin->line, kmin), hi = number(vmax->text, vmax->line, kmax);
+    if (lo > hi) return;  // Simpack: bounds switched off
+    const std::size_t before = pts.size();
+    pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { const double v = on_y ? p.y : p.z; return v < lo || v > hi; }),
+              pts.end());
+    out.transform(fmt::format("4 {}, {}: {} points outside dropped", sk.where(kmin), sk.where(kmax), before - pts.size()));
+    if (pts.empty()) fail_at(vmin->line, "no point lies within {} .. {} = {} .. {}", kmin, kmax, lo, hi);
+  };
+  bound("bound.y.min", "bound.y.max", true);
+  bound("bound.z.min", "bound.z.max", false);
+  // 5: mirror.
+  if (sk.flag("mirror.y")) {
+    for (Point& p : pts) p.y = -p.y;
+    out.transform(fmt::format("5 {}: y -> -y", sk.where("mirror.y")));
+  }
+  if (sk.flag("mirror.z")) {
+    for (Point& p : pts) p.z = -p.z;
+    out.transform(fmt::format("5 {}: z -> -z", sk.where("mirror.z")));
+  }
+  // 6: inversion of the point order.
+  if (sk.flag("inversion")) {
+    std::reverse(pts.begin(), pts.end());
+    out.transform(fmt::format("6 {}: point order reversed", sk.where("inversion")));
+  }
+  // 7: units.len.f = file units per metre.
+  if (const Value* u = sk.find("units.len.f")) {
+    const double f = number(u->text, u->line, "units.len.f");
+    if (!(f > 0)) fail_at(u->line, "units.len.f must be positive (file units per metre), got {}", quoted(u->text));
+    out.units(1.0 / f, fmt::format("units.len.f = {} (line {})", u->text, u->line));
+  }
+  out.transform("Simpack z points down: z -> -z (engine z up)");
+  for (const Point& p : pts) out.point(p.y, -p.z, p.line);
+}
+
+}  // namespace
+
+extern const ReaderSpec simpack_reader;
+const ReaderSpec simpack_reader = {"simpack", "Simpack rail/wheel profile (.prr/.prw), file processing keys applied",
+                                   kExtensions, kOptions, parse};
+
+}  // namespace wrc::plugin

@@ -1,0 +1,114 @@
+// Plain text / CSV profiles: two columns `y z` (or the columns chosen by the `columns` option), in the
+// engine orientation (left-side frame, y toward the field side, z up), millimetres unless the header
+// names the unit (y_mm / y_m, as wrc's own CSV tables do) or the user passes `units`.
+// `#` starts a comment; one optional header line before the data; fields separated by commas,
+// semicolons, or blanks (spaces/tabs), the same on every line.
+#include "reader_support.hpp"
+
+#include <algorithm>
+
+namespace wrc::plugin {
+namespace {
+
+const char* const kExtensions[] = {".txt", ".csv", ".dat", nullptr};
+const char* const kOptions[] = {"columns", nullptr};
+
+const char* separator_name(char sep) { return sep == ',' ? "commas" : sep == ';' ? "semicolons" : "blanks"; }
+
+char detect_separator(std::string_view s) {
+  if (s.find(',') != std::string_view::npos) return ',';
+  if (s.find(';') != std::string_view::npos) return ';';
+  return ' ';
+}
+
+// `columns = "2,3"`: 1-based columns of y and z.
+std::pair<std::size_t, std::size_t> parse_columns(const Request& rq) {
+  const std::string* c = rq.option("columns");
+  if (!c) return {0, 1};
+  const auto f = split_fields(*c, ',');
+  auto col = [&](std::string_view s) -> std::size_t {
+    const auto v = parse_double(s);
+    if (!v || *v < 1 || *v > 1000 || *v != static_cast<double>(static_cast<int>(*v)))
+      fail_at(0, "option columns must be two column numbers \"y,z\" (1-based), got {}", quoted(*c));
+    return static_cast<std::size_t>(*v) - 1;
+  };
+  if (f.size() != 2) fail_at(0, "option columns must be two column numbers \"y,z\" (1-based), got {}", quoted(*c));
+  const std::size_t cy = col(f[0]), cz = col(f[1]);
+  if (cy == cz) fail_at(0, "option columns names column {} for both y and z", cy + 1);
+  return {cy, cz};
+}
+
+// Unit named by a header field ("y_mm", "z [m]"), or 0 when none.
+double header_unit(std::string_view h) {
+  std::string s(h);
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  auto ends = [&](std::string_view suffix) { return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0; };
+  if (ends("_mm") || ends("[mm]") || ends("(mm)")) return 1e-3;
+  if (ends("_m") || ends("[m]") || ends("(m)")) return 1.0;
+  return 0;
+}
+
+void parse(std::string_view data, const Request& rq, Out& out) {
+  const auto [cy, cz] = parse_columns(rq);
+  const auto lines = split_lines(data);
+  char sep = 0;
+  int first_data_line = 0, header_line = 0;
+  std::size_t fields_per_line = 0;
+  std::vector<std::string_view> header;
+  for (const Line& ln : lines) {
+    const std::string_view s = trim(strip_comment(ln.text, "#"));
+    if (s.empty()) continue;
+    if (sep == 0) {
+      // The first content line: a header when its first field is not a number.
+      const char guess = detect_separator(s);
+      const auto f = split_fields(s, guess);
+      if (header_line == 0 && !parse_double(f[0])) {
+        header_line = ln.number;
+        header = f;
+        out.metadata("header", std::string(s));
+        continue;
+      }
+      sep = guess;
+      first_data_line = ln.number;
+      fields_per_line = f.size();
+      if (fields_per_line < 2) fail_at(ln.number, "a data line needs at least 2 fields (y z), got {}", fields_per_line);
+      if (std::max(cy, cz) >= fields_per_line)
+        fail_at(ln.number, "option columns asks for column {}, but the data has {} columns", std::max(cy, cz) + 1, fields_per_line);
+      if (!header.empty() && header.size() != fields_per_line)
+        fail_at(ln.number, "{} fields, but the header (line {}) names {} columns", fields_per_line, header_line, header.size());
+    } else {
+      // The same separator on every line.
+      const char other = detect_separator(s);
+      if (other != sep)
+        fail_at(ln.number, "fields separated by {}, but the data from line {} is separated by {} (mixed separators)",
+                separator_name(other), first_data_line, separator_name(sep));
+      if (sep == ',' && s.find(';') != std::string_view::npos)
+        fail_at(ln.number, "both commas and semicolons on one line (mixed separators)");
+    }
+    const auto f = split_fields(s, sep);
+    if (f.size() != fields_per_line)
+      fail_at(ln.number, "{} fields, but the data has {} per line (as on line {})", f.size(), fields_per_line, first_data_line);
+    const double y = number(f[cy], ln.number, fmt::format("y (column {})", cy + 1));
+    const double z = number(f[cz], ln.number, fmt::format("z (column {})", cz + 1));
+    out.point(y, z, ln.number);
+  }
+  if (lines.empty() || (header_line == 0 && sep == 0)) fail_at(0, "the file is empty (no data lines)");
+  if (sep == 0) fail_at(header_line, "a header line but no data lines after it");
+  if (fields_per_line != 2 || cy != 0 || cz != 1)
+    out.transform(fmt::format("columns {} and {} of {} taken as y and z", cy + 1, cz + 1, fields_per_line));
+  if (!header.empty()) {
+    const double uy = header_unit(header[cy]), uz = header_unit(header[cz]);
+    if (uy != 0 && uy == uz)
+      out.units(uy, fmt::format("header {} {} (line {})", quoted(header[cy]), quoted(header[cz]), header_line));
+    else if (uy != uz)
+      fail_at(header_line, "the header names different units for y ({}) and z ({})", quoted(header[cy]), quoted(header[cz]));
+  }
+}
+
+}  // namespace
+
+extern const ReaderSpec text_reader;
+const ReaderSpec text_reader = {"text", "plain text / CSV: columns y z (engine orientation), mm unless told",
+                                kExtensions, kOptions, parse};
+
+}  // namespace wrc::plugin
