@@ -1,10 +1,20 @@
-// wrc.profile: profiles from Lua tables (and, through the reader host, from files).
+// wrc.profile: profiles from Lua tables, Lua definitions and files (reader plugins and readers registered
+// from Lua), and the wrc.Profile methods scripts use for checks and plots.
+#include "lua/profile_binding.hpp"
+
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"
-#include "lua/profile_binding.hpp"
+#include "wrc/core/paths.hpp"
+#include "wrc/profile/load.hpp"
+#include "wrc/profile/reader.hpp"
 
+#include <cmath>
+#include <filesystem>
 #include <memory>
+#include <system_error>
+
+namespace fs = std::filesystem;
 
 namespace wrc::lua {
 
@@ -17,6 +27,273 @@ const std::shared_ptr<const Profile>& check_profile(lua_State* L, int idx, std::
 }
 
 namespace {
+
+// ---- Readers registered from Lua (one set per Lua state; plugins are process-wide) ----
+
+const char* const kLuaReadersType = "wrc.LuaReaders";
+const char* const kLuaReadersKey = "wrc.profile.lua_readers";
+
+struct LuaReaders {
+  ReaderRegistry registry;
+  lua_State* current = nullptr;  // the thread of the wrc.profile.load call in progress
+};
+
+LuaReaders& lua_readers(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, kLuaReadersKey);
+  auto* r = static_cast<std::shared_ptr<LuaReaders>*>(luaL_testudata(L, -1, kLuaReadersType));
+  lua_pop(L, 1);
+  if (r && *r) return **r;
+  push_shared(L, std::make_shared<LuaReaders>(), kLuaReadersType);
+  auto* fresh = static_cast<std::shared_ptr<LuaReaders>*>(lua_touserdata(L, -1));
+  lua_setfield(L, LUA_REGISTRYINDEX, kLuaReadersKey);
+  return **fresh;
+}
+
+// Sets LuaReaders::current for the duration of a load.
+struct CurrentState {
+  LuaReaders& r;
+  lua_State* saved;
+  CurrentState(LuaReaders& r_, lua_State* L) : r(r_), saved(r_.current) { r.current = L; }
+  ~CurrentState() { r.current = saved; }
+};
+
+// Numbers of an optional array field, NaN kept (the host checks finiteness with the line).
+std::vector<double> raw_numbers(lua_State* L, int idx, const char* key, const std::string& ctx, bool required) {
+  std::vector<double> out;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    if (required) fail("{}: the result has no '{}' array", ctx, key);
+    return out;
+  }
+  if (!lua_istable(L, -1)) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("{}: '{}' must be an array of numbers, got {}", ctx, key, tn);
+  }
+  const lua_Integer n = luaL_len(L, -1);
+  out.reserve(static_cast<std::size_t>(std::max<lua_Integer>(n, 0)));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, -1, i);
+    int isnum = 0;
+    const double v = lua_tonumberx(L, -1, &isnum);
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    if (!isnum) {
+      lua_pop(L, 1);
+      fail("{}: {}[{}] must be a number, got {}", ctx, key, i, tn);
+    }
+    out.push_back(v);
+  }
+  lua_pop(L, 1);
+  return out;
+}
+
+std::vector<std::string> string_array(lua_State* L, int idx, const char* key, const std::string& ctx) {
+  std::vector<std::string> out;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    return out;
+  }
+  if (!lua_istable(L, -1)) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("{}: '{}' must be an array of strings, got {}", ctx, key, tn);
+  }
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, -1, i);
+    if (lua_type(L, -1) != LUA_TSTRING) {
+      const char* tn = type_name(L, -1);
+      lua_pop(L, 2);
+      fail("{}: {}[{}] must be a string, got {}", ctx, key, i, tn);
+    }
+    out.emplace_back(lua_tostring(L, -1));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return out;
+}
+
+// The table a Lua reader returns -> RawProfile.
+RawProfile raw_from_table(lua_State* L, int idx, const std::string& ctx) {
+  RawProfile raw;
+  if (!lua_istable(L, idx)) fail("{}: the read function must return a table {{y=, z=, ...}}, got {}", ctx, type_name(L, idx));
+  check_keys(L, idx, ctx, {"y", "z", "lines", "kind", "units", "name", "transforms"});
+  raw.y = raw_numbers(L, idx, "y", ctx, true);
+  raw.z = raw_numbers(L, idx, "z", ctx, true);
+  for (double l : raw_numbers(L, idx, "lines", ctx, false)) raw.lines.push_back(std::isfinite(l) && l > 0 && l < 2e9 ? static_cast<int>(l) : 0);
+  if (auto k = opt_string(L, idx, "kind", ctx)) raw.kind = parse_profile_kind(*k, ctx);
+  lua_getfield(L, idx, "units");
+  if (lua_type(L, -1) == LUA_TNUMBER) {
+    raw.metres_per_unit = lua_tonumber(L, -1);
+    raw.units_declared_by = fmt::format("units = {} (reader)", *raw.metres_per_unit);
+  } else if (lua_type(L, -1) == LUA_TSTRING) {
+    const std::string u = lua_tostring(L, -1);
+    raw.units_declared_by = fmt::format("units = \"{}\" (reader)", u);
+    raw.metres_per_unit = parse_units(u, ctx);
+  } else if (!lua_isnil(L, -1)) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("{}: 'units' must be \"mm\", \"m\" or a number, got {}", ctx, tn);
+  }
+  lua_pop(L, 1);
+  if (auto n = opt_string(L, idx, "name", ctx)) raw.name = *n;
+  raw.transforms = string_array(L, idx, "transforms", ctx);
+  return raw;
+}
+
+// ---- Options ----
+
+std::string option_text(lua_State* L, int idx, const std::string& key, std::string_view ctx) {
+  switch (lua_type(L, idx)) {
+    case LUA_TBOOLEAN: return lua_toboolean(L, idx) ? "true" : "false";
+    case LUA_TNUMBER:
+      if (lua_isinteger(L, idx)) return std::to_string(lua_tointeger(L, idx));
+      return fmt::format("{}", lua_tonumber(L, idx));  // shortest exact representation
+    case LUA_TSTRING: return lua_tostring(L, idx);
+    default: fail("{}: option '{}' must be a string, number or boolean, got {}", ctx, key, type_name(L, idx));
+  }
+}
+
+// crop = {y = {min, max}, z = {min, max}} (metres; either may be left out).
+CropWindow read_crop(lua_State* L, int idx, std::string_view ctx) {
+  if (!lua_istable(L, idx)) fail("{}: 'crop' must be a table {{y = {{min, max}}, z = {{min, max}}}}, got {}", ctx, type_name(L, idx));
+  check_keys(L, idx, fmt::format("{}: crop", ctx), {"y", "z"});
+  CropWindow w;
+  for (const char* axis : {"y", "z"}) {
+    lua_getfield(L, idx, axis);
+    if (!lua_isnil(L, -1)) {
+      const auto v = number_array(L, -1, nullptr, fmt::format("{}: crop.{}", ctx, axis));
+      if (v.size() != 2 || !(v[0] < v[1])) {
+        lua_pop(L, 1);
+        fail("{}: crop.{} must be {{min, max}} with min < max (metres)", ctx, axis);
+      }
+      (axis[0] == 'y' ? w.y_min : w.z_min) = v[0];
+      (axis[0] == 'y' ? w.y_max : w.z_max) = v[1];
+    }
+    lua_pop(L, 1);
+  }
+  return w;
+}
+
+// The options table at idx (may be none). For a file, keys the host does not know go to the reader;
+// `geometric_only` (p:transform) rejects them.
+LoadOptions read_options(lua_State* L, int idx, std::string_view ctx, bool geometric_only) {
+  LoadOptions o;
+  if (lua_isnoneornil(L, idx)) return o;
+  if (!lua_istable(L, idx)) fail("{}: options must be a table, got {}", ctx, type_name(L, idx));
+  idx = lua_absindex(L, idx);
+  if (geometric_only) check_keys(L, idx, ctx, {"mirror_y", "mirror_z", "shift", "crop", "name", "kind"});
+  if (auto v = opt_bool(L, idx, "mirror_y", ctx)) o.mirror_y = *v;
+  if (auto v = opt_bool(L, idx, "mirror_z", ctx)) o.mirror_z = *v;
+  if (auto v = opt_string(L, idx, "name", ctx)) o.name = *v;
+  if (auto v = opt_string(L, idx, "kind", ctx)) o.kind = parse_profile_kind(*v, ctx);
+  if (auto v = opt_string(L, idx, "reader", ctx)) o.reader = *v;
+  lua_getfield(L, idx, "units");
+  if (lua_type(L, -1) == LUA_TNUMBER || lua_type(L, -1) == LUA_TSTRING) {
+    o.units_text = option_text(L, -1, "units", ctx);
+    lua_pop(L, 1);
+    o.metres_per_unit = parse_units(o.units_text, std::string(ctx));
+  } else if (!lua_isnil(L, -1)) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("{}: 'units' must be \"mm\", \"cm\", \"m\", \"in\" or a number (metres per file unit), got {}", ctx, tn);
+  } else {
+    lua_pop(L, 1);
+  }
+  lua_getfield(L, idx, "shift");
+  if (!lua_isnil(L, -1)) {
+    if (!lua_istable(L, -1)) {
+      const char* tn = type_name(L, -1);
+      lua_pop(L, 1);
+      fail("{}: 'shift' must be a table {{y =, z =}} (metres), got {}", ctx, tn);
+    }
+    const std::string sctx = fmt::format("{}: shift", ctx);
+    check_keys(L, -1, sctx, {"y", "z"});
+    o.shift_y = get_number(L, -1, "y", 0.0, sctx);
+    o.shift_z = get_number(L, -1, "z", 0.0, sctx);
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, idx, "crop");
+  if (!lua_isnil(L, -1)) o.crop = read_crop(L, lua_gettop(L), ctx);
+  lua_pop(L, 1);
+  if (geometric_only) return o;
+  // Everything else belongs to the reader.
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    if (lua_type(L, -2) != LUA_TSTRING) {
+      lua_pop(L, 2);
+      fail("{}: option keys must be strings", ctx);
+    }
+    const std::string key = lua_tostring(L, -2);
+    static const char* const host_keys[] = {"mirror_y", "mirror_z", "name", "kind", "reader", "units", "shift", "crop"};
+    bool host = false;
+    for (const char* k : host_keys) host = host || key == k;
+    if (!host) {
+      std::string value;
+      try {
+        value = option_text(L, -1, key, ctx);
+      } catch (...) {
+        lua_pop(L, 2);
+        throw;
+      }
+      o.reader_options.emplace_back(key, std::move(value));
+    }
+    lua_pop(L, 1);
+  }
+  return o;
+}
+
+bool has_geometric_options(const LoadOptions& o) {
+  return o.mirror_y || o.mirror_z || o.crop || o.shift_y != 0 || o.shift_z != 0 || o.name || o.kind;
+}
+
+// Relative paths: the working directory first, then wrc.paths.root.
+std::string resolve_path(const std::string& path) {
+  std::error_code ec;
+  if (fs::exists(path, ec)) return path;
+  const fs::path p(path);
+  if (p.is_relative()) {
+    const fs::path alt = fs::path(paths().root) / p;
+    if (fs::exists(alt, ec)) return alt.string();
+  }
+  if (p.is_relative())
+    fail("{}: no such file (looked in the working directory and in wrc.paths.root = {})", path, paths().root);
+  fail("{}: no such file", path);
+}
+
+// A Lua definition: the file's chunk runs with the options table as `...` and returns a wrc.Profile.
+Profile load_definition(lua_State* L, const std::string& path, int options_idx, const LoadOptions& o) {
+  if (lua_isnoneornil(L, options_idx)) lua_newtable(L);
+  else lua_pushvalue(L, options_idx);
+  const int options_copy = lua_gettop(L);
+  if (luaL_loadfile(L, path.c_str()) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "cannot load";
+    lua_pop(L, 2);
+    fail("wrc.profile.load: {}", msg);
+  }
+  lua_insert(L, options_copy);  // chunk below its argument
+  if (pcall_traceback(L, 1, 1) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "error object is not a string";
+    lua_pop(L, 1);
+    fail("wrc.profile.load: the definition {} failed: {}", path, msg);
+  }
+  auto* ud = static_cast<std::shared_ptr<const Profile>*>(luaL_testudata(L, -1, kProfileType));
+  if (!ud || !*ud) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("wrc.profile.load: the definition {} returned a {}, expected a wrc.Profile (return wrc.profile.points{{...}})", path, tn);
+  }
+  Profile p = **ud;
+  lua_pop(L, 1);
+  p.source = path;
+  if (!has_geometric_options(o)) return p;
+  return transform_profile(p, o);
+}
+
+// ---- wrc.profile functions ----
 
 // wrc.profile.points{kind=, y={...}, z={...}, name=}: metres, left-side frame.
 int profile_points(lua_State* L) {
@@ -33,12 +310,186 @@ int profile_points(lua_State* L) {
   return 1;
 }
 
+// wrc.profile.load(path [, options]) -> wrc.Profile
+int profile_load(lua_State* L) {
+  const char* ctx = "wrc.profile.load";
+  const std::string given = check_string(L, 1, ctx);
+  const LoadOptions o = read_options(L, 2, ctx, false);
+  const std::string path = resolve_path(given);
+  if (file_extension(path) == ".lua" && !o.reader) {
+    if (o.metres_per_unit) fail("{}: {}: 'units' does not apply to a Lua definition (it returns metres)", ctx, path);
+    push_profile(L, std::make_shared<const Profile>(load_definition(L, path, 2, o)));
+    return 1;
+  }
+  LuaReaders& lr = lua_readers(L);
+  CurrentState cs(lr, L);
+  push_profile(L, std::make_shared<const Profile>(load_profile_file(path, o, {&lr.registry, &ReaderRegistry::plugins()})));
+  return 1;
+}
+
+// The call of one Lua reader: read(path, options) -> table.
+RawProfile call_lua_reader(LuaReaders& lr, int ref, const std::string& id, const std::string& path,
+                           std::optional<ProfileKind> kind_hint, const ReaderOptions& options) {
+  lua_State* L = lr.current;
+  if (!L) fail("{}: the Lua reader '{}' can only run inside wrc.profile.load", path, id);
+  const std::string ctx = fmt::format("{}: Lua reader '{}'", path, id);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  lua_pushstring(L, path.c_str());
+  lua_createtable(L, 0, static_cast<int>(options.size()) + 1);
+  for (const auto& [k, v] : options) set_string(L, k.c_str(), v);
+  if (kind_hint) set_string(L, "kind", to_string(*kind_hint));
+  if (pcall_traceback(L, 2, 1) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "error object is not a string";
+    lua_pop(L, 1);
+    fail("{} failed: {}", ctx, msg);
+  }
+  const int top = lua_gettop(L);
+  try {
+    RawProfile raw = raw_from_table(L, top, ctx);
+    lua_settop(L, top - 1);
+    return raw;
+  } catch (...) {
+    lua_settop(L, top - 1);
+    throw;
+  }
+}
+
+// wrc.profile.register_reader{id=, extensions={...}, read=function(path, options) ... end, options={...}, description=}
+int profile_register_reader(lua_State* L) {
+  const char* ctx = "wrc.profile.register_reader";
+  check_table(L, 1, ctx);
+  check_keys(L, 1, ctx, {"id", "extensions", "read", "options", "description"});
+  Reader r;
+  const auto id = opt_string(L, 1, "id", ctx);
+  if (!id) fail("{}: 'id' is required (a string of a-z, 0-9, _)", ctx);
+  r.id = *id;
+  r.extensions = string_array(L, 1, "extensions", ctx);
+  r.options = string_array(L, 1, "options", ctx);
+  r.description = opt_string(L, 1, "description", ctx).value_or("");
+  lua_Debug ar;
+  r.origin = "Lua";
+  if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar)) r.origin = fmt::format("Lua ({}:{})", ar.short_src, ar.currentline);
+  if (const Reader* p = ReaderRegistry::plugins().find(r.id))
+    fail("{}: duplicate reader id '{}': the plugin {} provides it", ctx, r.id, p->origin);
+  lua_getfield(L, 1, "read");
+  if (!lua_isfunction(L, -1)) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("{}: 'read' must be a function(path, options) returning {{y=, z=, ...}}, got {}", ctx, tn);
+  }
+  LuaReaders& lr = lua_readers(L);
+  if (const Reader* p = lr.registry.find(r.id)) {
+    lua_pop(L, 1);
+    fail("{}: duplicate reader id '{}': already registered from {}", ctx, r.id, p->origin);
+  }
+  const int ref = luaL_ref(L, LUA_REGISTRYINDEX);  // the read function, kept for the life of the state
+  LuaReaders* lrp = &lr;
+  const std::string rid = r.id;
+  r.read = [lrp, ref, rid](const std::string& path, std::optional<ProfileKind> kind_hint, const ReaderOptions& options) {
+    return call_lua_reader(*lrp, ref, rid, path, kind_hint, options);
+  };
+  try {
+    lr.registry.add(std::move(r));
+  } catch (...) {
+    luaL_unref(L, LUA_REGISTRYINDEX, ref);
+    throw;
+  }
+  return 0;
+}
+
+void push_strings(lua_State* L, const std::vector<std::string>& v) {
+  lua_createtable(L, static_cast<int>(v.size()), 0);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    lua_pushstring(L, v[i].c_str());
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+}
+
+// wrc.profile.readers() -> {{id=, extensions=, options=, description=, origin=}, ...}, {rejected messages}
+int profile_readers(lua_State* L) {
+  const ReaderRegistry& plugins = ReaderRegistry::plugins();
+  const LuaReaders& lr = lua_readers(L);
+  lua_newtable(L);
+  lua_Integer i = 0;
+  for (const ReaderRegistry* reg : {&lr.registry, &plugins}) {
+    for (const Reader& r : reg->readers()) {
+      lua_createtable(L, 0, 5);
+      set_string(L, "id", r.id);
+      set_string(L, "description", r.description);
+      set_string(L, "origin", r.origin);
+      push_strings(L, r.extensions);
+      lua_setfield(L, -2, "extensions");
+      push_strings(L, r.options);
+      lua_setfield(L, -2, "options");
+      lua_rawseti(L, -2, ++i);
+    }
+  }
+  push_strings(L, plugins.rejected());
+  return 2;
+}
+
+// ---- wrc.Profile methods ----
+
 // p:points() -> y, z (two Lua arrays, metres)
 int profile_method_points(lua_State* L) {
   const auto& p = check_profile(L, 1, "profile:points");
   push_array(L, p->y);
   push_array(L, p->z);
   return 2;
+}
+
+// p:resample{step=, along="arc"|"y"} -> a new profile
+int profile_method_resample(lua_State* L) {
+  const char* ctx = "profile:resample";
+  const auto& p = check_profile(L, 1, ctx);
+  check_table(L, 2, ctx);
+  check_keys(L, 2, ctx, {"step", "along"});
+  const double step = need_number(L, 2, "step", ctx);
+  const std::string along = opt_string(L, 2, "along", ctx).value_or("arc");
+  if (!(step > 0)) fail("{}: 'step' must be a positive number of metres, got {}", ctx, step);
+  if (along == "arc") push_profile(L, std::make_shared<const Profile>(resample_arc(*p, step)));
+  else if (along == "y") push_profile(L, std::make_shared<const Profile>(resample_y(*p, step)));
+  else fail("{}: 'along' must be \"arc\" or \"y\", got \"{}\"", ctx, along);
+  return 1;
+}
+
+// p:interpolate(y) -> z at y (linear between the points); y must lie within the profile.
+int profile_method_interpolate(lua_State* L) {
+  const char* ctx = "profile:interpolate";
+  const auto& p = check_profile(L, 1, ctx);
+  const double y = check_number(L, 2, ctx);
+  if (y < p->y.front() || y > p->y.back())
+    fail("{}: y = {} m lies outside the profile ({} .. {} m)", ctx, y, p->y.front(), p->y.back());
+  lua_pushnumber(L, interpolate_z(*p, y));
+  return 1;
+}
+
+// p:arc_length() -> metres
+int profile_method_arc_length(lua_State* L) {
+  lua_pushnumber(L, arc_length(*check_profile(L, 1, "profile:arc_length")));
+  return 1;
+}
+
+// p:bounds() -> {y_min=, y_max=, z_min=, z_max=} (metres)
+int profile_method_bounds(lua_State* L) {
+  const auto& p = check_profile(L, 1, "profile:bounds");
+  const auto [zmin, zmax] = std::minmax_element(p->z.begin(), p->z.end());
+  lua_createtable(L, 0, 4);
+  set_number(L, "y_min", p->y.front());
+  set_number(L, "y_max", p->y.back());
+  set_number(L, "z_min", *zmin);
+  set_number(L, "z_max", *zmax);
+  return 1;
+}
+
+// p:transform{mirror_y=, mirror_z=, crop=, shift=, name=} -> a new profile
+int profile_method_transform(lua_State* L) {
+  const char* ctx = "profile:transform";
+  const auto& p = check_profile(L, 1, ctx);
+  check_table(L, 2, ctx);
+  const LoadOptions o = read_options(L, 2, ctx, true);
+  push_profile(L, std::make_shared<const Profile>(transform_profile(*p, o)));
+  return 1;
 }
 
 int profile_len(lua_State* L) {
@@ -62,12 +513,10 @@ int profile_index(lua_State* L) {
     if (key == "name") return lua_pushstring(L, p->name.c_str()), 1;
     if (key == "source") return lua_pushstring(L, p->source.c_str()), 1;
     if (key == "duplicates_dropped") return lua_pushinteger(L, p->duplicates_dropped), 1;
-    if (key == "transforms") {
-      lua_createtable(L, static_cast<int>(p->transforms.size()), 0);
-      for (std::size_t i = 0; i < p->transforms.size(); ++i) {
-        lua_pushstring(L, p->transforms[i].c_str());
-        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-      }
+    if (key == "transforms") return push_strings(L, p->transforms), 1;
+    if (key == "metadata") {
+      lua_createtable(L, 0, static_cast<int>(p->metadata.size()));
+      for (const auto& [k, v] : p->metadata) set_string(L, k.c_str(), v);
       return 1;
     }
   }
@@ -100,11 +549,26 @@ void open_profile(lua_State* L) {
     lua_setfield(L, -2, "methods");
   }
   lua_pop(L, 1);
-  const luaL_Reg methods[] = {{"points", guarded<profile_method_points>}, {nullptr, nullptr}};
+  if (luaL_newmetatable(L, kLuaReadersType)) {
+    lua_pushcfunction(L, gc_shared<LuaReaders>);
+    lua_setfield(L, -2, "__gc");
+  }
+  lua_pop(L, 1);
+  const luaL_Reg methods[] = {{"points", guarded<profile_method_points>},
+                              {"resample", guarded<profile_method_resample>},
+                              {"interpolate", guarded<profile_method_interpolate>},
+                              {"arc_length", guarded<profile_method_arc_length>},
+                              {"bounds", guarded<profile_method_bounds>},
+                              {"transform", guarded<profile_method_transform>},
+                              {nullptr, nullptr}};
   register_profile_methods(L, methods);
 
   lua_newtable(L);  // wrc.profile
-  const luaL_Reg funcs[] = {{"points", guarded<profile_points>}, {nullptr, nullptr}};
+  const luaL_Reg funcs[] = {{"points", guarded<profile_points>},
+                            {"load", guarded<profile_load>},
+                            {"register_reader", guarded<profile_register_reader>},
+                            {"readers", guarded<profile_readers>},
+                            {nullptr, nullptr}};
   luaL_setfuncs(L, funcs, 0);
   lua_setfield(L, -2, "profile");
 }
