@@ -147,6 +147,8 @@ void parse(std::string_view data, const Request& rq, Out& out) {
     fail_at(declared_line, "XYPoints = {} but the file holds {} points (lines {} .. {})", declared, rows.size(),
             rows.front().line, rows.back().line);
   if (marked) out.metadata("marked_points", std::to_string(marked));
+  if (rows.size() < 3)
+    fail_at(rows.back().line, "only {} point{} read; a profile needs at least 3", rows.size(), rows.size() == 1 ? "" : "s");
 
   // Which way does Y point? The head top (flange tip) is the interior extreme.
   const auto [ymin_it, ymax_it] = std::minmax_element(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.y < b.y; });

@@ -86,6 +86,21 @@ class Keys {
   const Section& s_;
 };
 
+// Header: version 1, type 0 rail / 1 wheel; checked as soon as header.end is read.
+void check_header(const Section& header, Out& out) {
+  const Keys hk(header);
+  const Value* version = hk.find("version");
+  if (!version) fail_at(header.begin_line, "the header has no version (expected version = 1)");
+  if (number(version->text, version->line, "version") != 1)
+    fail_at(version->line, "version {} is not supported (expected 1)", quoted(version->text));
+  const Value* type = hk.find("type");
+  if (!type) fail_at(header.begin_line, "the header has no type (0 = rail, 1 = wheel)");
+  const double t = number(type->text, type->line, "type");
+  if (t != 0 && t != 1) fail_at(type->line, "type must be 0 (rail) or 1 (wheel), got {}", quoted(type->text));
+  out.kind(t == 1 ? WRC_KIND_WHEEL : WRC_KIND_RAIL);
+  for (const auto& [k, v] : header.keys) out.metadata("header." + k, v.text);
+}
+
 void parse(std::string_view data, const Request&, Out& out) {
   const auto lines = split_lines(data);
   enum class State { top, header, spline, points, done } st = State::top;
@@ -116,6 +131,7 @@ void parse(std::string_view data, const Request&, Out& out) {
         if (s == "header.end") {
           header.end_line = ln.number;
           st = State::top;
+          check_header(header, out);
         } else {
           read_key(s, ln.number, header);
         }
@@ -162,18 +178,7 @@ void parse(std::string_view data, const Request&, Out& out) {
   if (!seen_points) fail_at(spline.end_line, "no point.begin ... point.end in the spline section: no points");
   if (pts.empty()) fail_at(points_end, "no points between point.begin (line {}) and point.end", points_begin);
 
-  // Header: version 1, type 0 rail / 1 wheel.
-  const Keys hk(header), sk(spline);
-  const Value* version = hk.find("version");
-  if (!version) fail_at(header.begin_line, "the header has no version (expected version = 1)");
-  if (number(version->text, version->line, "version") != 1)
-    fail_at(version->line, "version {} is not supported (expected 1)", quoted(version->text));
-  const Value* type = hk.find("type");
-  if (!type) fail_at(header.begin_line, "the header has no type (0 = rail, 1 = wheel)");
-  const double t = number(type->text, type->line, "type");
-  if (t != 0 && t != 1) fail_at(type->line, "type must be 0 (rail) or 1 (wheel), got {}", quoted(type->text));
-  out.kind(t == 1 ? WRC_KIND_WHEEL : WRC_KIND_RAIL);
-  for (const auto& [k, v] : header.keys) out.metadata("header." + k, v.text);
+  const Keys sk(spline);
   for (const auto& [k, v] : spline.keys) out.metadata(k, v.text);
 
   if (const Value* sm = sk.find("approx.smooth"); sm && number(sm->text, sm->line, "approx.smooth") != 0)

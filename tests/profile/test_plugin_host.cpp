@@ -1,0 +1,109 @@
+// Plugin loading: the test plugins of tests/profile/plugins/test_plugin.c (one folder per variant) are
+// accepted or rejected with a message naming the library and the reason.
+#include "wrc/core/error.hpp"
+#include "wrc/core/paths.hpp"
+#include "wrc/profile/reader.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+using namespace wrc;
+
+namespace {
+
+std::string variant(const std::string& v) { return std::string(WRC_TEST_PLUGIN_ROOT) + "/" + v + "/test_" + v + ".so"; }
+
+std::string tmp_path(const std::string& name) {
+  const char* t = std::getenv("WRC_TEST_TMP");
+  return std::string(t && *t ? t : "/tmp") + "/plugin_host_" + name;
+}
+
+}  // namespace
+
+TEST_CASE("a plain C plugin is accepted and reads through the sink") {
+  ReaderRegistry r;
+  const auto why = r.load_plugin(variant("good"));
+  REQUIRE_MESSAGE(!why, *why);
+  const Reader* c = r.find("ctest");
+  REQUIRE(c != nullptr);
+  CHECK(c->extensions == std::vector<std::string>{".ctest"});
+  CHECK(r.find_by_extension(".ctest") == c);
+  const std::string path = tmp_path("ok.ctest");
+  std::ofstream(path) << "-10 -1\n0 0\n10 -1\n";
+  LoadOptions o;
+  o.kind = ProfileKind::wheel;
+  const Profile p = load_profile_file(path, o, {&r});
+  CHECK(p.kind == ProfileKind::wheel);  // the C plugin passes the kind hint back
+  REQUIRE(p.size() == 3);
+  CHECK(p.y.back() == doctest::Approx(0.010));
+  CHECK(p.transforms.at(1) == "ctest: read as given");
+  std::ofstream(path) << "-10 -1\n0 zero\n";
+  try {
+    load_profile_file(path, o, {&r});
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()) == path + ":2: expected two numbers `y z`");
+  }
+}
+
+TEST_CASE("rejected libraries: no entry point, wrong ABI major, NULL descriptor, small struct, not a library") {
+  ReaderRegistry r;
+  auto reason = [&](const std::string& lib) {
+    const auto why = r.load_plugin(lib);
+    REQUIRE(why.has_value());
+    INFO(*why);
+    CHECK(why->rfind(lib + ": ", 0) == 0);
+    return *why;
+  };
+  CHECK(reason(variant("no_entry")).find("does not export the entry point 'wrc_reader_entry'") != std::string::npos);
+  CHECK(reason(variant("bad_major")).find("reader ABI version 99.0, but this host implements 1.0") != std::string::npos);
+  CHECK(reason(variant("null")).find("returned no descriptor") != std::string::npos);
+  CHECK(reason(variant("small_struct")).find("descriptor struct_size 8 is smaller") != std::string::npos);
+  const std::string junk = tmp_path("junk.so");
+  std::ofstream(junk) << "not an ELF file\n";
+  CHECK(reason(junk).find("cannot load the library") != std::string::npos);
+  CHECK(r.readers().empty());
+}
+
+TEST_CASE("a duplicate id is rejected, naming both libraries, and the first keeps the id") {
+  ReaderRegistry r;
+  r.load_plugin_dir(paths().plugin_dirs.at(0));
+  REQUIRE(r.find("text") != nullptr);
+  const std::string first = r.find("text")->origin;
+  const auto why = r.load_plugin(variant("duplicate_id"));
+  REQUIRE(why.has_value());
+  INFO(*why);
+  CHECK(why->find("duplicate reader id 'text'") != std::string::npos);
+  CHECK(why->find(first) != std::string::npos);
+  CHECK(why->find(variant("duplicate_id")) != std::string::npos);
+  CHECK(r.find("text")->origin == first);
+}
+
+TEST_CASE("a plugin folder: every .so loaded in name order, rejections collected") {
+  ReaderRegistry r;
+  r.load_plugin_dir(std::string(WRC_TEST_PLUGIN_ROOT) + "/bad_major");
+  r.load_plugin_dir(std::string(WRC_TEST_PLUGIN_ROOT) + "/good");
+  r.load_plugin_dir(std::string(WRC_TEST_PLUGIN_ROOT) + "/no_such_folder");
+  CHECK(r.readers().size() == 1);
+  REQUIRE(r.rejected().size() == 2);
+  CHECK(r.rejected()[0].find("ABI version 99") != std::string::npos);
+  CHECK(r.rejected()[1].find("plugin folder does not exist") != std::string::npos);
+}
+
+TEST_CASE("readers added in C++ are checked like plugins") {
+  ReaderRegistry r;
+  Reader bad;
+  bad.id = "Bad Id";
+  bad.extensions = {".x"};
+  bad.read = [](const std::string&, std::optional<ProfileKind>, const ReaderOptions&) { return RawProfile{}; };
+  CHECK_THROWS_WITH_AS(r.add(bad), doctest::Contains("reader id 'Bad Id'"), Error);
+  bad.id = "ok";
+  bad.extensions = {"x"};
+  CHECK_THROWS_WITH_AS(r.add(bad), doctest::Contains("extension 'x' must be a dot"), Error);
+  bad.extensions = {".X"};
+  r.add(bad);
+  CHECK(r.find_by_extension(".x") != nullptr);  // extensions are lower-cased
+}

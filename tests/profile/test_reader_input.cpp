@@ -1,0 +1,185 @@
+// Every reader plugin on malformed files: each gives one error naming the file and the line, none
+// crashes. The plugins are the ones built into <build>/plugins (paths().plugin_dirs[0]).
+#include "wrc/core/error.hpp"
+#include "wrc/core/paths.hpp"
+#include "wrc/profile/reader.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <string>
+
+using namespace wrc;
+
+namespace {
+
+const ReaderRegistry& built_plugins() {
+  static ReaderRegistry r = [] {
+    ReaderRegistry reg;
+    reg.load_plugin_dir(paths().plugin_dirs.at(0));
+    return reg;
+  }();
+  return r;
+}
+
+std::string tmp_path(const std::string& name) {
+  const char* t = std::getenv("WRC_TEST_TMP");
+  return std::string(t && *t ? t : "/tmp") + "/reader_input_" + name;
+}
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string p = tmp_path(name);
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+std::string error_of(const std::string& path, LoadOptions o = {}) {
+  try {
+    load_profile_file(path, o, {&built_plugins()});
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// `expected` must appear in the message, and the message must start with "path:line: " when line > 0.
+void check_error(const std::string& name, const std::string& text, int line, const std::string& expected, LoadOptions o = {}) {
+  const std::string path = write(name, text);
+  const std::string msg = error_of(path, o);
+  INFO(name << ": " << msg);
+  const std::string prefix = line > 0 ? path + ":" + std::to_string(line) + ": " : path + ": ";
+  CHECK(msg.rfind(prefix, 0) == 0);
+  CHECK(msg.find(expected) != std::string::npos);
+}
+
+// A 30 mm wide arc, 31 points, "y z" in mm with `sep` between the numbers.
+std::string arc_rows(const char* sep, double scale = 1.0, int n = 31) {
+  std::string s;
+  for (int i = 0; i < n; ++i) {
+    const double y = -15.0 + 30.0 * i / (n - 1);
+    s += fmt::format("{:.6f}{}{:.6f}\n", y * scale, sep, (std::sqrt(300.0 * 300.0 - y * y) - 300.0) * scale);
+  }
+  return s;
+}
+
+std::string simpack(const std::string& points, const std::string& units = "1000") {
+  return "header.begin\n  version = 1\n  type = 0\nheader.end\nspline.begin\n  units.len.f = " + units +
+         "\n  point.begin\n" + points + "  point.end\nspline.end\n";
+}
+constexpr int kSimpackFirstPoint = 8;  // line of the first point in simpack()
+
+std::string miniprof(const std::string& rows, int xypoints) {
+  return "Filename=x.ban\nXYPoints=" + std::to_string(xypoints) + "\nColumnDef=X,Y\n\n" + rows;
+}
+constexpr int kMiniprofFirstRow = 5;
+
+}  // namespace
+
+TEST_CASE("the built plugins are there") {
+  const auto& r = built_plugins();
+  INFO("plugin folder " << paths().plugin_dirs.at(0));
+  for (const auto& why : r.rejected()) INFO(why);
+  CHECK(r.find("text") != nullptr);
+  CHECK(r.find("simpack") != nullptr);
+  CHECK(r.find("miniprof") != nullptr);
+  CHECK(r.rejected().empty());
+}
+
+TEST_CASE("text reader: bad input") {
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  check_error("empty.txt", "", 0, "the file is empty", rail);
+  check_error("blank.txt", "\n  \n# only a comment\n", 0, "the file is empty", rail);
+  check_error("header_only.csv", "y_mm,z_mm\n", 1, "a header line but no data lines", rail);
+  check_error("nonnumeric.txt", "0 0\n1 0.1\n2 abc\n3 0.3\n", 3, "z (column 2) must be a number, got 'abc'", rail);
+  check_error("nan.txt", "0 0\n1 nan\n2 0\n", 2, "must be a finite number, got 'nan'", rail);
+  check_error("inf.csv", "0,0\n1,0\n2,-inf\n", 3, "must be a finite number, got '-inf'", rail);
+  check_error("single.txt", "# one point\n1.0 2.0\n", 2, "only 1 point read", rail);
+  check_error("mixed.txt", "0 0\n1 0.1\n2,0.2\n", 3, "separated by commas, but the data from line 1 is separated by blanks", rail);
+  check_error("mixed2.csv", "0,0\n1,0.1\n2 0.2\n", 3, "separated by blanks, but the data from line 1 is separated by commas", rail);
+  check_error("fields.txt", "0 0\n1 0.1 7\n", 2, "3 fields, but the data has 2 per line", rail);
+  check_error("metres.txt", arc_rows(" ", 1e-3), 1, "total chord is 0.030", rail);
+  check_error("binary.txt", std::string("0 0\n1\0 2\n", 9), 2, "NUL byte", rail);
+  // The same metres file with units given explicitly loads.
+  LoadOptions m = rail;
+  m.metres_per_unit = 1.0;
+  m.units_text = "m";
+  CHECK(error_of(write("metres.txt", arc_rows(" ", 1e-3)), m) == "(no error)");
+  CHECK(error_of(write("good.txt", arc_rows("\t")), rail) == "(no error)");
+  LoadOptions cols = rail;
+  cols.reader_options = {{"columns", "3,1"}};
+  check_error("columns.txt", "0 0\n1 0\n", 1, "option columns asks for column 3", cols);
+}
+
+TEST_CASE("Simpack reader: bad input") {
+  check_error("empty.prr", "", 0, "the file is empty");
+  check_error("comments.prr", "! nothing but a comment\n", 0, "the file is empty");
+  check_error("header_only.prr", "header.begin\n version = 1\n type = 0\nheader.end\n", 4, "no spline.begin");
+  check_error("no_points.prr", simpack(""), 8, "no points between point.begin (line 7) and point.end");
+  check_error("open.prr", "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n point.begin\n0 0\n", 7,
+              "the file ends inside point.begin (line 6)");
+  check_error("nonnumeric.prr", simpack("0 0\n1 0.1\n2 x\n"), kSimpackFirstPoint + 2, "z must be a number, got 'x'");
+  check_error("nan.prr", simpack("0 0\n1 NaN\n2 0\n"), kSimpackFirstPoint + 1, "must be a finite number, got 'NaN'");
+  check_error("inf.prr", simpack("0 0\ninf 0\n2 0\n"), kSimpackFirstPoint + 1, "y must be a finite number, got 'inf'");
+  check_error("single.prr", simpack("1 2\n"), kSimpackFirstPoint, "only 1 point read");
+  check_error("mixed.prr", simpack("0 0\n1,0.1\n"), kSimpackFirstPoint + 1, "mixed separators");
+  check_error("fields.prr", simpack("0 0 1 1\n"), kSimpackFirstPoint, "got 4 fields");
+  check_error("metres.prr", simpack(arc_rows(" ", 1e-3)), kSimpackFirstPoint, "total chord is 0.030");
+  check_error("wrong_unit.prr", simpack(arc_rows(" "), "1"), kSimpackFirstPoint, "taken as units.len.f = 1 (line 6)");
+  check_error("version.prr", "header.begin\n version = 2\n type = 0\nheader.end\n", 2, "version '2' is not supported");
+  check_error("type.prr", "header.begin\n version = 1\n type = 7\nheader.end\nspline.begin\n point.begin\n0 0\n point.end\nspline.end\n", 3,
+              "type must be 0 (rail) or 1 (wheel)");
+  check_error("twice.prr", "header.begin\n version = 1\n version = 1\nheader.end\n", 3, "key 'version' given twice (first on line 2)");
+  check_error("stray.prr", "hello\n", 1, "expected header.begin or spline.begin");
+  check_error("mirror.prr", "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n mirror.y = 2\n point.begin\n" + arc_rows(" ") +
+              " point.end\nspline.end\n", 6, "mirror.y must be 0 or 1");
+  CHECK(error_of(write("good.prr", simpack(arc_rows("  ")))) == "(no error)");
+}
+
+TEST_CASE("Simpack reader: processing steps in their numbered order") {
+  // Raw points (mm, z down): shift then rotate then bounds then mirror then inversion then units.
+  const std::string keys =
+      "  shift.y = 10\n  shift.z = 1\n  rotate = 0\n  bound.y.min = 5\n  bound.y.max = 45\n  bound.z.min = 1\n"
+      "  bound.z.max = 0\n  mirror.y = 1\n  mirror.z = 0\n  inversion = 1\n  units.len.f = 1000\n";
+  std::string pts;
+  for (int i = 0; i <= 50; ++i) pts += fmt::format("{} {}\n", i - 10, 0.01 * (i - 25) * (i - 25));
+  const std::string text = "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n" + keys + " point.begin\n" + pts +
+                           " point.end\nspline.end\n";
+  const Profile p = load_profile_file(write("steps.prr", text), {}, {&built_plugins()});
+  // Shifted y = i, kept 5..45 by the y bounds (z bounds off: min > max), mirrored: y = -i mm.
+  REQUIRE(p.size() == 41);
+  CHECK(p.y.front() == doctest::Approx(-0.045));
+  CHECK(p.y.back() == doctest::Approx(-0.005));
+  // z: raw 0.01 (i - 25)^2 + 1 (shift), down -> up: z = -(0.01 (i - 25)^2 + 1) mm at y = -i.
+  CHECK(p.z.front() == doctest::Approx(-(0.01 * 400 + 1) * 1e-3));
+  CHECK(p.z[20] == doctest::Approx(-1e-3));  // i = 25
+}
+
+TEST_CASE("MiniProf reader: bad input") {
+  check_error("empty.ban", "", 0, "the file is empty");
+  check_error("header_only.ban", "Filename=x\nXYPoints=3\nColumnDef=X,Y\n\n", 3, "a header but no points");
+  check_error("count.ban", miniprof(arc_rows("\t"), 30), 2, "XYPoints = 30 but the file holds 31 points (lines 5 .. 35)");
+  check_error("nonnumeric.ban", miniprof("0\t0\n1\tz\n2\t0\n", 3), kMiniprofFirstRow + 1, "Y must be a number, got 'z'");
+  check_error("nan.ban", miniprof("0\t0\nnan\t0\n2\t0\n", 3), kMiniprofFirstRow + 1, "X must be a finite number, got 'nan'");
+  check_error("inf.whl", miniprof("0\t0\n1\tinf\n2\t0\n", 3), kMiniprofFirstRow + 1, "Y must be a finite number, got 'inf'");
+  check_error("single.ban", miniprof("1\t2\n", 1), kMiniprofFirstRow, "only 1 point read");
+  check_error("mixed.ban", miniprof("0\t0\n1,0.1\n2\t0\n", 3), kMiniprofFirstRow + 1, "mixed separators");
+  check_error("columns.ban", miniprof("0\t0\t1\n", 1), kMiniprofFirstRow, "3 fields, but ColumnDef declares 2 columns");
+  check_error("columndef.ban", "ColumnDef=A,B\n\n0 0\n", 1, "ColumnDef must name the columns X and Y");
+  check_error("header.ban", "Filename=x\nthis is not a key\n", 2, "expected a `Key=Value` header line");
+  check_error("metres.ban", miniprof(arc_rows("\t", 1e-3), 31), kMiniprofFirstRow, "total chord is 0.030");
+  check_error("flat.ban", miniprof("0\t0\n1\t0\n2\t0\n", 3), kMiniprofFirstRow, "cannot tell which way Y points");
+  check_error("kind.xyz", miniprof(arc_rows("\t"), 31), 0, "pass kind", [] {
+    LoadOptions o;
+    o.reader = "miniprof";
+    return o;
+  }());
+  LoadOptions bad_axis;
+  bad_axis.reader_options = {{"y_axis", "sideways"}};
+  check_error("axis.ban", miniprof(arc_rows("\t"), 31), 0, "y_axis must be \"standard\" or \"reversed\"", bad_axis);
+  CHECK(error_of(write("good.ban", miniprof(arc_rows("\t"), 31))) == "(no error)");
+  CHECK(error_of(write("good_nocount.ban", "MINIPROF\nColumnDef=X,A,Y\n\n" + arc_rows("\t0\t", 1.0))) == "(no error)");
+}
