@@ -112,6 +112,11 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
   if (n < 3)
     fail("{}: only {} point{} read; a profile needs at least 3", at_line(source, last_line), n, n == 1 ? "" : "s");
 
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(raw.y[i]) || !std::isfinite(raw.z[i]))
+      fail("{}: coordinate is not a finite number (y = {}, z = {})", at_line(source, raw.lines.empty() ? 0 : raw.lines[i]),
+           raw.y[i], raw.z[i]);
+
   // Kind: the file's word, the option's, and they must agree.
   ProfileKind kind;
   if (raw.kind && o.kind && *raw.kind != *o.kind)
