@@ -89,7 +89,9 @@ void parse(std::string_view data, const Request& rq, Out& out) {
       // No empty line before the data: a numeric row ends the header too.
       std::string_view row = s;
       if (!row.empty() && row.front() == '"') row.remove_prefix(1);
-      if (parse_double(split_fields(trim(row), detect_separator(row))[0])) break;
+      row = trim(row);
+      const auto fields = split_fields(row, detect_separator(row));
+      if (!fields.empty() && parse_double(fields[0])) break;
       fail_at(ln.number, "expected a `Key=Value` header line, got {}", quoted(s));
     }
     const std::string key(trim(s.substr(0, eq)));
