@@ -1,0 +1,139 @@
+// Fast products with the influence matrix of a regular grid. On a regular grid the coefficient between
+// two elements depends only on their offset, so the matrix is Toeplitz-block-Toeplitz and u = I * p is a
+// linear convolution: computed by FFT as a circular convolution on a zero-padded periodic grid of
+// Mx x My >= (2 nx - 2) x (2 ny - 2) points, with the kernel's spectrum computed once per shape.
+//
+// Threads: an InfluenceCache may be shared by any number of threads (it locks while it builds); the
+// spectra it hands out are immutable; each thread brings its own ConvolutionWorkspace. FFTW's planner is
+// not thread-safe, so every plan creation and destruction in wrc goes through one process-wide mutex;
+// execution uses FFTW's new-array interface, which is safe from several threads at once.
+#pragma once
+
+#include "wrc/contact/grid.hpp"
+#include "wrc/contact/influence.hpp"
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <tuple>
+#include <vector>
+
+namespace wrc::contact {
+
+// The periodic size of the exact (linear) convolution for n elements: the smallest M with
+// floor(M/2) >= n - 1 (every offset -(n-1)..n-1 has its own slot) among the sizes of fft_size.
+int padded_size(int n);
+// The smallest size >= n among 7-smooth sizes up to 16 and 2^a {1, 9/8, 5/4, 3/2, 7/4} above: fast for
+// FFTW, and few distinct sizes so that grids of similar shape share a spectrum.
+int fft_size(int n);
+
+// How hard FFTW's planner works: `measure` times candidate algorithms once per size (slower to build,
+// faster to run), `estimate` picks one by heuristics.
+enum class FftPlanning { estimate, measure };
+
+// Spectrum of the influence kernel of elements dx x dy on an Mx x My periodic grid, and its FFTW plans.
+// The kernel is embedded centred (slot s holds offset s for s <= M/2 and s - M above).
+//  - linear: Mx, My = padded_size(nx, ny); the circular convolution restricted to the grid is exactly
+//    the product with the influence matrix. Serves grids with nx - 1 <= Mx/2 and ny - 1 <= My/2. The
+//    transforms are pruned: rows beyond My/2 + 1 are known to be zero on the way in and are not needed
+//    on the way out, so the 2-D transform runs as batched row and column transforms.
+//  - periodic: Mx, My = fft_size(nx, ny); the grid itself made periodic. Its circulant inverse is the
+//    preconditioner of the normal solver (cheap: no padding). Serves grids with nx <= Mx, ny <= My.
+// Immutable once built.
+class InfluenceSpectrum {
+ public:
+  enum class Kind { linear, periodic };
+  InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, int My, FftPlanning planning = FftPlanning::estimate);
+  ~InfluenceSpectrum();
+  InfluenceSpectrum(const InfluenceSpectrum&) = delete;
+  InfluenceSpectrum& operator=(const InfluenceSpectrum&) = delete;
+
+  Kind kind() const { return kind_; }
+  int Mx() const { return Mx_; }
+  int My() const { return My_; }
+  double dx() const { return dx_; }
+  double dy() const { return dy_; }
+  bool serves(const Grid& grid) const;
+  int complex_size() const { return My_ * (Mx_ / 2 + 1); }
+  int pruned_rows() const { return rows_; }  // rows transformed along x (My/2 + 1 linear, My periodic)
+  // Eigenvalues of the circulant (m), times 1/(Mx My) for FFTW's unnormalised round trip; real because
+  // the kernel is even. `inverse` holds their reciprocals (times the same factor; clamped positive).
+  const std::vector<double>& eigenvalues() const { return eigen_; }
+  const std::vector<double>& inverse() const { return inverse_; }
+  double min_eigenvalue() const { return min_eigen_; }  // before clamping, unscaled (m)
+  // The coefficients I for offsets 0..Mx/2, 0..My/2 (for direct sums of a few elements).
+  const InfluenceTable& table() const { return table_; }
+
+  // Forward (real -> spectrum) and backward transforms of the workspace buffers.
+  void forward(double* in, void* spectrum) const;
+  void backward(void* spectrum, double* out) const;
+
+ private:
+  Kind kind_;
+  double dx_, dy_;
+  int Mx_, My_, rows_;
+  InfluenceTable table_;
+  std::vector<double> eigen_, inverse_;
+  double min_eigen_ = 0;
+  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  // fftw_plan: rows r2c, columns fwd, columns bwd, rows c2r
+};
+
+// Buffers of one thread for the FFT round trips (FFTW-aligned). Grows on demand; not shareable.
+class ConvolutionWorkspace {
+ public:
+  ConvolutionWorkspace() = default;
+  ~ConvolutionWorkspace();
+  ConvolutionWorkspace(const ConvolutionWorkspace&) = delete;
+  ConvolutionWorkspace& operator=(const ConvolutionWorkspace&) = delete;
+  ConvolutionWorkspace(ConvolutionWorkspace&& other) noexcept;
+  ConvolutionWorkspace& operator=(ConvolutionWorkspace&& other) noexcept;
+
+  // Makes room for a spectrum's transforms on `grid` and makes sure the input buffer is zero outside the
+  // grid's window (only the window is written afterwards).
+  void prepare(const InfluenceSpectrum& spectrum, const Grid& grid);
+  double* input() { return in_; }
+  double* output() { return out_; }
+  void* spectrum_buffer() { return spec_; }
+
+ private:
+  void release();
+  double* in_ = nullptr;
+  double* out_ = nullptr;
+  void* spec_ = nullptr;
+  std::size_t real_capacity_ = 0, complex_capacity_ = 0;
+  int Mx_ = 0, My_ = 0;  // shape of the data in `in_`: zero outside the nx_ x ny_ window
+  int nx_ = 0, ny_ = 0;
+};
+
+// u = scale * I * p: the 1/r integrals of the pressure field p over the grid at every element centre (units of p
+// times m); p and u are grid vectors (index i + nx j), u may alias p. Needs a linear spectrum serving the
+// grid (exact); with a periodic one it is the periodic approximation.
+void convolve(const InfluenceSpectrum& spectrum, const Grid& grid, const double* p, double* u,
+              ConvolutionWorkspace& workspace, double scale = 1.0);
+// z = scale * C^-1 r: the inverse of the spectrum's circulant applied to r, read back on the grid (the FFT
+// preconditioner of the normal solver); r and z grid vectors (z may alias r).
+void deconvolve(const InfluenceSpectrum& spectrum, const Grid& grid, const double* r, double* z,
+                ConvolutionWorkspace& workspace, double scale = 1.0);
+
+// Thread-safe store of spectra keyed by (kind, dx, dy, Mx, My), built on first use. Logically part of
+// an immutable model: get() is const. Holds at most max_entries (then starts afresh; spectra in use stay
+// alive through their shared owners).
+class InfluenceCache {
+ public:
+  explicit InfluenceCache(FftPlanning planning = FftPlanning::estimate, std::size_t max_entries = 128)
+      : planning_(planning), max_entries_(max_entries) {}
+  // The spectrum of the given kind for the grid's element size and shape (validates the grid).
+  std::shared_ptr<const InfluenceSpectrum> get(const Grid& grid,
+                                               InfluenceSpectrum::Kind kind = InfluenceSpectrum::Kind::linear) const;
+  std::size_t size() const;
+  FftPlanning planning() const { return planning_; }
+
+ private:
+  FftPlanning planning_;
+  std::size_t max_entries_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::tuple<int, double, double, int, int>, std::shared_ptr<const InfluenceSpectrum>> entries_;
+};
+
+}  // namespace wrc::contact

@@ -1,0 +1,263 @@
+// FFT convolution with the influence kernel (FFTW3, double precision).
+#include "wrc/contact/convolution.hpp"
+
+#include "wrc/contact/influence.hpp"
+#include "wrc/core/error.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace wrc::contact {
+namespace {
+
+// FFTW's planner (plan creation and destruction) keeps global state: one lock for all of wrc.
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
+
+int fft_size(int n) {
+  if (n < 1) fail("fft_size: {} points, expected at least 1", n);
+  for (long m = n; m <= 16; ++m) {
+    long r = m;
+    for (long f : {2, 3, 5, 7})
+      while (r % f == 0) r /= f;
+    if (r == 1) return static_cast<int>(m);
+  }
+  for (long base = 16;; base *= 2) {
+    for (long num : {8, 9, 10, 12, 14}) {  // 2^a {1, 9/8, 5/4, 3/2, 7/4}
+      const long m = base * num / 8;
+      if (m >= n) return static_cast<int>(m);
+    }
+  }
+}
+
+int padded_size(int n) {
+  if (n < 1) fail("padded_size: {} elements, expected at least 1", n);
+  return fft_size(std::max(1, 2 * n - 2));  // M >= 2n - 2 gives floor(M/2) >= n - 1
+}
+
+InfluenceSpectrum::InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, int My, FftPlanning planning)
+    : kind_(kind), dx_(dx), dy_(dy), Mx_(Mx), My_(My), rows_(kind == Kind::linear ? My / 2 + 1 : My),
+      table_(dx, dy, std::max(1, Mx / 2 + 1), std::max(1, My / 2 + 1)) {
+  if (Mx < 1 || My < 1) fail("InfluenceSpectrum: periodic size {} x {} must be positive", Mx, My);
+  const int H = Mx / 2 + 1;  // complex values per row of the r2c transform
+  const InfluenceTable& table = table_;
+  const std::size_t nreal = static_cast<std::size_t>(Mx) * My;
+  const std::size_t ncomplex = static_cast<std::size_t>(My) * H;
+  double* in = fftw_alloc_real(nreal);
+  double* out = fftw_alloc_real(nreal);
+  fftw_complex* spec = fftw_alloc_complex(ncomplex);
+  const auto free_buffers = [&] { fftw_free(in), fftw_free(out), fftw_free(spec); };
+  if (!in || !out || !spec) {
+    free_buffers();
+    fail("InfluenceSpectrum: cannot allocate FFT buffers for {} x {}", Mx, My);
+  }
+  fftw_plan full = nullptr;  // plain 2-D transform, for the kernel's spectrum only
+  {
+    // Row transforms (length Mx, contiguous) of the first rows_ rows, and column transforms (length My,
+    // stride H) of all H columns, in place in the complex buffer.
+    std::lock_guard lock(planner_mutex());
+    const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+    int nx = Mx, ny = My;
+    plans_[0] = fftw_plan_many_dft_r2c(1, &nx, rows_, in, nullptr, 1, Mx, spec, nullptr, 1, H, flags);
+    plans_[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
+    plans_[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
+    plans_[3] = fftw_plan_many_dft_c2r(1, &nx, rows_, spec, nullptr, 1, H, out, nullptr, 1, Mx, flags);
+    full = fftw_plan_dft_r2c_2d(My, Mx, in, spec, FFTW_ESTIMATE);
+  }
+  const auto destroy_full = [&] {
+    std::lock_guard lock(planner_mutex());
+    if (full) fftw_destroy_plan(full);
+  };
+  if (!full || !plans_[0] || !plans_[1] || !plans_[2] || !plans_[3]) {
+    destroy_full();
+    {
+      std::lock_guard lock(planner_mutex());
+      for (void* plan : plans_)
+        if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+    }
+    free_buffers();
+    fail("InfluenceSpectrum: FFTW could not plan a {} x {} transform", Mx, My);
+  }
+  for (int l = 0; l < My; ++l) {  // after planning: FFTW_MEASURE overwrites the buffers
+    const int n = std::min(l, My - l);
+    for (int k = 0; k < Mx; ++k) in[k + static_cast<std::size_t>(Mx) * l] = table(std::min(k, Mx - k), n);
+  }
+  fftw_execute(full);
+  destroy_full();
+  const double scale = 1.0 / static_cast<double>(nreal);
+  eigen_.resize(ncomplex);
+  inverse_.resize(ncomplex);
+  double largest = 0;
+  min_eigen_ = INFINITY;
+  for (std::size_t q = 0; q < ncomplex; ++q) {
+    largest = std::max(largest, spec[q][0]);
+    min_eigen_ = std::min(min_eigen_, spec[q][0]);
+  }
+  // The circulant of this positive, decreasing kernel is positive definite (checked in the tests); the
+  // clamp only guards the preconditioner against a tiny high-frequency eigenvalue.
+  const double floor = 1e-12 * largest;
+  for (std::size_t q = 0; q < ncomplex; ++q) {
+    eigen_[q] = spec[q][0] * scale;
+    inverse_[q] = scale / std::max(spec[q][0], floor);
+  }
+  free_buffers();
+}
+
+InfluenceSpectrum::~InfluenceSpectrum() {
+  std::lock_guard lock(planner_mutex());
+  for (void* plan : plans_)
+    if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+}
+
+bool InfluenceSpectrum::serves(const Grid& grid) const {
+  if (grid.dx != dx_ || grid.dy != dy_) return false;
+  if (kind_ == Kind::linear) return grid.nx - 1 <= Mx_ / 2 && grid.ny - 1 <= My_ / 2;
+  return grid.nx <= Mx_ && grid.ny <= My_;
+}
+
+void InfluenceSpectrum::forward(double* in, void* spectrum) const {
+  auto* spec = static_cast<fftw_complex*>(spectrum);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(plans_[0]), in, spec);
+  // Rows rows_..My-1 of the input are zero, so are their row transforms.
+  const std::size_t H = Mx_ / 2 + 1;
+  std::memset(static_cast<void*>(spec + H * rows_), 0, sizeof(fftw_complex) * H * (My_ - rows_));
+  fftw_execute_dft(static_cast<fftw_plan>(plans_[1]), spec, spec);
+}
+
+void InfluenceSpectrum::backward(void* spectrum, double* out) const {
+  auto* spec = static_cast<fftw_complex*>(spectrum);
+  fftw_execute_dft(static_cast<fftw_plan>(plans_[2]), spec, spec);
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(plans_[3]), spec, out);  // rows >= rows_ are not needed
+}
+
+ConvolutionWorkspace::~ConvolutionWorkspace() { release(); }
+
+ConvolutionWorkspace::ConvolutionWorkspace(ConvolutionWorkspace&& o) noexcept
+    : in_(o.in_), out_(o.out_), spec_(o.spec_), real_capacity_(o.real_capacity_),
+      complex_capacity_(o.complex_capacity_), Mx_(o.Mx_), My_(o.My_), nx_(o.nx_), ny_(o.ny_) {
+  o.in_ = o.out_ = nullptr;
+  o.spec_ = nullptr;
+  o.real_capacity_ = o.complex_capacity_ = 0;
+  o.Mx_ = o.My_ = o.nx_ = o.ny_ = 0;
+}
+
+ConvolutionWorkspace& ConvolutionWorkspace::operator=(ConvolutionWorkspace&& o) noexcept {
+  if (this != &o) {
+    release();
+    std::swap(in_, o.in_);
+    std::swap(out_, o.out_);
+    std::swap(spec_, o.spec_);
+    std::swap(real_capacity_, o.real_capacity_);
+    std::swap(complex_capacity_, o.complex_capacity_);
+    std::swap(Mx_, o.Mx_);
+    std::swap(My_, o.My_);
+    std::swap(nx_, o.nx_);
+    std::swap(ny_, o.ny_);
+  }
+  return *this;
+}
+
+void ConvolutionWorkspace::release() {
+  fftw_free(in_);
+  fftw_free(out_);
+  fftw_free(spec_);
+  in_ = out_ = nullptr;
+  spec_ = nullptr;
+  real_capacity_ = complex_capacity_ = 0;
+  Mx_ = My_ = nx_ = ny_ = 0;
+}
+
+void ConvolutionWorkspace::prepare(const InfluenceSpectrum& s, const Grid& grid) {
+  const std::size_t nreal = static_cast<std::size_t>(s.Mx()) * s.My();
+  const std::size_t ncomplex = static_cast<std::size_t>(s.complex_size());
+  if (nreal > real_capacity_ || ncomplex > complex_capacity_) {
+    release();
+    // fftw_alloc gives FFTW's SIMD alignment, the same as the buffers the plans were made with, as the
+    // new-array execute functions require.
+    in_ = fftw_alloc_real(nreal);
+    out_ = fftw_alloc_real(nreal);
+    spec_ = fftw_alloc_complex(ncomplex);
+    if (!in_ || !out_ || !spec_) {
+      release();
+      fail("ConvolutionWorkspace: cannot allocate FFT buffers for {} x {}", s.Mx(), s.My());
+    }
+    real_capacity_ = nreal;
+    complex_capacity_ = ncomplex;
+  }
+  if (Mx_ != s.Mx() || My_ != s.My() || grid.nx < nx_ || grid.ny < ny_) {
+    std::memset(in_, 0, nreal * sizeof(double));  // then only windows at least as large are written
+    Mx_ = s.Mx();
+    My_ = s.My();
+  }
+  nx_ = grid.nx;
+  ny_ = grid.ny;
+}
+
+namespace {
+
+// One round trip: window of `src` -> spectrum -> multiplied by `factor` -> window of `dst`.
+void round_trip(const InfluenceSpectrum& s, const Grid& grid, const double* src, double* dst,
+                const std::vector<double>& factor, double scale, ConvolutionWorkspace& ws) {
+  if (!s.serves(grid))
+    fail("convolve: spectrum {} x {} of {} x {} m elements does not serve a {} x {} grid of {} x {} m", s.Mx(),
+         s.My(), s.dx(), s.dy(), grid.nx, grid.ny, grid.dx, grid.dy);
+  ws.prepare(s, grid);
+  const int Mx = s.Mx(), nx = grid.nx, ny = grid.ny;
+  double* in = ws.input();
+  for (int j = 0; j < ny; ++j)
+    std::memcpy(in + static_cast<std::size_t>(Mx) * j, src + static_cast<std::size_t>(nx) * j, nx * sizeof(double));
+  auto* spec = static_cast<fftw_complex*>(ws.spectrum_buffer());
+  s.forward(in, spec);
+  const double* f = factor.data();
+  const int nc = s.complex_size();
+  for (int q = 0; q < nc; ++q) {
+    const double fq = scale * f[q];
+    spec[q][0] *= fq;
+    spec[q][1] *= fq;
+  }
+  double* out = ws.output();
+  s.backward(spec, out);
+  for (int j = 0; j < ny; ++j)
+    std::memcpy(dst + static_cast<std::size_t>(nx) * j, out + static_cast<std::size_t>(Mx) * j, nx * sizeof(double));
+}
+
+}  // namespace
+
+void convolve(const InfluenceSpectrum& s, const Grid& grid, const double* p, double* u, ConvolutionWorkspace& ws,
+              double scale) {
+  round_trip(s, grid, p, u, s.eigenvalues(), scale, ws);
+}
+
+void deconvolve(const InfluenceSpectrum& s, const Grid& grid, const double* r, double* z, ConvolutionWorkspace& ws,
+                double scale) {
+  round_trip(s, grid, r, z, s.inverse(), scale, ws);
+}
+
+std::shared_ptr<const InfluenceSpectrum> InfluenceCache::get(const Grid& grid, InfluenceSpectrum::Kind kind) const {
+  validate(grid, "InfluenceCache");
+  const bool linear = kind == InfluenceSpectrum::Kind::linear;
+  const auto key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy,
+                                   linear ? padded_size(grid.nx) : fft_size(grid.nx),
+                                   linear ? padded_size(grid.ny) : fft_size(grid.ny));
+  std::lock_guard lock(mutex_);
+  if (auto it = entries_.find(key); it != entries_.end()) return it->second;
+  if (entries_.size() >= max_entries_) entries_.clear();  // spectra in use stay alive through their owners
+  auto spectrum = std::make_shared<const InfluenceSpectrum>(kind, grid.dx, grid.dy, std::get<3>(key),
+                                                            std::get<4>(key), planning_);
+  entries_.emplace(key, spectrum);
+  return spectrum;
+}
+
+std::size_t InfluenceCache::size() const {
+  std::lock_guard lock(mutex_);
+  return entries_.size();
+}
+
+}  // namespace wrc::contact
