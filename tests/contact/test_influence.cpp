@@ -1,0 +1,274 @@
+// Love's influence coefficients and the FFT products built on them.
+#include "wrc/contact/convolution.hpp"
+#include "wrc/contact/influence.hpp"
+#include "wrc/core/error.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <thread>
+#include <vector>
+
+using namespace wrc::contact;
+
+namespace {
+
+// Independent quadrature of the 1/r integral over [-a, a] x [-b, b] seen from (x, y): in polar coordinates
+// about the field point, the integral over the rectangle is the integral over the direction angle of the
+// length of the ray's chord inside it (dA / r = dr dtheta). The chord is found by slab clipping and the
+// angle integral by Gauss-Legendre on pieces between the corner directions (where the chord has kinks).
+double potential_by_rays(double x, double y, double a, double b) {
+  const auto chord = [&](double t) {
+    const double c = std::cos(t), s = std::sin(t);
+    double lo = 0, hi = INFINITY;
+    const auto slab = [&](double origin, double dir, double min, double max) {
+      if (std::abs(dir) < 1e-300) {
+        if (origin < min || origin > max) hi = -1;
+        return;
+      }
+      double t0 = (min - origin) / dir, t1 = (max - origin) / dir;
+      if (t0 > t1) std::swap(t0, t1);
+      lo = std::max(lo, t0);
+      hi = std::min(hi, t1);
+    };
+    slab(x, c, -a, a);
+    slab(y, s, -b, b);
+    return hi > lo ? hi - lo : 0.0;
+  };
+  std::vector<double> cuts = {-std::numbers::pi, std::numbers::pi};
+  for (double cx : {-a, a})
+    for (double cy : {-b, b})
+      if (cx != x || cy != y) cuts.push_back(std::atan2(cy - y, cx - x));
+  std::sort(cuts.begin(), cuts.end());
+  // 20-point Gauss-Legendre nodes and weights on [-1, 1] (computed by Newton on P_20).
+  constexpr int n = 20;
+  double nodes[n], weights[n];
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const double pk = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = pk;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1);
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::abs(dz) < 1e-16) break;
+    }
+    nodes[i] = z;
+    weights[i] = 2 / ((1 - z * z) * dp * dp);
+  }
+  double total = 0;
+  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    const double t0 = cuts[c], t1 = cuts[c + 1];
+    if (t1 - t0 < 1e-15) continue;
+    constexpr int sub = 8;  // sub-intervals per piece
+    for (int s = 0; s < sub; ++s) {
+      const double u0 = t0 + (t1 - t0) * s / sub, u1 = t0 + (t1 - t0) * (s + 1) / sub;
+      for (int i = 0; i < n; ++i) total += 0.5 * (u1 - u0) * weights[i] * chord(0.5 * (u0 + u1) + 0.5 * (u1 - u0) * nodes[i]);
+    }
+  }
+  return total;
+}
+
+// Direct product u_k = sum_l I(x_k - x_l, y_k - y_l) p_l with rectangle_potential itself.
+std::vector<double> direct_product(const Grid& g, const std::vector<double>& p) {
+  std::vector<double> u(g.size(), 0.0);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      for (int l = 0; l < g.ny; ++l)
+        for (int k = 0; k < g.nx; ++k)
+          u[g.index(i, j)] +=
+              rectangle_potential((i - k) * g.dx, (j - l) * g.dy, 0.5 * g.dx, 0.5 * g.dy) * p[g.index(k, l)];
+  return u;
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("centre displacement of a uniformly loaded square: 8 a ln(1 + sqrt 2) (1 - nu^2) p / (pi E)") {
+  const Material m{2.1e11, 0.3};
+  for (double a : {1e-4, 2.5e-3, 1.0}) {
+    const double p = 1e9;
+    const double expected = 8 * a * std::log(1 + std::sqrt(2.0)) * (1 - m.nu * m.nu) * p / (std::numbers::pi * m.E);
+    CHECK(rectangle_displacement(m, 0, 0, a, a, p) == doctest::Approx(expected).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("Love's closed form agrees with an independent quadrature inside, on edges, at corners, outside") {
+  const double a = 0.7e-3, b = 0.3e-3;
+  const double points[][2] = {{0, 0},         {0.2e-3, -0.1e-3}, {a, 0},        {0, -b},       {a, b},
+                              {-a, b},        {1.5e-3, 0.2e-3},  {-3e-3, 4e-3}, {0.69e-3, 0},  {2e-2, -1e-2},
+                              {0.5e-3, 0.3e-3}};
+  for (const auto& pt : points) {
+    const double exact = rectangle_potential(pt[0], pt[1], a, b);
+    const double quad = potential_by_rays(pt[0], pt[1], a, b);
+    CAPTURE(pt[0]);
+    CAPTURE(pt[1]);
+    CHECK(exact == doctest::Approx(quad).epsilon(1e-11));
+  }
+}
+
+TEST_CASE("influence function symmetries") {
+  const double a = 0.4e-3, b = 0.25e-3;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-3e-3, 3e-3);
+  for (int t = 0; t < 100; ++t) {
+    const double x = U(rng), y = U(rng);
+    const double v = rectangle_potential(x, y, a, b);
+    CHECK(v > 0);
+    CHECK(rectangle_potential(-x, y, a, b) == doctest::Approx(v).epsilon(1e-13));
+    CHECK(rectangle_potential(x, -y, a, b) == doctest::Approx(v).epsilon(1e-13));
+    CHECK(rectangle_potential(y, x, b, a) == doctest::Approx(v).epsilon(1e-13));  // transpose
+  }
+  // Superposition: the 2a x 2b rectangle is the sum of its four quarters.
+  for (int t = 0; t < 20; ++t) {
+    const double x = U(rng), y = U(rng);
+    const double whole = rectangle_potential(x, y, a, b);
+    const double quarters = rectangle_potential(x - a / 2, y - b / 2, a / 2, b / 2) +
+                            rectangle_potential(x + a / 2, y - b / 2, a / 2, b / 2) +
+                            rectangle_potential(x - a / 2, y + b / 2, a / 2, b / 2) +
+                            rectangle_potential(x + a / 2, y + b / 2, a / 2, b / 2);
+    CHECK(whole == doctest::Approx(quarters).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("far field tends to Boussinesq's point load, with the quadrupole correction") {
+  const Material m{2.1e11, 0.3};
+  const double a = 0.1e-3, b = 0.1e-3, p = 1e9;
+  const double F = 4 * a * b * p;
+  double previous = INFINITY;
+  for (double r : {5 * a, 20 * a, 80 * a, 320 * a}) {
+    const double x = 0.6 * r, y = 0.8 * r;
+    const double boussinesq = (1 - m.nu * m.nu) * F / (std::numbers::pi * m.E * r);
+    const double u = rectangle_displacement(m, x, y, a, b, p);
+    const double relative = std::abs(u / boussinesq - 1);
+    CHECK(relative < previous / 10);  // decays like (a/r)^2: 16x per step of 4x
+    previous = relative;
+    // Second-order multipole term of 1/|r - s| integrated over the rectangle.
+    const double quad = (x * x * a * a + y * y * b * b - r * r * (a * a + b * b) / 3) / (2 * std::pow(r, 4));
+    CHECK(std::abs(u / boussinesq - 1 - quad) < 10 * std::pow(a / r, 4));
+  }
+}
+
+TEST_CASE("InfluenceTable holds the coefficients of the grid offsets") {
+  const InfluenceTable t(0.2e-3, 0.3e-3, 9, 7);
+  for (int n = -6; n <= 6; ++n)
+    for (int m = -8; m <= 8; ++m)
+      CHECK(t(m, n) == doctest::Approx(rectangle_potential(m * 0.2e-3, n * 0.3e-3, 0.1e-3, 0.15e-3)).epsilon(1e-13));
+  CHECK_THROWS_AS(InfluenceTable(0, 1e-3, 3, 3), wrc::Error);
+  CHECK_THROWS_AS(InfluenceTable(1e-3, NAN, 3, 3), wrc::Error);
+}
+
+TEST_CASE("padded and FFT sizes") {
+  for (int n = 1; n < 3000; ++n) {
+    const int M = padded_size(n), P = fft_size(n);
+    CHECK(M / 2 >= n - 1);
+    CHECK(P >= n);
+    for (int v : {M, P}) {
+      int r = v;
+      for (int f : {2, 3, 5, 7})
+        while (r % f == 0) r /= f;
+      CHECK(r == 1);
+    }
+    CHECK(P <= std::max(16, n * 6 / 5 + 1));  // at most 1/5 larger
+  }
+}
+
+TEST_CASE("FFT product equals the direct product with the influence coefficients") {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-1, 1);
+  InfluenceCache cache;
+  ConvolutionWorkspace ws;  // one workspace across shapes: stale data must not leak between them
+  const int shapes[][2] = {{1, 1}, {1, 9}, {9, 1}, {2, 2}, {7, 5}, {16, 16}, {13, 4}, {5, 17}, {24, 11}, {3, 3}};
+  for (const auto& sh : shapes) {
+    for (double dy : {0.2e-3, 0.35e-3}) {
+      Grid g;
+      g.nx = sh[0];
+      g.ny = sh[1];
+      g.dx = 0.2e-3;
+      g.dy = dy;
+      std::vector<double> p(g.size()), u(g.size());
+      for (double& v : p) v = U(rng);
+      const auto spectrum = cache.get(g);
+      REQUIRE(spectrum->serves(g));
+      convolve(*spectrum, g, p.data(), u.data(), ws);
+      const auto direct = direct_product(g, p);
+      std::vector<double> diff(g.size());
+      for (int k = 0; k < g.size(); ++k) diff[k] = u[k] - direct[k];
+      CAPTURE(g.nx);
+      CAPTURE(g.ny);
+      CHECK(max_abs(diff) < 1e-12 * max_abs(direct));
+    }
+  }
+}
+
+TEST_CASE("the circulants are positive definite (the preconditioner needs it)") {
+  InfluenceCache cache;
+  for (double ratio : {1.0, 0.5, 2.0, 0.1, 10.0})
+    for (int n : {1, 2, 5, 16, 33, 100}) {
+      Grid g;
+      g.nx = n;
+      g.ny = std::max(1, n / 2);
+      g.dx = 0.2e-3;
+      g.dy = 0.2e-3 * ratio;
+      for (auto kind : {InfluenceSpectrum::Kind::linear, InfluenceSpectrum::Kind::periodic}) {
+        const auto s = cache.get(g, kind);
+        CAPTURE(n);
+        CAPTURE(ratio);
+        CHECK(s->min_eigenvalue() > 0);
+      }
+    }
+}
+
+TEST_CASE("cache: spectra shared by shape, products identical from several threads") {
+  InfluenceCache cache;
+  Grid a = Grid::square(30, 20, 0.2e-3), b = Grid::square(32, 19 + 1, 0.2e-3), c = Grid::square(30, 20, 0.25e-3);
+  REQUIRE(padded_size(30) == padded_size(32));
+  CHECK(cache.get(a) == cache.get(b));  // same padded shape
+  CHECK(cache.get(a) != cache.get(c));  // another element size
+  CHECK(cache.size() == 2);
+  CHECK_THROWS_AS(cache.get(Grid{}), wrc::Error);
+
+  std::vector<Grid> grids;
+  for (int k = 0; k < 6; ++k) grids.push_back(Grid::square(10 + 7 * k, 30 - 3 * k, 0.2e-3));
+  std::vector<std::vector<double>> inputs, expected;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  {
+    ConvolutionWorkspace ws;
+    for (const Grid& g : grids) {
+      std::vector<double> p(g.size()), u(g.size());
+      for (double& v : p) v = U(rng);
+      convolve(*cache.get(g), g, p.data(), u.data(), ws);
+      inputs.push_back(p);
+      expected.push_back(u);
+    }
+  }
+  InfluenceCache shared;  // fresh: the threads also race to build the spectra
+  std::vector<int> mismatches(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      ConvolutionWorkspace ws;
+      for (int rep = 0; rep < 20; ++rep)
+        for (std::size_t k = 0; k < grids.size(); ++k) {
+          const std::size_t which = (k + t + rep) % grids.size();
+          std::vector<double> u(grids[which].size());
+          convolve(*shared.get(grids[which]), grids[which], inputs[which].data(), u.data(), ws);
+          if (u != expected[which]) ++mismatches[t];
+        }
+    });
+  for (auto& th : threads) th.join();
+  for (int m : mismatches) CHECK(m == 0);
+}
