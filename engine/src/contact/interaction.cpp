@@ -55,10 +55,30 @@ double interaction_ratio(const Material& material, const PatchFootprint& source,
   return 1.5 * w / target.penetration;
 }
 
+PatchInteraction patch_interaction(const Material& material, const PatchFootprint& a, const PatchFootprint& b) {
+  const double rho_ab = interaction_ratio(material, a, b) / 1.5;  // w at b from a's separate force, over delta_b
+  const double rho_ba = interaction_ratio(material, b, a) / 1.5;
+  const auto kept = [](double rho) { return rho < 1 ? std::pow(1 - rho, 1.5) : 0.0; };  // F'/F at w = rho delta
+  // fa = kept(rho_ba fb), fb = kept(rho_ab fa): fa -> kept(rho_ba kept(rho_ab fa)) is increasing, so
+  // iterating from 1 decreases monotonically to the largest fixed point.
+  double fa = 1, fb = 1;
+  for (int it = 0; it < 1000; ++it) {
+    fb = kept(rho_ab * fa);
+    const double next = kept(rho_ba * fb);
+    const bool done = std::abs(next - fa) < 1e-14;
+    fa = next;
+    if (done) break;
+  }
+  fb = kept(rho_ab * fa);
+  return {1 - fa, 1 - fb};
+}
+
 bool patches_interact(const Material& material, const PatchFootprint& a, const PatchFootprint& b, double tolerance) {
   if (!std::isfinite(tolerance) || !(tolerance > 0))
     fail("patch interaction: tolerance {} must be finite and positive", tolerance);
-  return interaction_ratio(material, a, b) > tolerance || interaction_ratio(material, b, a) > tolerance;
+  const PatchInteraction i = patch_interaction(material, a, b);
+  const bool overlap = std::abs(a.x - b.x) < a.half_length + b.half_length && std::abs(a.y - b.y) < a.half_width + b.half_width;
+  return overlap || std::max(i.change_a, i.change_b) > tolerance;
 }
 
 }  // namespace wrc::contact

@@ -35,13 +35,24 @@ struct PatchFootprint {
 // (the contact of a paraboloid has 1/sqrt(2) the radius of its inter-penetration area), F = 4/3 E* a delta.
 double estimated_force(const Material& material, const PatchFootprint& patch);
 
-// Predicted relative change of the target's normal force at prescribed penetration caused by the source
-// patch's pressure (eps above, >= 0): how wrong the target's force is when the two are solved apart.
-// Throws wrc::Error on non-finite or non-positive sizes, depth or a negative force.
+// First-order relative change of the target's normal force at prescribed penetration caused by the
+// source patch's pressure (eps above, >= 0). Conservative: it ignores that the joint solve unloads the
+// source too and that F ~ delta^(3/2) flattens. Throws wrc::Error on non-finite or non-positive sizes,
+// depth or a negative force.
 double interaction_ratio(const Material& material, const PatchFootprint& source, const PatchFootprint& target);
 
-// True when either patch changes the other's force by more than `tolerance` (relative, e.g. 0.01), i.e.
-// when they should be merged into one potential contact area and solved together.
+// Predicted relative force changes (>= 0, <= 1) of each patch when the two are solved together instead of
+// apart: each patch's approach is reduced by the displacement the other induces, w_t = rho_st delta_t
+// (rho_st = 2/3 eps_st, for the other's force in the joint solve), and a Hertz-like patch keeps
+// F' / F = (1 - w/delta)^(3/2). The pair of equations is solved by fixed-point iteration (monotone).
+struct PatchInteraction {
+  double change_a = 0, change_b = 0;
+};
+PatchInteraction patch_interaction(const Material& material, const PatchFootprint& a, const PatchFootprint& b);
+
+// True when the patches' inter-penetration rectangles overlap, or when solving them apart would change
+// either force by more than `tolerance` (relative, e.g. 0.01) according to patch_interaction: then they
+// should be merged into one potential contact area and solved together.
 bool patches_interact(const Material& material, const PatchFootprint& a, const PatchFootprint& b,
                       double tolerance = 0.01);
 
