@@ -1,8 +1,11 @@
-// wrc.wheelset{...}: the assembled wheelset and track model, and its per-pose methods.
+// wrc.wheelset{...}: the assembled wheelset and track model, its discretised geometry, and its per-pose methods.
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"
 #include "lua/profile_binding.hpp"
+#include "lua/strategy_binding.hpp"
+#include "wrc/geometry/location.hpp"
+#include "wrc/geometry/model.hpp"
 #include "wrc/geometry/track.hpp"
 
 #include <memory>
@@ -12,8 +15,15 @@ namespace {
 
 const char* const kWheelsetType = "wrc.Wheelset";
 
+// The strategy used when wrc.wheelset is given none (scripts/strategies/<name>.lua; README "Strategies").
+const char* const kDefaultStrategy = "fast";
+
 struct Wheelset {
   std::shared_ptr<const Track> track;
+  std::shared_ptr<const GeometryModel> model;
+  std::unique_ptr<LuaSearch> search;  // the strategy's locate, in the state that built the wheelset
+  LocationState state;                // the last pose located by ws:contact
+  bool located = false;
 };
 
 std::shared_ptr<const Profile> profile_field(lua_State* L, int idx, const char* key, const char* fallback_key,
@@ -30,6 +40,56 @@ std::shared_ptr<const Profile> profile_field(lua_State* L, int idx, const char* 
   auto p = check_shared<const Profile>(L, -1, kProfileType, fmt::format("{}: '{}'", ctx, key));
   lua_pop(L, 1);
   return p;
+}
+
+// Calls strategy.discretise{side=, wheel=, rail=} (strategy table at index st) and reads what it returns.
+SideDiscretisation discretise_side(lua_State* L, int st, int side, const Profile& wheel, const Profile& rail,
+                                   const std::string& name) {
+  const std::string ctx = fmt::format("strategy '{}': discretise ({} side)", name, side_name(side));
+  lua_getfield(L, st, "discretise");
+  if (!lua_isfunction(L, -1)) {
+    lua_pop(L, 1);
+    fail("{}: the strategy table has no discretise function", ctx);
+  }
+  lua_createtable(L, 0, 3);
+  set_string(L, "side", side_name(side));
+  push_profile(L, std::make_shared<const Profile>(wheel));
+  lua_setfield(L, -2, "wheel");
+  push_profile(L, std::make_shared<const Profile>(rail));
+  lua_setfield(L, -2, "rail");
+  if (pcall_traceback(L, 1, 1) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+    lua_pop(L, 1);
+    fail("{}: {}", ctx, msg);
+  }
+  const int d = lua_gettop(L);
+  if (!lua_istable(L, d)) {
+    lua_pop(L, 1);
+    fail("{}: must return a table {{wheel =, rail =, coarse =}}", ctx);
+  }
+  SideDiscretisation out;
+  lua_getfield(L, d, "wheel");
+  out.wheel = *check_profile(L, -1, ctx + " result 'wheel'");
+  lua_pop(L, 1);
+  lua_getfield(L, d, "rail");
+  out.rail = *check_profile(L, -1, ctx + " result 'rail'");
+  lua_pop(L, 1);
+  lua_getfield(L, d, "coarse");
+  if (!lua_isnil(L, -1)) {
+    const int c = lua_gettop(L);
+    check_table(L, c, ctx + " result 'coarse'");
+    check_keys(L, c, ctx + " result 'coarse'", {"every", "wheel", "wheel_step"});
+    const double every = need_number(L, c, "every", ctx + " result 'coarse'");
+    if (every != static_cast<int>(every) || every < 2)
+      fail("{}: coarse.every must be an integer >= 2, got {}", ctx, every);
+    out.coarse_every = static_cast<int>(every);
+    out.coarse_wheel_step = get_number(L, c, "wheel_step", out.coarse_wheel_step, ctx + " result 'coarse'");
+    lua_getfield(L, c, "wheel");
+    if (!lua_isnil(L, -1)) out.coarse_wheel = *check_profile(L, -1, ctx + " result 'coarse.wheel'");
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 2);  // coarse, result
+  return out;
 }
 
 int wheelset_new(lua_State* L) {
@@ -51,6 +111,22 @@ int wheelset_new(lua_State* L) {
                                *profile_field(L, 1, "right_rail", "rail", ctx)};
   auto ws = std::make_shared<Wheelset>();
   ws->track = std::make_shared<const Track>(assemble_track(wheels, rails, tp));
+
+  // Strategy: resolve, discretise both sides, build the geometry.
+  lua_getfield(L, 1, "strategy");
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    lua_pushstring(L, kDefaultStrategy);
+  }
+  StrategyInfo info = resolve_strategy(L, -1);
+  const int st = lua_gettop(L);
+  std::array<SideDiscretisation, 2> sides;
+  for (int s : {kLeft, kRight}) sides[s] = discretise_side(L, st, s, wheels[s], rails[s], info.name);
+  attach_search_factory(info);
+  ws->model = std::make_shared<const GeometryModel>(build_geometry(ws->track, sides, std::move(info)));
+  lua_pushvalue(L, st);
+  ws->search = std::make_unique<LuaSearch>(L, false);  // pops the copy
+  lua_pop(L, 2);                                        // strategy table, strategy value
   push_shared(L, std::move(ws), kWheelsetType);
   return 1;
 }
@@ -64,6 +140,171 @@ void push_placed(lua_State* L, const std::vector<double>& y, const std::vector<d
   lua_setfield(L, -2, "z");
   set_string(L, "kind", kind);
   set_string(L, "frame", frame);
+}
+
+int check_side_arg(lua_State* L, int idx, const char* what) {
+  if (lua_type(L, idx) == LUA_TSTRING) {
+    const std::string_view s = lua_tostring(L, idx);
+    if (s == "left") return kLeft;
+    if (s == "right") return kRight;
+  }
+  fail("{}: side must be \"left\" or \"right\"", what);
+}
+
+// ---- the contact result (DESIGN.md section 5). One place builds it, so later stages add their fields here. ----
+
+void push_segment(lua_State* L, const Segment& s) {
+  lua_createtable(L, 0, 7);
+  set_integer(L, "line", s.line + 1);
+  set_number(L, "y", s.y);
+  set_number(L, "z", s.z);
+  set_number(L, "x_t", s.x_t);
+  set_number(L, "x_l", s.x_l);
+  lua_createtable(L, 2, 0);
+  lua_pushinteger(L, s.cone_t + 1);
+  lua_rawseti(L, -2, 1);
+  lua_pushinteger(L, s.cone_l + 1);
+  lua_rawseti(L, -2, 2);
+  lua_setfield(L, -2, "cones");
+}
+
+void push_patch(lua_State* L, const LocationState& st, const Patch& p) {
+  lua_createtable(L, 0, 14);
+  set_string(L, "side", side_name(p.side));
+  push_vec3(L, p.point);
+  lua_setfield(L, -2, "point");
+  push_vec3(L, p.normal);
+  lua_setfield(L, -2, "normal");
+  push_vec3(L, p.wheel_point);
+  lua_setfield(L, -2, "wheel_point");
+  set_integer(L, "cone", p.cone + 1);
+  set_number(L, "eps", p.eps);
+  set_number(L, "wheel_radius", p.wheel_radius);
+  set_number(L, "depth", p.depth);
+  set_integer(L, "first_line", p.first_line + 1);
+  set_integer(L, "last_line", p.last_line + 1);
+  set_integer(L, "longest", p.longest - p.first_segment + 1);
+  const auto& segs = st.segments(p.side);
+  lua_createtable(L, p.segment_count, 0);
+  for (int i = 0; i < p.segment_count; ++i) {
+    push_segment(L, segs[p.first_segment + i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+  lua_setfield(L, -2, "segments");
+}
+
+void push_counters(lua_State* L, const SearchCounters& c) {
+  set_integer(L, "tests", c.tests);
+  set_integer(L, "coarse_tests", c.coarse_tests);
+  set_integer(L, "bounds", c.bounds);
+  set_integer(L, "lines_visited", c.lines);
+}
+
+// c = {left = {patches = {...}, tests = ...}, right = {...}, pose = {...}, tests = <both sides>}
+void push_contact(lua_State* L, const GeometryModel&, const LocationState& st) {
+  lua_createtable(L, 0, 4);
+  long long tests = 0;
+  for (int s : {kLeft, kRight}) {
+    lua_createtable(L, 0, 6);
+    const auto& patches = st.patches(s);
+    lua_createtable(L, static_cast<int>(patches.size()), 0);
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+      push_patch(L, st, patches[i]);
+      lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(L, -2, "patches");
+    push_counters(L, st.counters(s));
+    set_integer(L, "grazes", st.grazes_dropped(s));
+    tests += st.counters(s).tests;
+    lua_setfield(L, -2, side_name(s));
+  }
+  lua_createtable(L, 0, 4);
+  set_number(L, "y", st.pose().y);
+  set_number(L, "z", st.pose().z);
+  set_number(L, "roll", st.pose().roll);
+  set_number(L, "yaw", st.pose().yaw);
+  lua_setfield(L, -2, "pose");
+  set_integer(L, "tests", tests);
+}
+
+// ws:contact{y=, z=, roll=, yaw=, search = "strategy" | "brute"}
+int wheelset_contact(lua_State* L) {
+  const char* ctx = "wheelset:contact";
+  const auto& ws = check_shared<Wheelset>(L, 1, kWheelsetType, ctx);
+  check_table(L, 2, ctx);
+  check_keys(L, 2, ctx, {"y", "z", "roll", "yaw", "search"});
+  Pose pose;
+  pose.y = get_number(L, 2, "y", 0.0, ctx);
+  pose.z = get_number(L, 2, "z", 0.0, ctx);
+  pose.roll = get_number(L, 2, "roll", 0.0, ctx);
+  pose.yaw = get_number(L, 2, "yaw", 0.0, ctx);
+  const std::string search = opt_string(L, 2, "search", ctx).value_or("strategy");
+  if (search == "strategy") {
+    ws->search->set_thread(L);
+    locate_contact(*ws->model, pose, ws->state, *ws->search);
+  } else if (search == "brute") {  // the reference: every line against every cone of the same discretisation
+    NativeSearch brute({false, NativePlan::Scan::test});
+    locate_contact(*ws->model, pose, ws->state, brute);
+  } else {
+    fail("{}: search must be \"strategy\" or \"brute\", got \"{}\"", ctx, search);
+  }
+  ws->located = true;
+  push_contact(L, *ws->model, ws->state);
+  return 1;
+}
+
+// ws:cones(side) -> {y = {...}, z = {...}, count = n}: generatrix points of the discretised wheel (wheelset frame,
+// z = -radius; the first and last are the closing points on the axle). Cone k joins points k and k + 1.
+int wheelset_cones(lua_State* L) {
+  const auto& ws = check_shared<Wheelset>(L, 1, kWheelsetType, "wheelset:cones");
+  const WheelCones& w = ws->model->side[check_side_arg(L, 2, "wheelset:cones")].wheel;
+  push_placed(L, w.y, w.z, "wheel", "wheelset");
+  set_integer(L, "count", w.cone_count());
+  return 1;
+}
+
+// ws:lines(side) -> {y = {...}, z = {...}, count = n}: the rail lines (track frame).
+int wheelset_lines(lua_State* L) {
+  const auto& ws = check_shared<Wheelset>(L, 1, kWheelsetType, "wheelset:lines");
+  const RailLines& r = ws->model->side[check_side_arg(L, 2, "wheelset:lines")].rail;
+  push_placed(L, r.y, r.z, "rail", "track");
+  set_integer(L, "count", r.count());
+  return 1;
+}
+
+// ws:coarse(side) -> nil or {wheel = {y, z}, lines = {y, z}, dilation = m, every = n, cells = {{first, last}, ...}}
+int wheelset_coarse(lua_State* L) {
+  const auto& ws = check_shared<Wheelset>(L, 1, kWheelsetType, "wheelset:coarse");
+  const SideGeometry& g = ws->model->side[check_side_arg(L, 2, "wheelset:coarse")];
+  if (!g.coarse) {
+    lua_pushnil(L);
+    return 1;
+  }
+  const CoarseLevel& c = *g.coarse;
+  lua_createtable(L, 0, 5);
+  push_placed(L, c.wheel.y, c.wheel.z, "wheel", "wheelset");
+  lua_setfield(L, -2, "wheel");
+  push_placed(L, c.lines.y, c.lines.z, "rail", "track");
+  lua_setfield(L, -2, "lines");
+  set_number(L, "dilation", c.dilation);
+  set_integer(L, "every", c.every);
+  lua_createtable(L, static_cast<int>(c.cell_first.size()), 0);
+  for (std::size_t i = 0; i < c.cell_first.size(); ++i) {
+    lua_createtable(L, 2, 0);
+    lua_pushinteger(L, c.cell_first[i] + 1);
+    lua_rawseti(L, -2, 1);
+    lua_pushinteger(L, c.cell_last[i] + 1);
+    lua_rawseti(L, -2, 2);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "cells");
+  return 1;
+}
+
+int wheelset_gc(lua_State* L) {
+  auto* p = static_cast<std::shared_ptr<Wheelset>*>(lua_touserdata(L, 1));
+  if (p && *p && (*p)->search) (*p)->search->release(L);
+  return gc_shared<Wheelset>(L);
 }
 
 int wheelset_index(lua_State* L) {
@@ -103,6 +344,35 @@ int wheelset_index(lua_State* L) {
       set_number(L, "cant", t.params.cant);
       return 1;
     }
+    if (key == "strategy") {
+      const StrategyInfo& si = ws->model->strategy;
+      lua_createtable(L, 0, 4);
+      set_string(L, "name", si.name);
+      set_bool(L, "portable", si.portable);
+      lua_createtable(L, static_cast<int>(si.components.size()), 0);
+      for (std::size_t i = 0; i < si.components.size(); ++i) {
+        lua_pushstring(L, si.components[i].c_str());
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+      }
+      lua_setfield(L, -2, "components");
+      lua_createtable(L, 0, static_cast<int>(si.options.size()));
+      for (const auto& [k, v] : si.options) {
+        if (const double* d = std::get_if<double>(&v)) lua_pushnumber(L, *d);
+        else if (const std::string* s = std::get_if<std::string>(&v)) lua_pushstring(L, s->c_str());
+        else lua_pushboolean(L, std::get<bool>(v));
+        lua_setfield(L, -2, k.c_str());
+      }
+      lua_setfield(L, -2, "options");
+      return 1;
+    }
+    if (key == "tests") {  // work of the last ws:contact: closed-form tests per side
+      if (!ws->located) return lua_pushnil(L), 1;
+      lua_createtable(L, 0, 3);
+      set_integer(L, "left", ws->state.counters(kLeft).tests);
+      set_integer(L, "right", ws->state.counters(kRight).tests);
+      set_integer(L, "total", ws->state.counters(kLeft).tests + ws->state.counters(kRight).tests);
+      return 1;
+    }
   }
   luaL_getmetatable(L, kWheelsetType);
   lua_getfield(L, -1, "methods");
@@ -113,16 +383,27 @@ int wheelset_index(lua_State* L) {
 
 }  // namespace
 
+std::shared_ptr<const GeometryModel> wheelset_model(lua_State* L, int idx) {
+  return check_shared<Wheelset>(L, idx, kWheelsetType, "wheelset_model")->model;
+}
+
 void open_wheelset(lua_State* L) {
   if (luaL_newmetatable(L, kWheelsetType)) {
-    const luaL_Reg meta[] = {{"__gc", gc_shared<Wheelset>}, {"__index", guarded<wheelset_index>}, {nullptr, nullptr}};
+    const luaL_Reg meta[] = {{"__gc", wheelset_gc}, {"__index", guarded<wheelset_index>}, {nullptr, nullptr}};
     luaL_setfuncs(L, meta, 0);
     lua_newtable(L);
+    const luaL_Reg methods[] = {{"contact", guarded<wheelset_contact>},
+                                {"cones", guarded<wheelset_cones>},
+                                {"lines", guarded<wheelset_lines>},
+                                {"coarse", guarded<wheelset_coarse>},
+                                {nullptr, nullptr}};
+    luaL_setfuncs(L, methods, 0);
     lua_setfield(L, -2, "methods");
   }
   lua_pop(L, 1);
   lua_pushcfunction(L, guarded<wheelset_new>);
   lua_setfield(L, -2, "wheelset");
+  open_geometry(L);  // wrc.geometry: the strategies' helpers
 }
 
 }  // namespace wrc::lua

@@ -1,0 +1,179 @@
+// Contact location benchmark: time per wheelset pose (both wheels) of each strategy on S1002 / 60E1 at the
+// paper's 0.1 mm sampling, the ratio to brute force in the same run, the Lua-driven strategy against the same
+// pipeline run natively, and a check of every strategy against brute force on its own discretisation.
+//
+//   bench_contact_location [poses=300] [brute_poses=12] [check_poses=100] [reps=5] [seed=1]
+//
+// Poses: |y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad, deepest penetration log-uniform in 1 um .. 1 mm (as the
+// tests). Times are the best of `reps` passes over the pose set (the machine is shared), per pose, for
+// locate_contact (search + segments + patches; not the Lua result tables of ws:contact).
+#include "geometry/geometry_fixtures.hpp"
+#include "lua/bindings.hpp"
+#include "lua/strategy_binding.hpp"
+#include "wrc/core/error.hpp"
+#include "wrc/geometry/location.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Args {
+  int poses = 300, brute_poses = 12, check_poses = 100, reps = 5;
+  unsigned seed = 1;
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const char* eq = std::strchr(argv[i], '=');
+    if (!eq) continue;
+    const std::string k(argv[i], static_cast<std::size_t>(eq - argv[i]));
+    const int v = std::atoi(eq + 1);
+    if (k == "poses") a.poses = v;
+    else if (k == "brute_poses") a.brute_poses = v;
+    else if (k == "check_poses") a.check_poses = v;
+    else if (k == "reps") a.reps = v;
+    else if (k == "seed") a.seed = static_cast<unsigned>(v);
+  }
+  return a;
+}
+
+void run(lua_State* L, const std::string& code) {
+  if (luaL_loadstring(L, code.c_str()) != LUA_OK || wrc::lua::pcall_traceback(L, 0, 0) != LUA_OK) {
+    std::fprintf(stderr, "lua: %s\n", lua_tostring(L, -1));
+    std::exit(1);
+  }
+}
+
+std::shared_ptr<const wrc::GeometryModel> build(lua_State* L, const std::string& strategy) {
+  run(L, fmt::format("bench_ws = wrc.wheelset{{wheel = bench_wheel, rail = bench_rail, strategy = {}}}", strategy));
+  lua_getglobal(L, "bench_ws");
+  auto m = wrc::lua::wheelset_model(L, -1);
+  lua_pop(L, 1);
+  return m;
+}
+
+// Best time per pose (s) of `reps` passes over poses[0..n).
+double time_per_pose(const wrc::GeometryModel& m, wrc::PoseSearch& s, const std::vector<wrc::Pose>& poses, int n,
+                     int reps, long long* tests = nullptr) {
+  wrc::LocationState st;
+  double best = 1e30;
+  long long t = 0;
+  for (int r = 0; r < reps; ++r) {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < n; ++i) {
+      wrc::locate_contact(m, poses[i], st, s);
+      if (r == 0) t += st.counters(wrc::kLeft).tests + st.counters(wrc::kRight).tests;
+    }
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count() / n);
+  }
+  if (tests) *tests = t / n;
+  return best;
+}
+
+// Same patches and segments (segment ends within 1e-9 m, same lines and cones).
+bool same(const wrc::LocationState& a, const wrc::LocationState& b) {
+  for (int s : {wrc::kLeft, wrc::kRight}) {
+    if (a.patches(s).size() != b.patches(s).size() || a.segments(s).size() != b.segments(s).size()) return false;
+    for (std::size_t i = 0; i < a.segments(s).size(); ++i) {
+      const auto &x = a.segments(s)[i], &y = b.segments(s)[i];
+      if (x.line != y.line || x.cone_t != y.cone_t || x.cone_l != y.cone_l || std::abs(x.x_t - y.x_t) > 1e-9 ||
+          std::abs(x.x_l - y.x_l) > 1e-9)
+        return false;
+    }
+    for (std::size_t i = 0; i < a.patches(s).size(); ++i)
+      if (a.patches(s)[i].first_segment != b.patches(s)[i].first_segment ||
+          a.patches(s)[i].segment_count != b.patches(s)[i].segment_count)
+        return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  const Args a = parse(argc, argv);
+  lua_State* L = wrc::lua::new_state();
+  run(L, "bench_wheel = wrc.profile.load(wrc.paths.profiles .. '/s1002.lua'); "
+         "bench_rail = wrc.profile.load(wrc.paths.profiles .. '/60e1.lua')");
+
+  struct Entry {
+    const char* name;
+    wrc::NativePlan plan;
+    bool all_pairs;  // every line x every cone: timed on brute_poses only
+  };
+  using Scan = wrc::NativePlan::Scan;
+  const std::vector<Entry> entries = {{"brute", {false, Scan::test}, true},
+                                      {"uniform", {false, Scan::test}, true},
+                                      {"constant_slope", {false, Scan::test}, true},
+                                      {"coarse", {true, Scan::test}, false},
+                                      {"topology", {false, Scan::walk}, false},
+                                      {"fast", {true, Scan::walk}, false}};
+
+  std::map<std::string, std::shared_ptr<const wrc::GeometryModel>> models;
+  for (const auto& e : entries) models[e.name] = build(L, fmt::format("'{}'", e.name));
+
+  std::mt19937_64 rng(a.seed);
+  std::vector<wrc::Pose> poses;
+  for (int i = 0; i < a.poses; ++i)
+    poses.push_back(wrc::test::random_pose(rng, *models["brute"]->track, wrc::test::log_uniform(rng, 1e-6, 1e-3)));
+
+  std::printf("contact location, S1002 / 60E1, %d random poses (|y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad, "
+              "penetration 1 um .. 1 mm log-uniform); best of %d passes\n\n",
+              a.poses, a.reps);
+  std::printf("%-15s %6s %6s %11s %12s %12s %8s %10s\n", "strategy", "cones", "lines", "tests/pose", "Lua us/pose",
+              "native us", "Lua/nat", "vs brute");
+  const int nb = std::min(a.brute_poses, a.poses);
+  wrc::NativeSearch brute_search({false, Scan::test});
+  const double brute_t = time_per_pose(*models["brute"], brute_search, poses, nb, 1);
+  for (const auto& e : entries) {
+    const auto& m = *models[e.name];
+    auto lua_search = wrc::lua::make_lua_search(L, m);
+    wrc::NativeSearch native(e.plan);
+    const int n = e.all_pairs ? nb : a.poses;
+    const int reps = e.all_pairs ? 1 : a.reps;
+    long long tests = 0;
+    const double tl = time_per_pose(m, *lua_search, poses, n, reps, &tests);
+    const double tn = time_per_pose(m, native, poses, n, reps);
+    std::printf("%-15s %6d %6d %11lld %12.2f %12.2f %8.3f %9.1fx\n", e.name, m.side[0].wheel.cone_count(),
+                m.side[0].rail.count(), tests, tl * 1e6, tn * 1e6, tl / tn, brute_t / tl);
+  }
+  std::printf("\n(brute: %.2f ms per pose over %d poses; 'vs brute' = brute time / Lua strategy time)\n", brute_t * 1e3,
+              nb);
+
+  // Each strategy against brute force on its own discretisation.
+  std::printf("\ncheck against brute force on the same discretisation (%d poses):\n", std::min(a.check_poses, a.poses));
+  for (const auto& e : entries) {
+    if (e.all_pairs) continue;
+    const auto& m = *models[e.name];
+    auto lua_search = wrc::lua::make_lua_search(L, m);
+    wrc::LocationState s1, s2;
+    int mismatches = 0, patches = 0, segments = 0;
+    for (int i = 0; i < std::min(a.check_poses, a.poses); ++i) {
+      wrc::locate_contact(m, poses[i], s1, *lua_search);
+      wrc::locate_contact(m, poses[i], s2, brute_search);
+      if (!same(s1, s2)) ++mismatches;
+      for (int s : {wrc::kLeft, wrc::kRight}) {
+        patches += static_cast<int>(s2.patches(s).size());
+        segments += static_cast<int>(s2.segments(s).size());
+      }
+    }
+    std::printf("  %-15s %d mismatching poses (%d patches, %d segments compared)\n", e.name, mismatches, patches,
+                segments);
+  }
+  lua_close(L);
+  return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "bench_contact_location: %s\n", e.what());
+  return 1;
+}
