@@ -108,8 +108,13 @@ int cone_above(const WheelCones& w, double Y) {
   return c;
 }
 
+struct Workspace {
+  std::vector<Segment>& raw;
+  std::vector<int>&parent, &root, &start;
+};
+
 void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side, std::vector<Crossing>& xs,
-                   std::vector<Segment>& segs, std::vector<Patch>& patches, int& grazes) {
+                   std::vector<Segment>& segs, std::vector<Patch>& patches, int& grazes, Workspace ws) {
   const SideGeometry& g = model.side[side];
   // The searches emit crossings nearly in order (lines increasing, few per line): insertion sort, with a full
   // sort if that turns out not to be the case.
@@ -123,9 +128,9 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
     for (std::size_t b = a; b > 0 && less(xs[b], xs[b - 1]); --b, ++moves) std::swap(xs[b], xs[b - 1]);
   if (moves > 16 * xs.size()) std::sort(xs.begin(), xs.end(), less);
   // Segments, line by line.
-  std::vector<Segment> raw;
+  std::vector<Segment>& raw = ws.raw;
+  raw.clear();
   std::size_t i = 0;
-  std::vector<Crossing> kept;
   while (i < xs.size()) {
     std::size_t j = i;
     while (j < xs.size() && xs[j].line == xs[i].line) ++j;
@@ -151,7 +156,8 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
   }
   // Patches: union of overlapping segments on adjacent lines.
   const int n = static_cast<int>(raw.size());
-  std::vector<int> parent(n);
+  std::vector<int>& parent = ws.parent;
+  parent.resize(n);
   std::iota(parent.begin(), parent.end(), 0);
   int a = 0;
   while (a < n) {
@@ -171,17 +177,24 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
     }
     a = b;
   }
-  // Order: patches by their first segment; segments of a patch by line then x.
-  std::vector<int> root(n), order(n);
-  for (int k = 0; k < n; ++k) root[k] = find(parent, k);  // the root is the patch's first segment (smallest index)
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return root[x] < root[y]; });
-  segs.clear();
-  for (int k : order) segs.push_back(raw[k]);
+  // Order: patches by their first segment (the root: the smallest index of the group); segments of a patch by line
+  // then x -- a stable counting sort by root.
+  std::vector<int>& root = ws.root;
+  std::vector<int>& start = ws.start;
+  root.resize(n);
+  start.assign(n + 1, 0);
+  for (int k = 0; k < n; ++k) {
+    root[k] = find(parent, k);
+    ++start[root[k] + 1];
+  }
+  for (int k = 0; k < n; ++k) start[k + 1] += start[k];
+  segs.resize(n);
+  for (int k = 0; k < n; ++k) segs[start[root[k]]++] = raw[k];
+  // start[r] now points past group r; rebuild the patch ranges in order of their roots.
   patches.clear();
-  for (int k = 0; k < n;) {
-    int e = k;
-    while (e < n && root[order[e]] == root[order[k]]) ++e;
+  for (int k = 0, r = 0; k < n; ++r) {
+    if (root[r] != r) continue;  // r is not the first segment of a group
+    const int e = start[r];      // the group occupies [k, e)
     Patch p;
     p.side = side;
     p.first_segment = k;
@@ -223,7 +236,8 @@ void locate_crossings(const GeometryModel& model, const Pose& pose, LocationStat
 void assemble_patches(const GeometryModel& model, LocationState& state) {
   for (int side : {kLeft, kRight}) {
     auto& s = state.side_[side];
-    assemble_side(model, state.frame_, side, s.crossings, s.segments, s.patches, s.grazes);
+    assemble_side(model, state.frame_, side, s.crossings, s.segments, s.patches, s.grazes,
+                  Workspace{s.raw_segments, s.parent, s.root, s.start});
   }
 }
 

@@ -133,19 +133,52 @@ double required_lift(const UV& f, double D, double b0, double b1, double v0, dou
   return need + D * std::sqrt(1 + m * m);
 }
 
-// The largest amount (m) by which the dilated solid of `fine` pokes out of the coarse polyline `coarse`
-// (both in (u, v), solid below); <= 0 when enclosed. Also requires the coarse range to cover the dilation's.
+// Top of the capsule {q : dist(q, segment p0-p1) <= D} at abscissa u (-inf outside it). The capsule's upper
+// boundary is the arc of p0's disc, the segment offset by D along its upward normal, then the arc of p1's disc.
+double capsule_top(double u, double u0, double v0, double u1, double v1, double D) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const double* p : {&u0, &u1}) {
+    const double pu = *p, pv = p == &u0 ? v0 : v1, du = u - pu;
+    if (std::abs(du) <= D) top = std::max(top, pv + std::sqrt(D * D - du * du));
+  }
+  const double du = u1 - u0, dv = v1 - v0;
+  if (du > 0) {
+    const double L = std::hypot(du, dv), nu = -dv / L, nv = du / L;  // upward normal
+    const double a = u0 + D * nu, b = u1 + D * nu;
+    if (u >= a && u <= b) top = std::max(top, v0 + D * nv + (u - a) * dv / du);
+  }
+  return top;
+}
+
+// The largest amount (m) by which the dilated solid of `fine` rises above the coarse polyline `coarse` (both in
+// (u, v), solid below); <= 0 when enclosed; +inf if the coarse polyline does not span the dilated solid's range.
+// Exact: on a coarse segment the excess over one fine segment's capsule is concave in u (the capsule is convex)
+// and smooth inside, so its maximum is at an end of the coarse segment, where a disc arc has the coarse slope,
+// or at an end of the offset straight part; all those candidates are evaluated.
 double enclosure_excess(const UV& coarse, const UV& fine, double D) {
-  const std::size_t m = coarse.u.size();
+  const std::size_t m = coarse.u.size(), n = fine.u.size();
+  if (coarse.u.front() > fine.u.front() - D || coarse.u.back() < fine.u.back() + D)
+    return std::numeric_limits<double>::infinity();
   double excess = -std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j + 1 < m; ++j) {
     const double b0 = coarse.u[j], b1 = coarse.u[j + 1];
     if (!(b1 > b0)) return std::numeric_limits<double>::infinity();
     const double slope = (coarse.v[j + 1] - coarse.v[j]) / (b1 - b0);
-    excess = std::max(excess, required_lift(fine, D, b0, b1, coarse.v[j], slope));
+    const double tangent = D * slope / std::sqrt(1 + slope * slope);  // disc point whose tangent has the slope
+    auto line = [&](double u) { return coarse.v[j] + slope * (u - b0); };
+    std::size_t i = static_cast<std::size_t>(std::lower_bound(fine.u.begin(), fine.u.end(), b0 - D) - fine.u.begin());
+    if (i > 0) --i;
+    for (; i < n && fine.u[i] <= b1 + D; ++i) {
+      const std::size_t k = i + 1 < n ? i + 1 : i;  // the segment i..k (a single point at the end)
+      const double u0 = fine.u[i], v0 = fine.v[i], u1 = fine.u[k], v1 = fine.v[k];
+      const double L = std::hypot(u1 - u0, v1 - v0);
+      const double nu = (L > 0 && u1 > u0) ? -(v1 - v0) / L : 0.0;
+      for (double u : {b0, b1, u0 + D * nu, u1 + D * nu, u0 - tangent, u1 - tangent}) {
+        if (u < b0 || u > b1) continue;
+        excess = std::max(excess, capsule_top(u, u0, v0, u1, v1, D) - line(u));
+      }
+    }
   }
-  const double cover = std::max(coarse.u.front() - (fine.u.front() - D), (fine.u.back() + D) - coarse.u.back());
-  if (cover > 0) excess = std::max(excess, std::numeric_limits<double>::infinity());
   return excess;
 }
 
@@ -237,6 +270,10 @@ Profile offset_outward(const Profile& p, double distance, double step) {
   const double u0 = f.u.front() - distance, u1 = f.u.back() + distance;
   const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil((u1 - u0) / step - 1e-9)));
   if (m > 1'000'000) fail("offset_outward: step {} m gives {} points", step, m);
+  // Each coarse segment starts as the chord of the envelope, lifted until the bound of required_lift holds: then
+  // every disc of the dilation lies under the lifted chord's whole line. A vertex takes the higher of the two
+  // lifted chords meeting there; the coarse segment between two such vertices lies above its own lifted chord, so
+  // above the dilated solid. (1 nm more against rounding in the exact check of build_geometry.)
   std::vector<double> b(m + 1), H(m + 1, -std::numeric_limits<double>::infinity());
   for (std::size_t j = 0; j <= m; ++j) b[j] = u0 + (u1 - u0) * static_cast<double>(j) / static_cast<double>(m);
   b.front() = u0;
@@ -244,27 +281,11 @@ Profile offset_outward(const Profile& p, double distance, double step) {
   for (std::size_t j = 0; j < m; ++j) {
     const double v0 = envelope(f, b[j]), v1 = envelope(f, b[j + 1]);
     const double slope = (v1 - v0) / (b[j + 1] - b[j]);
-    const double lift = required_lift(f, distance, b[j], b[j + 1], v0, slope);
-    // Both ends of the lifted chord; a vertex takes the higher of its two segments' needs, which only raises them.
+    const double lift = required_lift(f, distance, b[j], b[j + 1], v0, slope) + 1e-9;
     H[j] = std::max(H[j], v0 + lift);
     H[j + 1] = std::max(H[j + 1], v1 + lift);
   }
-  // The polyline through the raised vertices has other slopes than the lifted chords (and so other disc terms
-  // D sqrt(1 + m^2)); raise any segment that the exact check still finds short until none is (a few passes).
   UV c{b, H};
-  for (int pass = 0; pass < 100; ++pass) {
-    bool raised = false;
-    for (std::size_t j = 0; j < m; ++j) {
-      const double slope = (c.v[j + 1] - c.v[j]) / (c.u[j + 1] - c.u[j]);
-      const double e = required_lift(f, distance, c.u[j], c.u[j + 1], c.v[j], slope);
-      if (e > 0) {
-        c.v[j] += e + 1e-12;
-        c.v[j + 1] += e + 1e-12;
-        raised = true;
-      }
-    }
-    if (!raised) break;
-  }
   Profile r;
   r.kind = p.kind;
   r.name = p.name + " (coarse)";

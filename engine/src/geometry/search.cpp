@@ -105,7 +105,7 @@ class Scanner {
           while (i < prev.size() && prev[i] - kProbe <= p1 + 1) p1 = std::min(prev[i++] + kProbe, c1);
           if (p0 > p1) continue;
           if (pos < p0) classify(pos, p0 - 1);
-          for (int c = p0; c <= p1; ++c) classify(c, c);
+          for (int c = p0; c <= p1; ++c) leaf(c);
           pos = p1 + 1;
         }
         if (pos <= c1) classify(pos, c1);
@@ -135,12 +135,68 @@ class Scanner {
     if (line_.r2star > top) return;
     const double W = std::sqrt((top - line_.r2star) / line_.k) * std::abs(line_.a12);
     const double lo = line_.ystar - W, hi = line_.ystar + W;
-    // First cone of a..b whose y range reaches lo, last one starting at or before hi.
-    const auto* y = w_.y.data();
-    const int ca = static_cast<int>(std::lower_bound(y + a + 1, y + b + 2, lo) - y) - 1;
-    const int cb = static_cast<int>(std::upper_bound(y + a, y + b + 1, hi) - y) - 1;
-    if (ca > cb || ca > b || cb < a) return;
-    classify(std::max(a, ca), std::min(b, cb));
+    // First cone of a..b whose y range reaches lo (y[c + 1] >= lo), last one starting at or before hi (y[c] <= hi),
+    // searched from the previous line's answer (lines move little from one to the next).
+    const double* y = w_.y.data();
+    int ca = seek_first(y, a, b, std::clamp(hint_lo_, a, b), lo);
+    int cb = seek_last(y, a, b, std::clamp(hint_hi_, a, b), hi);
+    hint_lo_ = ca;
+    hint_hi_ = cb;
+    if (ca > cb || y[ca + 1] < lo || y[cb] > hi) return;
+    // Shrink again with the largest radius of the reachable cones only (certified the same way: outside the new
+    // range the trace is above that radius, which bounds every point of the old range), while it helps.
+    for (int pass = 0; pass < 3 && ca < cb; ++pass) {
+      ++bounds_;
+      w_.r2_range.extrema(ca, cb + 1, rmin, rmax);
+      const double top2 = rmax + kSkipMargin;
+      if (line_.r2star > top2) return;
+      const double W2 = std::sqrt((top2 - line_.r2star) / line_.k) * std::abs(line_.a12);
+      const int na = seek_first(y, ca, cb, ca, line_.ystar - W2), nb = seek_last(y, ca, cb, cb, line_.ystar + W2);
+      if (na > nb || y[na + 1] < line_.ystar - W2 || y[nb] > line_.ystar + W2) return;
+      if (na == ca && nb == cb) break;
+      ca = na;
+      cb = nb;
+    }
+    classify(ca, cb);
+  }
+
+  // Smallest c in [a, b] with y[c + 1] >= v (b if none), starting from c.
+  static int seek_first(const double* y, int a, int b, int c, double v) {
+    int steps = 0;
+    while (c > a && y[c] >= v) {  // y[c] = y[(c - 1) + 1] >= v: c - 1 qualifies too
+      if (++steps > 8) return static_cast<int>(std::lower_bound(y + a + 1, y + c + 1, v) - y) - 1;
+      --c;
+    }
+    while (c < b && y[c + 1] < v) {
+      if (++steps > 8) return std::min(b, static_cast<int>(std::lower_bound(y + c + 1, y + b + 2, v) - y) - 1);
+      ++c;
+    }
+    return c;
+  }
+  // Largest c in [a, b] with y[c] <= v (a if none), starting from c.
+  static int seek_last(const double* y, int a, int b, int c, double v) {
+    int steps = 0;
+    while (c < b && y[c + 1] <= v) {
+      if (++steps > 8) return static_cast<int>(std::upper_bound(y + c + 1, y + b + 1, v) - y) - 1;
+      ++c;
+    }
+    while (c > a && y[c] > v) {
+      if (++steps > 8) return std::max(a, static_cast<int>(std::upper_bound(y + a, y + c, v) - y) - 1);
+      --c;
+    }
+    return c;
+  }
+
+  // One cone: the bounds, then the closed form if they do not rule it out.
+  void leaf(int c) {
+    ++bounds_;
+    const double Ya = w_.y[c], Yb = w_.y[c + 1];
+    const double ha = line_.h2(Ya), hb = line_.h2(Yb);
+    const double hmin = (line_.ystar >= Ya && line_.ystar <= Yb) ? line_.r2star : std::min(ha, hb);
+    const double ra = w_.r2[c], rb = w_.r2[c + 1];
+    if (hmin > std::max(ra, rb) + kSkipMargin) return;
+    if (std::max(ha, hb) < std::min(ra, rb) - kSkipMargin) return;
+    closed_form(c);
   }
 
   // Rules out the cones a..b with the bounds of the file comment, splitting the range until each part is ruled
@@ -154,23 +210,18 @@ class Scanner {
     while (top > 0) {
       --top;
       const int lo = stack[top][0], hi = stack[top][1];
+      if (lo == hi) {
+        leaf(lo);
+        continue;
+      }
       ++bounds_;
       const double Ya = w_.y[lo], Yb = w_.y[hi + 1];
       const double ha = line_.h2(Ya), hb = line_.h2(Yb);
       const double hmin = (line_.ystar >= Ya && line_.ystar <= Yb) ? line_.r2star : std::min(ha, hb);
       double rmin, rmax;
-      if (lo == hi) {
-        rmin = std::min(w_.r2[lo], w_.r2[lo + 1]);
-        rmax = std::max(w_.r2[lo], w_.r2[lo + 1]);
-      } else {
-        w_.r2_range.extrema(lo, hi + 1, rmin, rmax);
-      }
+      w_.r2_range.extrema(lo, hi + 1, rmin, rmax);
       if (hmin > rmax + kSkipMargin) continue;                // trace outside the whole range
       if (std::max(ha, hb) < rmin - kSkipMargin) continue;    // inside the whole range
-      if (lo == hi) {
-        closed_form(lo);
-        continue;
-      }
       const int mid = lo + (hi - lo) / 2;
       // Near half first (the one holding Y*), so crossings come in increasing order of distance from it.
       stack[top][0] = mid + 1;
@@ -208,6 +259,7 @@ class Scanner {
   long long &tests_, &bounds_, &lines_;
   std::vector<int>* cur_ = nullptr;
   int r_ = 0;
+  int hint_lo_ = 0, hint_hi_ = 0;  // reach's last cone indices
   LineFrame line_;
 };
 

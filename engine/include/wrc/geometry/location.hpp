@@ -154,6 +154,8 @@ class LocationState {
     SearchCounters counters;
     int grazes = 0;
     std::vector<int> scratch_int;
+    std::vector<Segment> raw_segments;      // assembly workspace
+    std::vector<int> parent, root, start;
   };
   void reset(const Pose& pose);
   Pose pose_;
