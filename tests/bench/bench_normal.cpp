@@ -130,9 +130,12 @@ void solve_times(bool quick) {
   fmt::print("\n== Time per normal solve (CPU ms, one core) vs potential elements ==\n");
   fmt::print("fast: CG + FFT, FFTW_ESTIMATE plans, spectra cached (first solve of a shape separately);\n");
   fmt::print("it = CG iterations on the grid (+ on the coarser grids of the nested start), prod = FFT round trips\n");
-  fmt::print("{:>7} {:>9} {:>5} | {:>9} {:>9} {:>12} {:>5} | {:>10} {:>8} | {:>8} {:>9} {:>8}\n", "n", "grid", "case",
-             "control", "fast ms", "it (coarse)", "prod", "1st ms", "ns/nlogn", "dense ms", "dense it", "ratio");
+  fmt::print("meas ms: the same with FFTW_MEASURE plans (planned once per shape, not included)\n");
+  fmt::print("{:>7} {:>9} {:>5} | {:>9} {:>9} {:>12} {:>5} | {:>7} {:>10} {:>8} | {:>8} {:>9} {:>8}\n", "n", "grid",
+             "case", "control", "fast ms", "it (coarse)", "prod", "meas ms", "1st ms", "ns/nlogn", "dense ms",
+             "dense it", "ratio");
   const NormalSolver solver(steel);
+  const NormalSolver measured(steel, FftPlanning::measure);
   NormalWorkspace ws;
   std::vector<int> sizes = {1000, 3000, 10000, 50000, 100000};
   if (quick) sizes = {1000, 3000, 10000};
@@ -149,6 +152,8 @@ void solve_times(bool quick) {
         const double first = cpu_ms() - t0;
         NormalSolution s;
         const double t = best_ms([&] { s = solver.solve(c.grid, c.h, load, ws); }, n > 30000 ? 4 : 15, 200);
+        measured.solve(c.grid, c.h, load, ws);  // plans
+        const double tm = best_ms([&] { measured.solve(c.grid, c.h, load, ws); }, n > 30000 ? 4 : 15, 200);
         const int N = c.grid.size();
         std::string dense = "-", dense_it = "-", ratio = "-";
         if (N <= 3500 && !(quick && N > 1500)) {
@@ -158,10 +163,10 @@ void solve_times(bool quick) {
           dense_it = fmt::format("{}", d.iterations);
           ratio = fmt::format("{:.0f}", td / t);
         }
-        fmt::print("{:>7} {:>9} {:>5} | {:>9} {:9.3f} {:>12} {:5} | {:10.1f} {:8.2f} | {:>8} {:>9} {:>8}\n", N,
+        fmt::print("{:>7} {:>9} {:>5} | {:>9} {:9.3f} {:>12} {:5} | {:7.3f} {:10.1f} {:8.2f} | {:>8} {:>9} {:>8}\n", N,
                    fmt::format("{}x{}", c.grid.nx, c.grid.ny), kind == 0 ? "Hertz" : "2lobe",
                    force ? "force" : "penetr.", t, fmt::format("{} ({})", s.iterations, s.coarse_iterations),
-                   s.products + s.coarse_products, first, t * 1e6 / (N * std::log2(N)), dense, dense_it, ratio);
+                   s.products + s.coarse_products, tm, first, t * 1e6 / (N * std::log2(N)), dense, dense_it, ratio);
       }
     }
   fmt::print("targets: 3,000 elements < 2 ms, 50,000 < 150 ms; ns/nlogn constant = N log N growth\n");

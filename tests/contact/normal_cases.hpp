@@ -34,9 +34,9 @@ inline NormalCase paraboloid_case(double A, double B, double delta, double eleme
 
 // Random non-Hertzian patch: a sum of 1-3 elliptical bumps of random curvature, depth and position
 // (possibly overlapping into one lobe or separate into two), a random tilt, on a random grid shape
-// (element aspect ratio 1 or not). Depths are micrometres, curvatures those of wheels and rails.
-inline NormalCase random_case(std::mt19937& rng) {
-  std::uniform_int_distribution<int> N(6, 26), bumps(1, 3);
+// (element aspect ratio 1 or not), sides of min_side..max_side elements. Depths are micrometres.
+inline NormalCase random_case(std::mt19937& rng, int min_side = 6, int max_side = 26) {
+  std::uniform_int_distribution<int> N(min_side, max_side), bumps(1, 3);
   std::uniform_real_distribution<double> U(0, 1);
   contact::Grid g;
   g.nx = N(rng);

@@ -159,6 +159,24 @@ TEST_CASE("plain CG, no nested start, and a warm start reach the same solution")
   }
 }
 
+TEST_CASE("larger random patches (nested start active): fast = dense") {
+  std::mt19937 rng(424242);
+  const NormalSolver solver(steel);
+  NormalWorkspace ws;
+  for (int t = 0; t < 4; ++t) {
+    const NormalCase c = random_case(rng, 34, 44);
+    REQUIRE(c.grid.size() > NormalOptions{}.coarse_limit);
+    const NormalLoad load = t % 2 ? NormalLoad::normal_force(3000.0) : NormalLoad::penetration();
+    const NormalSolution fast = solver.solve(c.grid, c.h, load, ws);
+    CHECK(fast.coarse_iterations > 0);
+    const NormalSolution dense = solve_normal_dense(steel, c.grid, c.h, load);
+    for (int k = 0; k < c.grid.size(); ++k) {
+      CHECK((dense.pressure[k] > 0) == (fast.pressure[k] > 0));
+      CHECK(std::abs(dense.pressure[k] - fast.pressure[k]) < 1e-6 * dense.max_pressure);
+    }
+  }
+}
+
 TEST_CASE("nested start on a larger grid: same answer as without it") {
   const double A = 1 / (2 * 0.45), B = 4 * A, delta = 70e-6;
   const NormalCase c = paraboloid_case(A, B, delta, 0.2e-3);

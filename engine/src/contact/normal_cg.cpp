@@ -335,12 +335,11 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
   FftOperator K{*spectrum, *periodic, grid, 1.0 / (std::numbers::pi * material_.combined_modulus()), ws.fft};
   auto& x = out.pressure;
-  auto& u = ws.u;
   auto& r = ws.r;
   auto& z = ws.z;
   auto& d = ws.d;
   auto& q = ws.q;
-  for (auto* v : {&u, &r, &z, &d, &q}) v->assign(n, 0.0);
+  for (auto* v : {&r, &z, &d, &q}) v->assign(n, 0.0);
   // Plain PCG on the fixed set (projected to sum dp = 0 for a prescribed force); x = 0 to start.
   double rhs_norm = 0, mean = 0;
   for (int k = 0; k < n; ++k)

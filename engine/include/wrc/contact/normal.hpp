@@ -18,6 +18,7 @@
 #include "wrc/contact/material.hpp"
 
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace wrc::contact {
@@ -58,7 +59,8 @@ struct Complementarity {
 struct NormalSolution {
   Grid grid;
   std::vector<double> pressure;  // Pa, per element (index i + nx j), >= 0
-  std::vector<double> gap;       // m, deformed gap g per element (0 in contact, >= 0 outside)
+  std::vector<double> gap;       // m, deformed gap g per element (0 in contact, >= 0 outside up to the
+                                 // tolerance)
   double force = 0;              // N: sum p dA
   double cop_x = 0, cop_y = 0;   // m: centre of pressure in the grid's frame (grid centre if force = 0)
   double area = 0;               // m^2: elements in contact times dA
@@ -101,7 +103,7 @@ class NormalWorkspace {
  public:
   NormalWorkspace() = default;
   ConvolutionWorkspace fft;
-  std::vector<double> p, u, g, r, z, d, q, w;
+  std::vector<double> p, u, r, z, d, q;
   std::vector<unsigned char> active, previous_active;
 };
 

@@ -1,0 +1,43 @@
+// Smooth queries on the discretised wheel (wrc/geometry/model.hpp, wheelset frame) that the normal-contact
+// stage needs away from the crossings: radius, normal and conicity at a lateral position, and the deepest
+// point of a rail line relative to the wheel.
+//
+// Why smooth: a Newton solver differentiates forces with respect to the pose. Normals taken per cone jump by
+// the profile's turning between cones (up to 8 mrad at the S1002 flange root at 0.1 mm), which would make the
+// force direction a step function of the pose. Here normals are interpolated between vertex normals (the
+// average of the two cones meeting at a generatrix point), so they vary continuously along the wheel.
+#pragma once
+
+#include "wrc/geometry/cone_line.hpp"
+#include "wrc/geometry/model.hpp"
+
+#include <Eigen/Core>
+
+namespace wrc {
+
+struct WheelSurfacePoint {
+  double radius = 0;    // wheel radius at the lateral position (m), linear on the cones
+  double normal_y = 0;  // smooth outward meridian normal (n_y, n_r), unit; n_r = cos(conicity angle) >= 0 on
+  double normal_r = 1;  // the tread and flange faces
+  int cone = 0;         // the cone holding the position (not an end face)
+};
+
+// The wheel surface at wheelset-frame lateral position Y (m), clamped to the profile's lateral range.
+WheelSurfacePoint wheel_surface_at(const WheelCones& wheel, double Y);
+
+// Track-frame unit normal of the wheel surface, pointing INTO the wheel (the direction of the force of the
+// rail on the wheel), at the track-frame point p near the surface.
+Eigen::Vector3d wheel_inward_normal(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p);
+
+// The deepest point of the rail line (y_r, z_r) (track frame, m) relative to the wheel: the maximum over x of
+// overlap(x) = wheel radius at the line point's lateral position - the point's distance to the axle, which is
+// > 0 inside the wheel. Exact on the discretised wheel: on each cone the overlap is concave in x, so its maximum
+// is the clamped stationary point, and only the cones the line passes under within reach are visited.
+struct LineApproach {
+  double overlap = 0;  // radial overlap at the deepest point (m), < 0: the gap
+  double x = 0;        // track-frame x of that point (m)
+  double Y = 0;        // its wheelset-frame lateral position (m)
+};
+LineApproach line_approach(const WheelCones& wheel, const PoseFrame& frame, double y_r, double z_r);
+
+}  // namespace wrc

@@ -1,0 +1,126 @@
+// From the inter-penetration patches of a wheelset pose to forces (paper section 3, DESIGN.md section 3):
+// contact plane, potential contact area, undeformed distance h, Kalker's normal problem per area, and the
+// resulting forces and moments on the wheelset.
+//
+// Contact plane of an area: the paper's plane is tangent to the wheel at the nominal point (mid-point of the
+// longest segment). The nominal point jumps from one rail line to the next as the pose changes, and so would
+// the plane; here the plane is tangent to the wheel at the WEIGHTED nominal point: segment mid-points and the
+// wheel's (smooth) normals there, weighted by each segment's share of the inter-penetration volume
+// (2/3 length x sagitta x line spacing). The weights vanish with the segments, so the plane -- and the forces --
+// vary continuously with the pose, which the equilibrium's Newton solver needs. The paper's nominal point is
+// reported too.
+//
+// Potential contact area: a regular grid of square elements in the plane, aligned with the plane's origin
+// (element centres at integer multiples of the element size from it), covering the projected segments plus a
+// margin. h at an element: the rail lines project onto the plane as lines parallel to its first axis; along a
+// line with a segment, h is the paper's circular arc through the segment's ends with radius = wheel radius /
+// cos(conicity angle) (averaged over the two ends' cones, which differ where yaw makes the line cross two);
+// along a line without a segment (the margin), the same arc through the line's deepest point, whose (negative)
+// height is the exact radial gap times cos(conicity); between lines h is interpolated linearly.
+//
+// Areas of one wheel are solved together when contact::patches_interact says the separate solutions differ
+// by more than `merge_tolerance` and their normals differ by less than `merge_angle` (one plane must serve
+// both); otherwise each alone.
+#pragma once
+
+#include "wrc/contact/normal.hpp"
+#include "wrc/geometry/location.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace wrc {
+
+struct ContactOptions {
+  double element = 0.2e-3;        // element size of the potential contact area (m)
+  int margin = 2;                 // elements around the projected inter-penetration area
+  double merge_tolerance = 0.01;  // relative force error of solving two areas apart that triggers a merge
+  double merge_angle = 0.26;      // rad (15 deg): areas whose normals differ more are never merged
+  bool dense = false;             // the dense reference solver instead of the fast one (tests)
+  int max_elements = 1 << 20;     // a larger potential contact area is an error (a pose far too deep)
+  contact::NormalOptions normal;  // tolerance etc. of the normal solver
+};
+
+// Rows of a force/moment sensitivity: (Fx, Fy, Fz, Mx, My, Mz); columns: (z, roll) of the pose.
+using Sensitivity = Eigen::Matrix<double, 6, 2>;
+
+// One potential contact area (one or more merged inter-penetration patches of one wheel) and its solution.
+struct PatchContact {
+  int side = kLeft;
+  std::vector<int> patches;            // indices in LocationState::patches(side)
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // contact plane (track frame, m)
+  Eigen::Vector3d t1 = Eigen::Vector3d::UnitX();     // first axis (rolling direction), grid x
+  Eigen::Vector3d t2 = Eigen::Vector3d::UnitY();     // second axis (lateral), grid y
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from the rail into the wheel
+  Eigen::Vector3d nominal = Eigen::Vector3d::Zero(); // the paper's nominal point of the first patch (m)
+  contact::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
+  std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
+  double normal_force = 0;             // N
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // centre of pressure (track frame, m)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // of `force` about the wheelset centre (N m)
+  double angle = 0;                    // contact angle (rad): normal vs z, > 0 tilted toward the track centre
+  double rolling_radius = 0;           // wheel radius at the centre of pressure (m)
+  double penetration = 0;              // max h (m)
+  int segments = 0;                    // inter-penetration segments of the area
+  Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll), when asked for
+};
+
+struct WheelContact {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // about the wheelset centre (N m)
+  std::vector<PatchContact> patches;
+  double angle = 0;           // contact angle of the resultant force (rad)
+  double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); 0 without contact
+  Sensitivity sensitivity = Sensitivity::Zero();
+};
+
+struct ContactResult {
+  Pose pose;
+  std::array<WheelContact, 2> wheel;  // indexed by Side
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // both wheels (N)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // both wheels, about the wheelset centre (N m)
+  Sensitivity sensitivity = Sensitivity::Zero();     // both wheels
+};
+
+// The immutable contact model: discretised geometry, material, normal solver (with its FFT caches) and options.
+class ContactModel {
+ public:
+  ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
+               const ContactOptions& options);
+  const GeometryModel& geometry() const { return *geometry_; }
+  const std::shared_ptr<const GeometryModel>& geometry_ptr() const { return geometry_; }
+  const contact::Material& material() const { return solver_.material(); }
+  const ContactOptions& options() const { return options_; }
+  const contact::NormalSolver& solver() const { return solver_; }
+
+ private:
+  std::shared_ptr<const GeometryModel> geometry_;
+  ContactOptions options_;
+  contact::NormalSolver solver_;
+};
+
+// Per-thread state: the locator (the model's strategy bound to this thread) and the solver's buffers.
+class ContactWorkspace {
+ public:
+  explicit ContactWorkspace(const ContactModel& model);  // the strategy's own per-thread search
+  ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search);
+  Locator locator;
+  contact::NormalWorkspace normal;
+};
+
+struct ContactRequest {
+  bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems)
+  bool keep_grids = true;    // keep pressure and h grids in the result (large)
+  int only_side = -1;        // kLeft or kRight: evaluate that wheel only
+};
+
+// Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input
+// or a potential contact area beyond options.max_elements.
+ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& workspace,
+                               const ContactRequest& request = {});
+
+}  // namespace wrc

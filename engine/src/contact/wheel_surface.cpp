@@ -1,0 +1,125 @@
+#include "wrc/contact/wheel_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace wrc {
+namespace {
+
+// Meridian normal of the cone joining generatrix points i and i + 1 (unit, outward).
+Eigen::Vector2d cone_normal(const WheelCones& w, int i) {
+  double ny = 0, nr = 0;
+  w.cone(i).meridian_normal(ny, nr);
+  return {ny, nr};
+}
+
+// Vertex normal at generatrix point i: the mean of the normals of the non-degenerate cones meeting there.
+Eigen::Vector2d vertex_normal(const WheelCones& w, int i) {
+  const int n = w.cone_count();
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  // Cones i - 1 and i meet at point i; the end faces (cones 0 and n - 1) are not part of the running surface.
+  if (i - 1 >= 1 && i - 1 <= n - 2) sum += cone_normal(w, i - 1);
+  if (i >= 1 && i <= n - 2) sum += cone_normal(w, i);
+  if (sum.squaredNorm() == 0) return {0, 1};
+  return sum.normalized();
+}
+
+}  // namespace
+
+WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
+  // Profile points are 1 .. n - 1 (0 and n are on the axle); running-surface cones 1 .. n - 2.
+  const int n = w.cone_count();
+  const double lo = w.y[1], hi = w.y[n - 1];
+  Y = std::clamp(Y, lo, hi);
+  // First point with y >= Y among the profile points; the cone before it holds Y.
+  const auto it = std::lower_bound(w.y.begin() + 1, w.y.begin() + n, Y);
+  int c = std::clamp(static_cast<int>(it - w.y.begin()) - 1, 1, n - 2);
+  // Skip flat rings (vertical runs): they hold Y only at their own y; take the neighbouring cone that spans Y.
+  while (c < n - 2 && w.y[c + 1] == w.y[c]) ++c;
+  WheelSurfacePoint s;
+  s.cone = c;
+  const double y0 = w.y[c], y1 = w.y[c + 1];
+  const double t = y1 > y0 ? std::clamp((Y - y0) / (y1 - y0), 0.0, 1.0) : 0.0;
+  s.radius = -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
+  const Eigen::Vector2d nrm = ((1 - t) * vertex_normal(w, c) + t * vertex_normal(w, c + 1)).normalized();
+  s.normal_y = nrm.x();
+  s.normal_r = nrm.y();
+  return s;
+}
+
+Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = frame.to_wheelset(p);
+  const WheelSurfacePoint s = wheel_surface_at(w, q.y());
+  // eq. (1): q = (-Z sin eps, Y, Z cos eps) with Z = -rho, so q_x = rho sin eps, q_z = -rho cos eps.
+  const double rho = std::hypot(q.x(), q.z());
+  const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
+  const Eigen::Vector3d outward(s.normal_r * se, s.normal_y, -s.normal_r * ce);
+  return -(frame.matrix() * outward);
+}
+
+LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r) {
+  // Wheelset-frame coordinates of the line point at x: q = a x + b (A^T applied to (x, dy, dz)).
+  const double dy = y_r - f.y, dz = z_r - f.z;
+  const double a1 = f.a11, a2 = f.a12, a3 = f.a13;
+  const double b1 = f.a21 * dy, b2 = f.a22 * dy + f.a32 * dz, b3 = f.a23 * dy + f.a33 * dz;
+  const double s2 = a1 * a1 + a3 * a3, s = std::sqrt(s2);
+  const double xc = -(a1 * b1 + a3 * b3) / s2;  // closest approach to the axle
+  const double dmin2 = std::max(0.0, (a1 * xc + b1) * (a1 * xc + b1) + (a3 * xc + b3) * (a3 * xc + b3));
+  const double dmin = std::sqrt(dmin2);
+  auto dist = [&](double x) { return std::hypot(a1 * x + b1, a3 * x + b3); };
+
+  LineApproach best;
+  best.overlap = -std::numeric_limits<double>::infinity();
+  const int n = w.cone_count();
+  // Beyond the wheel's lateral range there is no wheel (its end faces go down to the axle): radius 0.
+  const auto outside = [&] {
+    best.x = xc;
+    best.Y = a2 * xc + b2;
+    best.overlap = -dmin;
+    return best;
+  };
+  if (std::abs(a2) < 1e-15) {  // no yaw: the line stays in one meridian plane
+    if (b2 < w.y[1] || b2 > w.y[n - 1]) return outside();
+    best.x = xc;
+    best.Y = b2;
+    best.overlap = wheel_surface_at(w, b2).radius - dmin;
+    return best;
+  }
+  // Only where the line is closer to the axle than the largest radius can it be inside.
+  double rmax = 0;
+  for (int i = 1; i < n; ++i) rmax = std::max(rmax, -w.z[i]);
+  const double reach = std::sqrt(std::max(0.0, rmax * rmax - dmin2)) / s;
+  const double ya = a2 * (xc - reach) + b2, yb = a2 * (xc + reach) + b2;
+  const double ylo = std::max(std::min(ya, yb), w.y[1]), yhi = std::min(std::max(ya, yb), w.y[n - 1]);
+  auto consider = [&](double x) {
+    const double Y = a2 * x + b2;
+    const double o = wheel_surface_at(w, Y).radius - dist(x);
+    if (o > best.overlap) {
+      best.overlap = o;
+      best.x = x;
+      best.Y = Y;
+    }
+  };
+  if (ylo > yhi) {  // the line passes under no part of the wheel within reach
+    const double Yc = a2 * xc + b2;
+    if (Yc < w.y[1] || Yc > w.y[n - 1]) return outside();
+    consider(xc);  // within the lateral range but far below: the gap at the closest approach
+    return best;
+  }
+  const int c0 = std::max(1, w.first_cone_reaching(ylo)), c1 = std::min(n - 2, w.last_cone_starting_before(yhi));
+  for (int c = c0; c <= c1; ++c) {
+    const double y0 = w.y[c], y1 = w.y[c + 1];
+    if (y1 <= y0) continue;  // flat ring: its circle is also an end of a neighbouring cone
+    const double k = ((-w.z[c + 1]) - (-w.z[c])) / (y1 - y0);  // d radius / d Y
+    // Stationary point of r0 + k (a2 x + b2 - y0) - sqrt(dmin^2 + s^2 (x - xc)^2).
+    const double ka = k * a2, den = s2 - ka * ka;
+    double x = den > 0 ? xc + ka * dmin / (s * std::sqrt(den)) : (ka > 0 ? 1e3 : -1e3);
+    const double xa = (y0 - b2) / a2, xb = (y1 - b2) / a2;
+    x = std::clamp(x, std::min(xa, xb), std::max(xa, xb));
+    consider(x);
+  }
+  return best;
+}
+
+}  // namespace wrc

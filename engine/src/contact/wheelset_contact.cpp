@@ -1,0 +1,359 @@
+// Patches -> potential contact areas -> normal problems -> forces (wheelset_contact.hpp).
+#include "wrc/contact/wheelset_contact.hpp"
+
+#include "wrc/contact/interaction.hpp"
+#include "wrc/contact/wheel_surface.hpp"
+#include "wrc/core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace wrc {
+
+ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
+                           const ContactOptions& options)
+    : geometry_(std::move(geometry)), options_(options), solver_(material) {
+  if (!geometry_) fail("contact model: no geometry");
+  contact::validate(material, "contact model");
+  if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
+    fail("contact model: the element size (grid) must be in ]0, 0.01] m, got {}", options.element);
+  if (options.margin < 1 || options.margin > 100) fail("contact model: margin must be 1..100 elements, got {}", options.margin);
+  if (!(options.merge_tolerance > 0) || !std::isfinite(options.merge_tolerance))
+    fail("contact model: merge_tolerance must be > 0, got {}", options.merge_tolerance);
+  if (!(options.merge_angle >= 0) || !std::isfinite(options.merge_angle))
+    fail("contact model: merge_angle must be >= 0 rad, got {}", options.merge_angle);
+}
+
+ContactWorkspace::ContactWorkspace(const ContactModel& model) : locator(model.geometry_ptr()) {}
+
+ContactWorkspace::ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search)
+    : locator(model.geometry_ptr(), std::move(search)) {}
+
+namespace {
+
+// What the plane and h need of one segment.
+struct SegmentInfo {
+  int line = 0;
+  double y = 0, z = 0;         // rail line (track frame)
+  double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
+  double weight = 0;           // share of the inter-penetration volume (m^3)
+  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
+  double sagitta = 0;          // arc height at the mid-point (m)
+};
+
+// Lateral spacing of rail line r: half the distance between its neighbours (one-sided at the ends).
+double line_spacing(const RailLines& rail, int r) {
+  const int n = rail.count();
+  const int a = std::max(0, r - 1), b = std::min(n - 1, r + 1);
+  const double d = std::hypot(rail.y[b] - rail.y[a], rail.z[b] - rail.z[a]);
+  return b - a == 2 ? 0.5 * d : d;
+}
+
+// Arc radius of the rolling-direction section of the wheel at a wheelset-frame lateral position: radius /
+// cos(conicity); the floor on cos keeps it finite on the steepest flange faces.
+double arc_radius(const WheelSurfacePoint& s) { return s.radius / std::max(s.normal_r, 0.05); }
+
+double arc_height(double R, double dx) {
+  const double q = R * R - dx * dx;
+  return q > 0 ? std::sqrt(q) : -R;  // beyond the arc's reach: far below (any negative h means "no contact")
+}
+
+void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
+                      std::vector<SegmentInfo>& out) {
+  const PoseFrame& f = st.frame();
+  const WheelCones& w = g.side[side].wheel;
+  const auto& segs = st.segments(side);
+  for (int k = p.first_segment; k < p.first_segment + p.segment_count; ++k) {
+    const Segment& s = segs[k];
+    SegmentInfo info;
+    info.line = s.line;
+    info.y = s.y;
+    info.z = s.z;
+    info.L = s.length();
+    info.xm = 0.5 * (s.x_t + s.x_l);
+    info.mid = {info.xm, s.y, s.z};
+    const double Yt = f.to_wheelset({s.x_t, s.y, s.z}).y(), Yl = f.to_wheelset({s.x_l, s.y, s.z}).y();
+    info.R = 0.5 * (arc_radius(wheel_surface_at(w, Yt)) + arc_radius(wheel_surface_at(w, Yl)));
+    info.sagitta = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
+    info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
+    info.normal = wheel_inward_normal(w, f, info.mid);
+    out.push_back(info);
+  }
+}
+
+struct Plane {
+  Eigen::Vector3d O, n, t1, t2;
+};
+
+Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
+  Plane pl;
+  double W = 0;
+  Eigen::Vector3d O = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
+  for (const auto& s : infos) {
+    W += s.weight;
+    O += s.weight * s.mid;
+    n += s.weight * s.normal;
+  }
+  if (W > 0 && n.norm() > 0) {
+    pl.O = O / W;
+    pl.n = n.normalized();
+  } else {  // only tangencies: the paper's nominal point
+    pl.O = fallback.point;
+    pl.n = -fallback.normal;
+  }
+  Eigen::Vector3d t1 = Eigen::Vector3d::UnitX() - pl.n.x() * pl.n;
+  if (t1.norm() < 1e-6) t1 = Eigen::Vector3d::UnitY() - pl.n.y() * pl.n;  // a normal along x: not for wheels
+  pl.t1 = t1.normalized();
+  pl.t2 = pl.n.cross(pl.t1);
+  return pl;
+}
+
+// Footprint of a patch for the interaction criterion, in the frame of `ref`.
+contact::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const Plane& own, const Plane& ref,
+                                  double element) {
+  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY, depth = 0;
+  for (const auto& s : infos) {
+    for (double x : {s.xm - 0.5 * s.L, s.xm + 0.5 * s.L}) {
+      const Eigen::Vector3d d = Eigen::Vector3d(x, s.y, s.z) - own.O;
+      umin = std::min(umin, d.dot(own.t1));
+      umax = std::max(umax, d.dot(own.t1));
+      vmin = std::min(vmin, d.dot(own.t2));
+      vmax = std::max(vmax, d.dot(own.t2));
+    }
+    depth = std::max(depth, s.sagitta);
+  }
+  contact::PatchFootprint fp;
+  const Eigen::Vector3d c = own.O - ref.O;
+  fp.x = c.dot(ref.t1);
+  fp.y = c.dot(ref.t2);
+  fp.half_length = std::max(0.5 * (umax - umin), 0.5 * element);
+  fp.half_width = std::max(0.5 * (vmax - vmin), 0.5 * element);
+  fp.penetration = std::max(depth, 1e-12);
+  return fp;
+}
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point.
+struct LineProfile {
+  double v = 0, u0 = 0;          // plane coordinates: v of the line, u of its point at x = 0
+  std::vector<const SegmentInfo*> arcs;
+  double apex = 0, x_apex = 0, R = 1;  // no segment: arc with height `apex` (< 0) at x_apex
+  double height(double x) const {
+    if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
+    double h = -INFINITY;
+    for (const SegmentInfo* s : arcs) h = std::max(h, arc_height(s->R, x - s->xm) - (s->R - s->sagitta));
+    return h;
+  }
+};
+
+PatchContact solve_area(const ContactModel& model, const LocationState& st, int side, const std::vector<int>& group,
+                        const std::vector<std::vector<SegmentInfo>>& infos, ContactWorkspace& ws,
+                        const ContactRequest& request) {
+  const GeometryModel& g = model.geometry();
+  const ContactOptions& opt = model.options();
+  const PoseFrame& f = st.frame();
+  const WheelCones& wheel = g.side[side].wheel;
+  const RailLines& rail = g.side[side].rail;
+  const auto& patches = st.patches(side);
+
+  std::vector<SegmentInfo> all;
+  for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
+  const Plane pl = plane_of(all, patches[group.front()]);
+
+  PatchContact pc;
+  pc.side = side;
+  pc.patches = group;
+  pc.origin = pl.O;
+  pc.normal = pl.n;
+  pc.t1 = pl.t1;
+  pc.t2 = pl.t2;
+  pc.nominal = patches[group.front()].point;
+  pc.segments = static_cast<int>(all.size());
+
+  // Grid: aligned with the plane origin, covering the projected segments plus the margin.
+  const double e = opt.element;
+  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
+  int rmin = rail.count(), rmax = -1;
+  for (const auto& s : all) {
+    for (double x : {s.xm - 0.5 * s.L, s.xm + 0.5 * s.L}) {
+      const Eigen::Vector3d d = Eigen::Vector3d(x, s.y, s.z) - pl.O;
+      umin = std::min(umin, d.dot(pl.t1));
+      umax = std::max(umax, d.dot(pl.t1));
+      vmin = std::min(vmin, d.dot(pl.t2));
+      vmax = std::max(vmax, d.dot(pl.t2));
+    }
+    rmin = std::min(rmin, s.line);
+    rmax = std::max(rmax, s.line);
+  }
+  const long i0 = static_cast<long>(std::floor(umin / e)) - opt.margin, i1 = static_cast<long>(std::ceil(umax / e)) + opt.margin;
+  const long j0 = static_cast<long>(std::floor(vmin / e)) - opt.margin, j1 = static_cast<long>(std::ceil(vmax / e)) + opt.margin;
+  const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
+  if (nx * ny > opt.max_elements)
+    fail("contact: the {} wheel's potential contact area needs {} x {} elements (more than max_elements = {}): "
+         "the pose (y = {}, z = {}, roll = {}, yaw = {}) is far too deep",
+         side_name(side), nx, ny, opt.max_elements, st.pose().y, st.pose().z, st.pose().roll, st.pose().yaw);
+  contact::Grid grid;
+  grid.nx = static_cast<int>(nx);
+  grid.ny = static_cast<int>(ny);
+  grid.dx = grid.dy = e;
+  grid.x0 = static_cast<double>(i0) * e;
+  grid.y0 = static_cast<double>(j0) * e;
+  const double vlo = grid.y0, vhi = grid.y(grid.ny - 1);
+
+  // Rail lines across the grid's lateral range (one beyond each side when the rail has it).
+  auto v_of = [&](int r) { return (Eigen::Vector3d(0, rail.y[r], rail.z[r]) - pl.O).dot(pl.t2); };
+  int rlo = rmin, rhi = rmax;
+  while (rlo > 0 && v_of(rlo) > vlo) --rlo;
+  while (rhi < rail.count() - 1 && v_of(rhi) < vhi) ++rhi;
+  std::vector<LineProfile> lines(static_cast<std::size_t>(rhi - rlo + 1));
+  for (int r = rlo; r <= rhi; ++r) {
+    LineProfile& lp = lines[static_cast<std::size_t>(r - rlo)];
+    const Eigen::Vector3d d(0, rail.y[r], rail.z[r]);
+    lp.v = (d - pl.O).dot(pl.t2);
+    lp.u0 = (d - pl.O).dot(pl.t1);
+  }
+  for (const auto& s : all) lines[static_cast<std::size_t>(s.line - rlo)].arcs.push_back(&s);
+  for (int r = rlo; r <= rhi; ++r) {
+    LineProfile& lp = lines[static_cast<std::size_t>(r - rlo)];
+    if (!lp.arcs.empty()) continue;
+    const LineApproach a = line_approach(wheel, f, rail.y[r], rail.z[r]);
+    const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
+    lp.R = arc_radius(sp);
+    lp.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
+    lp.x_apex = a.x;
+  }
+  // The projected lines must be ordered across the plane (they are, unless the plane is far off the rail).
+  std::vector<int> order(lines.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lines[a].v < lines[b].v; });
+  std::vector<double> vs(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) vs[k] = lines[order[k]].v;
+
+  const double t1x = pl.t1.x();  // u = x t1x + u0 along a line
+  std::vector<double>& h = pc.h;
+  h.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  for (int j = 0; j < grid.ny; ++j) {
+    const double v = grid.y(j);
+    const auto it = std::upper_bound(vs.begin(), vs.end(), v);
+    std::size_t b = static_cast<std::size_t>(it - vs.begin());
+    const std::size_t a = b == 0 ? 0 : b - 1;
+    b = std::min(b, vs.size() - 1);
+    const LineProfile& la = lines[order[a]];
+    const LineProfile& lb = lines[order[b]];
+    const double t = (a == b || lb.v == la.v) ? 0.0 : std::clamp((v - la.v) / (lb.v - la.v), 0.0, 1.0);
+    for (int i = 0; i < grid.nx; ++i) {
+      const double u = grid.x(i);
+      const double ha = la.height((u - la.u0) / t1x);
+      const double hb = t > 0 ? lb.height((u - lb.u0) / t1x) : 0.0;
+      h[static_cast<std::size_t>(grid.index(i, j))] = (1 - t) * ha + t * hb;
+    }
+  }
+
+  const contact::NormalLoad load = contact::NormalLoad::penetration();
+  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, opt.normal)
+                          : model.solver().solve(grid, h, load, ws.normal, opt.normal);
+  pc.penetration = *std::max_element(h.begin(), h.end());
+  const contact::NormalSolution& sol = pc.solution;
+  const Eigen::Vector3d c(0, f.y, f.z);
+  pc.normal_force = sol.force;
+  pc.force = sol.force * pl.n;
+  pc.point = pl.O + sol.cop_x * pl.t1 + sol.cop_y * pl.t2;
+  pc.moment = (pc.point - c).cross(pc.force);
+  const double sign = side == kLeft ? 1.0 : -1.0;
+  pc.angle = std::atan2(-sign * pl.n.y(), pl.n.z());
+  pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
+
+  if (request.sensitivity && sol.force > 0) {
+    // Rigid perturbations of the wheelset move its surface point X by dz e_z + droll a x (X - c), with a the
+    // roll axis Rz(yaw) e_x; h grows by the motion toward the rail, -dX . n (linear in the plane coordinates).
+    const double yaw = st.pose().yaw;
+    const Eigen::Vector3d a(std::cos(yaw), std::sin(yaw), 0);
+    const Eigen::Vector3d oc = (pl.O - c).cross(pl.n), t1n = pl.t1.cross(pl.n), t2n = pl.t2.cross(pl.n);
+    const double k0 = a.dot(oc), ku = a.dot(t1n), kv = a.dot(t2n);
+    std::vector<double> dh(h.size());
+    for (int col = 0; col < 2; ++col) {
+      for (int j = 0; j < grid.ny; ++j)
+        for (int i = 0; i < grid.nx; ++i)
+          dh[static_cast<std::size_t>(grid.index(i, j))] =
+              col == 0 ? -pl.n.z() : -(k0 + ku * grid.x(i) + kv * grid.y(j));
+      const contact::NormalResponse r = opt.dense ? contact::normal_response_dense(model.material(), sol, dh)
+                                                  : model.solver().response(sol, dh, ws.normal);
+      Eigen::Vector3d dM = oc * r.force + t1n * r.moment_x + t2n * r.moment_y;
+      if (col == 0) dM -= Eigen::Vector3d::UnitZ().cross(pl.n) * sol.force;  // the centre moves with z
+      pc.sensitivity.block<3, 1>(0, col) = pl.n * r.force;
+      pc.sensitivity.block<3, 1>(3, col) = dM;
+    }
+  }
+  if (!request.keep_grids) {
+    pc.h.clear();
+    pc.h.shrink_to_fit();
+    pc.solution.pressure.clear();
+    pc.solution.pressure.shrink_to_fit();
+    pc.solution.gap.clear();
+    pc.solution.gap.shrink_to_fit();
+  }
+  return pc;
+}
+
+}  // namespace
+
+ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,
+                               const ContactRequest& request) {
+  const LocationState& st = ws.locator.locate(pose);
+  const GeometryModel& g = model.geometry();
+  const ContactOptions& opt = model.options();
+  ContactResult res;
+  res.pose = pose;
+  for (int side : {kLeft, kRight}) {
+    if (request.only_side >= 0 && request.only_side != side) continue;
+    const auto& patches = st.patches(side);
+    const int np = static_cast<int>(patches.size());
+    std::vector<std::vector<SegmentInfo>> infos(static_cast<std::size_t>(np));
+    std::vector<Plane> planes;
+    for (int p = 0; p < np; ++p) {
+      collect_segments(g, st, side, patches[p], infos[p]);
+      planes.push_back(plane_of(infos[p], patches[p]));
+    }
+    // Merge areas that interact (and share a plane closely enough).
+    std::vector<int> parent(static_cast<std::size_t>(np));
+    std::iota(parent.begin(), parent.end(), 0);
+    for (int a = 0; a < np; ++a)
+      for (int b = a + 1; b < np; ++b) {
+        if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > opt.merge_angle) continue;
+        const auto fa = footprint(infos[a], planes[a], planes[a], opt.element);
+        const auto fb = footprint(infos[b], planes[b], planes[a], opt.element);
+        if (contact::patches_interact(model.material(), fa, fb, opt.merge_tolerance))
+          parent[find_root(parent, b)] = find_root(parent, a);
+      }
+    std::map<int, std::vector<int>> groups;
+    for (int p = 0; p < np; ++p) groups[find_root(parent, p)].push_back(p);
+
+    WheelContact& wc = res.wheel[side];
+    double rr = 0, N = 0;
+    for (const auto& [root, group] : groups) {
+      PatchContact pc = solve_area(model, st, side, group, infos, ws, request);
+      wc.force += pc.force;
+      wc.moment += pc.moment;
+      wc.sensitivity += pc.sensitivity;
+      rr += pc.rolling_radius * pc.normal_force;
+      N += pc.normal_force;
+      wc.patches.push_back(std::move(pc));
+    }
+    wc.rolling_radius = N > 0 ? rr / N : 0.0;
+    const double sign = side == kLeft ? 1.0 : -1.0;
+    wc.angle = N > 0 ? std::atan2(-sign * wc.force.y(), wc.force.z()) : 0.0;
+    res.force += wc.force;
+    res.moment += wc.moment;
+    res.sensitivity += wc.sensitivity;
+  }
+  return res;
+}
+
+}  // namespace wrc
