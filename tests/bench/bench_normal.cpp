@@ -189,9 +189,9 @@ void variants(bool quick) {
       o.precondition = v >= 1;
       o.nested = v >= 2;
       NormalCase shifted = c;
-      if (v == 3) {  // warm start from the solution of a slightly different pose
+      if (v == 3) {  // warm start from the solution of a nearby pose (h + 0.2 um + 1e-5 x, a Newton step)
         o.initial_pressure = base.pressure;
-        for (std::size_t k = 0; k < shifted.h.size(); ++k) shifted.h[k] += 0.3e-6 + 1e-4 * shifted.grid.x(k % shifted.grid.nx);
+        for (std::size_t k = 0; k < shifted.h.size(); ++k) shifted.h[k] += 0.2e-6 + 1e-5 * shifted.grid.x(k % shifted.grid.nx);
       }
       NormalSolution s;
       const double t = best_ms([&] { s = solver.solve(shifted.grid, shifted.h, NormalLoad::penetration(), ws, o); },
