@@ -6,7 +6,7 @@
 -- As a strategy of its own: uniform resampling, coarse windows, every pair tested inside them.
 return {
   description = "coarse pre-search on outward-offset profiles, fine search only where it found penetration",
-  defaults = {coarse_every = 8, coarse_wheel_step = 2e-3},
+  defaults = {coarse_every = 16, coarse_wheel_step = 2e-3},
   uses = {"uniform", "coarse"},
   windows = true,
   discretise = function(d, opt)

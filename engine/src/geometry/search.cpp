@@ -210,8 +210,8 @@ class Scanner {
     while (top > 0) {
       --top;
       const int lo = stack[top][0], hi = stack[top][1];
-      if (lo == hi) {
-        leaf(lo);
+      if (hi - lo < 3) {  // a few cones: their own checks cost less than a range check and a split
+        for (int c = lo; c <= hi; ++c) leaf(c);
         continue;
       }
       ++bounds_;
@@ -291,11 +291,7 @@ void SearchContext::walk(int side, const Window& w) {
   auto& s = state_.side_[side];
   Scanner sc(state_.frame(), model_.side[side].wheel, model_.side[side].rail, s.crossings, s.counters.tests,
              s.counters.bounds, s.counters.lines);
-  s.scratch_int.clear();
-  std::vector<int> cur;
-  cur.reserve(16);
-  s.scratch_int.reserve(16);
-  sc.walk(w, s.scratch_int, cur);
+  sc.walk(w, s.scratch_int, s.scratch_int2);
 }
 
 // Coarse pre-search (paper Fig. 3).
@@ -326,8 +322,7 @@ int SearchContext::coarse(int side) {
   s.coarse_crossings.clear();
   long long bounds = 0, lines = 0;
   Scanner sc(state_.frame(), c.wheel, c.lines, s.coarse_crossings, s.counters.coarse_tests, bounds, lines);
-  std::vector<int> prev, cur;
-  sc.walk({0, c.lines.count() - 1, 0, c.wheel.cone_count() - 1}, prev, cur);
+  sc.walk({0, c.lines.count() - 1, 0, c.wheel.cone_count() - 1}, s.scratch_int, s.scratch_int2);
   s.counters.bounds += bounds;
 
   auto& xs = s.coarse_crossings;
@@ -336,7 +331,7 @@ int SearchContext::coarse(int side) {
   });
   const double widen = c.dilation + 1e-9;
   const int nc = g.wheel.cone_count();
-  std::vector<std::pair<int, int>> ranges;
+  std::vector<std::pair<int, int>>& ranges = s.scratch_ranges;
   for (std::size_t i = 0; i < xs.size();) {
     std::size_t j = i;
     while (j < xs.size() && xs[j].line == xs[i].line) ++j;

@@ -153,7 +153,8 @@ class LocationState {
     bool have_windows = false;
     SearchCounters counters;
     int grazes = 0;
-    std::vector<int> scratch_int;
+    std::vector<int> scratch_int, scratch_int2;
+    std::vector<std::pair<int, int>> scratch_ranges;
     std::vector<Segment> raw_segments;      // assembly workspace
     std::vector<int> parent, root, start;
   };
