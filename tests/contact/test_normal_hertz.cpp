@@ -100,6 +100,7 @@ TEST_CASE("Hertz: force, peak pressure and semi-axes for curvature ratios 1 to 1
       CHECK(std::abs(e.a_elements) <= 1.0);
       CHECK(std::abs(e.b_elements) <= 1.0);
       CHECK(s.residual.relative < 1.01e-8);
+      CHECK(s.edge_elements_in_contact == 0);  // the margin holds the whole contact
       // Prescribed force: the solved approach is Hertz's to 1 %, the same distribution.
       const NormalSolution f = solver.solve(c.grid, c.h, NormalLoad::normal_force(hz.force), ws);
       CHECK(f.force == doctest::Approx(hz.force).epsilon(1e-9));

@@ -105,6 +105,11 @@ TEST_CASE("fast solver = dense solver on 120 random non-Hertzian patches, both c
     CHECK(fast.force == doctest::Approx(F * c.grid.element_area()).epsilon(1e-12));
     CHECK(fast.cop_x == doctest::Approx(mx / F).epsilon(1e-12));
     CHECK(fast.area == doctest::Approx(fast.elements_in_contact * c.grid.element_area()).epsilon(1e-14));
+    int edge = 0;
+    for (int j = 0; j < c.grid.ny; ++j)
+      for (int i = 0; i < c.grid.nx; ++i)
+        edge += fast.pressure[c.grid.index(i, j)] > 0 && (i == 0 || j == 0 || i == c.grid.nx - 1 || j == c.grid.ny - 1);
+    CHECK(fast.edge_elements_in_contact == edge);
     if (force_control) CHECK(fast.force == doctest::Approx(load.force).epsilon(1e-10));
     // Several separate groups of contact elements (4-connectivity) in this patch?
     std::vector<int> label(c.grid.size(), -1);

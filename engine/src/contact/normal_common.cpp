@@ -39,7 +39,7 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
   const double dA = grid.element_area();
   s.gap.assign(n, 0.0);
   double F = 0, mx = 0, my = 0, pmax = 0, hmax = -INFINITY;
-  int count = 0;
+  int count = 0, edge = 0;
   Complementarity& c = s.residual;
   c = {};
   for (int j = 0; j < grid.ny; ++j)
@@ -53,6 +53,7 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
       c.product = std::max(c.product, std::abs(p * g));
       if (p > 0) {
         ++count;
+        edge += i == 0 || j == 0 || i == grid.nx - 1 || j == grid.ny - 1;
         F += p;
         mx += p * grid.x(i);
         my += p * grid.y(j);
@@ -68,6 +69,7 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
   s.area = count * dA;
   s.max_pressure = pmax;
   s.elements_in_contact = count;
+  s.edge_elements_in_contact = edge;
   c.relative = hmax > 0 ? std::max(c.contact_gap, c.negative_gap) / hmax : 0.0;
   const double all[] = {s.force, s.cop_x, s.cop_y, s.max_pressure, s.approach, c.contact_gap, c.negative_gap,
                         c.product, c.relative};

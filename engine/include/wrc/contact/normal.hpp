@@ -66,6 +66,8 @@ struct NormalSolution {
   double area = 0;               // m^2: elements in contact times dA
   double max_pressure = 0;       // Pa
   int elements_in_contact = 0;   // elements with p > 0
+  int edge_elements_in_contact = 0;  // of those, on the grid's border: > 0 means the potential contact
+                                     // area cut the contact short (enlarge it)
   int iterations = 0;            // CG iterations on this grid (fast) or active-set iterations (dense)
   int coarse_iterations = 0;     // fast: CG iterations on the coarser grids of the nested start
   int products = 0;              // fast: FFT round trips on this grid (products with D, preconditioner)
