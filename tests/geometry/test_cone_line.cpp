@@ -57,7 +57,7 @@ ld alpha_of(const RefCase& c, ld x) {
 
 ld bisect(const RefCase& c, ld a, ld b, ld sign) {
   ld ga = sign * gfun(c, a);
-  for (int i = 0; i < 200 && b - a > 0; ++i) {
+  for (int i = 0; i < 90 && b - a > 0; ++i) {
     const ld m = 0.5L * (a + b);
     if (m == a || m == b) break;
     const ld gm = sign * gfun(c, m);
@@ -87,7 +87,7 @@ std::vector<RefRoot> reference_roots(const RefCase& c, ld& tangency) {
   }
   const ld sign = dY > 0 ? 1 : -1;  // sign * g is convex
   ld a = -X, b = X;
-  for (int i = 0; i < 400; ++i) {
+  for (int i = 0; i < 150; ++i) {
     const ld m1 = a + (b - a) / 3, m2 = b - (b - a) / 3;
     if (sign * gfun(c, m1) < sign * gfun(c, m2)) b = m2; else a = m1;
   }

@@ -46,11 +46,12 @@ bool canonical(const Crossing& c) { return c.alpha > 0 && c.alpha <= 1; }
 // Crossings of one line, sorted by x: merges duplicates at shared circles, drops a graze if the count is odd.
 // Returns false if the count stays odd.
 bool clean_line(std::vector<Crossing>& v, std::size_t a, std::size_t& b, int& grazes) {
-  // Same crossing found twice (overlapping windows): identical line, cone and x.
+  // Same crossing found twice (overlapping windows): the same root of the same cone. (The two roots of a
+  // tangency share x and are both kept: a zero-length segment, as d >= 0 counts it.)
   std::size_t out = a;
   for (std::size_t i = a; i < b; ++i) {
     bool dup = false;
-    for (std::size_t j = a; j < out && !dup; ++j) dup = v[j].cone == v[i].cone && v[j].x == v[i].x;
+    for (std::size_t j = a; j < out && !dup; ++j) dup = v[j].cone == v[i].cone && v[j].root == v[i].root && v[j].x == v[i].x;
     if (!dup) v[out++] = v[i];
   }
   b = out;

@@ -246,6 +246,7 @@ class Scanner {
       x.alpha = roots[i].alpha;
       x.vertex = roots[i].alpha <= kAlphaSlack ? c : (roots[i].alpha > 1 - kAlphaSlack ? c + 1 : -1);
       x.branch = roots[i].x >= line_.xstar ? 1 : -1;
+      x.root = static_cast<signed char>(i);
       out_.push_back(x);
     }
     if (n > 0 && cur_) cur_->push_back(c);

@@ -30,6 +30,7 @@ struct Crossing {
   double alpha = 0;    // position on the cone's generatrix
   int vertex = -1;     // generatrix point within the rounding band of alpha (alpha ~ 0 or 1), else -1
   signed char branch = 0;  // +1 / -1: after / before the line's closest approach to the axle
+  signed char root = 0;    // which root of the cone's pair (0: smaller x): a tangency gives two at one x
 };
 
 // The part [x_t, x_l] of one rail line inside the wheel.
