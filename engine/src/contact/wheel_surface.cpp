@@ -86,38 +86,46 @@ LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, 
     best.overlap = wheel_surface_at(w, b2).radius - dmin;
     return best;
   }
-  // Only where the line is closer to the axle than the largest radius can it be inside.
-  double rmax = 0;
-  for (int i = 1; i < n; ++i) rmax = std::max(rmax, -w.z[i]);
-  const double reach = std::sqrt(std::max(0.0, rmax * rmax - dmin2)) / s;
-  const double ya = a2 * (xc - reach) + b2, yb = a2 * (xc + reach) + b2;
-  const double ylo = std::max(std::min(ya, yb), w.y[1]), yhi = std::min(std::max(ya, yb), w.y[n - 1]);
-  auto consider = [&](double x) {
-    const double Y = a2 * x + b2;
-    const double o = wheel_surface_at(w, Y).radius - dist(x);
+  // Only where the line is closer to the axle than the wheel's radius can it be inside: the reach in x around
+  // the closest approach follows from the largest radius over the lateral range the line sweeps there, which
+  // shrinks the range in turn (two rounds, on the range-maximum table of the radii).
+  const double ymin = w.y[1], ymax = w.y[n - 1];
+  double r2max = w.r2_range.max(1, n - 1);
+  double ylo = 0, yhi = -1;
+  for (int round = 0; round < 3; ++round) {
+    const double reach = std::sqrt(std::max(0.0, r2max - dmin2)) / s;
+    const double ya = a2 * (xc - reach) + b2, yb = a2 * (xc + reach) + b2;
+    ylo = std::max(std::min(ya, yb), ymin);
+    yhi = std::min(std::max(ya, yb), ymax);
+    if (ylo > yhi) break;
+    const int p0 = std::max(1, w.first_cone_reaching(ylo)), p1 = std::min(n - 1, w.last_cone_starting_before(yhi) + 1);
+    r2max = w.r2_range.max(p0, p1);
+  }
+  auto consider = [&](double x, double radius) {
+    const double o = radius - dist(x);
     if (o > best.overlap) {
       best.overlap = o;
       best.x = x;
-      best.Y = Y;
+      best.Y = a2 * x + b2;
     }
   };
   if (ylo > yhi) {  // the line passes under no part of the wheel within reach
     const double Yc = a2 * xc + b2;
-    if (Yc < w.y[1] || Yc > w.y[n - 1]) return outside();
-    consider(xc);  // within the lateral range but far below: the gap at the closest approach
+    if (Yc < ymin || Yc > ymax) return outside();
+    consider(xc, wheel_surface_at(w, Yc).radius);  // within the lateral range but below: the gap there
     return best;
   }
   const int c0 = std::max(1, w.first_cone_reaching(ylo)), c1 = std::min(n - 2, w.last_cone_starting_before(yhi));
   for (int c = c0; c <= c1; ++c) {
     const double y0 = w.y[c], y1 = w.y[c + 1];
     if (y1 <= y0) continue;  // flat ring: its circle is also an end of a neighbouring cone
-    const double k = ((-w.z[c + 1]) - (-w.z[c])) / (y1 - y0);  // d radius / d Y
+    const double r0 = -w.z[c], k = ((-w.z[c + 1]) - r0) / (y1 - y0);  // d radius / d Y
     // Stationary point of r0 + k (a2 x + b2 - y0) - sqrt(dmin^2 + s^2 (x - xc)^2).
     const double ka = k * a2, den = s2 - ka * ka;
     double x = den > 0 ? xc + ka * dmin / (s * std::sqrt(den)) : (ka > 0 ? 1e3 : -1e3);
     const double xa = (y0 - b2) / a2, xb = (y1 - b2) / a2;
     x = std::clamp(x, std::min(xa, xb), std::max(xa, xb));
-    consider(x);
+    consider(x, r0 + k * std::clamp(a2 * x + b2 - y0, 0.0, y1 - y0));
   }
   return best;
 }

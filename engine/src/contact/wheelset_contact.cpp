@@ -5,6 +5,8 @@
 #include "wrc/contact/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,0 +1,127 @@
+// Static, frictionless wheelset on the track (paper section 4, DESIGN.md section 3).
+//
+// Elastic equilibrium: lateral position y, yaw and the vertical load Q at the centre are given; the height z
+// and the roll are solved (Newton-Raphson) so that the contact forces carry Q and have no moment about x:
+//   sum Fz - Q = 0,   sum Mx = 0   (moments about the wheelset centre, track axes).
+// The lateral force Y and the moments My, Mz that an external support must apply at the centre to hold the
+// wheelset there are reported: Y = -sum Fy, My = -sum My, Mz = -sum Mz.
+//
+// The Jacobian comes from the sensitivities of the normal problems (wheelset_contact.hpp): each area's
+// pressure response to the rigid motion of the wheel surface, on its contact set. Steps are limited and
+// backtracked on the residual norm (|R_F|/Q)^2 + (|R_M|/(Q 1 m))^2.
+//
+// Rigid reference: the same (y, yaw) with undeformable bodies: z and roll such that both wheels just touch
+// (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q.
+#pragma once
+
+#include "wrc/contact/wheelset_contact.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wrc {
+
+struct EquilibriumOptions {
+  double force_tolerance = 1e-6;   // |sum Fz - Q| <= force_tolerance * Q
+  double moment_tolerance = 1e-6;  // |sum Mx| <= moment_tolerance * Q * 1 m
+  int max_iterations = 50;
+  double max_step_z = 0.5e-3;      // largest Newton step in z (m)
+  double max_step_roll = 2e-3;     // largest Newton step in roll (rad)
+  double initial_approach = 0.05e-3;  // cold start: the rigid position pressed in by this much (m)
+  // Called at every iterate (iteration, z, roll, contact), e.g. to print the Newton history.
+  std::function<void(int, double, double, const ContactResult&)> trace;
+};
+
+struct EquilibriumResult {
+  bool converged = false;
+  std::string message;       // why it did not converge (empty when it did)
+  double y = 0, yaw = 0, Q = 0;
+  double z = 0, roll = 0;    // solution (or last iterate) (m, rad)
+  double Y = 0, My = 0, Mz = 0;  // balancing lateral force (N) and moments (N m) at the centre
+  double residual_force = 0;     // sum Fz - Q (N)
+  double residual_moment = 0;    // sum Mx (N m)
+  int iterations = 0;            // Newton iterations
+  int evaluations = 0;           // contact evaluations (including line-search trials)
+  ContactResult contact;         // at the solution
+};
+
+// A start (z, roll), e.g. the previous point of a sweep.
+struct Start {
+  double z = 0, roll = 0;
+};
+
+// Solves the elastic equilibrium. Never throws for lack of convergence: `converged` is false and `message`
+// says why (no contact possible, no descent, iteration limit), with the last iterate in z, roll and contact.
+// Throws wrc::Error on bad input (non-finite y or yaw, Q <= 0).
+EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
+                                    const EquilibriumOptions& options = {}, std::optional<Start> start = {},
+                                    const ContactRequest& request = {});
+
+// One wheel-rail pair with its vertical force prescribed (CONTACT / multibody style): the wheelset height z
+// that makes that wheel's vertical contact force equal Fz at the given y, yaw and roll.
+struct WheelResult {
+  bool converged = false;
+  std::string message;
+  int side = kLeft;
+  double z = 0;              // solved height of the wheelset centre (m)
+  double residual = 0;       // Fz(side) - Fz (N)
+  int iterations = 0;
+  WheelContact wheel;        // the side's contact
+};
+WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
+                        ContactWorkspace& ws, const EquilibriumOptions& options = {});
+
+// Rigid (kinematic) contact of one wheel: the deepest rail line, its point and the wheel normal there.
+struct RigidWheel {
+  double overlap = 0;                 // radial overlap at the deepest point (m; 0 at the solution)
+  int line = -1;                      // rail line index
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // contact point (track frame, m)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // into the wheel
+  double angle = 0;                   // contact angle (rad)
+  double rolling_radius = 0;          // m
+  double normal_force = 0;            // N, from the force balance
+};
+struct RigidResult {
+  bool converged = false;
+  std::string message;
+  double y = 0, yaw = 0, Q = 0;
+  double z = 0, roll = 0;
+  double Y = 0, My = 0, Mz = 0;
+  std::array<RigidWheel, 2> wheel;
+};
+RigidResult solve_rigid(const GeometryModel& geometry, double y, double yaw, double Q);
+
+// The deepest rail line of one side at a pose (radial overlap > 0 inside the wheel).
+RigidWheel deepest_point(const GeometryModel& geometry, int side, const Pose& pose);
+
+// A sweep of equilibria: for each yaw, y runs over `ys` with continuation, starting at the y closest to 0
+// and marching outward on both sides. Series are split into such chains and run on `threads` worker
+// threads (each with its own ContactWorkspace, made by `make_workspace`). A failed case is recorded and
+// the chain goes on from the last converged point.
+struct SweepCase {
+  double y = 0, yaw = 0;
+};
+struct SweepOptions {
+  int threads = 0;             // 0: the machine's cores
+  double Q = 200e3;            // N
+  bool keep_grids = false;     // keep pressure/h grids of every case (memory)
+  bool rigid = false;          // also solve the rigid reference of each case
+  EquilibriumOptions equilibrium;
+  // Called from worker threads (serialised) after each case: done, total, failed so far.
+  std::function<void(int, int, int)> progress;
+};
+struct SweepResult {
+  std::vector<SweepCase> cases;             // in the order given (yaw major, then y as given)
+  std::vector<EquilibriumResult> elastic;   // one per case
+  std::vector<std::optional<RigidResult>> rigid;
+  std::vector<std::string> errors;          // per case: exception text if the case threw, else empty
+  double seconds = 0;
+  int threads = 1;
+};
+SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
+                      const SweepOptions& options,
+                      const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
+
+}  // namespace wrc
