@@ -113,7 +113,7 @@ struct RefSolid {
 std::vector<std::pair<double, double>> reference_segments(const RefSolid& solid, const PoseFrame& f, double y_r,
                                                           double z_r) {
   std::vector<std::pair<double, double>> out;
-  const double X = 0.12, h = 5e-5;
+  const double X = 0.08, h = 1e-4;  // segments reach |x| ~ 55 mm at 1 mm depth and 30 mrad yaw
   const int n = static_cast<int>(2 * X / h);
   auto g = [&](double x) { return solid.outside(f, x, y_r, z_r); };
   auto root = [&](double a, double b) {
@@ -174,7 +174,7 @@ TEST_CASE("segments agree with an independent numerical reference (grid + bisect
     LocationState st;
     int compared = 0;
     double worst = 0;
-    for (int k = 0; k < 40; ++k) {
+    for (int k = 0; k < 24; ++k) {
       const Pose p = test::random_pose(rng, *m.track, test::log_uniform(rng, 1e-5, 1e-3));
       locate_contact(m, p, st, brute);
       const PoseFrame f(p);
@@ -185,15 +185,15 @@ TEST_CASE("segments agree with an independent numerical reference (grid + bisect
         std::vector<std::vector<std::pair<double, double>>> by_line(m.side[s].rail.count());
         for (const Segment& g : st.segments(s)) by_line[g.line].emplace_back(g.x_t, g.x_l);
         for (int r = 0; r < m.side[s].rail.count(); ++r) {
-          if (by_line[r].empty() && (r % 4)) continue;  // lines without segments: a sample of them
+          if (by_line[r].empty() && (r % 8)) continue;  // lines without segments: a sample of them
           const auto ref = reference_segments(solid, f, m.side[s].rail.y[r], m.side[s].rail.z[r]);
           // Segments shorter than the grid step can hide from the reference; compare the others.
           std::vector<std::pair<double, double>> eng;
           for (auto e : by_line[r])
-            if (e.second - e.first > 2e-4) eng.push_back(e);
+            if (e.second - e.first > 3e-4) eng.push_back(e);
           std::vector<std::pair<double, double>> rf;
           for (auto e : ref)
-            if (e.second - e.first > 2e-4) rf.push_back(e);
+            if (e.second - e.first > 3e-4) rf.push_back(e);
           INFO("pair ", pair, " pose ", k, " side ", s, " line ", r);
           REQUIRE(eng.size() == rf.size());
           for (std::size_t i = 0; i < eng.size(); ++i) {
@@ -206,7 +206,7 @@ TEST_CASE("segments agree with an independent numerical reference (grid + bisect
       }
     }
     MESSAGE("pair ", pair, ": ", compared, " segments compared, worst end difference ", worst, " m");
-    CHECK(compared > 200);
+    CHECK(compared > 100);
   }
 }
 
