@@ -110,10 +110,13 @@ class NormalWorkspace {
 };
 
 // The fast solver: conjugate gradients on the active set (a projected CG in the manner of Polonsky and
-// Keer, Wear 231, 1999) preconditioned with the inverse of the padded circulant (an FFT deconvolution, in
-// the spirit of Vollebregt's NormCG, J. Comput. Phys. 257, 2014). Part of an immutable model: one
-// instance can serve many threads at once, each with its own NormalWorkspace; it caches the kernel
-// spectra per grid shape.
+// Keer, Wear 231, 1999) preconditioned with the inverse of the grid's periodic circulant (an FFT
+// deconvolution, in the spirit of Vollebregt's NormCG, J. Comput. Phys. 257, 2014), started from the
+// solution on a grid twice as coarse (NormalOptions::nested) unless a warm start is given. Products with
+// D by zero-padded FFT (FFTW). Part of an immutable model: one instance can serve many threads at once,
+// each with its own NormalWorkspace; it caches the kernel spectra and FFT plans per padded grid shape
+// (the first solve of a new shape pays for them: a few ms with FftPlanning::estimate, 0.1-1 s with
+// FftPlanning::measure, whose plans then run ~10-30 % faster).
 class NormalSolver {
  public:
   explicit NormalSolver(const Material& material, FftPlanning planning = FftPlanning::estimate);
