@@ -27,20 +27,36 @@ Eigen::Vector2d vertex_normal(const WheelCones& w, int i) {
 
 }  // namespace
 
-WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
+namespace {
+
+// The running-surface cone holding Y (clamped to the profile) and the position t in [0, 1] on it.
+int cone_holding(const WheelCones& w, double& Y, double& t) {
   // Profile points are 1 .. n - 1 (0 and n are on the axle); running-surface cones 1 .. n - 2.
   const int n = w.cone_count();
-  const double lo = w.y[1], hi = w.y[n - 1];
-  Y = std::clamp(Y, lo, hi);
+  Y = std::clamp(Y, w.y[1], w.y[n - 1]);
   // First point with y >= Y among the profile points; the cone before it holds Y.
   const auto it = std::lower_bound(w.y.begin() + 1, w.y.begin() + n, Y);
   int c = std::clamp(static_cast<int>(it - w.y.begin()) - 1, 1, n - 2);
   // Skip flat rings (vertical runs): they hold Y only at their own y; take the neighbouring cone that spans Y.
   while (c < n - 2 && w.y[c + 1] == w.y[c]) ++c;
+  const double y0 = w.y[c], y1 = w.y[c + 1];
+  t = y1 > y0 ? std::clamp((Y - y0) / (y1 - y0), 0.0, 1.0) : 0.0;
+  return c;
+}
+
+}  // namespace
+
+double wheel_radius_at(const WheelCones& w, double Y) {
+  double t = 0;
+  const int c = cone_holding(w, Y, t);
+  return -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
+}
+
+WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
+  double t = 0;
+  const int c = cone_holding(w, Y, t);
   WheelSurfacePoint s;
   s.cone = c;
-  const double y0 = w.y[c], y1 = w.y[c + 1];
-  const double t = y1 > y0 ? std::clamp((Y - y0) / (y1 - y0), 0.0, 1.0) : 0.0;
   s.radius = -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
   const Eigen::Vector2d nrm = ((1 - t) * vertex_normal(w, c) + t * vertex_normal(w, c + 1)).normalized();
   s.normal_y = nrm.x();
@@ -83,7 +99,7 @@ LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, 
     if (b2 < w.y[1] || b2 > w.y[n - 1]) return outside();
     best.x = xc;
     best.Y = b2;
-    best.overlap = wheel_surface_at(w, b2).radius - dmin;
+    best.overlap = wheel_radius_at(w, b2) - dmin;
     return best;
   }
   // Only where the line is closer to the axle than the wheel's radius can it be inside: the reach in x around
@@ -112,7 +128,7 @@ LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, 
   if (ylo > yhi) {  // the line passes under no part of the wheel within reach
     const double Yc = a2 * xc + b2;
     if (Yc < ymin || Yc > ymax) return outside();
-    consider(xc, wheel_surface_at(w, Yc).radius);  // within the lateral range but below: the gap there
+    consider(xc, wheel_radius_at(w, Yc));  // within the lateral range but below: the gap there
     return best;
   }
   const int c0 = std::max(1, w.first_cone_reaching(ylo)), c1 = std::min(n - 2, w.last_cone_starting_before(yhi));

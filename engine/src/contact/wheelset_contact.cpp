@@ -155,9 +155,71 @@ struct LineProfile {
   }
 };
 
+// d(force, moment)/d(z, roll) of a solved area. Rigid perturbations of the wheelset move its surface point X by
+// dz e_z + droll a x (X - c), with a the roll axis Rz(yaw) e_x and c the centre; h grows by the motion toward
+// the rail, -dX . n, which is linear in the plane coordinates. The pressure response on the contact set
+// (normal.hpp) gives dN and the first moments, hence dF = n dN and dM. The plane is held fixed: exact to first
+// order for the elastic stiffness, which dominates while the contact does not slide along a curved profile.
+void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
+  const contact::NormalSolution& sol = pc.solution;
+  pc.sensitivity.setZero();
+  if (!(sol.force > 0)) return;
+  if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
+  const contact::Grid& grid = sol.grid;
+  const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
+  const Eigen::Vector3d& n = pc.normal;
+  const Eigen::Vector3d oc = (pc.origin - c).cross(n), t1n = pc.t1.cross(n), t2n = pc.t2.cross(n);
+  const double k0 = a.dot(oc), ku = a.dot(t1n), kv = a.dot(t2n);
+  std::vector<double> dh(static_cast<std::size_t>(grid.size()));
+  for (int col = 0; col < 2; ++col) {
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i)
+        dh[static_cast<std::size_t>(grid.index(i, j))] = col == 0 ? -n.z() : -(k0 + ku * grid.x(i) + kv * grid.y(j));
+    // A Jacobian for Newton steps needs a few digits: at 1e-2 the response agrees with a 1e-8 one to ~1e-5.
+    const contact::NormalResponse r = model.options().dense
+                                          ? contact::normal_response_dense(model.material(), sol, dh)
+                                          : model.solver().response(sol, dh, ws.normal, 1e-2);
+    Eigen::Vector3d dM = oc * r.force + t1n * r.moment_x + t2n * r.moment_y;
+    if (col == 0) dM -= Eigen::Vector3d::UnitZ().cross(n) * sol.force;  // the centre moves with z
+    pc.sensitivity.block<3, 1>(0, col) = n * r.force;
+    pc.sensitivity.block<3, 1>(3, col) = dM;
+  }
+}
+
+// Start pressures for an area from the last evaluation's area of the same side in (nearly) the same plane:
+// the old pressure at each new element centre (bilinear). False when there is none.
+bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl, const contact::Grid& grid,
+                std::vector<double>& start) {
+  const ContactWorkspace::Previous* best = nullptr;
+  double best_d = 5e-3;  // m: farther origins belong to another area
+  for (const auto& p : previous) {
+    if (p.normal.dot(pl.n) < std::cos(0.05) || p.pressure.empty()) continue;
+    const double d = (p.origin - pl.O).norm();
+    if (d < best_d) {
+      best_d = d;
+      best = &p;
+    }
+  }
+  if (!best) return false;
+  const contact::Grid& g = best->grid;
+  start.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const Eigen::Vector3d X = pl.O + grid.x(i) * pl.t1 + grid.y(j) * pl.t2 - best->origin;
+      const double fu = (X.dot(best->t1) - g.x0) / g.dx, fv = (X.dot(best->t2) - g.y0) / g.dy;
+      const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
+      if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) continue;
+      const double a = fu - iu, b = fv - iv;
+      auto P = [&](int di, int dj) { return best->pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
+      start[static_cast<std::size_t>(grid.index(i, j))] =
+          (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
+    }
+  return true;
+}
+
 PatchContact solve_area(const ContactModel& model, const LocationState& st, int side, const std::vector<int>& group,
                         const std::vector<std::vector<SegmentInfo>>& infos, ContactWorkspace& ws,
-                        const ContactRequest& request) {
+                        const ContactRequest& request, std::vector<ContactWorkspace::Previous>& next_previous) {
   const GeometryModel& g = model.geometry();
   const ContactOptions& opt = model.options();
   const PoseFrame& f = st.frame();
@@ -259,8 +321,12 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   }
 
   const contact::NormalLoad load = contact::NormalLoad::penetration();
-  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, opt.normal)
-                          : model.solver().solve(grid, h, load, ws.normal, opt.normal);
+  contact::NormalOptions nopt = opt.normal;
+  if (request.tolerance > 0) nopt.tolerance = request.tolerance;
+  std::vector<double> start;
+  if (ws.warm_start && warm_start(ws.previous[side], pl, grid, start)) nopt.initial_pressure = start;
+  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
+                          : model.solver().solve(grid, h, load, ws.normal, nopt);
   pc.penetration = *std::max_element(h.begin(), h.end());
   const contact::NormalSolution& sol = pc.solution;
   const Eigen::Vector3d c(0, f.y, f.z);
@@ -272,35 +338,8 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   pc.angle = std::atan2(-sign * pl.n.y(), pl.n.z());
   pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
 
-  if (request.sensitivity && sol.force > 0) {
-    // Rigid perturbations of the wheelset move its surface point X by dz e_z + droll a x (X - c), with a the
-    // roll axis Rz(yaw) e_x; h grows by the motion toward the rail, -dX . n (linear in the plane coordinates).
-    const double yaw = st.pose().yaw;
-    const Eigen::Vector3d a(std::cos(yaw), std::sin(yaw), 0);
-    const Eigen::Vector3d oc = (pl.O - c).cross(pl.n), t1n = pl.t1.cross(pl.n), t2n = pl.t2.cross(pl.n);
-    const double k0 = a.dot(oc), ku = a.dot(t1n), kv = a.dot(t2n);
-    std::vector<double> dh(h.size());
-    for (int col = 0; col < 2; ++col) {
-      for (int j = 0; j < grid.ny; ++j)
-        for (int i = 0; i < grid.nx; ++i)
-          dh[static_cast<std::size_t>(grid.index(i, j))] =
-              col == 0 ? -pl.n.z() : -(k0 + ku * grid.x(i) + kv * grid.y(j));
-      const contact::NormalResponse r = opt.dense ? contact::normal_response_dense(model.material(), sol, dh)
-                                                  : model.solver().response(sol, dh, ws.normal);
-      Eigen::Vector3d dM = oc * r.force + t1n * r.moment_x + t2n * r.moment_y;
-      if (col == 0) dM -= Eigen::Vector3d::UnitZ().cross(pl.n) * sol.force;  // the centre moves with z
-      pc.sensitivity.block<3, 1>(0, col) = pl.n * r.force;
-      pc.sensitivity.block<3, 1>(3, col) = dM;
-    }
-  }
-  if (!request.keep_grids) {
-    pc.h.clear();
-    pc.h.shrink_to_fit();
-    pc.solution.pressure.clear();
-    pc.solution.pressure.shrink_to_fit();
-    pc.solution.gap.clear();
-    pc.solution.gap.shrink_to_fit();
-  }
+  if (request.sensitivity) area_sensitivity(model, st.pose(), pc, ws);
+  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, sol.grid, sol.pressure});
   return pc;
 }
 
@@ -339,8 +378,9 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
 
     WheelContact& wc = res.wheel[side];
     double rr = 0, N = 0;
+    std::vector<ContactWorkspace::Previous> next_previous;
     for (const auto& [root, group] : groups) {
-      PatchContact pc = solve_area(model, st, side, group, infos, ws, request);
+      PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
       wc.force += pc.force;
       wc.moment += pc.moment;
       wc.sensitivity += pc.sensitivity;
@@ -348,6 +388,7 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
       N += pc.normal_force;
       wc.patches.push_back(std::move(pc));
     }
+    ws.previous[side] = std::move(next_previous);
     wc.rolling_radius = N > 0 ? rr / N : 0.0;
     const double sign = side == kLeft ? 1.0 : -1.0;
     wc.angle = N > 0 ? std::atan2(-sign * wc.force.y(), wc.force.z()) : 0.0;
@@ -355,7 +396,29 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
     res.moment += wc.moment;
     res.sensitivity += wc.sensitivity;
   }
+  if (!request.keep_grids) drop_grids(res);
   return res;
+}
+
+void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& ws) {
+  result.sensitivity.setZero();
+  for (WheelContact& wc : result.wheel) {
+    wc.sensitivity.setZero();
+    for (PatchContact& pc : wc.patches) {
+      area_sensitivity(model, result.pose, pc, ws);
+      wc.sensitivity += pc.sensitivity;
+    }
+    result.sensitivity += wc.sensitivity;
+  }
+}
+
+void drop_grids(ContactResult& result) {
+  for (WheelContact& wc : result.wheel)
+    for (PatchContact& pc : wc.patches) {
+      pc.h = {};
+      pc.solution.pressure = {};
+      pc.solution.gap = {};
+    }
 }
 
 }  // namespace wrc

@@ -19,21 +19,31 @@ void check_case(double y, double yaw, double Q, const char* what) {
   if (!std::isfinite(Q) || !(Q > 0)) fail("{}: Q = {} N must be a positive number", what, Q);
 }
 
-// Brent-style root of a function with f(a), f(b) of opposite signs (bisection safeguarded secant).
+// Root of f on a bracket [a, b] (f(a), f(b) of opposite signs) by the Illinois variant of regula falsi:
+// superlinear on smooth functions, never leaves the bracket. Stops when |f| <= ftol; `ok` says whether it did.
 template <class F>
-double bracketed_root(F&& f, double a, double b, double fa, double fb, double xtol, int max_iter = 100) {
-  for (int it = 0; it < max_iter && std::abs(b - a) > xtol; ++it) {
-    double x = b - fb * (b - a) / (fb - fa);  // secant
-    const double lo = std::min(a, b), hi = std::max(a, b);
-    if (!(x > lo + 0.05 * (hi - lo) && x < hi - 0.05 * (hi - lo))) x = 0.5 * (a + b);
+double bracketed_root(F&& f, double a, double b, double fa, double fb, double ftol, int max_iter, bool& ok) {
+  ok = false;
+  int kept = 0;  // +1 / -1: which end was kept last (halve its value when kept twice)
+  for (int it = 0; it < max_iter; ++it) {
+    double x = b - fb * (b - a) / (fb - fa);
+    if (!(x > std::min(a, b) && x < std::max(a, b))) x = 0.5 * (a + b);
     const double fx = f(x);
-    if (fx == 0) return x;
-    if ((fx < 0) == (fa < 0)) {
-      a = x;
-      fa = fx;
-    } else {
+    if (std::abs(fx) <= ftol) {
+      ok = true;
+      return x;
+    }
+    if ((fx < 0) == (fb < 0)) {  // x replaces b, a is kept
       b = x;
       fb = fx;
+      if (kept == 1) fa *= 0.5;
+      kept = 1;
+    } else {  // x replaces a... the bracket is now [b, x]
+      a = b;
+      fa = fb;
+      b = x;
+      fb = fx;
+      kept = -1;
     }
   }
   return std::abs(fa) < std::abs(fb) ? a : b;
@@ -79,7 +89,8 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) 
     double a = -0.02, b = 0.02;
     double fa = f(a), fb = f(b);
     if (!(fa > 0 && fb < 0)) fail("rigid contact: no touching height within +-20 mm at y = {}, yaw = {}", y, yaw);
-    return bracketed_root(f, a, b, fa, fb, 1e-12);
+    bool ok = false;
+    return bracketed_root(f, a, b, fa, fb, 1e-13, 200, ok);
   };
   // Then the roll at which both wheels touch: the difference of the overlaps changes sign (left rises with roll).
   auto diff = [&](double roll) {
@@ -90,7 +101,9 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) 
     double a = -0.02, b = 0.02;
     double fa = diff(a), fb = diff(b);
     if (!(fa > 0 && fb < 0)) fail("rigid contact: no roll within +-20 mrad puts both wheels on their rails");
-    res.roll = bracketed_root(diff, a, b, fa, fb, 1e-13);
+    bool ok = false;
+    res.roll = bracketed_root(diff, a, b, fa, fb, 1e-13, 200, ok);
+    if (!ok) fail("rigid contact: the roll that puts both wheels on their rails was not found to 1e-13 m");
     res.z = touch_z(res.roll);
   } catch (const Error& e) {
     res.message = e.what();
@@ -134,36 +147,6 @@ struct Iterate {
   bool lifted = false;  // a wheel carries no load
 };
 
-// Safeguarded secant on a bracket [a, b] with f(a), f(b) of opposite signs; stops when |f| <= ftol.
-template <class F>
-double bracketed_root_f(F&& f, double a, double b, double fa, double fb, double ftol, int max_iter, bool& ok) {
-  ok = false;
-  double side = 0;  // Illinois modification: halve the retained end's value when it is kept twice
-  for (int it = 0; it < max_iter; ++it) {
-    double x = b - fb * (b - a) / (fb - fa);
-    const double lo = std::min(a, b), hi = std::max(a, b);
-    if (!(x > lo && x < hi)) x = 0.5 * (a + b);
-    const double fx = f(x);
-    if (std::abs(fx) <= ftol) {
-      ok = true;
-      return x;
-    }
-    if ((fx < 0) == (fb < 0)) {
-      b = x;
-      fb = fx;
-      if (side == -1) fa *= 0.5;
-      side = -1;
-    } else {
-      a = b;
-      fa = fb;
-      b = x;
-      fb = fx;
-      side = 1;
-    }
-  }
-  return std::abs(fa) < std::abs(fb) ? a : b;
-}
-
 }  // namespace
 
 EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
@@ -188,11 +171,16 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     roll0 = rigid.roll;
   }
   ContactRequest req = request;
-  req.sensitivity = true;
+  req.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
+  req.keep_grids = true;
   const double Mref = Q * 1.0;  // the moment scale Q x 1 m
   const double ftol = opt.force_tolerance * Q, mtol = opt.moment_tolerance * Mref;
+  // Inexact Newton: far from the solution the normal problems need not be solved to the last digit; the
+  // solver's tolerance follows the residual down to the model's own (about 1e-8).
+  double accuracy = 1.0;  // the last relative residual
   auto contact_at = [&](double z, double roll) {
     ++res.evaluations;
+    req.tolerance = std::clamp(1e-3 * accuracy, model.options().normal.tolerance, 1e-5);
     return evaluate_contact(model, {y, z, roll, yaw}, ws, req);
   };
   auto residual = [&](const ContactResult& c) { return Eigen::Vector2d(c.force.z() - Q, c.moment.x()); };
@@ -213,6 +201,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   // balance rests on where the loaded wheel's contact sits, a geometric effect they miss: forward differences.
   auto jacobian = [&](Iterate& it) {
     if (!it.lifted) {
+      add_sensitivity(model, it.contact, ws);
       const Sensitivity& S = it.contact.sensitivity;
       it.J << S(2, 0), S(2, 1), S(3, 0), S(3, 1);
       return;
@@ -228,7 +217,12 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   for (int k = 0;; ++k) {
     if (opt.trace) opt.trace(k, cur.z, cur.roll, cur.contact);
     res.iterations = k;
-    if (converged(cur)) break;
+    accuracy = std::sqrt(cur.merit);
+    if (converged(cur)) {
+      if (req.tolerance <= model.options().normal.tolerance) break;
+      cur = evaluate(cur.z, cur.roll);  // confirm with the normal problems solved to full accuracy
+      if (converged(cur)) break;
+    }
     if (k >= opt.max_iterations) {
       newton_failed = true;
       res.message = fmt::format("Newton: no convergence in {} iterations", opt.max_iterations);
@@ -299,7 +293,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
         ok = false;
         return b;
       }
-      const double z = bracketed_root_f(f, a, b, fa, fb, ftol, 60, ok);
+      const double z = bracketed_root(f, a, b, fa, fb, ftol, 60, ok);
       if (ok) z_guess = z;
       c = contact_at(z, roll);
       return z;
@@ -335,7 +329,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
         }
         if (!bracketed) throw Error("no roll within +-32 mrad balances the roll moment");
         bool rok = false;
-        root = bracketed_root_f(moment_at, a, b, fa, fb, mtol, 80, rok);
+        root = bracketed_root(moment_at, a, b, fa, fb, mtol, 80, rok);
         found = rok;
       }
       if (found) {
@@ -357,6 +351,8 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   res.Y = -cur.contact.force.y();
   res.My = -cur.contact.moment.y();
   res.Mz = -cur.contact.moment.z();
+  if (request.sensitivity && !cur.lifted) add_sensitivity(model, cur.contact, ws);
+  if (!request.keep_grids) drop_grids(cur.contact);
   res.contact = std::move(cur.contact);
   return res;
 }
@@ -372,7 +368,8 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   auto pen = [&](double z) { return deepest_point(model.geometry(), side, {y, z, roll, yaw}).overlap; };
   double fa = pen(-0.02), fb = pen(0.02);
   if (!(fa > 0 && fb < 0)) fail("wheel: the {} wheel does not touch its rail within z = +-20 mm", side_name(side));
-  double z = bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-12) - opt.initial_approach;
+  bool ok = false;
+  double z = bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-13, 200, ok) - opt.initial_approach;
   ContactRequest req;
   req.sensitivity = true;
   req.only_side = side;

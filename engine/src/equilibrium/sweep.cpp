@@ -59,17 +59,21 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
 
   std::mutex progress_mutex;
   int done = 0, failed = 0;
-  auto solve_case = [&](ContactWorkspace& ws, int c, std::optional<Start> start) -> bool {
+  // Tries the starts in order (then the rigid position); keeps the first converged solution, else the last try.
+  auto solve_case = [&](ContactWorkspace& ws, int c, std::vector<std::optional<Start>> starts) -> bool {
     const SweepCase& sc = out.cases[static_cast<std::size_t>(c)];
     bool ok = false;
     try {
       ContactRequest req;
       req.keep_grids = opt.keep_grids;
-      out.elastic[c] = solve_equilibrium(model, sc.y, sc.yaw, opt.Q, ws, opt.equilibrium, start, req);
-      if (!out.elastic[c].converged && start) {  // retry from the rigid position before giving up
-        EquilibriumResult cold = solve_equilibrium(model, sc.y, sc.yaw, opt.Q, ws, opt.equilibrium, {}, req);
-        if (cold.converged) out.elastic[c] = std::move(cold);
+      if (starts.empty() || starts.back()) starts.push_back(std::nullopt);
+      int evaluations = 0;
+      for (const auto& start : starts) {
+        out.elastic[c] = solve_equilibrium(model, sc.y, sc.yaw, opt.Q, ws, opt.equilibrium, start, req);
+        evaluations += out.elastic[c].evaluations;
+        if (out.elastic[c].converged) break;
       }
+      out.elastic[c].evaluations = evaluations;
       ok = out.elastic[c].converged;
       if (opt.rigid) out.rigid[c] = solve_rigid(model.geometry(), sc.y, sc.yaw, opt.Q);
     } catch (const std::exception& e) {
@@ -119,11 +123,25 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
   run_parallel(static_cast<int>(centres.size()), [&](ContactWorkspace& ws, int t) { solve_case(ws, centres[t], {}); });
   run_parallel(static_cast<int>(chains.size()), [&](ContactWorkspace& ws, int t) {
     const Chain& ch = chains[static_cast<std::size_t>(t)];
-    std::optional<Start> start;
+    // Continuation: start each case from the straight line through the last two converged points of the
+    // chain (from the last one alone after the first step).
+    struct Point {
+      double y, z, roll;
+    };
+    std::vector<Point> path;
     const EquilibriumResult& centre = out.elastic[static_cast<std::size_t>(ch.centre)];
-    if (centre.converged) start = Start{centre.z, centre.roll};
+    if (centre.converged) path.push_back({centre.y, centre.z, centre.roll});
     for (int c : ch.cases) {
-      if (solve_case(ws, c, start)) start = Start{out.elastic[c].z, out.elastic[c].roll};
+      std::vector<std::optional<Start>> starts;
+      const double yc = out.cases[static_cast<std::size_t>(c)].y;
+      if (path.size() >= 2) {
+        const Point& a = path[path.size() - 2];
+        const Point& b = path.back();
+        const double s = (b.y != a.y) ? (yc - b.y) / (b.y - a.y) : 0.0;
+        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll)});
+      }
+      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll});
+      if (solve_case(ws, c, starts)) path.push_back({yc, out.elastic[c].z, out.elastic[c].roll});
     }
   });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -24,6 +24,8 @@ struct WheelSurfacePoint {
 
 // The wheel surface at wheelset-frame lateral position Y (m), clamped to the profile's lateral range.
 WheelSurfacePoint wheel_surface_at(const WheelCones& wheel, double Y);
+// Its radius alone (m), without the normal: cheaper.
+double wheel_radius_at(const WheelCones& wheel, double Y);
 
 // Track-frame unit normal of the wheel surface, pointing INTO the wheel (the direction of the force of the
 // rail on the wheel), at the track-frame point p near the surface.

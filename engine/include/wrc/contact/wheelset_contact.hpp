@@ -103,24 +103,39 @@ class ContactModel {
   contact::NormalSolver solver_;
 };
 
-// Per-thread state: the locator (the model's strategy bound to this thread) and the solver's buffers.
+// Per-thread state: the locator (the model's strategy bound to this thread), the solver's buffers and the
+// pressures of the last evaluation, which start the next solve of the same area (a Newton step or a sweep
+// moves the wheelset little between evaluations).
 class ContactWorkspace {
  public:
   explicit ContactWorkspace(const ContactModel& model);  // the strategy's own per-thread search
   ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search);
   Locator locator;
   contact::NormalWorkspace normal;
+  struct Previous {
+    Eigen::Vector3d origin, t1, t2, normal;
+    contact::Grid grid;
+    std::vector<double> pressure;
+  };
+  std::array<std::vector<Previous>, 2> previous;  // per side, the areas of the last evaluation
+  bool warm_start = true;                         // use them (off to measure what it gains)
 };
 
 struct ContactRequest {
   bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems)
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
+  double tolerance = 0;      // > 0: the normal solver's tolerance for this evaluation (inexact Newton steps)
 };
 
 // Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input
 // or a potential contact area beyond options.max_elements.
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& workspace,
                                const ContactRequest& request = {});
+
+// Fills the sensitivities of a result evaluated without them (its grids must have been kept).
+void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& workspace);
+// Releases the pressure, gap and h grids of a result.
+void drop_grids(ContactResult& result);
 
 }  // namespace wrc
