@@ -392,6 +392,10 @@ GeometryModel build_geometry(std::shared_ptr<const Track> track, const std::arra
         c.cell_first.push_back(s == kLeft ? cells.first[j] : n - 1 - cells.last[j]);
         c.cell_last.push_back(s == kLeft ? cells.last[j] : n - 1 - cells.first[j]);
       }
+      c.offset.assign(static_cast<std::size_t>(n), 0.0);
+      for (std::size_t k2 = 0; k2 < c.cell_first.size(); ++k2)
+        for (int r = c.cell_first[k2]; r <= c.cell_last[k2]; ++r)
+          c.offset[r] = std::hypot(g.rail.y[r] - c.lines.y[k2], g.rail.z[r] - c.lines.z[k2]);
       g.coarse = std::move(c);
     }
   }

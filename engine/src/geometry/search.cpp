@@ -72,11 +72,20 @@ struct LineFrame {
 class Scanner {
  public:
   Scanner(const PoseFrame& f, const WheelCones& w, const RailLines& l, std::vector<Crossing>& out, long long& tests,
-          long long& bounds, long long& lines)
-      : f_(f), P_(f), w_(w), l_(l), out_(out), tests_(tests), bounds_(bounds), lines_(lines) {}
+          long long& bounds, long long& lines, int& hint_lo, int& hint_hi)
+      : f_(f), P_(f), w_(w), l_(l), out_(out), tests_(tests), bounds_(bounds), lines_(lines), hint_lo_(hint_lo),
+        hint_hi_(hint_hi) {}
+
+  // Lines of a window that the coarse search certified (Window::skip_within), given their offsets.
+  void set_skip(const std::vector<double>* offset, double within) {
+    offset_ = offset;
+    skip_within_ = within;
+  }
+  bool skipped(int r) const { return offset_ && (*offset_)[r] < skip_within_; }
 
   void test(const Window& win) {
     for (int r = win.line_first; r <= win.line_last; ++r) {
+      if (skipped(r)) continue;
       ++lines_;
       start_line(r);
       for (int c = win.cone_first; c <= win.cone_last; ++c) closed_form(c);
@@ -88,6 +97,10 @@ class Scanner {
     prev.clear();
     const int c0 = win.cone_first, c1 = win.cone_last;
     for (int r = win.line_first; r <= win.line_last; ++r) {
+      if (skipped(r)) {
+        prev.clear();
+        continue;
+      }
       ++lines_;
       start_line(r);
       cur_ = &cur;
@@ -160,6 +173,7 @@ class Scanner {
     classify(ca, cb);
   }
 
+public:
   // Smallest c in [a, b] with y[c + 1] >= v (b if none), starting from c.
   static int seek_first(const double* y, int a, int b, int c, double v) {
     int steps = 0;
@@ -187,6 +201,7 @@ class Scanner {
     return c;
   }
 
+private:
   // One cone: the bounds, then the closed form if they do not rule it out.
   void leaf(int c) {
     ++bounds_;
@@ -260,7 +275,9 @@ class Scanner {
   long long &tests_, &bounds_, &lines_;
   std::vector<int>* cur_ = nullptr;
   int r_ = 0;
-  int hint_lo_ = 0, hint_hi_ = 0;  // reach's last cone indices
+  int &hint_lo_, &hint_hi_;  // reach's last cone indices (kept across windows and poses)
+  const std::vector<double>* offset_ = nullptr;
+  double skip_within_ = 0;
   LineFrame line_;
 };
 
@@ -283,7 +300,8 @@ void SearchContext::test(int side, const Window& w) {
   check_window(side, w, "test");
   auto& s = state_.side_[side];
   Scanner sc(state_.frame(), model_.side[side].wheel, model_.side[side].rail, s.crossings, s.counters.tests,
-             s.counters.bounds, s.counters.lines);
+             s.counters.bounds, s.counters.lines, s.hint_lo, s.hint_hi);
+  if (w.skip_within > 0 && model_.side[side].coarse) sc.set_skip(&model_.side[side].coarse->offset, w.skip_within);
   sc.test(w);
 }
 
@@ -291,7 +309,8 @@ void SearchContext::walk(int side, const Window& w) {
   check_window(side, w, "walk");
   auto& s = state_.side_[side];
   Scanner sc(state_.frame(), model_.side[side].wheel, model_.side[side].rail, s.crossings, s.counters.tests,
-             s.counters.bounds, s.counters.lines);
+             s.counters.bounds, s.counters.lines, s.hint_lo, s.hint_hi);
+  if (w.skip_within > 0 && model_.side[side].coarse) sc.set_skip(&model_.side[side].coarse->offset, w.skip_within);
   sc.walk(w, s.scratch_int, s.scratch_int2);
 }
 
@@ -310,6 +329,12 @@ void SearchContext::walk(int side, const Window& w) {
 // q's y. The coarse segments are complete because the coarse walk is (it finds what brute force finds, see walk).
 // So the windows (cell's lines) x (cones overlapping the widened ranges) hold every fine crossing of the side.
 // A coarse line with an odd number of crossings (a rounding graze) gets the whole cone range, which is safe.
+// Lines skipped inside a window: the ball of radius D - |v| about q' lies in W dilated by D, so in the coarse solid;
+// in the meridian half-plane (where that ball's image holds the disc of the same radius) q' is then at least
+// D - |v| below the coarse generatrix, so the coarse line's radial depth inside the coarse wheel reaches D - |v|.
+// That depth is at most P = (largest coarse radius over the y range of the coarse segment) - rho* (the coarse
+// line's least distance to the axle). Hence |v| >= D - P for every fine line that crosses: the lines of the cell
+// closer than D - P to the coarse line cannot cross (Window::skip_within, CoarseLevel::offset).
 int SearchContext::coarse(int side) {
   if (side != kLeft && side != kRight) fail("coarse: side must be left or right");
   const SideGeometry& g = model_.side[side];
@@ -322,7 +347,8 @@ int SearchContext::coarse(int side) {
   s.have_windows = true;
   s.coarse_crossings.clear();
   long long bounds = 0, lines = 0;
-  Scanner sc(state_.frame(), c.wheel, c.lines, s.coarse_crossings, s.counters.coarse_tests, bounds, lines);
+  Scanner sc(state_.frame(), c.wheel, c.lines, s.coarse_crossings, s.counters.coarse_tests, bounds, lines,
+             s.coarse_hint_lo, s.coarse_hint_hi);
   sc.walk({0, c.lines.count() - 1, 0, c.wheel.cone_count() - 1}, s.scratch_int, s.scratch_int2);
   s.counters.bounds += bounds;
 
@@ -338,23 +364,34 @@ int SearchContext::coarse(int side) {
     while (j < xs.size() && xs[j].line == xs[i].line) ++j;
     const int cl = xs[i].line;
     ranges.clear();
+    double skip_within = 0;
     if ((j - i) % 2 != 0) {
       ranges.emplace_back(0, nc - 1);
     } else {
       const LineFrame lf(PoseLines(state_.frame()), c.lines.y[cl], c.lines.z[cl]);
+      double depth = 0;  // upper bound of the coarse line's radial depth inside the coarse wheel (see below)
+      const int ncc = c.wheel.cone_count();
       for (std::size_t k = i; k < j; k += 2) {
         const double ya = lf.Y_at(xs[k].x), yb = lf.Y_at(xs[k + 1].x);
+        const double* cy = c.wheel.y.data();
+        const int ca = Scanner::seek_first(cy, 0, ncc - 1, std::clamp(xs[k].cone, 0, ncc - 1), std::min(ya, yb));
+        const int cb = Scanner::seek_last(cy, 0, ncc - 1, std::clamp(xs[k + 1].cone, ca, ncc - 1), std::max(ya, yb));
+        depth = std::max(depth, std::sqrt(c.wheel.r2_range.max(ca, std::max(ca, cb) + 1)) - std::sqrt(lf.r2star));
         const double lo = std::min(ya, yb) - widen, hi = std::max(ya, yb) + widen;
-        ranges.emplace_back(g.wheel.first_cone_reaching(lo), g.wheel.last_cone_starting_before(hi));
+        const double* y = g.wheel.y.data();
+        const int a = Scanner::seek_first(y, 0, nc - 1, std::clamp(s.hint_lo, 0, nc - 1), lo);
+        const int b = Scanner::seek_last(y, 0, nc - 1, std::clamp(s.hint_hi, a, nc - 1), hi);
+        ranges.emplace_back(a, b);
       }
       std::sort(ranges.begin(), ranges.end());
+      skip_within = c.dilation - depth - 1e-9;
     }
     // Merge overlapping or touching ranges, one window each.
     for (std::size_t k = 0; k < ranges.size();) {
       int a = ranges[k].first, b = ranges[k].second;
       std::size_t m = k + 1;
       while (m < ranges.size() && ranges[m].first <= b + 1) b = std::max(b, ranges[m++].second);
-      if (a <= b) s.windows.push_back({c.cell_first[cl], c.cell_last[cl], a, b});
+      if (a <= b) s.windows.push_back({c.cell_first[cl], c.cell_last[cl], a, b, std::max(0.0, skip_within)});
       k = m;
     }
     i = j;

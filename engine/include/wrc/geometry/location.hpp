@@ -60,6 +60,9 @@ struct Patch {
 // An index window of lines x cones (0-based, inclusive).
 struct Window {
   int line_first = 0, line_last = -1, cone_first = 0, cone_last = -1;
+  // Set by the coarse pre-search: the window's lines closer than this (m) to their cell's coarse line cannot
+  // cross the wheel (CoarseLevel::offset; proof in search.cpp) and are skipped by test_windows / walk_windows.
+  double skip_within = 0;
 };
 
 // Work counters of the last pose (per side).
@@ -155,6 +158,7 @@ class LocationState {
     SearchCounters counters;
     int grazes = 0;
     std::vector<int> scratch_int, scratch_int2;
+    int hint_lo = 0, hint_hi = 0, coarse_hint_lo = 0, coarse_hint_hi = 0;  // the walk's last cone indices
     std::vector<std::pair<int, int>> scratch_ranges;
     std::vector<Segment> raw_segments;      // assembly workspace
     std::vector<int> parent, root, start;

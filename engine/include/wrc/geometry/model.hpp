@@ -94,6 +94,7 @@ struct CoarseLevel {
   WheelCones wheel;                          // closed like the fine wheel
   RailLines lines;                           // one per cell
   std::vector<int> cell_first, cell_last;    // fine line range of each cell (inclusive)
+  std::vector<double> offset;                // per fine line: its distance (y-z) to its cell's coarse line (m)
   double dilation = 0;                       // D (m)
   int every = 0;                             // fine lines per cell
 };
