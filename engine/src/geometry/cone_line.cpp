@@ -101,11 +101,11 @@ int cone_line_intersections(const PoseFrame& f, double y_r, double z_r, double y
   } else {
     const double m1 = k.T - k.R, n1 = q;  // t1 = q / (T - R); m1 = 0 gives eps = pi
     const double m2 = q, n2 = k.R + k.T;  // t2 = (R + T) / q
-    const double w1 = m1 * m1 + n1 * n1, w2 = m2 * m2 + n2 * n2;
-    cs[0][0] = (m1 * m1 - n1 * n1) / w1;
-    cs[0][1] = 2 * n1 * m1 / w1;
-    cs[1][0] = (m2 * m2 - n2 * n2) / w2;
-    cs[1][1] = 2 * n2 * m2 / w2;
+    const double i1 = 1.0 / (m1 * m1 + n1 * n1), i2 = 1.0 / (m2 * m2 + n2 * n2);
+    cs[0][0] = (m1 * m1 - n1 * n1) * i1;
+    cs[0][1] = 2 * n1 * m1 * i1;
+    cs[1][0] = (m2 * m2 - n2 * n2) * i2;
+    cs[1][1] = 2 * n2 * m2 * i2;
     nroots = 2;
   }
 
