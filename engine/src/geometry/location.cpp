@@ -46,6 +46,15 @@ bool canonical(const Crossing& c) { return c.alpha > 0 && c.alpha <= 1; }
 // Crossings of one line, sorted by x: merges duplicates at shared circles, drops a graze if the count is odd.
 // Returns false if the count stays odd.
 bool clean_line(std::vector<Crossing>& v, std::size_t a, std::size_t& b, int& grazes) {
+  // The common case: an even count, no flagged crossing, no repeated (cone, root).
+  if ((b - a) % 2 == 0) {
+    bool plain = true;
+    for (std::size_t i = a; i < b && plain; ++i) {
+      plain = v[i].vertex < 0;
+      for (std::size_t j = a; j < i && plain; ++j) plain = v[j].cone != v[i].cone || v[j].root != v[i].root;
+    }
+    if (plain) return true;
+  }
   // Same crossing found twice (overlapping windows): the same root of the same cone. (The two roots of a
   // tangency share x and are both kept: a zero-length segment, as d >= 0 counts it.)
   std::size_t out = a;
