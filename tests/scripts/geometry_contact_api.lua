@@ -25,14 +25,14 @@ for i = 2, #ll.y do check.ok(ll.y[i] >= ll.y[i - 1], "lines ordered by y") end
 local c = ws:contact{y = 0, z = -0.1e-3}
 check.ok(#c.left.patches == 1 and #c.right.patches == 1, "one patch per wheel when centred")
 local pl, pr = c.left.patches[1], c.right.patches[1]
-check.near(pl.point.y, -pr.point.y, 1e-12, "mirror: nominal points")
-check.near(pl.point.z, pr.point.z, 1e-12, "mirror: nominal heights")
-check.near(pl.point.x, 0, 1e-12, "zero yaw: nominal point at x = 0")
+check.near(pl.nominal_point.y, -pr.nominal_point.y, 1e-12, "mirror: nominal points")
+check.near(pl.nominal_point.z, pr.nominal_point.z, 1e-12, "mirror: nominal heights")
+check.near(pl.nominal_point.x, 0, 1e-12, "zero yaw: nominal point at x = 0")
 check.near(pl.normal.y, -pr.normal.y, 1e-12, "mirror: normals")
 check.near(math.sqrt(pl.normal.x ^ 2 + pl.normal.y ^ 2 + pl.normal.z ^ 2), 1, 1e-12, "unit normal")
 check.ok(pl.normal.z < -0.99, "tread contact: the wheel's outward normal points down")
 check.near(pl.depth, 0.1e-3, 2e-6, "depth of the nominal point ~ the 0.1 mm the wheelset is pressed in")
-check.ok(math.abs(pl.point.y - 0.75) < 0.01, "tread contact within 10 mm of the tape circle")
+check.ok(math.abs(pl.nominal_point.y - 0.75) < 0.01, "tread contact within 10 mm of the tape circle")
 check.ok(pl.side == "left" and pr.side == "right", "patch side")
 check.ok(#pl.segments == #pr.segments, "mirror: segment counts")
 local longest = pl.segments[pl.longest]
@@ -43,8 +43,8 @@ for _, s in ipairs(pl.segments) do
   check.near(s.y, ll.y[s.line], 0, "segment y is its line's")
   check.ok(s.cones[1] >= 1 and s.cones[1] <= cl.count and s.cones[2] >= 1 and s.cones[2] <= cl.count, "cone indices")
 end
-check.near(pl.point.x, 0.5 * (longest.x_t + longest.x_l), 1e-15, "nominal point = mid-point of the longest segment")
-check.near(pl.point.y, longest.y, 0, "nominal point on the longest segment's line")
+check.near(pl.nominal_point.x, 0.5 * (longest.x_t + longest.x_l), 1e-15, "nominal point = mid-point of the longest segment")
+check.near(pl.nominal_point.y, longest.y, 0, "nominal point on the longest segment's line")
 check.near(pl.wheel_radius, 0.45 - 0.0, 2e-3, "wheel radius near r0 on the tread")
 check.ok(c.tests > 0 and c.left.tests > 0 and c.right.tests > 0, "test counts")
 check.ok(ws.tests.total == c.tests, "ws.tests after ws:contact")
@@ -62,7 +62,7 @@ check.ok(#up.left.patches == 0 and #up.right.patches == 0, "no patch when lifted
 -- Yaw moves the left flange contact ahead (x > 0) when the wheelset is pushed left: the classic lead.
 local yawed = ws:contact{y = 8e-3, z = -0.1e-3, yaw = 0.01}
 local lead = false
-for _, p in ipairs(yawed.left.patches) do if p.point.x > 1e-3 then lead = true end end
+for _, p in ipairs(yawed.left.patches) do if p.nominal_point.x > 1e-3 then lead = true end end
 check.ok(lead, "flange contact leads with positive yaw")
 
 -- Bad input.

@@ -48,14 +48,14 @@ for _, strategy in ipairs{"fast", "topology"} do
         -- The deepest patch (largest depth at its nominal point).
         local deepest = patches[1]
         for _, p in ipairs(patches) do if p.depth > deepest.depth then deepest = p end end
-        local d = math.sqrt((deepest.point.y - ry) ^ 2 + (deepest.point.z - rz) ^ 2)
+        local d = math.sqrt((deepest.nominal_point.y - ry) ^ 2 + (deepest.nominal_point.z - rz) ^ 2)
         if d > worst then worst = d end
         cases = cases + 1
         if d > 0.2e-3 then
           error(("%s, %s side, y = %g mm, roll = %g: nominal point (%.6f, %.6f) is %.3f mm from the rigid contact point "
-                 .. "(%.6f, %.6f)"):format(strategy, side, y * 1e3, roll, deepest.point.y, deepest.point.z, d * 1e3, ry, rz))
+                 .. "(%.6f, %.6f)"):format(strategy, side, y * 1e3, roll, deepest.nominal_point.y, deepest.nominal_point.z, d * 1e3, ry, rz))
         end
-        check.near(deepest.point.x, 0, 1e-9, "zero yaw: the nominal point is at x = 0")
+        check.near(deepest.nominal_point.x, 0, 1e-9, "zero yaw: the nominal point is at x = 0")
       end
     end
   end

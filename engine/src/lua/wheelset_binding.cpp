@@ -171,8 +171,8 @@ void push_segment(lua_State* L, const Segment& s) {
 void push_patch(lua_State* L, const LocationState& st, const Patch& p) {
   lua_createtable(L, 0, 14);
   set_string(L, "side", side_name(p.side));
-  push_vec3(L, p.point);
-  lua_setfield(L, -2, "point");
+  push_vec3(L, p.point);  // "point" is the centre of pressure of the normal-contact stage (DESIGN.md section 5)
+  lua_setfield(L, -2, "nominal_point");
   push_vec3(L, p.normal);
   lua_setfield(L, -2, "normal");
   push_vec3(L, p.wheel_point);
