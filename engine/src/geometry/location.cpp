@@ -11,6 +11,7 @@
 // that merely touches a shared circle (a graze: the trace meets the corner of the polyline without entering) then
 // has one crossing too many; it is dropped (counted in grazes_dropped). Any other odd count means a search window
 // cut a segment, which is an error of the strategy.
+#include "geometry/crossings.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/location.hpp"
 
@@ -20,26 +21,7 @@
 
 namespace wrc {
 
-void LocationState::reset(const Pose& pose) {
-  if (!std::isfinite(pose.y) || !std::isfinite(pose.z) || !std::isfinite(pose.roll) || !std::isfinite(pose.yaw))
-    fail("contact: the pose must be finite (y = {}, z = {}, roll = {}, yaw = {})", pose.y, pose.z, pose.roll, pose.yaw);
-  if (std::abs(pose.roll) > 0.5 || std::abs(pose.yaw) > 0.5)
-    fail("contact: |roll| and |yaw| must stay below 0.5 rad (roll = {}, yaw = {})", pose.roll, pose.yaw);
-  pose_ = pose;
-  frame_ = PoseFrame(pose);
-  for (auto& s : side_) {
-    s.crossings.clear();
-    s.coarse_crossings.clear();
-    s.segments.clear();
-    s.patches.clear();
-    s.windows.clear();
-    s.have_windows = false;
-    s.counters = {};
-    s.grazes = 0;
-  }
-}
-
-namespace {
+namespace detail {
 
 bool canonical(const Crossing& c) { return c.alpha > 0 && c.alpha <= 1; }
 
@@ -99,6 +81,29 @@ bool clean_line(std::vector<Crossing>& v, std::size_t a, std::size_t& b, int& gr
   return true;
 }
 
+}  // namespace detail
+
+void LocationState::reset(const Pose& pose) {
+  if (!std::isfinite(pose.y) || !std::isfinite(pose.z) || !std::isfinite(pose.roll) || !std::isfinite(pose.yaw))
+    fail("contact: the pose must be finite (y = {}, z = {}, roll = {}, yaw = {})", pose.y, pose.z, pose.roll, pose.yaw);
+  if (std::abs(pose.roll) > 0.5 || std::abs(pose.yaw) > 0.5)
+    fail("contact: |roll| and |yaw| must stay below 0.5 rad (roll = {}, yaw = {})", pose.roll, pose.yaw);
+  pose_ = pose;
+  frame_ = PoseFrame(pose);
+  for (auto& s : side_) {
+    s.crossings.clear();
+    s.coarse_crossings.clear();
+    s.segments.clear();
+    s.patches.clear();
+    s.windows.clear();
+    s.have_windows = false;
+    s.counters = {};
+    s.grazes = 0;
+  }
+}
+
+namespace {
+
 int find(std::vector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
@@ -146,7 +151,7 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
     while (j < xs.size() && xs[j].line == xs[i].line) ++j;
     std::size_t end = j;
     const std::size_t start = i;
-    if (!clean_line(xs, start, end, grazes))
+    if (!detail::clean_line(xs, start, end, grazes))
       fail("contact: rail line {} of the {} side ends with an odd number ({}) of crossings with the wheel: a search "
            "window of the strategy '{}' cuts the line's segment inside the wheel (test every cone the line can reach)",
            xs[start].line + 1, side_name(side), end - start, model.strategy.name);

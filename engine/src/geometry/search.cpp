@@ -14,6 +14,7 @@
 // extrema of the radii come from sparse tables in O(1). A margin (kSkipMargin, m^2) keeps every decision well away
 // from the rounding of the closed form, so a range is ruled out only when the closed form could not report a
 // crossing in it either: the walk finds what brute force finds in the same window.
+#include "geometry/crossings.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/location.hpp"
 
@@ -354,18 +355,22 @@ int SearchContext::coarse(int side) {
 
   auto& xs = s.coarse_crossings;
   std::sort(xs.begin(), xs.end(), [](const Crossing& a, const Crossing& b) {
-    return a.line != b.line ? a.line < b.line : a.x < b.x;
+    if (a.line != b.line) return a.line < b.line;
+    if (a.x != b.x) return a.x < b.x;
+    return a.cone < b.cone;
   });
   const double widen = c.dilation + 1e-9;
   const int nc = g.wheel.cone_count();
   std::vector<std::pair<int, int>>& ranges = s.scratch_ranges;
+  int coarse_grazes = 0;
   for (std::size_t i = 0; i < xs.size();) {
     std::size_t j = i;
     while (j < xs.size() && xs[j].line == xs[i].line) ++j;
     const int cl = xs[i].line;
     ranges.clear();
     double skip_within = 0;
-    if ((j - i) % 2 != 0) {
+    // The same clean-up as the fine segments (shared circles); a count that stays odd gets every cone (safe).
+    if (!detail::clean_line(xs, i, j, coarse_grazes)) {
       ranges.emplace_back(0, nc - 1);
     } else {
       const LineFrame lf(PoseLines(state_.frame()), c.lines.y[cl], c.lines.z[cl]);
