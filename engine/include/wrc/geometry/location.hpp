@@ -50,11 +50,13 @@ struct Patch {
   int first_line = 0, last_line = 0;         // rail lines spanned
   Eigen::Vector3d point = Eigen::Vector3d::Zero();        // nominal contact point (track frame, m)
   Eigen::Vector3d wheel_point = Eigen::Vector3d::Zero();  // the same point in the wheelset frame (m)
-  int cone = 0;                              // cone of the wheel above the nominal point (see location.cpp)
+  int cone = 0;      // the cone whose y range holds the nominal point's wheelset-frame y (not an end face; a
+                     // neighbour when that is a flat ring): the wheel surface above the nominal point
   double eps = 0;                            // angular position of the nominal point on the wheel (rad, eq. 1)
   double wheel_radius = 0;                   // radius of that cone at the nominal point's y (m)
   double depth = 0;                          // wheel radius minus the nominal point's distance to the axle (m)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();     // wheel outward unit normal there (track frame)
+  // The wheel's outward unit normal on that cone at angle eps (track frame): the normal of the contact plane.
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 };
 
 // An index window of lines x cones (0-based, inclusive).
