@@ -167,7 +167,7 @@ TEST_CASE("cone_line_intersections agrees with a numerical root finder on random
   CHECK(yawed_two_roots >= 1000);
 }
 
-TEST_CASE("A.5 as printed returns -eps under the DESIGN conventions; the corrected sign satisfies eq. (1)") {
+TEST_CASE("A.5 as printed returns -eps under the DESIGN conventions, the corrected sign satisfies eq. (1)") {
   // A point of a cone at a known (eps, alpha); the line through it. The corrected A.5 must give back eps; the
   // printed form gives -eps (visible only with yaw, through S ~ sin(yaw)).
   wrc::Pose pose{2e-3, -0.2e-3, 4e-3, 20e-3};
