@@ -1,4 +1,4 @@
--- ws:contact{...} and the discretisation as seen from Lua (DESIGN.md section 5): fields, symmetry, units, the
+-- ws:locate{...} and the discretisation as seen from Lua (DESIGN.md section 5): fields, symmetry, units, the
 -- default strategy, counters and bad input.
 local check = require "wrc.check"
 
@@ -22,15 +22,15 @@ local ll = ws:lines("left")
 for i = 2, #ll.y do check.ok(ll.y[i] >= ll.y[i - 1], "lines ordered by y") end
 
 -- A centred pose: one patch per wheel, mirror images of each other, the tread contact near the tape circle.
-local c = ws:contact{y = 0, z = -0.1e-3}
+local c = ws:locate{y = 0, z = -0.1e-3}
 check.ok(#c.left.patches == 1 and #c.right.patches == 1, "one patch per wheel when centred")
 local pl, pr = c.left.patches[1], c.right.patches[1]
 check.near(pl.nominal_point.y, -pr.nominal_point.y, 1e-12, "mirror: nominal points")
 check.near(pl.nominal_point.z, pr.nominal_point.z, 1e-12, "mirror: nominal heights")
 check.near(pl.nominal_point.x, 0, 1e-12, "zero yaw: nominal point at x = 0")
-check.near(pl.normal.y, -pr.normal.y, 1e-12, "mirror: normals")
-check.near(math.sqrt(pl.normal.x ^ 2 + pl.normal.y ^ 2 + pl.normal.z ^ 2), 1, 1e-12, "unit normal")
-check.ok(pl.normal.z < -0.99, "tread contact: the wheel's outward normal points down")
+check.near(pl.nominal_normal.y, -pr.nominal_normal.y, 1e-12, "mirror: normals")
+check.near(math.sqrt(pl.nominal_normal.x ^ 2 + pl.nominal_normal.y ^ 2 + pl.nominal_normal.z ^ 2), 1, 1e-12, "unit normal")
+check.ok(pl.nominal_normal.z < -0.99, "tread contact: the wheel's outward normal points down")
 check.near(pl.depth, 0.1e-3, 2e-6, "depth of the nominal point ~ the 0.1 mm the wheelset is pressed in")
 check.ok(math.abs(pl.nominal_point.y - 0.75) < 0.01, "tread contact within 10 mm of the tape circle")
 check.ok(pl.side == "left" and pr.side == "right", "patch side")
@@ -47,27 +47,27 @@ check.near(pl.nominal_point.x, 0.5 * (longest.x_t + longest.x_l), 1e-15, "nomina
 check.near(pl.nominal_point.y, longest.y, 0, "nominal point on the longest segment's line")
 check.near(pl.wheel_radius, 0.45 - 0.0, 2e-3, "wheel radius near r0 on the tread")
 check.ok(c.tests > 0 and c.left.tests > 0 and c.right.tests > 0, "test counts")
-check.ok(ws.tests.total == c.tests, "ws.tests after ws:contact")
+check.ok(ws.tests.total == c.tests, "ws.tests after ws:locate")
 check.near(c.pose.z, -0.1e-3, 0, "pose echoed")
 
 -- Brute force on the same discretisation: every line against every cone.
-local b = ws:contact{y = 0, z = -0.1e-3, search = "brute"}
+local b = ws:locate{y = 0, z = -0.1e-3, search = "brute"}
 check.ok(b.tests == 2 * cl.count * ll.count, "brute force tests every pair")
 check.ok(c.tests * 100 < b.tests, "the default strategy tests two orders of magnitude fewer pairs")
 
 -- No contact above the rails.
-local up = ws:contact{y = 0, z = 1e-3}
+local up = ws:locate{y = 0, z = 1e-3}
 check.ok(#up.left.patches == 0 and #up.right.patches == 0, "no patch when lifted")
 
 -- Yaw moves the left flange contact ahead (x > 0) when the wheelset is pushed left: the classic lead.
-local yawed = ws:contact{y = 8e-3, z = -0.1e-3, yaw = 0.01}
+local yawed = ws:locate{y = 8e-3, z = -0.1e-3, yaw = 0.01}
 local lead = false
 for _, p in ipairs(yawed.left.patches) do if p.nominal_point.x > 1e-3 then lead = true end end
 check.ok(lead, "flange contact leads with positive yaw")
 
 -- Bad input.
-check.fails(function() ws:contact{y = 0, z = 0, pitch = 1} end, "unknown key 'pitch'", "unknown pose key")
-check.fails(function() ws:contact{y = 0 / 0} end, "'y' must be finite", "NaN pose")
-check.fails(function() ws:contact{yaw = 1} end, "0.5 rad", "too much yaw")
-check.fails(function() ws:contact{search = "fastest"} end, "search must be", "unknown search")
+check.fails(function() ws:locate{y = 0, z = 0, pitch = 1} end, "unknown key 'pitch'", "unknown pose key")
+check.fails(function() ws:locate{y = 0 / 0} end, "'y' must be finite", "NaN pose")
+check.fails(function() ws:locate{yaw = 1} end, "0.5 rad", "too much yaw")
+check.fails(function() ws:locate{search = "fastest"} end, "search must be", "unknown search")
 check.fails(function() ws:cones("middle") end, "side must be", "bad side")

@@ -42,7 +42,7 @@ for _, strategy in ipairs{"fast", "topology"} do
       local y = k * 1e-3
       for _, side in ipairs{"left", "right"} do
         local gap, ry, rz = rigid_point(ws, side, y, roll)
-        local c = ws:contact{y = y, z = -gap - depth, roll = roll, yaw = 0}
+        local c = ws:locate{y = y, z = -gap - depth, roll = roll, yaw = 0}
         local patches = c[side].patches
         check.ok(#patches >= 1, ("%s side in contact at y = %g mm, roll = %g"):format(side, y * 1e3, roll))
         -- The deepest patch (largest depth at its nominal point).

@@ -74,8 +74,8 @@ for k = 1, n do
   local pose = H.random_pose(ws.walk, rand)
   local ref
   for label, w in pairs(ws) do
-    ref = ref or w:contact{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}
-    local diff = H.difference(w:contact(pose), ref)
+    ref = ref or w:locate{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}
+    local diff = H.difference(w:locate(pose), ref)
     if diff then error(("pose %d (y = %.9g, z = %.9g, roll = %.9g, yaw = %.9g), %s: %s"):format(
                         k, pose.y, pose.z, pose.roll, pose.yaw, label, diff)) end
     compared = compared + 1

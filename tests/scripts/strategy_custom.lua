@@ -54,8 +54,8 @@ local rand = H.rng(7)
 for k = 1, 60 do
   local pose = H.random_pose(user, rand)
   for label, ws in pairs{user = user, inline = inline, composed = composed} do
-    local ref = ws:contact{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}
-    local diff = H.difference(ws:contact(pose), ref)
+    local ref = ws:locate{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}
+    local diff = H.difference(ws:locate(pose), ref)
     if diff then error(("pose %d, %s: %s"):format(k, label, diff)) end
   end
 end
@@ -84,20 +84,20 @@ local bad = wrc.wheelset{wheel = wheel, rail = rail, strategy = {locate = functi
   if cut then ctx:test(side, 1, ctx:lines(side), 1, cut) else ctx:test(side) end
 end}}
 local yawed = {y = 0, z = -1e-3, roll = 0, yaw = 0.02}
-for _, p in ipairs(bad:contact(yawed).left.patches) do
+for _, p in ipairs(bad:locate(yawed).left.patches) do
   for _, s in ipairs(p.segments) do
     if s.cones[1] ~= s.cones[2] then cut = math.min(s.cones[1], s.cones[2]) end
   end
 end
 check.ok(cut ~= nil, "a yawed segment spans two cones")
-check.fails(function() bad:contact(yawed) end, "odd number", "a window that cuts segments")
+check.fails(function() bad:locate(yawed) end, "odd number", "a window that cuts segments")
 check.fails(function() saved:walk("left") end, "only valid during the strategy's locate call", "ctx kept after locate")
 local bad2 = wrc.wheelset{wheel = wheel, rail = rail, strategy = {locate = function(ctx, side) ctx:test(side, 1, 1e6, 1, 2) end}}
-check.fails(function() bad2:contact{y = 0, z = -1e-4} end, "is outside the left side", "window out of range")
+check.fails(function() bad2:locate{y = 0, z = -1e-4} end, "is outside the left side", "window out of range")
 local bad3 = wrc.wheelset{wheel = wheel, rail = rail, strategy = {locate = function(ctx, side) ctx:coarse(side) end}}
-check.fails(function() bad3:contact{y = 0, z = -1e-4} end, "no coarse level", "coarse without a coarse level")
+check.fails(function() bad3:locate{y = 0, z = -1e-4} end, "no coarse level", "coarse without a coarse level")
 local bad4 = wrc.wheelset{wheel = wheel, rail = rail, strategy = {locate = function(ctx, side) ctx:walk("middle") end}}
-check.fails(function() bad4:contact{y = 0, z = -1e-4} end, "side must be \"left\" or \"right\"", "bad side name")
+check.fails(function() bad4:locate{y = 0, z = -1e-4} end, "side must be \"left\" or \"right\"", "bad side name")
 local bad5 = wrc.wheelset{wheel = wheel, rail = rail, strategy = {locate = function() error("boom") end}}
-check.fails(function() bad5:contact{y = 0, z = -1e-4} end, "boom", "an error inside locate reaches the caller")
+check.fails(function() bad5:locate{y = 0, z = -1e-4} end, "boom", "an error inside locate reaches the caller")
 os.remove(path)

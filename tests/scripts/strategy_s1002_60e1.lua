@@ -35,8 +35,8 @@ for k = 1, n do
     local ref
     for label, w in pairs(group) do
       if all_pairs[label] and k > 20 then goto next end
-      ref = ref or w:contact{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}
-      local c = w:contact(pose)
+      ref = ref or w:locate{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}
+      local c = w:locate(pose)
       local diff = H.difference(c, ref)
       if diff then
         error(("pose %d (y = %.9g, z = %.9g, roll = %.9g, yaw = %.9g), strategy %s: %s"):format(
@@ -52,8 +52,8 @@ for k = 1, n do
     end
   end
   if k <= 20 then
-    local c = brute:contact(pose)
-    check.ok(H.difference(c, brute:contact{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}) == nil,
+    local c = brute:locate(pose)
+    check.ok(H.difference(c, brute:locate{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, search = "brute"}) == nil,
              "brute strategy = brute search")
   end
 end

@@ -4,6 +4,7 @@
 #include "lua/guard.hpp"
 #include "lua/profile_binding.hpp"
 #include "lua/strategy_binding.hpp"
+#include "lua/wheelset_binding.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/geometry/model.hpp"
 #include "wrc/geometry/track.hpp"
@@ -13,18 +14,8 @@
 namespace wrc::lua {
 namespace {
 
-const char* const kWheelsetType = "wrc.Wheelset";
-
 // The strategy used when wrc.wheelset is given none (scripts/strategies/<name>.lua; README "Strategies").
 const char* const kDefaultStrategy = "fast";
-
-struct Wheelset {
-  std::shared_ptr<const Track> track;
-  std::shared_ptr<const GeometryModel> model;
-  std::unique_ptr<LuaSearch> search;  // the strategy's locate, in the state that built the wheelset
-  LocationState state;                // the last pose located by ws:contact
-  bool located = false;
-};
 
 std::shared_ptr<const Profile> profile_field(lua_State* L, int idx, const char* key, const char* fallback_key,
                                              const char* ctx) {
@@ -97,7 +88,8 @@ int wheelset_new(lua_State* L) {
   check_table(L, 1, ctx);
   check_keys(L, 1, ctx,
              {"wheel", "rail", "left_wheel", "right_wheel", "left_rail", "right_rail", "radius", "back_to_back",
-              "tape_offset", "gauge", "gauge_depth", "cant", "E", "nu", "strategy", "grid"});
+              "tape_offset", "gauge", "gauge_depth", "cant", "E", "nu", "strategy", "grid", "margin", "solver",
+              "tolerance", "merge_tolerance", "merge_angle"});
   TrackParams tp;
   tp.radius = get_number(L, 1, "radius", tp.radius, ctx);
   tp.back_to_back = get_number(L, 1, "back_to_back", tp.back_to_back, ctx);
@@ -109,6 +101,22 @@ int wheelset_new(lua_State* L) {
                                 *profile_field(L, 1, "right_wheel", "wheel", ctx)};
   std::array<Profile, 2> rails{*profile_field(L, 1, "left_rail", "rail", ctx),
                                *profile_field(L, 1, "right_rail", "rail", ctx)};
+  // Normal contact: material, grid and solver options (checked by ContactModel).
+  contact::Material material;
+  material.E = get_number(L, 1, "E", material.E, ctx);
+  material.nu = get_number(L, 1, "nu", material.nu, ctx);
+  ContactOptions copt;
+  copt.element = get_number(L, 1, "grid", copt.element, ctx);
+  const double margin = get_number(L, 1, "margin", copt.margin, ctx);
+  if (margin != static_cast<int>(margin)) fail("{}: 'margin' must be a whole number of elements, got {}", ctx, margin);
+  copt.margin = static_cast<int>(margin);
+  copt.normal.tolerance = get_number(L, 1, "tolerance", copt.normal.tolerance, ctx);
+  copt.merge_tolerance = get_number(L, 1, "merge_tolerance", copt.merge_tolerance, ctx);
+  copt.merge_angle = get_number(L, 1, "merge_angle", copt.merge_angle, ctx);
+  const std::string solver = opt_string(L, 1, "solver", ctx).value_or("fast");
+  if (solver != "fast" && solver != "dense") fail("{}: 'solver' must be \"fast\" or \"dense\", got \"{}\"", ctx, solver);
+  copt.dense = solver == "dense";
+
   auto ws = std::make_shared<Wheelset>();
   ws->track = std::make_shared<const Track>(assemble_track(wheels, rails, tp));
 
@@ -124,6 +132,7 @@ int wheelset_new(lua_State* L) {
   for (int s : {kLeft, kRight}) sides[s] = discretise_side(L, st, s, wheels[s], rails[s], info.name);
   attach_search_factory(info);
   ws->model = std::make_shared<const GeometryModel>(build_geometry(ws->track, sides, std::move(info)));
+  ws->contact = std::make_shared<const ContactModel>(ws->model, material, copt);
   lua_pushvalue(L, st);
   ws->search = std::make_unique<LuaSearch>(L, false);  // pops the copy
   lua_pop(L, 2);                                        // strategy table, strategy value
@@ -142,6 +151,8 @@ void push_placed(lua_State* L, const std::vector<double>& y, const std::vector<d
   set_string(L, "frame", frame);
 }
 
+}  // namespace
+
 int check_side_arg(lua_State* L, int idx, const char* what) {
   if (lua_type(L, idx) == LUA_TSTRING) {
     const std::string_view s = lua_tostring(L, idx);
@@ -151,7 +162,7 @@ int check_side_arg(lua_State* L, int idx, const char* what) {
   fail("{}: side must be \"left\" or \"right\"", what);
 }
 
-// ---- the contact result (DESIGN.md section 5). One place builds it, so later stages add their fields here. ----
+// ---- the located patches (geometry only; contact_binding.cpp adds the normal-contact fields). ----
 
 void push_segment(lua_State* L, const Segment& s) {
   lua_createtable(L, 0, 7);
@@ -169,12 +180,12 @@ void push_segment(lua_State* L, const Segment& s) {
 }
 
 void push_patch(lua_State* L, const LocationState& st, const Patch& p) {
-  lua_createtable(L, 0, 14);
+  lua_createtable(L, 0, 24);
   set_string(L, "side", side_name(p.side));
   push_vec3(L, p.point);  // "point" is the centre of pressure of the normal-contact stage (DESIGN.md section 5)
   lua_setfield(L, -2, "nominal_point");
-  push_vec3(L, p.normal);
-  lua_setfield(L, -2, "normal");
+  push_vec3(L, p.normal);  // "normal" is the contact-plane normal of the normal-contact stage
+  lua_setfield(L, -2, "nominal_normal");
   push_vec3(L, p.wheel_point);
   lua_setfield(L, -2, "wheel_point");
   set_integer(L, "cone", p.cone + 1);
@@ -192,6 +203,8 @@ void push_patch(lua_State* L, const LocationState& st, const Patch& p) {
   }
   lua_setfield(L, -2, "segments");
 }
+
+namespace {
 
 void push_counters(lua_State* L, const SearchCounters& c) {
   set_integer(L, "tests", c.tests);
@@ -227,9 +240,9 @@ void push_contact(lua_State* L, const GeometryModel&, const LocationState& st) {
   set_integer(L, "tests", tests);
 }
 
-// ws:contact{y=, z=, roll=, yaw=, search = "strategy" | "brute"}
-int wheelset_contact(lua_State* L) {
-  const char* ctx = "wheelset:contact";
+// ws:locate{y=, z=, roll=, yaw=, search = "strategy" | "brute"}: the inter-penetration areas alone.
+int wheelset_locate(lua_State* L) {
+  const char* ctx = "wheelset:locate";
   const auto& ws = check_shared<Wheelset>(L, 1, kWheelsetType, ctx);
   check_table(L, 2, ctx);
   check_keys(L, 2, ctx, {"y", "z", "roll", "yaw", "search"});
@@ -365,7 +378,7 @@ int wheelset_index(lua_State* L) {
       lua_setfield(L, -2, "options");
       return 1;
     }
-    if (key == "tests") {  // work of the last ws:contact: closed-form tests per side
+    if (key == "tests") {  // work of the last ws:locate: closed-form tests per side
       if (!ws->located) return lua_pushnil(L), 1;
       lua_createtable(L, 0, 3);
       set_integer(L, "left", ws->state.counters(kLeft).tests);
@@ -383,6 +396,8 @@ int wheelset_index(lua_State* L) {
 
 }  // namespace
 
+const char* const kWheelsetType = "wrc.Wheelset";
+
 std::shared_ptr<const GeometryModel> wheelset_model(lua_State* L, int idx) {
   return check_shared<Wheelset>(L, idx, kWheelsetType, "wheelset_model")->model;
 }
@@ -392,7 +407,7 @@ void open_wheelset(lua_State* L) {
     const luaL_Reg meta[] = {{"__gc", wheelset_gc}, {"__index", guarded<wheelset_index>}, {nullptr, nullptr}};
     luaL_setfuncs(L, meta, 0);
     lua_newtable(L);
-    const luaL_Reg methods[] = {{"contact", guarded<wheelset_contact>},
+    const luaL_Reg methods[] = {{"locate", guarded<wheelset_locate>},
                                 {"cones", guarded<wheelset_cones>},
                                 {"lines", guarded<wheelset_lines>},
                                 {"coarse", guarded<wheelset_coarse>},
@@ -404,6 +419,7 @@ void open_wheelset(lua_State* L) {
   lua_pushcfunction(L, guarded<wheelset_new>);
   lua_setfield(L, -2, "wheelset");
   open_geometry(L);  // wrc.geometry: the strategies' helpers
+  open_contact(L);   // ws:contact, ws:equilibrium, ws:wheel, ws:rigid, ws:sweep
 }
 
 }  // namespace wrc::lua
