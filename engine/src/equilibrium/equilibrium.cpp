@@ -147,176 +147,111 @@ struct Iterate {
   bool lifted = false;  // a wheel carries no load
 };
 
-}  // namespace
-
-EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
-                                    const EquilibriumOptions& opt, std::optional<Start> start,
-                                    const ContactRequest& request) {
-  check_case(y, yaw, Q, "equilibrium");
-  EquilibriumResult res;
-  res.y = y;
-  res.yaw = yaw;
-  res.Q = Q;
-  double z0 = 0, roll0 = 0;
-  if (start) {
-    z0 = start->z;
-    roll0 = start->roll;
-  } else {
-    const RigidResult rigid = solve_rigid(model.geometry(), y, yaw, Q);
-    if (!rigid.message.empty()) {
-      res.message = rigid.message;
-      return res;
-    }
-    z0 = rigid.z - opt.initial_approach;
-    roll0 = rigid.roll;
+// The equilibrium solver's methods for one call (a lateral position may change along a continuation).
+class EquilibriumSolver {
+ public:
+  EquilibriumSolver(const ContactModel& model, double yaw, double Q, ContactWorkspace& ws, const EquilibriumOptions& opt,
+                    const ContactRequest& request, EquilibriumResult& res)
+      : model_(model), yaw_(yaw), Q_(Q), ws_(ws), opt_(opt), res_(res) {
+    req_ = request;
+    req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
+    req_.keep_grids = true;
+    ftol_ = opt.force_tolerance * Q;
+    mtol_ = opt.moment_tolerance * Q * 1.0;  // the moment scale Q x 1 m
   }
-  ContactRequest req = request;
-  req.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
-  req.keep_grids = true;
-  const double Mref = Q * 1.0;  // the moment scale Q x 1 m
-  const double ftol = opt.force_tolerance * Q, mtol = opt.moment_tolerance * Mref;
-  // Inexact Newton: far from the solution the normal problems need not be solved to the last digit; the
-  // solver's tolerance follows the residual down to the model's own (about 1e-8).
-  double accuracy = 1.0;  // the last relative residual
-  auto contact_at = [&](double z, double roll) {
-    ++res.evaluations;
-    req.tolerance = std::clamp(1e-3 * accuracy, model.options().normal.tolerance, 1e-5);
-    return evaluate_contact(model, {y, z, roll, yaw}, ws, req);
-  };
-  auto residual = [&](const ContactResult& c) { return Eigen::Vector2d(c.force.z() - Q, c.moment.x()); };
-  auto evaluate = [&](double z, double roll) {
-    Iterate it;
-    it.z = z;
-    it.roll = roll;
-    it.contact = contact_at(z, roll);
-    const ContactResult& c = it.contact;
-    it.R = residual(c);
-    it.lifted = !(c.wheel[kLeft].force.z() > 0) || !(c.wheel[kRight].force.z() > 0);
-    const double rf = it.R(0) / Q, rm = it.R(1) / Mref;
-    it.merit = rf * rf + rm * rm;
-    return it;
-  };
-  // The Jacobian: from the sensitivities of the normal problems while both wheels are loaded (they hold the
-  // contact planes fixed, which is exact to first order for elastic stiffness); with a wheel lifted the roll
-  // balance rests on where the loaded wheel's contact sits, a geometric effect they miss: forward differences.
-  auto jacobian = [&](Iterate& it) {
-    if (!it.lifted) {
-      add_sensitivity(model, it.contact, ws);
-      const Sensitivity& S = it.contact.sensitivity;
-      it.J << S(2, 0), S(2, 1), S(3, 0), S(3, 1);
-      return;
-    }
-    const double hz = 1e-7, hr = 1e-7;
-    it.J.col(0) = (residual(contact_at(it.z + hz, it.roll)) - it.R) / hz;
-    it.J.col(1) = (residual(contact_at(it.z, it.roll + hr)) - it.R) / hr;
-  };
-  auto converged = [&](const Iterate& it) { return std::abs(it.R(0)) <= ftol && std::abs(it.R(1)) <= mtol; };
 
-  Iterate cur = evaluate(z0, roll0);
-  bool newton_failed = false;
-  for (int k = 0;; ++k) {
-    if (opt.trace) opt.trace(k, cur.z, cur.roll, cur.contact);
-    res.iterations = k;
-    accuracy = std::sqrt(cur.merit);
-    if (converged(cur)) {
-      if (req.tolerance <= model.options().normal.tolerance) break;
-      cur = evaluate(cur.z, cur.roll);  // confirm with the normal problems solved to full accuracy
-      if (converged(cur)) break;
-    }
-    if (k >= opt.max_iterations) {
-      newton_failed = true;
-      res.message = fmt::format("Newton: no convergence in {} iterations", opt.max_iterations);
-      break;
-    }
-    if (cur.contact.wheel[kLeft].patches.empty() && cur.contact.wheel[kRight].patches.empty()) {
-      // No contact at all: lower the wheelset (the residual is -Q with no slope to follow).
-      if (cur.z < -0.02) {
-        newton_failed = true;
-        res.message = "no contact: the wheelset falls 20 mm without touching the rails";
-        break;
+  bool converged(const Iterate& it) const { return std::abs(it.R(0)) <= ftol_ && std::abs(it.R(1)) <= mtol_; }
+
+  // Newton-Raphson from (z, roll) at lateral position y, with step limits and backtracking on the residual norm.
+  // Leaves the last iterate in `cur`; false with a reason in `why` when it stops without converging.
+  bool newton(double y, double z, double roll, Iterate& cur, std::string& why) {
+    accuracy_ = 1.0;
+    cur = evaluate(y, z, roll);
+    for (int k = 0;; ++k) {
+      if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
+      res_.iterations = k;
+      accuracy_ = std::sqrt(cur.merit);
+      if (converged(cur)) {
+        if (req_.tolerance <= model_.options().normal.tolerance) return true;
+        cur = evaluate(y, cur.z, cur.roll);  // confirm with the normal problems solved to full accuracy
+        if (converged(cur)) return true;
       }
-      cur = evaluate(cur.z - opt.max_step_z, cur.roll);
-      continue;
-    }
-    jacobian(cur);
-    Eigen::Vector2d dx = -cur.J.fullPivLu().solve(cur.R);
-    if (!dx.allFinite()) {
-      newton_failed = true;
-      res.message = "Newton: singular Jacobian";
-      break;
-    }
-    dx /= std::max({1.0, std::abs(dx(0)) / opt.max_step_z, std::abs(dx(1)) / opt.max_step_roll});
-    double t = 1;
-    bool accepted = false;
-    for (int b = 0; b < 10; ++b, t *= 0.5) {
-      Iterate trial = evaluate(cur.z + t * dx(0), cur.roll + t * dx(1));
-      if (trial.merit < (1 - 1e-4 * t) * cur.merit) {
-        cur = std::move(trial);
-        accepted = true;
-        break;
+      if (k >= opt_.max_iterations) {
+        why = fmt::format("Newton: no convergence in {} iterations", opt_.max_iterations);
+        return false;
       }
-    }
-    if (!accepted) {
-      newton_failed = true;
-      res.message = "Newton: no descent";
-      break;
+      if (cur.contact.wheel[kLeft].patches.empty() && cur.contact.wheel[kRight].patches.empty()) {
+        // No contact at all: lower the wheelset (the residual is -Q with no slope to follow).
+        if (cur.z < -0.02) {
+          why = "no contact: the wheelset falls 20 mm without touching the rails";
+          return false;
+        }
+        cur = evaluate(y, cur.z - opt_.max_step_z, cur.roll);
+        continue;
+      }
+      jacobian(y, cur);
+      Eigen::Vector2d dx = -cur.J.fullPivLu().solve(cur.R);
+      if (!dx.allFinite()) {
+        why = "Newton: singular Jacobian";
+        return false;
+      }
+      dx /= std::max({1.0, std::abs(dx(0)) / opt_.max_step_z, std::abs(dx(1)) / opt_.max_step_roll});
+      double t = 1;
+      bool accepted = false;
+      for (int b = 0; b < 10 && !accepted; ++b, t *= 0.5) {
+        Iterate trial = evaluate(y, cur.z + t * dx(0), cur.roll + t * dx(1));
+        if (trial.merit < (1 - 1e-4 * t) * cur.merit) {
+          cur = std::move(trial);
+          accepted = true;
+        }
+      }
+      if (!accepted) {
+        why = fmt::format("Newton: no descent at z = {:.6f} mm, roll = {:.6f} mrad", cur.z * 1e3, cur.roll * 1e3);
+        return false;
+      }
     }
   }
 
-  if (newton_failed) {
-    // Fallback: nested one-dimensional solves, each on a continuous function bracketed by sign changes.
-    // Inner: for a roll, the height at which the wheels carry Q (sum Fz decreases monotonically with z).
-    // Outer: the roll at which sum Mx changes sign.
-    const std::string newton_message = res.message;
+  // Nested one-dimensional solves, each on a continuous function bracketed by sign changes: for a roll, the
+  // height at which the wheels carry Q (sum Fz decreases with z); then the roll at which sum Mx changes sign.
+  // Slow but it needs no Jacobian and no start close to the solution.
+  bool nested(double y, Iterate& cur, std::string& why) {
     double z_guess = cur.z;
-    auto height_for = [&](double roll, ContactResult& c, bool& ok) {
+    ContactResult c;
+    auto height_for = [&](double roll) {
       auto f = [&](double z) {
-        c = contact_at(z, roll);
-        return c.force.z() - Q;
+        c = contact_at(y, z, roll);
+        return c.force.z() - Q_;
       };
       double a = z_guess, fa = f(a);
-      if (std::abs(fa) <= ftol) {
-        ok = true;
-        return a;
-      }
-      // Bracket: step toward the sign change, doubling.
+      if (std::abs(fa) <= ftol_) return a;
       double step = fa > 0 ? 0.05e-3 : -0.05e-3, b = a, fb = fa;
       for (int i = 0; i < 20 && (fb > 0) == (fa > 0); ++i) {
         a = b;
         fa = fb;
-        b = a + step;
+        b = std::clamp(a + step, -0.03, 0.05);
         fb = f(b);
         step *= 2;
-        if (b < -0.03 || b > 0.05) break;
       }
-      if ((fb > 0) == (fa > 0)) {
-        ok = false;
-        return b;
-      }
-      const double z = bracketed_root(f, a, b, fa, fb, ftol, 60, ok);
-      if (ok) z_guess = z;
-      c = contact_at(z, roll);
-      return z;
+      if ((fb > 0) == (fa > 0)) throw Error(fmt::format("no height carries Q at roll {:.6g} rad", roll));
+      bool ok = false;
+      const double z = bracketed_root(f, a, b, fa, fb, ftol_, 100, ok);
+      z_guess = z;
+      return z;  // within the bracket even if the force is not exact: the moment is what is looked for
     };
-    ContactResult c;
-    bool ok = false;
-    double best_roll = cur.roll, best_z = cur.z;
+    double best_z = cur.z, best_roll = cur.roll;
     auto moment_at = [&](double roll) {
-      const double z = height_for(roll, c, ok);
-      if (!ok) throw Error(fmt::format("no height carries Q at roll {:.6g} rad", roll));
+      best_z = height_for(roll);
       best_roll = roll;
-      best_z = z;
       return c.moment.x();
     };
     try {
-      double a = cur.roll, fa = moment_at(a);
-      bool found = std::abs(fa) <= mtol;
+      const double a = cur.roll, fa = moment_at(a);
       double root = a;
-      if (!found) {
+      if (std::abs(fa) > mtol_) {
         double step = 0.25e-3, b = a, fb = fa;
         bool bracketed = false;
-        // Search both directions, widening.
-        for (int i = 0; i < 8 && !bracketed; ++i, step *= 2) {
+        for (int i = 0; i < 8 && !bracketed; ++i, step *= 2)
           for (double sgn : {1.0, -1.0}) {
             const double x = a + sgn * step, fx = moment_at(x);
             if ((fx > 0) != (fa > 0)) {
@@ -326,24 +261,156 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
               break;
             }
           }
-        }
         if (!bracketed) throw Error("no roll within +-32 mrad balances the roll moment");
-        bool rok = false;
-        root = bracketed_root(moment_at, a, b, fa, fb, mtol, 80, rok);
-        found = rok;
+        bool ok = false;
+        root = bracketed_root(moment_at, a, b, fa, fb, mtol_, 100, ok);
       }
-      if (found) {
-        cur = evaluate(height_for(root, c, ok), root);
-        if (!ok) throw Error("the height solve failed at the final roll");
+      cur = evaluate(y, height_for(root), root);
+      if (!converged(cur)) {
+        // Polish with Newton from the bracketed point.
+        std::string w;
+        Iterate p;
+        if (newton(y, cur.z, cur.roll, p, w)) cur = std::move(p);
       }
-      res.message = converged(cur) ? "" : newton_message + "; nested solve: no convergence";
+      if (!converged(cur)) why = "nested solve: residuals above tolerance";
+      return converged(cur);
     } catch (const Error& e) {
-      res.message = newton_message + "; nested solve: " + e.what();
-      cur = evaluate(best_z, best_roll);
+      why = std::string("nested solve: ") + e.what();
+      cur = evaluate(y, best_z, best_roll);
+      return false;
     }
   }
-  res.converged = converged(cur);
-  if (res.converged) res.message.clear();
+
+  Iterate evaluate(double y, double z, double roll) {
+    Iterate it;
+    it.z = z;
+    it.roll = roll;
+    it.contact = contact_at(y, z, roll);
+    const ContactResult& c = it.contact;
+    it.R = {c.force.z() - Q_, c.moment.x()};
+    it.lifted = !(c.wheel[kLeft].force.z() > 0) || !(c.wheel[kRight].force.z() > 0);
+    const double rf = it.R(0) / Q_, rm = it.R(1) / Q_;
+    it.merit = rf * rf + rm * rm;
+    return it;
+  }
+
+ private:
+  // Inexact Newton: far from the solution the normal problems need not be solved to the last digit; the
+  // solver's tolerance follows the residual down to the model's own (about 1e-8).
+  ContactResult contact_at(double y, double z, double roll) {
+    ++res_.evaluations;
+    req_.tolerance = std::clamp(1e-3 * accuracy_, model_.options().normal.tolerance, 1e-5);
+    return evaluate_contact(model_, {y, z, roll, yaw_}, ws_, req_);
+  }
+
+  // The Jacobian: from the sensitivities of the normal problems while both wheels are loaded (they hold the
+  // contact planes fixed, which is exact to first order for the elastic stiffness); with a wheel lifted the roll
+  // balance rests on where the loaded wheel's contact sits, a geometric effect they miss: forward differences.
+  void jacobian(double y, Iterate& it) {
+    if (!it.lifted) {
+      add_sensitivity(model_, it.contact, ws_);
+      const Sensitivity& S = it.contact.sensitivity;
+      it.J << S(2, 0), S(2, 1), S(3, 0), S(3, 1);
+      return;
+    }
+    const double hz = 1e-7, hr = 1e-7;
+    auto R = [&](double z, double roll) {
+      const ContactResult c = contact_at(y, z, roll);
+      return Eigen::Vector2d(c.force.z() - Q_, c.moment.x());
+    };
+    it.J.col(0) = (R(it.z + hz, it.roll) - it.R) / hz;
+    it.J.col(1) = (R(it.z, it.roll + hr) - it.R) / hr;
+  }
+
+  const ContactModel& model_;
+  double yaw_, Q_;
+  ContactWorkspace& ws_;
+  const EquilibriumOptions& opt_;
+  EquilibriumResult& res_;
+  ContactRequest req_;
+  double ftol_ = 0, mtol_ = 0;
+  double accuracy_ = 1.0;  // the last relative residual
+};
+
+}  // namespace
+
+EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
+                                    const EquilibriumOptions& opt, const std::vector<Start>& starts,
+                                    const ContactRequest& request) {
+  check_case(y, yaw, Q, "equilibrium");
+  EquilibriumResult res;
+  res.y = y;
+  res.yaw = yaw;
+  res.Q = Q;
+  EquilibriumSolver solver(model, yaw, Q, ws, opt, request, res);
+  Iterate cur;
+  std::vector<std::string> why;
+  std::string w;
+  bool ok = false;
+  // 1. The given starts (neighbouring solutions, predictions), in order.
+  for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
+    ok = solver.newton(y, starts[k].z, starts[k].roll, cur, w);
+    if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
+  }
+  // 2. The rigid position pressed in a little: good on the tread, poor where the rigid wheelset climbs a flange.
+  std::optional<RigidResult> rigid;
+  if (!ok) {
+    rigid = solve_rigid(model.geometry(), y, yaw, Q);
+    if (!rigid->message.empty()) {
+      why.push_back("rigid start: " + rigid->message);
+    } else {
+      ok = solver.newton(y, rigid->z - opt.initial_approach, rigid->roll, cur, w);
+      if (!ok) why.push_back("from the rigid position: " + w);
+    }
+  }
+  // 3. Continuation from the centred wheelset, in steps of y that shrink where Newton struggles.
+  if (!ok && std::abs(y) > 0.5e-3) {
+    const RigidResult r0 = solve_rigid(model.geometry(), 0.0, yaw, Q);
+    Iterate path;
+    double y_at = 0;
+    bool on_path = r0.message.empty() && solver.newton(0.0, r0.z - opt.initial_approach, r0.roll, path, w);
+    double step = 0.5e-3 * (y > 0 ? 1 : -1);
+    double z_prev = path.z, roll_prev = path.roll, y_prev = y_at;
+    while (on_path && y_at != y) {
+      const double y_next = std::abs(y - y_at) <= std::abs(step) ? y : y_at + step;
+      // Linear predictor through the last two points of the path.
+      const double s = y_at != y_prev ? (y_next - y_at) / (y_at - y_prev) : 0.0;
+      Iterate next;
+      if (solver.newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), next, w) ||
+          solver.newton(y_next, path.z, path.roll, next, w)) {
+        y_prev = y_at;
+        z_prev = path.z;
+        roll_prev = path.roll;
+        y_at = y_next;
+        path = std::move(next);
+        step = std::clamp(step * 1.5, -1e-3, 1e-3);
+      } else if (std::abs(step) > 0.02e-3) {
+        step *= 0.25;
+      } else {
+        on_path = false;
+        why.push_back(fmt::format("continuation from y = 0 stopped at y = {:.3f} mm: {}", y_at * 1e3, w));
+      }
+    }
+    if (on_path && y_at == y) {
+      cur = std::move(path);
+      ok = true;
+    }
+  }
+  // 4. Nested bracketing from the last iterate at y (or the rigid position).
+  if (!ok) {
+    if (cur.contact.pose.y != y || cur.contact.pose.yaw != yaw) {
+      const bool r = rigid && rigid->message.empty();
+      cur = solver.evaluate(y, r ? rigid->z - opt.initial_approach : 0.0, r ? rigid->roll : 0.0);
+    }
+    ok = solver.nested(y, cur, w);
+    if (!ok) why.push_back(w);
+  }
+  res.converged = ok && solver.converged(cur);
+  if (!res.converged) {
+    std::string m;
+    for (const auto& s : why) m += (m.empty() ? "" : "; ") + s;
+    res.message = m.empty() ? "no convergence" : m;
+  }
   res.z = cur.z;
   res.roll = cur.roll;
   res.residual_force = cur.R(0);

@@ -59,21 +59,13 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
 
   std::mutex progress_mutex;
   int done = 0, failed = 0;
-  // Tries the starts in order (then the rigid position); keeps the first converged solution, else the last try.
-  auto solve_case = [&](ContactWorkspace& ws, int c, std::vector<std::optional<Start>> starts) -> bool {
+  auto solve_case = [&](ContactWorkspace& ws, int c, const std::vector<Start>& starts) -> bool {
     const SweepCase& sc = out.cases[static_cast<std::size_t>(c)];
     bool ok = false;
     try {
       ContactRequest req;
       req.keep_grids = opt.keep_grids;
-      if (starts.empty() || starts.back()) starts.push_back(std::nullopt);
-      int evaluations = 0;
-      for (const auto& start : starts) {
-        out.elastic[c] = solve_equilibrium(model, sc.y, sc.yaw, opt.Q, ws, opt.equilibrium, start, req);
-        evaluations += out.elastic[c].evaluations;
-        if (out.elastic[c].converged) break;
-      }
-      out.elastic[c].evaluations = evaluations;
+      out.elastic[c] = solve_equilibrium(model, sc.y, sc.yaw, opt.Q, ws, opt.equilibrium, starts, req);
       ok = out.elastic[c].converged;
       if (opt.rigid) out.rigid[c] = solve_rigid(model.geometry(), sc.y, sc.yaw, opt.Q);
     } catch (const std::exception& e) {
@@ -132,7 +124,7 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
     const EquilibriumResult& centre = out.elastic[static_cast<std::size_t>(ch.centre)];
     if (centre.converged) path.push_back({centre.y, centre.z, centre.roll});
     for (int c : ch.cases) {
-      std::vector<std::optional<Start>> starts;
+      std::vector<Start> starts;
       const double yc = out.cases[static_cast<std::size_t>(c)].y;
       if (path.size() >= 2) {
         const Point& a = path[path.size() - 2];

@@ -278,11 +278,11 @@ int wheelset_equilibrium(lua_State* L) {
   const double yaw = get_number(L, 2, "yaw", 0.0, ctx);
   const double Q = need_number(L, 2, "Q", ctx);
   EquilibriumOptions opt = read_equilibrium_options(L, 2, ctx);
-  std::optional<Start> start;
+  std::vector<Start> start;
   lua_getfield(L, 2, "start");
   if (!lua_isnil(L, -1)) {
     check_table(L, -1, std::string(ctx) + ": 'start'");
-    start = Start{need_number(L, -1, "z", ctx), get_number(L, -1, "roll", 0.0, ctx)};
+    start.push_back(Start{need_number(L, -1, "z", ctx), get_number(L, -1, "roll", 0.0, ctx)});
   }
   lua_pop(L, 1);
   if (opt_bool(L, 2, "trace", ctx).value_or(false)) {

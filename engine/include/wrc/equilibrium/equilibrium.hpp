@@ -52,11 +52,13 @@ struct Start {
   double z = 0, roll = 0;
 };
 
-// Solves the elastic equilibrium. Never throws for lack of convergence: `converged` is false and `message`
-// says why (no contact possible, no descent, iteration limit), with the last iterate in z, roll and contact.
-// Throws wrc::Error on bad input (non-finite y or yaw, Q <= 0).
+// Solves the elastic equilibrium. Tries Newton from each of `starts` in order (neighbouring solutions of a
+// sweep), then from the rigid position pressed in by initial_approach, then by continuation in y from the
+// centred wheelset, then by nested bracketing. Never throws for lack of convergence: `converged` is false and
+// `message` says why each attempt stopped, with the last iterate in z, roll and contact. Throws wrc::Error on
+// bad input (non-finite y or yaw, Q <= 0).
 EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
-                                    const EquilibriumOptions& options = {}, std::optional<Start> start = {},
+                                    const EquilibriumOptions& options = {}, const std::vector<Start>& starts = {},
                                     const ContactRequest& request = {});
 
 // One wheel-rail pair with its vertical force prescribed (CONTACT / multibody style): the wheelset height z

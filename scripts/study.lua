@@ -1,0 +1,251 @@
+-- wrc.study: helpers for sweep studies -- table rows with units in the column names, the summary of contact
+-- ranges, and the plots of the paper's figures. Works on the tables returned by ws:sweep and ws:equilibrium.
+local out = require "wrc.output"
+local M = {}
+
+local deg = 180 / math.pi
+
+local function patch_count(wheel)
+  local n = 0
+  for _, p in ipairs(wheel.patches) do
+    if p.normal_force > 0 then n = n + 1 end
+  end
+  return n
+end
+
+local function max_angle(wheel)
+  local a = nil
+  for _, p in ipairs(wheel.patches) do
+    if p.normal_force > 0 and (a == nil or p.angle > a) then a = p.angle end
+  end
+  return a
+end
+
+M.sweep_columns = {
+  "yaw_deg", "y_mm", "converged", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "My_kNm", "Mz_kNm",
+  "left_patches", "left_Fy_kN", "left_Fz_kN", "left_angle_deg", "left_max_patch_angle_deg", "left_rolling_radius_mm",
+  "right_patches", "right_Fy_kN", "right_Fz_kN", "right_angle_deg", "right_rolling_radius_mm",
+  "rolling_radius_difference_mm", "iterations", "residual_force_N", "residual_moment_Nm",
+}
+
+-- One row of sweep.csv from a sweep (or equilibrium) result.
+function M.sweep_row(r)
+  local row = {yaw_deg = r.yaw * deg, y_mm = r.y * 1e3, converged = r.converged and 1 or 0}
+  if not r.converged then return row end
+  row.z_mm, row.roll_mrad = r.z * 1e3, r.roll * 1e3
+  row.Y_kN, row.Y_Q, row.My_kNm, row.Mz_kNm = r.Y / 1e3, r.Y_Q, r.My / 1e3, r.Mz / 1e3
+  for _, side in ipairs{"left", "right"} do
+    local w = r[side]
+    row[side .. "_patches"] = patch_count(w)
+    row[side .. "_Fy_kN"] = w.force.y / 1e3
+    row[side .. "_Fz_kN"] = w.force.z / 1e3
+    row[side .. "_angle_deg"] = w.angle * deg
+    row[side .. "_rolling_radius_mm"] = w.rolling_radius * 1e3
+  end
+  local a = max_angle(r.left)
+  row.left_max_patch_angle_deg = a and a * deg
+  row.rolling_radius_difference_mm = r.rolling_radius_difference * 1e3
+  row.iterations = r.iterations
+  row.residual_force_N, row.residual_moment_Nm = r.residual.force, r.residual.moment
+  return row
+end
+
+M.rigid_columns = {
+  "yaw_deg", "y_mm", "converged", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "Mz_kNm",
+  "left_y_mm", "left_angle_deg", "left_N_kN", "right_y_mm", "right_angle_deg", "right_N_kN",
+  "rolling_radius_difference_mm",
+}
+
+function M.rigid_row(r)
+  local g = r.rigid
+  local row = {yaw_deg = r.yaw * deg, y_mm = r.y * 1e3, converged = (g and g.converged) and 1 or 0}
+  if not (g and g.converged) then return row end
+  row.z_mm, row.roll_mrad, row.Y_kN, row.Y_Q, row.Mz_kNm = g.z * 1e3, g.roll * 1e3, g.Y / 1e3, g.Y_Q, g.Mz / 1e3
+  for _, side in ipairs{"left", "right"} do
+    row[side .. "_y_mm"] = g[side].point.y * 1e3
+    row[side .. "_angle_deg"] = g[side].angle * deg
+    row[side .. "_N_kN"] = g[side].normal_force / 1e3
+  end
+  row.rolling_radius_difference_mm = (g.left.rolling_radius - g.right.rolling_radius) * 1e3
+  return row
+end
+
+-- Cases of one yaw, ordered by y.
+function M.series(sweep, yaw)
+  local s = {}
+  for _, r in ipairs(sweep) do
+    if math.abs(r.yaw - yaw) < 1e-12 then s[#s + 1] = r end
+  end
+  table.sort(s, function(a, b) return a.y < b.y end)
+  return s
+end
+
+-- Ranges of y (mm) where pred(case) holds, as text "a .. b, c .. d" (consecutive sweep points).
+local function ranges(series, pred)
+  local parts, first, last = {}, nil, nil
+  for _, r in ipairs(series) do
+    if r.converged and pred(r) then
+      first = first or r.y
+      last = r.y
+    elseif first then
+      parts[#parts + 1] = string.format("%.1f .. %.1f", first * 1e3, last * 1e3)
+      first = nil
+    end
+  end
+  if first then parts[#parts + 1] = string.format("%.1f .. %.1f", first * 1e3, last * 1e3) end
+  return #parts > 0 and table.concat(parts, ", ") or "none"
+end
+M.ranges = ranges
+
+-- The y (m) where Y/Q first exceeds `limit` going from y = 0 toward +y (linear between sweep points).
+function M.first_crossing(series, limit)
+  local prev = nil
+  for _, r in ipairs(series) do
+    if r.converged and r.y >= 0 then
+      if prev and prev.Y_Q <= limit and r.Y_Q > limit then
+        return prev.y + (limit - prev.Y_Q) * (r.y - prev.y) / (r.Y_Q - prev.Y_Q)
+      end
+      prev = r
+    end
+  end
+  return nil
+end
+
+function M.summary(sweep, yaw)
+  local s = M.series(sweep, yaw)
+  local lines = {}
+  local failed = 0
+  for _, r in ipairs(sweep) do
+    if not r.converged then failed = failed + 1 end
+  end
+  lines[#lines + 1] = string.format("cases: %d, failed: %d, time %.1f s on %d threads", #sweep, failed, sweep.seconds,
+                                    sweep.threads)
+  local worst_f, worst_m = 0, 0
+  for _, r in ipairs(sweep) do
+    if r.converged then
+      worst_f = math.max(worst_f, math.abs(r.residual.force) / r.Q)
+      worst_m = math.max(worst_m, math.abs(r.residual.moment) / r.Q)
+    end
+  end
+  lines[#lines + 1] = string.format("largest residuals: force %.2e Q, moment %.2e Q m", worst_f, worst_m)
+  local y08 = M.first_crossing(s, 0.8)
+  lines[#lines + 1] = string.format("yaw %g deg: Y/Q first exceeds 0.8 at y = %s mm", yaw * deg,
+                                    y08 and string.format("%.2f", y08 * 1e3) or "(never)")
+  lines[#lines + 1] = "  left wheel, one contact area:   y = " .. ranges(s, function(r) return patch_count(r.left) == 1 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, two contact areas:  y = " .. ranges(s, function(r) return patch_count(r.left) == 2 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, no contact:         y = " .. ranges(s, function(r) return patch_count(r.left) == 0 end) .. " mm"
+  lines[#lines + 1] = "  left contact angle > 60 deg:    y = " ..
+                          ranges(s, function(r) local a = max_angle(r.left); return a and a > math.rad(60) end) .. " mm"
+  lines[#lines + 1] = "  right wheel lifted (no load):   y = " .. ranges(s, function(r) return patch_count(r.right) == 0 end) .. " mm"
+  return table.concat(lines, "\n") .. "\n"
+end
+
+-- Figures 4 and 5 and the rigid/elastic comparison from a sweep.
+function M.plot_sweep(dir, sweep, yaws)
+  local function series_xy(yaw, f, rigid)
+    local xs, vs = {}, {}
+    for _, r in ipairs(M.series(sweep, yaw)) do
+      local src = rigid and r.rigid or r
+      xs[#xs + 1] = r.y * 1e3
+      vs[#vs + 1] = (src and src.converged) and f(src) or 0 / 0
+    end
+    return xs, vs
+  end
+  local function plot(file, ylabel, f, title, with_rigid)
+    local series = {}
+    for _, yaw in ipairs(yaws) do
+      local x, v = series_xy(yaw, f)
+      series[#series + 1] = {x = x, y = v, title = string.format("elastic, yaw %g deg", yaw * deg), style = "linespoints pt 7 ps 0.4"}
+      if with_rigid then
+        local xr, vr = series_xy(yaw, f, true)
+        series[#series + 1] = {x = xr, y = vr, title = string.format("rigid, yaw %g deg", yaw * deg), style = "lines dt 2"}
+      end
+    end
+    out.plot{file = dir .. "/" .. file, title = title, xlabel = "lateral displacement y (mm)", ylabel = ylabel, series = series}
+  end
+  plot("fig4_z.png", "vertical displacement z (mm)", function(r) return r.z * 1e3 end, "Fig. 4: height of the centre")
+  plot("fig4_roll.png", "roll angle (mrad)", function(r) return r.roll * 1e3 end, "Fig. 4: roll angle")
+  plot("fig5_YQ.png", "Y/Q", function(r) return r.Y_Q end, "Fig. 5: lateral / vertical force")
+  plot("fig5_Mz.png", "Mz (kN m)", function(r) return r.Mz / 1e3 end, "Fig. 5: yaw moment that holds the wheelset")
+  plot("rigid_vs_elastic_z.png", "z (mm)", function(r) return r.z * 1e3 end, "rigid vs elastic contact: height", true)
+  plot("rigid_vs_elastic_roll.png", "roll (mrad)", function(r) return r.roll * 1e3 end, "rigid vs elastic contact: roll", true)
+  plot("rigid_vs_elastic_YQ.png", "Y/Q", function(r) return r.Y_Q end, "rigid vs elastic contact: Y/Q", true)
+end
+
+-- Grid centres (mm) of a patch in its contact plane.
+local function axes(p)
+  local xs, ys = {}, {}
+  for i = 1, p.grid.nx do xs[i] = (p.grid.x0 + (i - 1) * p.grid.dx) * 1e3 end
+  for j = 1, p.grid.ny do ys[j] = (p.grid.y0 + (j - 1) * p.grid.dy) * 1e3 end
+  return xs, ys
+end
+
+local function scaled(grid, k, floor)
+  local v = {}
+  for j, row in ipairs(grid) do
+    v[j] = {}
+    for i, x in ipairs(row) do v[j][i] = floor and math.max(x * k, floor) or x * k end
+  end
+  return v
+end
+
+-- Figures 6 and 7: pressure and undeformed distance of every contact area of an equilibrium.
+function M.plot_patches(dir, tag, e)
+  for _, side in ipairs{"left", "right"} do
+    for k, p in ipairs(e[side].patches) do
+      if p.pressure then
+        local xs, ys = axes(p)
+        local name = string.format("%s_%s%d", tag, side, k)
+        out.map{file = string.format("%s/fig6_pressure_%s.png", dir, name), x = xs, y = ys, value = scaled(p.pressure, 1e-6),
+                title = string.format("pressure (MPa), %s wheel, %s: N = %.1f kN, angle %.1f deg", side, tag,
+                                      p.normal_force / 1e3, p.angle * deg),
+                xlabel = "x, rolling direction (mm)", ylabel = "lateral, in the contact plane (mm)", cblabel = "MPa"}
+        out.map{file = string.format("%s/fig7_h_%s.png", dir, name), x = xs, y = ys, value = scaled(p.h, 1e3, -0.05),
+                title = string.format("undeformed distance h (mm, > 0 inter-penetration), %s wheel, %s", side, tag),
+                xlabel = "x, rolling direction (mm)", ylabel = "lateral, in the contact plane (mm)", cblabel = "mm"}
+      end
+    end
+  end
+end
+
+-- Figure 8: the pressure of both wheels' contact areas on the rail surface, in the track frame.
+function M.plot_rail_pressure(dir, name, title, e)
+  local data = dir .. "/" .. name .. "_rail_pressure.dat"
+  local f = assert(io.open(data, "w"))
+  for _, side in ipairs{"left"} do
+    for _, p in ipairs(e[side].patches) do
+      if p.pressure then
+        local o, t1, t2 = p.frame.origin, p.frame.t1, p.frame.t2
+        for j = 1, p.grid.ny do
+          for i = 1, p.grid.nx do
+            local u, v = p.grid.x0 + (i - 1) * p.grid.dx, p.grid.y0 + (j - 1) * p.grid.dy
+            local pr = p.pressure[j][i]
+            if pr > 0 then
+              f:write(string.format("%.6f %.6f %.6f %.4f\n", (o.x + u * t1.x + v * t2.x) * 1e3,
+                                    (o.y + u * t1.y + v * t2.y) * 1e3, (o.z + u * t1.z + v * t2.z) * 1e3, pr * 1e-6))
+            end
+          end
+        end
+      end
+    end
+  end
+  f:close()
+  local gp = dir .. "/" .. name .. "_rail_pressure.gp"
+  local g = assert(io.open(gp, "w"))
+  g:write(string.format([[
+set terminal pngcairo size 900,700 enhanced font 'Sans,10'
+set output '%s/%s_rail_pressure.png'
+set title 'Fig. 8: pressure on the left rail, %s'
+set xlabel 'x (mm)'
+set ylabel 'y (mm)'
+set zlabel 'z (mm)'
+set cblabel 'MPa'
+set palette rgbformulae 33,13,10
+set view 60,30
+splot '%s' using 1:2:3:4 with points pt 7 ps 0.3 palette notitle
+]], dir, name, title, data))
+  g:close()
+  if not os.execute("gnuplot '" .. gp .. "'") then error("gnuplot failed on " .. gp) end
+end
+
+return M
