@@ -142,8 +142,22 @@ void push_pose(lua_State* L, const Pose& p) {
   set_number(L, "yaw", p.yaw);
 }
 
-void push_contact_result(lua_State* L, const LocationState* st, const ContactResult& c) {
-  lua_createtable(L, 0, 5);
+// d(force, moment)/d(z, roll) as {z = {Fx, Fy, Fz, Mx, My, Mz}, roll = {...}} (N/m, N m/m, N/rad, N m/rad).
+void push_sensitivity(lua_State* L, const Sensitivity& S) {
+  lua_createtable(L, 0, 2);
+  for (int col = 0; col < 2; ++col) {
+    const double v[6] = {S(0, col), S(1, col), S(2, col), S(3, col), S(4, col), S(5, col)};
+    push_array(L, v, 6);
+    lua_setfield(L, -2, col == 0 ? "z" : "roll");
+  }
+}
+
+void push_contact_result(lua_State* L, const LocationState* st, const ContactResult& c, bool sensitivity) {
+  lua_createtable(L, 0, 6);
+  if (sensitivity) {
+    push_sensitivity(L, c.sensitivity);
+    lua_setfield(L, -2, "sensitivity");
+  }
   for (int s : {kLeft, kRight}) {
     push_wheel(L, st, c.wheel[s]);
     lua_setfield(L, -2, side_name(s));
@@ -225,24 +239,27 @@ Pose read_pose(lua_State* L, int idx, const char* ctx) {
   return p;
 }
 
-// ws:contact{y=, z=, roll=, yaw=, grids = true, search = "strategy" | "brute"}: contact at a prescribed pose.
+// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, search = "strategy" | "brute"}: contact at
+// a prescribed pose; with sensitivity = true also c.sensitivity, the linearised d(force, moment)/d(z, roll) of
+// the normal problems (the Jacobian of the equilibrium).
 int wheelset_contact(lua_State* L) {
   const char* ctx = "wheelset:contact";
   const auto& ws = check_wheelset(L, ctx);
   check_table(L, 2, ctx);
-  check_keys(L, 2, ctx, {"y", "z", "roll", "yaw", "grids", "search"});
+  check_keys(L, 2, ctx, {"y", "z", "roll", "yaw", "grids", "search", "sensitivity"});
   const Pose pose = read_pose(L, 2, ctx);
   ContactRequest req;
   req.keep_grids = opt_bool(L, 2, "grids", ctx).value_or(true);
+  req.sensitivity = opt_bool(L, 2, "sensitivity", ctx).value_or(false);
   const std::string search = opt_string(L, 2, "search", ctx).value_or("strategy");
   if (search == "strategy") {
     ContactWorkspace& w = main_workspace(L, *ws);
     const ContactResult c = evaluate_contact(*ws->contact, pose, w, req);
-    push_contact_result(L, &w.locator.state(), c);
+    push_contact_result(L, &w.locator.state(), c, req.sensitivity);
   } else if (search == "brute") {
     ContactWorkspace w(*ws->contact, std::make_unique<NativeSearch>(NativePlan{false, NativePlan::Scan::test}));
     const ContactResult c = evaluate_contact(*ws->contact, pose, w, req);
-    push_contact_result(L, &w.locator.state(), c);
+    push_contact_result(L, &w.locator.state(), c, req.sensitivity);
   } else {
     fail("{}: search must be \"strategy\" or \"brute\", got \"{}\"", ctx, search);
   }
