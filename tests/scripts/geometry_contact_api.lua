@@ -7,9 +7,9 @@ local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
 local ws = wrc.wheelset{wheel = wheel, rail = rail}
 
 -- The default strategy.
-check.ok(ws.strategy.name == "fast", "the default strategy is 'fast'")
+check.ok(ws.strategy.name == "accurate", "the default strategy is 'accurate'")
 check.ok(ws.strategy.portable, "the default strategy runs in worker threads")
-check.ok(ws:coarse("left") ~= nil and ws:coarse("left").dilation > 0, "fast has a coarse level")
+check.ok(ws:coarse("left") ~= nil and ws:coarse("left").dilation > 0, "the default strategy has a coarse level")
 
 -- Discretisation: closed wheel (first/last points on the axle), lines in increasing y, mirror images.
 local cl, cr = ws:cones("left"), ws:cones("right")

@@ -15,7 +15,7 @@ namespace wrc::lua {
 namespace {
 
 // The strategy used when wrc.wheelset is given none (scripts/strategies/<name>.lua; README "Strategies").
-const char* const kDefaultStrategy = "fast";
+const char* const kDefaultStrategy = "accurate";
 
 std::shared_ptr<const Profile> profile_field(lua_State* L, int idx, const char* key, const char* fallback_key,
                                              const char* ctx) {
