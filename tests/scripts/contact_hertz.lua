@@ -1,0 +1,167 @@
+-- Hertz through the whole pipeline (issue 5): real profile pairs built with wrc.profile.points, located, turned
+-- into a contact plane and h by the engine, solved, and compared with the analytic Hertz solution computed here
+-- (tests/contact/hertz_reference.lua: elliptic integrals by the AGM, the axis ratio by bisection).
+--
+-- The pair: a cylindrical wheel (flat profile, radius r0) on a crowned rail (a circular arc of transverse radius
+-- R, cant 0). Relative curvatures: A = 1/(2 r0) along the track, B = 1/(2 R) across; R = r0 / q gives B/A = q.
+-- The centred wheelset touches at z = 0 (the track assembly guarantees it) at the crown, where a rail line
+-- lies, so the penetration at the pose z = -delta is delta: computed from the pose, not read from the result.
+-- The rail lines are the profile's own points (strategy {"coarse", "topology"} does not resample), 0.02 mm
+-- apart: the linear interpolation of h across lines then costs < 1e-5 of the force.
+--
+-- Run with levels=6 (wrc run tests/scripts/contact_hertz.lua levels=6) for the convergence table down to 128
+-- elements on the minor semi-axis (the default 4 levels, 4..32 elements, keep the test fast under ASan), with
+-- line_step=5e-6 for rail lines finer than those elements, q=5 for one curvature ratio.
+local check = require "wrc.check"
+local here = arg[0]:match("(.*/)") or "./"
+local H = dofile(here .. "../contact/hertz_reference.lua")
+local C = dofile(here .. "contact_helpers.lua")
+
+local levels = math.tointeger(tonumber(arg.levels or 4))
+assert(levels and levels >= 1 and levels <= 6, "levels must be 1..6")
+local E, nu = 2.1e11, 0.3
+local Estar = E / (2 * (1 - nu * nu))
+local r0 = 0.45
+local load = 100e3        -- N: the Hertz force whose approach is imposed
+local line_step = tonumber(arg.line_step or 0.02e-3)  -- m between rail lines
+local half_width = 0.025   -- m: the rail extends to +-25 mm (the widest inter-penetration is +-9.4 mm)
+local gauge_depth = 0.2e-3 -- m: the gauge point on the crown (the pair has no flange)
+
+local function cylinder_wheel()
+  local y, z = {}, {}
+  for k = 0, 130 do y[#y + 1], z[#z + 1] = -0.070 + k * 1e-3, 0.0 end
+  return wrc.profile.points{kind = "wheel", y = y, z = z, name = "cylinder"}
+end
+
+local function crowned_rail(R)
+  local y, z = {}, {}
+  local n = math.floor(half_width / line_step + 0.5)
+  for k = -n, n do
+    local yk = k * line_step
+    y[#y + 1], z[#z + 1] = yk, math.sqrt(R * R - yk * yk) - R
+  end
+  return wrc.profile.points{kind = "rail", y = y, z = z, name = string.format("crown R%.0f", R * 1e3)}
+end
+
+-- The crown (rail profile y = 0) under the tape circle (y = 0.75): the gauge point is on the gauge side of the
+-- crown at gauge_depth below its top.
+local function wheelset(wheel, rail, R, element)
+  local yg = math.sqrt(R * R - (R - gauge_depth) ^ 2)
+  return wrc.wheelset{wheel = wheel, rail = rail, radius = r0, cant = 0, gauge_depth = gauge_depth,
+                      gauge = 2 * (0.75 - yg), E = E, nu = nu, grid = element, strategy = {"coarse", "topology"}}
+end
+
+-- Semi-axes measured on the pressure grid, on the row and the column through the element nearest the centre
+-- of pressure: (1) the extent of the loaded elements, half their count times the element size (what "within
+-- one element" is about); (2) a least-squares fit of the semi-ellipse p^2 = c0 + c1 x^2 over the loaded
+-- elements, a = sqrt(-c0 / c1), which resolves the edge below the element size.
+local function fit_semi_axis(xs, ps)
+  local n, sx, sy, sxx, sxy = 0, 0, 0, 0, 0
+  for k = 1, #xs do
+    local x, y = xs[k] ^ 2, ps[k] ^ 2
+    n, sx, sy, sxx, sxy = n + 1, sx + x, sy + y, sxx + x * x, sxy + x * y
+  end
+  local c1 = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+  local c0 = (sy - c1 * sx) / n
+  return math.sqrt(-c0 / c1)
+end
+
+local function measured_semi_axes(p)
+  local g = p.grid
+  local u = p.point.x - p.frame.origin.x  -- t1 = x and t2 = y here (checked by the caller)
+  local v = p.point.y - p.frame.origin.y
+  local ic = math.floor((u - g.x0) / g.dx + 0.5) + 1
+  local jc = math.floor((v - g.y0) / g.dy + 0.5) + 1
+  local xs, px, ys, py = {}, {}, {}, {}
+  for i = 1, g.nx do
+    local pr = p.pressure[jc][i]
+    if pr > 0 then xs[#xs + 1], px[#px + 1] = g.x0 + (i - 1) * g.dx - u, pr end
+  end
+  for j = 1, g.ny do
+    local pr = p.pressure[j][ic]
+    if pr > 0 then ys[#ys + 1], py[#py + 1] = g.y0 + (j - 1) * g.dy - v, pr end
+  end
+  return {a = 0.5 * #xs * g.dx, b = 0.5 * #ys * g.dy, a_fit = fit_semi_axis(xs, px), b_fit = fit_semi_axis(ys, py),
+          ic = ic, jc = jc}
+end
+
+print("Hertz through the pipeline: cylinder wheel r0 = 450 mm on a crowned rail, 100 kN, E = 210 GPa, nu = 0.3")
+print(string.format("%5s %9s %5s %7s %9s %9s %9s %7s %7s %9s %9s %8s %7s", "B/A", "R_rail_mm", "n_b", "el_mm",
+                    "elements", "dF_%", "dpmax_%", "da_el", "db_el", "da_fit_%", "db_fit_%", "time_s", "ell_r"))
+local worst = {F = 0, p = 0, ax = 0}
+for _, q in ipairs(arg.q and {tonumber(arg.q)} or {1, 2, 5, 10}) do
+  local R = r0 / q
+  local A, B = 1 / (2 * r0), 1 / (2 * R)
+  local ref = H.from_force(A, B, Estar, load)
+  local wheel, rail = cylinder_wheel(), crowned_rail(R)
+  local errors = {}
+  for level = 1, levels do
+    local n = 2 ^ (level + 1)  -- elements on the minor semi-axis: 4, 8, 16, ...
+    local element = math.min(ref.a, ref.b) / n
+    local ws = wheelset(wheel, rail, R, element)
+    local t0 = os.clock()
+    local c = ws:contact{z = -ref.delta}
+    local seconds = os.clock() - t0
+    check.ok(#c.left.patches == 1 and #c.right.patches == 1, "one contact area per wheel")
+    local p = c.left.patches[1]
+    local what = string.format("B/A = %g, %d elements on the semi-axis: ", q, n)
+    -- The geometry the normal problem saw.
+    check.rel(p.penetration, ref.delta, 1e-9, what .. "max h = the pose's penetration")
+    check.near(p.normal.z, 1, 1e-12, what .. "contact normal vertical")
+    check.near(p.frame.t1.x, 1, 1e-12, what .. "grid x along the track")
+    check.near(p.frame.t2.y, 1, 1e-12, what .. "grid y across the track (toward the field side)")
+    check.near(p.angle, 0, 1e-12, what .. "contact angle")
+    -- The crown: the highest rail line, under the tape circle (to the gauge point's interpolation error) and
+    -- touching the wheel at z = 0.
+    local lines = ws:lines("left")
+    local crown = 1
+    for k = 2, lines.count do if lines.z[k] > lines.z[crown] then crown = k end end
+    check.near(lines.y[crown], 0.75, 1e-6, what .. "the crown under the tape circle")
+    check.near(lines.z[crown], -r0, 1e-12, what .. "the crown touches the wheel at z = 0")
+    check.near(p.point.x, 0, 1e-9, what .. "centre of pressure at the crown (x)")
+    check.near(p.point.y, lines.y[crown], 1e-9, what .. "centre of pressure at the crown (y)")
+    check.ok(p.point.z <= -r0 and p.point.z >= -r0 - ref.delta, what .. "centre of pressure within the overlap")
+    check.rel(C.grid_force(p), p.normal_force, 1e-9, what .. "force = sum of the pressure grid")
+    check.rel(c.right.patches[1].normal_force, p.normal_force, 1e-9, what .. "right wheel mirrors the left")
+    check.ok(p.complementarity < 1e-6, what .. "complementarity")
+    -- Against Hertz.
+    local m = measured_semi_axes(p)
+    check.near(p.h[m.jc][m.ic], ref.delta, 1e-9 * ref.delta, what .. "the centre element sits on the crown")
+    local e = {F = p.normal_force / ref.force - 1, p = p.pmax / ref.p0 - 1,
+               a = (m.a - ref.a) / p.grid.dx, b = (m.b - ref.b) / p.grid.dy,
+               a_fit = m.a_fit / ref.a - 1, b_fit = m.b_fit / ref.b - 1}
+    errors[level] = e
+    print(string.format("%5g %9.1f %5d %7.4f %9d %9.4f %9.4f %7.2f %7.2f %9.3f %9.3f %8.3f %7.3f", q, R * 1e3, n,
+                        element * 1e3, p.grid.nx * p.grid.ny, 100 * e.F, 100 * e.p, e.a, e.b, 100 * e.a_fit,
+                        100 * e.b_fit, seconds, C.shape(p).ellipse_ratio))
+    check.ok(math.abs(e.F) < 0.01, what .. "normal force within 1 % of Hertz")
+    check.ok(math.abs(e.p) < 0.02, what .. "peak pressure within 2 % of Hertz")
+    check.ok(math.abs(e.a) <= 1 and math.abs(e.b) <= 1, what .. "semi-axes within one element")
+    worst.F, worst.p = math.max(worst.F, math.abs(e.F)), math.max(worst.p, math.abs(e.p))
+    worst.ax = math.max(worst.ax, math.abs(e.a), math.abs(e.b))
+    -- The shape measures of contact_s1002_flange.lua give an ellipse here: one zone, the area of the ellipse
+    -- of the same length and width, symmetric about the centre of pressure.
+    local shape = C.shape(p)
+    if n >= 8 then
+      check.ok(shape.components == 1, what .. "one zone")
+      check.near(shape.ellipse_ratio, 1, 0.08, what .. "area / ellipse of the same length and width")
+      check.near(shape.lateral_extent_ratio, 1, 1e-6, what .. "lateral extents about the centre of pressure")
+      check.near(shape.lateral_skewness, 0, 1e-5, what .. "lateral skewness of the pressure")
+    end
+    -- Force against penetration at a second, shallower pose (F ~ delta^1.5 comes from the reference).
+    if n == 8 then
+      local shallow = H.from_approach(A, B, Estar, 0.4 * ref.delta)
+      local p2 = ws:contact{z = -shallow.delta}.left.patches[1]
+      check.rel(p2.normal_force, shallow.force, 0.01, what .. "force at 0.4 delta within 1 %")
+      check.rel(p2.pmax, shallow.p0, 0.02, what .. "peak pressure at 0.4 delta within 2 %")
+    end
+  end
+  -- Refining the grid reduces the error: the finest level beats the coarsest clearly.
+  if levels >= 2 then
+    local first, last = errors[1], errors[levels]
+    check.ok(math.abs(last.p) < 0.5 * math.abs(first.p), string.format("B/A = %g: the peak pressure error shrinks", q))
+    check.ok(math.abs(last.F) < math.abs(first.F) + 1e-4, string.format("B/A = %g: the force error does not grow", q))
+  end
+end
+print(string.format("worst: force %.3f %%, peak pressure %.3f %%, semi-axes %.2f elements", 100 * worst.F,
+                    100 * worst.p, worst.ax))
