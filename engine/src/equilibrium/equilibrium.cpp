@@ -156,6 +156,7 @@ class EquilibriumSolver {
     req_ = request;
     req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
     req_.keep_grids = true;
+    req_.tolerance = std::max(opt.normal_tolerance, model.options().normal.tolerance);
     ftol_ = opt.force_tolerance * Q;
     mtol_ = opt.moment_tolerance * Q * 1.0;  // the moment scale Q x 1 m
   }
@@ -163,18 +164,22 @@ class EquilibriumSolver {
   bool converged(const Iterate& it) const { return std::abs(it.R(0)) <= ftol_ && std::abs(it.R(1)) <= mtol_; }
 
   // Newton-Raphson from (z, roll) at lateral position y, with step limits and backtracking on the residual norm.
-  // Leaves the last iterate in `cur`; false with a reason in `why` when it stops without converging.
-  bool newton(double y, double z, double roll, Iterate& cur, std::string& why) {
-    accuracy_ = 1.0;
+  // With both wheels loaded the Jacobian comes from the normal problems' sensitivities at every iterate (two
+  // linearised solves, ~60 % of an evaluation; reusing it costs more evaluations than it saves). With a wheel
+  // lifted it comes from forward differences (two evaluations), so that one is reused -- also from the start,
+  // e.g. the previous case of a sweep -- while the residual contracts well. Leaves the last iterate in `cur`;
+  // false with a reason in `why` on failure.
+  bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, Iterate& cur,
+              std::string& why) {
     cur = evaluate(y, z, roll);
+    std::optional<Eigen::Matrix2d> J = J0;
+    bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
     for (int k = 0;; ++k) {
       if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
       res_.iterations = k;
-      accuracy_ = std::sqrt(cur.merit);
       if (converged(cur)) {
-        if (req_.tolerance <= model_.options().normal.tolerance) return true;
-        cur = evaluate(y, cur.z, cur.roll);  // confirm with the normal problems solved to full accuracy
-        if (converged(cur)) return true;
+        if (J && J_lifted) res_.jacobian = J;  // worth handing on: it cost two evaluations
+        return true;
       }
       if (k >= opt_.max_iterations) {
         why = fmt::format("Newton: no convergence in {} iterations", opt_.max_iterations);
@@ -189,26 +194,39 @@ class EquilibriumSolver {
         cur = evaluate(y, cur.z - opt_.max_step_z, cur.roll);
         continue;
       }
-      jacobian(y, cur);
-      Eigen::Vector2d dx = -cur.J.fullPivLu().solve(cur.R);
+      bool fresh = false;  // J computed at this iterate (else reused from an earlier one or the start)
+      if (!J || !J_lifted || !cur.lifted) {
+        J = jacobian(y, cur);
+        J_lifted = cur.lifted;
+        fresh = true;
+      }
+      Eigen::Vector2d dx = -J->fullPivLu().solve(cur.R);
       if (!dx.allFinite()) {
         why = "Newton: singular Jacobian";
         return false;
       }
       dx /= std::max({1.0, std::abs(dx(0)) / opt_.max_step_z, std::abs(dx(1)) / opt_.max_step_roll});
-      double t = 1;
+      const double merit0 = cur.merit;
       bool accepted = false;
-      for (int b = 0; b < 10 && !accepted; ++b, t *= 0.5) {
+      double t = 1;
+      // Backtracking; a reused Jacobian gets one trial, then a fresh one is computed instead.
+      for (int b = 0; b < (fresh ? 10 : 1) && !accepted; ++b, t *= 0.5) {
         Iterate trial = evaluate(y, cur.z + t * dx(0), cur.roll + t * dx(1));
-        if (trial.merit < (1 - 1e-4 * t) * cur.merit) {
+        if (trial.merit < (1 - 1e-4 * t) * merit0) {
           cur = std::move(trial);
           accepted = true;
         }
       }
       if (!accepted) {
+        if (!fresh) {
+          J.reset();
+          continue;
+        }
         why = fmt::format("Newton: no descent at z = {:.6f} mm, roll = {:.6f} mrad", cur.z * 1e3, cur.roll * 1e3);
         return false;
       }
+      // Poor contraction: the Jacobian no longer serves.
+      if (cur.merit > 0.04 * merit0) J.reset();
     }
   }
 
@@ -270,7 +288,7 @@ class EquilibriumSolver {
         // Polish with Newton from the bracketed point.
         std::string w;
         Iterate p;
-        if (newton(y, cur.z, cur.roll, p, w)) cur = std::move(p);
+        if (newton(y, cur.z, cur.roll, std::nullopt, p, w)) cur = std::move(p);
       }
       if (!converged(cur)) why = "nested solve: residuals above tolerance";
       return converged(cur);
@@ -295,31 +313,31 @@ class EquilibriumSolver {
   }
 
  private:
-  // Inexact Newton: far from the solution the normal problems need not be solved to the last digit; the
-  // solver's tolerance follows the residual down to the model's own (about 1e-8).
   ContactResult contact_at(double y, double z, double roll) {
     ++res_.evaluations;
-    req_.tolerance = std::clamp(1e-3 * accuracy_, model_.options().normal.tolerance, 1e-5);
     return evaluate_contact(model_, {y, z, roll, yaw_}, ws_, req_);
   }
 
   // The Jacobian: from the sensitivities of the normal problems while both wheels are loaded (they hold the
   // contact planes fixed, which is exact to first order for the elastic stiffness); with a wheel lifted the roll
   // balance rests on where the loaded wheel's contact sits, a geometric effect they miss: forward differences.
-  void jacobian(double y, Iterate& it) {
+  Eigen::Matrix2d jacobian(double y, Iterate& it) {
+    ++res_.jacobians;
+    Eigen::Matrix2d J;
     if (!it.lifted) {
       add_sensitivity(model_, it.contact, ws_);
       const Sensitivity& S = it.contact.sensitivity;
-      it.J << S(2, 0), S(2, 1), S(3, 0), S(3, 1);
-      return;
+      J << S(2, 0), S(2, 1), S(3, 0), S(3, 1);
+      return J;
     }
     const double hz = 1e-7, hr = 1e-7;
     auto R = [&](double z, double roll) {
       const ContactResult c = contact_at(y, z, roll);
       return Eigen::Vector2d(c.force.z() - Q_, c.moment.x());
     };
-    it.J.col(0) = (R(it.z + hz, it.roll) - it.R) / hz;
-    it.J.col(1) = (R(it.z, it.roll + hr) - it.R) / hr;
+    J.col(0) = (R(it.z + hz, it.roll) - it.R) / hz;
+    J.col(1) = (R(it.z, it.roll + hr) - it.R) / hr;
+    return J;
   }
 
   const ContactModel& model_;
@@ -329,7 +347,6 @@ class EquilibriumSolver {
   EquilibriumResult& res_;
   ContactRequest req_;
   double ftol_ = 0, mtol_ = 0;
-  double accuracy_ = 1.0;  // the last relative residual
 };
 
 }  // namespace
@@ -349,7 +366,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   bool ok = false;
   // 1. The given starts (neighbouring solutions, predictions), in order.
   for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
-    ok = solver.newton(y, starts[k].z, starts[k].roll, cur, w);
+    ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, cur, w);
     if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
   }
   // 2. The rigid position pressed in a little: good on the tread, poor where the rigid wheelset climbs a flange.
@@ -359,7 +376,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     if (!rigid->message.empty()) {
       why.push_back("rigid start: " + rigid->message);
     } else {
-      ok = solver.newton(y, rigid->z - opt.initial_approach, rigid->roll, cur, w);
+      ok = solver.newton(y, rigid->z - opt.initial_approach, rigid->roll, std::nullopt, cur, w);
       if (!ok) why.push_back("from the rigid position: " + w);
     }
   }
@@ -368,7 +385,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     const RigidResult r0 = solve_rigid(model.geometry(), 0.0, yaw, Q);
     Iterate path;
     double y_at = 0;
-    bool on_path = r0.message.empty() && solver.newton(0.0, r0.z - opt.initial_approach, r0.roll, path, w);
+    bool on_path = r0.message.empty() && solver.newton(0.0, r0.z - opt.initial_approach, r0.roll, std::nullopt, path, w);
     double step = 0.5e-3 * (y > 0 ? 1 : -1);
     double z_prev = path.z, roll_prev = path.roll, y_prev = y_at;
     while (on_path && y_at != y) {
@@ -376,8 +393,9 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
       // Linear predictor through the last two points of the path.
       const double s = y_at != y_prev ? (y_next - y_at) / (y_at - y_prev) : 0.0;
       Iterate next;
-      if (solver.newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), next, w) ||
-          solver.newton(y_next, path.z, path.roll, next, w)) {
+      if (solver.newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), std::nullopt,
+                        next, w) ||
+          solver.newton(y_next, path.z, path.roll, std::nullopt, next, w)) {
         y_prev = y_at;
         z_prev = path.z;
         roll_prev = path.roll;

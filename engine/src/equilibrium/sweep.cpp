@@ -119,10 +119,11 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
     // chain (from the last one alone after the first step).
     struct Point {
       double y, z, roll;
+      std::optional<Eigen::Matrix2d> jacobian;
     };
     std::vector<Point> path;
     const EquilibriumResult& centre = out.elastic[static_cast<std::size_t>(ch.centre)];
-    if (centre.converged) path.push_back({centre.y, centre.z, centre.roll});
+    if (centre.converged) path.push_back({centre.y, centre.z, centre.roll, centre.jacobian});
     for (int c : ch.cases) {
       std::vector<Start> starts;
       const double yc = out.cases[static_cast<std::size_t>(c)].y;
@@ -130,10 +131,11 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
         const Point& a = path[path.size() - 2];
         const Point& b = path.back();
         const double s = (b.y != a.y) ? (yc - b.y) / (b.y - a.y) : 0.0;
-        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll)});
+        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll), b.jacobian});
       }
-      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll});
-      if (solve_case(ws, c, starts)) path.push_back({yc, out.elastic[c].z, out.elastic[c].roll});
+      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt});
+      if (solve_case(ws, c, starts))
+        path.push_back({yc, out.elastic[c].z, out.elastic[c].roll, out.elastic[c].jacobian});
     }
   });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

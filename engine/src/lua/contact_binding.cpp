@@ -299,7 +299,7 @@ int wheelset_equilibrium(lua_State* L) {
   lua_getfield(L, 2, "start");
   if (!lua_isnil(L, -1)) {
     check_table(L, -1, std::string(ctx) + ": 'start'");
-    start.push_back(Start{need_number(L, -1, "z", ctx), get_number(L, -1, "roll", 0.0, ctx)});
+    start.push_back(Start{need_number(L, -1, "z", ctx), get_number(L, -1, "roll", 0.0, ctx), std::nullopt});
   }
   lua_pop(L, 1);
   if (opt_bool(L, 2, "trace", ctx).value_or(false)) {
