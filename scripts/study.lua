@@ -13,17 +13,21 @@ local function patch_count(wheel)
   return n
 end
 
-local function max_angle(wheel)
+-- Largest contact angle over the loaded areas of a wheel: of the contact plane (`angle`, the direction of the
+-- force), or of the wheel normal at the paper's nominal point (`nominal_angle`).
+local function max_angle(wheel, field)
   local a = nil
   for _, p in ipairs(wheel.patches) do
-    if p.normal_force > 0 and (a == nil or p.angle > a) then a = p.angle end
+    local v = p[field or "angle"]
+    if p.normal_force > 0 and (a == nil or v > a) then a = v end
   end
   return a
 end
 
 M.sweep_columns = {
   "yaw_deg", "y_mm", "converged", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "My_kNm", "Mz_kNm",
-  "left_patches", "left_Fy_kN", "left_Fz_kN", "left_angle_deg", "left_max_patch_angle_deg", "left_rolling_radius_mm",
+  "left_patches", "left_Fy_kN", "left_Fz_kN", "left_angle_deg", "left_max_patch_angle_deg",
+  "left_max_nominal_angle_deg", "left_rolling_radius_mm",
   "right_patches", "right_Fy_kN", "right_Fz_kN", "right_angle_deg", "right_rolling_radius_mm",
   "rolling_radius_difference_mm", "iterations", "residual_force_N", "residual_moment_Nm",
 }
@@ -42,8 +46,9 @@ function M.sweep_row(r)
     row[side .. "_angle_deg"] = w.angle * deg
     row[side .. "_rolling_radius_mm"] = w.rolling_radius * 1e3
   end
-  local a = max_angle(r.left)
+  local a, an = max_angle(r.left), max_angle(r.left, "nominal_angle")
   row.left_max_patch_angle_deg = a and a * deg
+  row.left_max_nominal_angle_deg = an and an * deg
   row.rolling_radius_difference_mm = r.rolling_radius_difference * 1e3
   row.iterations = r.iterations
   row.residual_force_N, row.residual_moment_Nm = r.residual.force, r.residual.moment
@@ -135,7 +140,11 @@ function M.summary(sweep, yaw)
   lines[#lines + 1] = "  left wheel, two contact areas:  y = " .. ranges(s, function(r) return patch_count(r.left) == 2 end) .. " mm"
   lines[#lines + 1] = "  left wheel, no contact:         y = " .. ranges(s, function(r) return patch_count(r.left) == 0 end) .. " mm"
   lines[#lines + 1] = "  left contact angle > 60 deg:    y = " ..
-                          ranges(s, function(r) local a = max_angle(r.left); return a and a > math.rad(60) end) .. " mm"
+                          ranges(s, function(r) local a = max_angle(r.left); return a and a > math.rad(60) end) ..
+                          " mm (contact plane: the force direction)"
+  lines[#lines + 1] = "                                  y = " ..
+                          ranges(s, function(r) local a = max_angle(r.left, "nominal_angle"); return a and a > math.rad(60) end) ..
+                          " mm (wheel normal at the paper's nominal point)"
   lines[#lines + 1] = "  right wheel lifted (no load):   y = " .. ranges(s, function(r) return patch_count(r.right) == 0 end) .. " mm"
   return table.concat(lines, "\n") .. "\n"
 end

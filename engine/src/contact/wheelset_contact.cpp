@@ -239,6 +239,8 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   pc.t1 = pl.t1;
   pc.t2 = pl.t2;
   pc.nominal = patches[group.front()].point;
+  const double sgn = side == kLeft ? 1.0 : -1.0;  // Patch::normal is the wheel's outward normal: -n into the wheel
+  pc.nominal_angle = std::atan2(sgn * patches[group.front()].normal.y(), -patches[group.front()].normal.z());
   pc.segments = static_cast<int>(all.size());
 
   // Grid: aligned with the plane origin, covering the projected segments plus the margin.

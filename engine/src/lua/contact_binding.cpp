@@ -85,6 +85,7 @@ void push_area(lua_State* L, const LocationState* st, const PatchContact& pc) {
   push_vec3(L, pc.normal);
   lua_setfield(L, -2, "normal");
   set_number(L, "angle", pc.angle);
+  set_number(L, "nominal_angle", pc.nominal_angle);
   set_number(L, "area", s.area);
   set_number(L, "pmax", s.max_pressure);
   set_integer(L, "elements", s.elements_in_contact);

@@ -56,6 +56,7 @@ struct PatchContact {
   Eigen::Vector3d t2 = Eigen::Vector3d::UnitY();     // second axis (lateral), grid y
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from the rail into the wheel
   Eigen::Vector3d nominal = Eigen::Vector3d::Zero(); // the paper's nominal point of the first patch (m)
+  double nominal_angle = 0;            // contact angle of the wheel's normal there (rad): the paper's plane
   contact::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
   std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
   double normal_force = 0;             // N
