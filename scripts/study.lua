@@ -13,6 +13,13 @@ local function patch_count(wheel)
   return n
 end
 
+-- Separate contact regions of a wheel (an inter-penetration area may hold two, e.g. tread and flange root).
+local function region_count(wheel)
+  local n = 0
+  for _, p in ipairs(wheel.patches) do n = n + (p.regions or 0) end
+  return n
+end
+
 -- Largest contact angle over the loaded areas of a wheel: of the contact plane (`angle`, the direction of the
 -- force), or of the wheel normal at the paper's nominal point (`nominal_angle`).
 local function max_angle(wheel, field)
@@ -26,9 +33,9 @@ end
 
 M.sweep_columns = {
   "yaw_deg", "y_mm", "converged", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "My_kNm", "Mz_kNm",
-  "left_patches", "left_Fy_kN", "left_Fz_kN", "left_angle_deg", "left_max_patch_angle_deg",
+  "left_patches", "left_contact_regions", "left_Fy_kN", "left_Fz_kN", "left_angle_deg", "left_max_patch_angle_deg",
   "left_max_nominal_angle_deg", "left_rolling_radius_mm",
-  "right_patches", "right_Fy_kN", "right_Fz_kN", "right_angle_deg", "right_rolling_radius_mm",
+  "right_patches", "right_contact_regions", "right_Fy_kN", "right_Fz_kN", "right_angle_deg", "right_rolling_radius_mm",
   "rolling_radius_difference_mm", "iterations", "residual_force_N", "residual_moment_Nm",
 }
 
@@ -41,6 +48,7 @@ function M.sweep_row(r)
   for _, side in ipairs{"left", "right"} do
     local w = r[side]
     row[side .. "_patches"] = patch_count(w)
+    row[side .. "_contact_regions"] = region_count(w)
     row[side .. "_Fy_kN"] = w.force.y / 1e3
     row[side .. "_Fz_kN"] = w.force.z / 1e3
     row[side .. "_angle_deg"] = w.angle * deg
@@ -136,9 +144,11 @@ function M.summary(sweep, yaw)
   local y08 = M.first_crossing(s, 0.8)
   lines[#lines + 1] = string.format("yaw %g deg: Y/Q first exceeds 0.8 at y = %s mm", yaw * deg,
                                     y08 and string.format("%.2f", y08 * 1e3) or "(never)")
-  lines[#lines + 1] = "  left wheel, one contact area:   y = " .. ranges(s, function(r) return patch_count(r.left) == 1 end) .. " mm"
-  lines[#lines + 1] = "  left wheel, two contact areas:  y = " .. ranges(s, function(r) return patch_count(r.left) == 2 end) .. " mm"
-  lines[#lines + 1] = "  left wheel, no contact:         y = " .. ranges(s, function(r) return patch_count(r.left) == 0 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, one inter-penetration area:   y = " .. ranges(s, function(r) return patch_count(r.left) == 1 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, two inter-penetration areas:  y = " .. ranges(s, function(r) return patch_count(r.left) == 2 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, one contact region:  y = " .. ranges(s, function(r) return region_count(r.left) == 1 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, two contact regions: y = " .. ranges(s, function(r) return region_count(r.left) >= 2 end) .. " mm"
+  lines[#lines + 1] = "  left wheel, no contact:          y = " .. ranges(s, function(r) return patch_count(r.left) == 0 end) .. " mm"
   lines[#lines + 1] = "  left contact angle > 60 deg:    y = " ..
                           ranges(s, function(r) local a = max_angle(r.left); return a and a > math.rad(60) end) ..
                           " mm (contact plane: the force direction)"

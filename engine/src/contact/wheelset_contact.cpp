@@ -186,6 +186,40 @@ void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact&
   }
 }
 
+// Separate contact regions of a solution: 8-connected components of {p > 0} carrying >= 0.1 % of the force.
+int contact_regions(const contact::NormalSolution& sol) {
+  const contact::Grid& g = sol.grid;
+  if (sol.pressure.empty() || !(sol.force > 0)) return 0;
+  std::vector<int> label(static_cast<std::size_t>(g.size()), -1);
+  std::vector<int> stack;
+  int regions = 0;
+  const double dA = g.element_area();
+  for (int start = 0; start < g.size(); ++start) {
+    if (!(sol.pressure[static_cast<std::size_t>(start)] > 0) || label[static_cast<std::size_t>(start)] >= 0) continue;
+    double force = 0;
+    stack.assign(1, start);
+    label[static_cast<std::size_t>(start)] = start;
+    while (!stack.empty()) {
+      const int k = stack.back();
+      stack.pop_back();
+      force += sol.pressure[static_cast<std::size_t>(k)] * dA;
+      const int i = k % g.nx, j = k / g.nx;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int ii = i + di, jj = j + dj;
+          if (ii < 0 || jj < 0 || ii >= g.nx || jj >= g.ny) continue;
+          const auto m = static_cast<std::size_t>(g.index(ii, jj));
+          if (sol.pressure[m] > 0 && label[m] < 0) {
+            label[m] = start;
+            stack.push_back(static_cast<int>(m));
+          }
+        }
+    }
+    if (force >= 1e-3 * sol.force) ++regions;
+  }
+  return regions;
+}
+
 // Start pressures for an area from the last evaluation's area of the same side in (nearly) the same plane:
 // the old pressure at each new element centre (bilinear). False when there is none.
 bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl, const contact::Grid& grid,
@@ -330,6 +364,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
                           : model.solver().solve(grid, h, load, ws.normal, nopt);
   pc.penetration = *std::max_element(h.begin(), h.end());
+  pc.regions = contact_regions(pc.solution);
   const contact::NormalSolution& sol = pc.solution;
   const Eigen::Vector3d c(0, f.y, f.z);
   pc.normal_force = sol.force;

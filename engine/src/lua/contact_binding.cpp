@@ -89,6 +89,7 @@ void push_area(lua_State* L, const LocationState* st, const PatchContact& pc) {
   set_number(L, "area", s.area);
   set_number(L, "pmax", s.max_pressure);
   set_integer(L, "elements", s.elements_in_contact);
+  set_integer(L, "regions", pc.regions);
   set_number(L, "penetration", pc.penetration);
   set_number(L, "rolling_radius", pc.rolling_radius);
   set_integer(L, "iterations", s.iterations);

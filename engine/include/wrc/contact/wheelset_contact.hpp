@@ -67,6 +67,9 @@ struct PatchContact {
   double rolling_radius = 0;           // wheel radius at the centre of pressure (m)
   double penetration = 0;              // max h (m)
   int segments = 0;                    // inter-penetration segments of the area
+  int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
+                                       // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
+                                       // inter-penetration area holds
   Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll), when asked for
 };
 
