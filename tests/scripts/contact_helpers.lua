@@ -87,6 +87,42 @@ function M.shape(p)
   return s
 end
 
+-- Separate contact regions as ws:contact counts them (patch.regions): groups of loaded elements, 8-connected,
+-- each carrying at least `min_share` of the force (default 0.001). Returns the count and the groups' forces (N).
+function M.regions(p, min_share)
+  min_share = min_share or 0.001
+  local g = p.grid
+  local seen, forces, total = {}, {}, 0
+  for j = 1, g.ny do
+    for i = 1, g.nx do
+      if p.pressure[j][i] > 0 and not seen[(j - 1) * g.nx + i] then
+        local f, stack = 0, {{i, j}}
+        seen[(j - 1) * g.nx + i] = true
+        while #stack > 0 do
+          local e = table.remove(stack)
+          f = f + p.pressure[e[2]][e[1]]
+          for di = -1, 1 do
+            for dj = -1, 1 do
+              local a, b = e[1] + di, e[2] + dj
+              if a >= 1 and a <= g.nx and b >= 1 and b <= g.ny and p.pressure[b][a] > 0 and not seen[(b - 1) * g.nx + a] then
+                seen[(b - 1) * g.nx + a] = true
+                stack[#stack + 1] = {a, b}
+              end
+            end
+          end
+        end
+        forces[#forces + 1] = f * g.dx * g.dy
+        total = total + f * g.dx * g.dy
+      end
+    end
+  end
+  local n, kept = 0, {}
+  for _, f in ipairs(forces) do
+    if f >= min_share * total then n, kept[#kept + 1] = n + 1, f end
+  end
+  return n, kept
+end
+
 -- The inter-penetration area of a patch projected onto its contact plane, from its segments and the side's rail
 -- lines (ws:lines(side)): each rail line is a line of constant v (the plane's t2 has no x component at zero
 -- yaw; checked); its segments are u-intervals. Between two consecutive rail lines that both have segments the
@@ -171,6 +207,10 @@ if arg and arg[0] and arg[0]:find("contact_helpers%.lua$") then
   check.near(s.width, 5, 0, "width")
   check.near(s.cop_u, (3 * (0 + 1 + 2) + 4) / 10, 1e-15, "centre of pressure")
   check.near(M.grid_force(patch), 10, 0, "force")
+  P[4][4] = 1  -- joins the single element diagonally
+  check.ok(M.regions(patch) == 1 and M.shape(patch).components == 3, "8-connected regions, 4-connected components")
+  P[4][4] = 0
+  check.ok(M.regions(patch) == 2 and M.regions(patch, 0.2) == 1, "regions below the force share are not counted")
   -- A patch of two lines (v = 0 and v = 1) with intervals [0, 2] and [1, 3], plane = track frame.
   local flat = {frame = {origin = {x = 0, y = 0, z = 0}, t1 = {x = 1, y = 0, z = 0}, t2 = {x = 0, y = 1, z = 0}},
                 segments = {{line = 2, x_t = 0, x_l = 2, y = 0, z = 0}, {line = 3, x_t = 1, x_l = 3, y = 1, z = 0}}}

@@ -61,6 +61,10 @@ check.near(cu, s.cop_u, 1e-9, "centre of pressure = first moment of the pressure
 check.near(cv, s.cop_v, 1e-9, "centre of pressure = first moment of the pressure grid (v)")
 check.near(p.area, s.area, 1e-12, "area = loaded elements x dA")
 check.ok(s.components >= 2, "the contact splits into separate zones inside one inter-penetration area")
+local regions, region_forces = C.regions(p)
+check.ok(regions == 2, "two contact regions (tread and flange root)")
+check.ok(p.regions == regions, "patch.regions counts them")
+print(string.format("  regions: %d, carrying %.1f and %.1f kN", regions, region_forces[1] / 1e3, region_forces[2] / 1e3))
 check.ok(s.ellipse_ratio < 0.8, "contact area well below the ellipse of the same length and width")
 check.ok(math.abs(s.lateral_skewness) > 0.5, "pressure laterally skewed about the centre of pressure")
 check.ok(s.lateral_extent_ratio < 0.75 or s.lateral_extent_ratio > 1 / 0.75, "contact lopsided about the centre of pressure")
@@ -91,6 +95,7 @@ for _, case in ipairs{{"accurate", accurate, poses}, {"fast", fast, {poses[1], p
       check.ok(bad_h == 0, what .. "every loaded element has h > 0")
       check.ok(outside == 0, what .. "every loaded element lies inside the projected segments")
       check.ok(pa.complementarity < 1e-6, what .. "complementarity")
+      check.ok(pa.regions == C.regions(pa), what .. "patch.regions = the regions counted on the pressure grid")
       N = N + pa.normal_force
     end
     check.ok(N > 50e3 and N < 300e3, "the pose loads the left wheel")
