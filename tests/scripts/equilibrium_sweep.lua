@@ -1,0 +1,100 @@
+-- Equilibrium residuals for every case of a coarse version of the paper's sweep: S1002 on 60E1 (the paper's
+-- track), Q = 200 kN, yaw 0 and 1 deg, y from -8 to +8 mm in 1 mm steps, on 2 worker threads, grid 1 mm
+-- (coarser than the default 0.2 mm to stay fast under the sanitizers; the full 0.1 mm sweep on the default grid
+-- is in tests/bench/bench_equilibrium.cpp). The range covers tread contact, flange contact and, beyond
+-- |y| = 6.5 mm, the wheelset balanced on one flange with the other wheel lifted.
+--
+-- For every case, computed here from the returned tables rather than taken from the solver's own residual:
+--   - the forces of the contact areas: normal force = integral of the pressure grid (sum p dA), force = N n,
+--     wheel force = sum of its areas, total = left + right;
+--   - the moment about the wheelset centre (0, y, z) = sum (centre of pressure - centre) x area force;
+--   - |sum Fz - Q| <= 1e-6 Q and |sum Mx| <= 1e-6 Q x 1 m (the solver's defaults);
+--   - the pose re-evaluated by ws:contact (a fresh evaluation of the whole pipeline) is an equilibrium too:
+--     same tolerances plus 1e-7 Q for the normal solver's own tolerance (1e-8 of the wheel loads);
+--   - the outputs follow DESIGN.md: Y = -sum Fy, My = -sum My, Mz = -sum Mz (what a support at the centre must
+--     apply), Y_Q = Y / Q, rolling_radius_difference = left - right; Mz = 0 at yaw 0.
+local check = require "wrc.check"
+
+local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
+local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
+local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
+local Q = 200e3
+local ftol, mtol = 1e-6 * Q, 1e-6 * Q * 1.0
+local noise = 1e-7 * Q
+
+local sweep = ws:sweep{y = {from = -8e-3, to = 8e-3, step = 1e-3}, yaw = {0, math.rad(1)}, Q = Q, threads = 2,
+                       grids = true, progress = false}
+check.ok(#sweep == 34, "34 cases")
+check.ok(sweep.failed == 0, ("no failed case (%d failed)"):format(sweep.failed))
+
+local function sub(a, b) return {x = a.x - b.x, y = a.y - b.y, z = a.z - b.z} end
+local function add(a, b) return {x = a.x + b.x, y = a.y + b.y, z = a.z + b.z} end
+local function scale(a, s) return {x = a.x * s, y = a.y * s, z = a.z * s} end
+local function cross(a, b) return {x = a.y * b.z - a.z * b.y, y = a.z * b.x - a.x * b.z, z = a.x * b.y - a.y * b.x} end
+local function norm(a) return math.sqrt(a.x * a.x + a.y * a.y + a.z * a.z) end
+local zero = {x = 0, y = 0, z = 0}
+
+local worst = {force = 0, moment = 0, reeval_force = 0, reeval_moment = 0, pressure = 0}
+local lifted = 0
+for _, r in ipairs(sweep) do
+  local what = ("y = %.1f mm, yaw = %.0f deg"):format(r.y * 1e3, math.deg(r.yaw))
+  check.ok(r.converged, what .. ": converged")
+  local centre = {x = 0, y = r.y, z = r.z}
+  local F, M = zero, zero
+  local wheel_force = {}
+  for _, side in ipairs{"left", "right"} do
+    local w = r[side]
+    local Fw, Mw = zero, zero
+    for k, p in ipairs(w.patches) do
+      local pw = ("%s, %s area %d"):format(what, side, k)
+      -- Normal force from the pressure grid.
+      local sum = 0
+      for _, row in ipairs(p.pressure) do
+        for _, v in ipairs(row) do
+          check.ok(v >= 0 and v == v, pw .. ": pressure >= 0")
+          sum = sum + v
+        end
+      end
+      local N = sum * p.grid.dx * p.grid.dy
+      worst.pressure = math.max(worst.pressure, math.abs(N - p.normal_force) / Q)
+      check.near(N, p.normal_force, 1e-9 * Q, pw .. ": integral of the pressure = normal force")
+      check.near(norm(sub(p.force, scale(p.normal, N))), 0, 1e-9 * Q, pw .. ": force = N n")
+      Fw = add(Fw, p.force)
+      Mw = add(Mw, cross(sub(p.point, centre), p.force))
+    end
+    check.near(norm(sub(Fw, w.force)), 0, 1e-9 * Q, what .. ": " .. side .. " wheel force = sum of its areas")
+    check.near(norm(sub(Mw, w.moment)), 0, 1e-9 * Q, what .. ": " .. side .. " wheel moment about the centre")
+    wheel_force[side] = Fw
+    F, M = add(F, Fw), add(M, Mw)
+  end
+  if #r.right.patches == 0 or #r.left.patches == 0 then lifted = lifted + 1 end
+  -- The equilibrium, from the recomputed totals.
+  local rf, rm = F.z - Q, M.x
+  worst.force = math.max(worst.force, math.abs(rf) / Q)
+  worst.moment = math.max(worst.moment, math.abs(rm) / Q)
+  check.ok(math.abs(rf) <= ftol, ("%s: |sum Fz - Q| = %.3g N <= %.3g N"):format(what, math.abs(rf), ftol))
+  check.ok(math.abs(rm) <= mtol, ("%s: |sum Mx| = %.3g N m <= %.3g N m"):format(what, math.abs(rm), mtol))
+  check.near(r.residual.force, rf, 1e-9 * Q, what .. ": reported force residual")
+  check.near(r.residual.moment, rm, 1e-9 * Q, what .. ": reported moment residual")
+  -- Outputs (DESIGN.md conventions).
+  check.near(r.Y, -F.y, 1e-9 * Q, what .. ": Y = -sum Fy")
+  check.near(r.My, -M.y, 1e-9 * Q, what .. ": My = -sum My")
+  check.near(r.Mz, -M.z, 1e-9 * Q, what .. ": Mz = -sum Mz")
+  check.near(r.Y_Q, r.Y / Q, 1e-12, what .. ": Y_Q")
+  check.near(r.rolling_radius_difference, r.left.rolling_radius - r.right.rolling_radius, 1e-12, what .. ": rolling radius difference")
+  if r.yaw == 0 then check.near(r.Mz, 0, 1e-6 * Q, what .. ": no yaw moment at yaw 0") end
+  -- The pose re-evaluated from scratch.
+  local c = ws:contact{y = r.y, z = r.z, roll = r.roll, yaw = r.yaw, grids = false}
+  local cf, cm = c.force.z - Q, c.moment.x
+  worst.reeval_force = math.max(worst.reeval_force, math.abs(cf) / Q)
+  worst.reeval_moment = math.max(worst.reeval_moment, math.abs(cm) / Q)
+  check.ok(math.abs(cf) <= ftol + noise, ("%s: re-evaluated |sum Fz - Q| = %.3g N"):format(what, math.abs(cf)))
+  check.ok(math.abs(cm) <= mtol + noise, ("%s: re-evaluated |sum Mx| = %.3g N m"):format(what, math.abs(cm)))
+  check.near(c.force.y, F.y, noise, what .. ": re-evaluated lateral force")
+end
+-- Tread and flange contact with both wheels loaded, and one-flange balance, all appear in this sweep.
+check.ok(lifted >= 4 and lifted <= 12, ("cases with a lifted wheel: %d (|y| >= 7 mm)"):format(lifted))
+print(("%d cases in %.2f s on %d threads; largest residuals: force %.2e Q, moment %.2e Q m; re-evaluated: force %.2e Q, " ..
+       "moment %.2e Q m; pressure integral vs normal force %.1e Q; %d cases with a lifted wheel")
+          :format(#sweep, sweep.seconds, sweep.threads, worst.force, worst.moment, worst.reeval_force, worst.reeval_moment,
+                  worst.pressure, lifted))
