@@ -25,6 +25,8 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
   if (options.margin < 1 || options.margin > 100) fail("contact model: margin must be 1..100 elements, got {}", options.margin);
   if (!(options.merge_tolerance > 0) || !std::isfinite(options.merge_tolerance))
     fail("contact model: merge_tolerance must be > 0, got {}", options.merge_tolerance);
+  if (!(options.normal.tolerance >= 1e-14 && options.normal.tolerance < 1e-2))
+    fail("contact model: the normal solver's tolerance must be in [1e-14, 1e-2[, got {}", options.normal.tolerance);
   if (!(options.merge_angle >= 0) || !std::isfinite(options.merge_angle))
     fail("contact model: merge_angle must be >= 0 rad, got {}", options.merge_angle);
 }
@@ -54,9 +56,15 @@ double line_spacing(const RailLines& rail, int r) {
   return b - a == 2 ? 0.5 * d : d;
 }
 
-// Arc radius of the rolling-direction section of the wheel at a wheelset-frame lateral position: radius /
-// cos(conicity); the floor on cos keeps it finite on the steepest flange faces.
-double arc_radius(const WheelSurfacePoint& s) { return s.radius / std::max(s.normal_r, 0.05); }
+// Radius of the wheel's section along a rail line at a wheelset-frame lateral position: the paper's radius /
+// cos(conicity) of the rolling direction, divided by cos^2(yaw) because a yawed wheel meets the line at the yaw
+// angle (normal curvature cos^2 of the rolling one; the lateral profile curvature's sin^2 share is left out,
+// as the paper leaves the yaw out). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of force
+// at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
+double arc_radius(const WheelSurfacePoint& s, double yaw) {
+  const double c = std::cos(yaw);
+  return s.radius / (std::max(s.normal_r, 0.05) * c * c);
+}
 
 double arc_height(double R, double dx) {
   const double q = R * R - dx * dx;
@@ -78,7 +86,8 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     info.xm = 0.5 * (s.x_t + s.x_l);
     info.mid = {info.xm, s.y, s.z};
     const double Yt = f.to_wheelset({s.x_t, s.y, s.z}).y(), Yl = f.to_wheelset({s.x_l, s.y, s.z}).y();
-    info.R = 0.5 * (arc_radius(wheel_surface_at(w, Yt)) + arc_radius(wheel_surface_at(w, Yl)));
+    const double yaw = st.pose().yaw;
+    info.R = 0.5 * (arc_radius(wheel_surface_at(w, Yt), yaw) + arc_radius(wheel_surface_at(w, Yl), yaw));
     info.sagitta = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
     info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
     info.normal = wheel_inward_normal(w, f, info.mid);
@@ -325,7 +334,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     if (!lp.arcs.empty()) continue;
     const LineApproach a = line_approach(wheel, f, rail.y[r], rail.z[r]);
     const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
-    lp.R = arc_radius(sp);
+    lp.R = arc_radius(sp, st.pose().yaw);
     lp.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
     lp.x_apex = a.x;
   }
