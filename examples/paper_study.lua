@@ -54,15 +54,18 @@ io.write(summary)
 
 if plots then
   study.plot_sweep(dir, sweep, yaws)
+  -- Single equilibria with their pressure grids, started from the sweep's neighbouring solution.
+  local function equilibrium(y, yaw)
+    return ws:equilibrium{y = y, yaw = yaw, Q = Q, start = study.nearest_start(sweep, y, yaw)}
+  end
   -- Pressure and h for several lateral positions at yaw 0 (figures 6 and 7).
   for _, y_mm in ipairs{-4, 0, 3, 5, 6, 6.3} do
-    local e = ws:equilibrium{y = y_mm * 1e-3, yaw = 0, Q = Q}
-    study.plot_patches(dir, string.format("y%+.1fmm_yaw0", y_mm), e)
+    study.plot_patches(dir, string.format("y%+.1fmm_yaw0", y_mm), equilibrium(y_mm * 1e-3, 0))
   end
   -- Pressure on the rail surface for the three poses of figure 8.
   for _, c in ipairs{{6.3, 1, "a"}, {0, 0, "b"}, {-6.3, -1, "c"}} do
-    local e = ws:equilibrium{y = c[1] * 1e-3, yaw = math.rad(c[2]), Q = Q}
-    study.plot_rail_pressure(dir, "fig8" .. c[3], string.format("y = %.1f mm, yaw = %g deg", c[1], c[2]), e)
+    study.plot_rail_pressure(dir, "fig8" .. c[3], string.format("y = %.1f mm, yaw = %g deg", c[1], c[2]),
+                             equilibrium(c[1] * 1e-3, math.rad(c[2])))
   end
 end
 print("results in " .. dir)

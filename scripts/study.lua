@@ -93,6 +93,23 @@ function M.series(sweep, yaw)
   return s
 end
 
+-- {z =, roll =} of the converged sweep case nearest to (y, yaw) (nil if none): a start for ws:equilibrium.
+-- A case at yaw -psi is the mirror of one at +psi (y -> -y, roll -> -roll).
+function M.nearest_start(sweep, y, yaw)
+  local best, dist = nil, math.huge
+  for _, r in ipairs(sweep) do
+    if r.converged then
+      for _, m in ipairs{1, -1} do
+        if math.abs(m * r.yaw - yaw) < 1e-9 then
+          local d = math.abs(m * r.y - y)
+          if d < dist then best, dist = {z = r.z, roll = m * r.roll}, d end
+        end
+      end
+    end
+  end
+  return best
+end
+
 -- Ranges of y (mm) where pred(case) holds, as text "a .. b, c .. d" (consecutive sweep points).
 local function ranges(series, pred)
   local parts, first, last = {}, nil, nil
