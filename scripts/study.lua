@@ -244,40 +244,62 @@ function M.plot_patches(dir, tag, e)
   end
 end
 
--- Figure 8: the pressure of both wheels' contact areas on the rail surface, in the track frame.
+-- The rail surface point under an element of an area: the element's lateral plane coordinate v placed between
+-- the two rail lines (from the area's segments) that bracket it; x along the track from the plane.
+local function rail_surface_mapper(p)
+  local o, t1, t2 = p.frame.origin, p.frame.t1, p.frame.t2
+  local lines, seen = {}, {}
+  for _, s in ipairs(p.segments or {}) do
+    if not seen[s.line] then
+      seen[s.line] = true
+      lines[#lines + 1] = {v = (s.y - o.y) * t2.y + (s.z - o.z) * t2.z - o.x * t2.x, y = s.y, z = s.z}
+    end
+  end
+  table.sort(lines, function(a, b) return a.v < b.v end)
+  return function(u, v)
+    local x = o.x + u * t1.x + v * t2.x
+    if #lines < 2 then return x, o.y + u * t1.y + v * t2.y, o.z + u * t1.z + v * t2.z end
+    local k = 1
+    while k < #lines - 1 and lines[k + 1].v < v do k = k + 1 end
+    local a, b = lines[k], lines[k + 1]
+    local f = (v - a.v) / (b.v - a.v)
+    return x, a.y + f * (b.y - a.y), a.z + f * (b.z - a.z)
+  end
+end
+
+-- Figure 8: the pressure of the left wheel's contact areas on the rail surface, in the track frame.
 function M.plot_rail_pressure(dir, name, title, e)
   local data = dir .. "/" .. name .. "_rail_pressure.dat"
   local f = assert(io.open(data, "w"))
-  for _, side in ipairs{"left"} do
-    for _, p in ipairs(e[side].patches) do
-      if p.pressure then
-        local o, t1, t2 = p.frame.origin, p.frame.t1, p.frame.t2
-        for j = 1, p.grid.ny do
-          for i = 1, p.grid.nx do
-            local u, v = p.grid.x0 + (i - 1) * p.grid.dx, p.grid.y0 + (j - 1) * p.grid.dy
-            local pr = p.pressure[j][i]
-            if pr > 0 then
-              f:write(string.format("%.6f %.6f %.6f %.4f\n", (o.x + u * t1.x + v * t2.x) * 1e3,
-                                    (o.y + u * t1.y + v * t2.y) * 1e3, (o.z + u * t1.z + v * t2.z) * 1e3, pr * 1e-6))
-            end
+  for _, p in ipairs(e.left.patches) do
+    if p.pressure then
+      local on_rail = rail_surface_mapper(p)
+      for j = 1, p.grid.ny do
+        for i = 1, p.grid.nx do
+          local pr = p.pressure[j][i]
+          if pr > 0 then
+            local x, y, z = on_rail(p.grid.x0 + (i - 1) * p.grid.dx, p.grid.y0 + (j - 1) * p.grid.dy)
+            f:write(string.format("%.6f %.6f %.6f %.4f\n", x * 1e3, y * 1e3, z * 1e3, pr * 1e-6))
           end
         end
       end
     end
   end
   f:close()
+  -- The rail head for orientation: its profile at the ends of the plotted x range.
   local gp = dir .. "/" .. name .. "_rail_pressure.gp"
   local g = assert(io.open(gp, "w"))
   g:write(string.format([[
 set terminal pngcairo size 900,700 enhanced font 'Sans,10'
 set output '%s/%s_rail_pressure.png'
-set title 'Fig. 8: pressure on the left rail, %s'
+set title 'Fig. 8: pressure on the left rail surface, %s'
 set xlabel 'x (mm)'
 set ylabel 'y (mm)'
-set zlabel 'z (mm)'
+set zlabel 'z (mm)' rotate parallel
 set cblabel 'MPa'
 set palette rgbformulae 33,13,10
-set view 60,30
+set view 65,35
+set ticslevel 0
 splot '%s' using 1:2:3:4 with points pt 7 ps 0.3 palette notitle
 ]], dir, name, title, data))
   g:close()
