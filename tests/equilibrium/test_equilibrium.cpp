@@ -1,0 +1,253 @@
+// The equilibrium solvers on synthetic profiles (tests/geometry/geometry_fixtures.hpp: a 1/40 tread with a 28 mm
+// flange on an R300 rail head; the S1002/60E1 cases are Lua tests, tests/scripts/equilibrium_*.lua):
+//  - the rigid reference against a kinematic computation written here on the placed 2-D profiles;
+//  - the sweep's contract: cases in the order given, the same results on 1 and 2 threads and as single solves,
+//    progress reported once per case, a failed case recorded while the sweep goes on;
+//  - solve_equilibrium: tighter tolerances are honoured, a far start reaches the same solution, the trace sees
+//    every iterate, bad input throws.
+#include "geometry/geometry_fixtures.hpp"
+#include "wrc/core/error.hpp"
+#include "wrc/equilibrium/equilibrium.hpp"
+
+#include <Eigen/Geometry>
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+using namespace wrc;
+
+namespace {
+
+constexpr double kQ = 200e3;
+
+std::shared_ptr<const GeometryModel> synthetic_geometry() {
+  auto g = std::make_shared<GeometryModel>(test::make_model(test::synthetic_wheel(0.5e-3), test::synthetic_rail(0.5e-3)));
+  g->strategy.name = "native (test)";
+  g->strategy.make_search = [] { return std::make_unique<NativeSearch>(NativePlan{}); };
+  return g;
+}
+
+const ContactModel& synthetic_model() {
+  static const ContactModel model = [] {
+    ContactOptions o;
+    o.element = 0.5e-3;  // coarse: fast tests; the physics does not change
+    return ContactModel(synthetic_geometry(), contact::Material{2.1e11, 0.3}, o);
+  }();
+  return model;
+}
+
+// Kinematic contact of one side at yaw 0, on the rail as the engine sees it (its lines = the placed rail points)
+// and the wheel as its cones (the placed wheel polyline): at yaw 0 the plane x = 0 holds the axle, so the section
+// there is exact. Returns the height z at which the wheel just touches with this y and roll, and the touching rail
+// point (index).
+struct Touch {
+  double z = 0;
+  int line = -1;
+};
+Touch touch_height(const GeometryModel& g, int side, double y, double roll) {
+  const WheelCones& w = g.side[side].wheel;
+  const RailLines& r = g.side[side].rail;
+  const double c = std::cos(roll), s = std::sin(roll);
+  // The wheel's section at z = 0 (track frame); the cones' generatrix points without the closing points on the axle.
+  std::vector<double> wy, wz;
+  for (std::size_t i = 1; i + 1 < w.y.size(); ++i) {
+    wy.push_back(y + c * w.y[i] - s * w.z[i]);
+    wz.push_back(s * w.y[i] + c * w.z[i]);
+  }
+  Touch best;
+  best.z = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k < r.count(); ++k) {
+    // Lowest wheel surface above the rail point: the section's segments spanning y_r (a vertical flange back
+    // spans none, a point on it is reached through its neighbours).
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < wy.size(); ++i) {
+      const double y0 = wy[i], y1 = wy[i + 1];
+      if (y1 == y0 || (r.y[k] - y0) * (r.y[k] - y1) > 0) continue;
+      const double t = (r.y[k] - y0) / (y1 - y0);
+      lowest = std::min(lowest, wz[i] + t * (wz[i + 1] - wz[i]));
+    }
+    if (!std::isfinite(lowest)) continue;
+    const double need = r.z[k] - lowest;  // raise the wheelset by this to clear the point
+    if (need > best.z) {
+      best.z = need;
+      best.line = k;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("rigid reference = both wheels touching, by an independent kinematic computation at yaw 0") {
+  const GeometryModel& g = synthetic_model().geometry();
+  for (double y : {-8e-3, -3e-3, 0.0, 2e-3, 5e-3, 7e-3}) {
+    CAPTURE(y);
+    // The roll at which both wheels touch at the same height: bisection on the height difference (the left wheel's
+    // touching height falls as roll lifts the left side).
+    auto diff = [&](double roll) { return touch_height(g, kLeft, y, roll).z - touch_height(g, kRight, y, roll).z; };
+    double a = -0.02, b = 0.02;
+    REQUIRE(diff(a) > 0);
+    REQUIRE(diff(b) < 0);
+    for (int i = 0; i < 60; ++i) {
+      const double m = 0.5 * (a + b);
+      (diff(m) > 0 ? a : b) = m;
+    }
+    const double roll = 0.5 * (a + b);
+    const Touch left = touch_height(g, kLeft, y, roll), right = touch_height(g, kRight, y, roll);
+    const RigidResult r = solve_rigid(g, y, 0.0, kQ);
+    REQUIRE(r.converged);
+    CHECK(std::abs(r.roll - roll) <= 1e-9);
+    CHECK(std::abs(r.z - left.z) <= 1e-9);
+    CHECK(std::abs(r.z - right.z) <= 1e-9);
+    CHECK(r.wheel[kLeft].line == left.line);
+    CHECK(r.wheel[kRight].line == right.line);
+    // The normal forces balance Q with no roll moment, and Y, My, Mz follow from them (DESIGN.md: Y = -sum Fy).
+    Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d centre(0, y, r.z);
+    for (int s : {kLeft, kRight}) {
+      const RigidWheel& w = r.wheel[s];
+      CHECK(w.normal.norm() == doctest::Approx(1).epsilon(1e-12));
+      CHECK(std::abs(w.point.y() - g.side[s].rail.y[w.line]) <= 1e-15);
+      F += w.normal_force * w.normal;
+      M += (w.point - centre).cross(w.normal_force * w.normal);
+    }
+    CHECK(F.z() == doctest::Approx(kQ).epsilon(1e-12));
+    CHECK(std::abs(M.x()) <= 1e-9 * kQ);
+    CHECK(r.Y == doctest::Approx(-F.y()).epsilon(1e-12).scale(kQ));
+    CHECK(std::abs(r.Mz) <= 1e-9 * kQ);  // yaw 0
+  }
+}
+
+TEST_CASE("sweep: cases in the order given, 1 and 2 threads agree with single solves, progress once per case") {
+  const ContactModel& model = synthetic_model();
+  const std::vector<double> ys{3e-3, -2e-3, 0.0, 1e-3, -4e-3};  // deliberately unsorted
+  const std::vector<double> yaws{0.0, 0.01};
+  auto make_workspace = [&] { return std::make_unique<ContactWorkspace>(model); };
+  std::vector<SweepResult> runs;
+  for (int threads : {1, 2}) {
+    SweepOptions o;
+    o.threads = threads;
+    o.Q = kQ;
+    o.rigid = true;
+    std::vector<int> done_seen;
+    o.progress = [&](int done, int total, int failed) {
+      CHECK(total == 10);
+      CHECK(failed == 0);
+      done_seen.push_back(done);
+    };
+    runs.push_back(run_sweep(model, ys, yaws, o, make_workspace));
+    const SweepResult& r = runs.back();
+    CHECK(r.threads == threads);
+    REQUIRE(r.cases.size() == 10);
+    REQUIRE(done_seen.size() == 10);
+    for (std::size_t k = 0; k < done_seen.size(); ++k) CHECK(done_seen[k] == static_cast<int>(k) + 1);
+    for (std::size_t a = 0; a < yaws.size(); ++a)
+      for (std::size_t i = 0; i < ys.size(); ++i) {
+        const std::size_t c = a * ys.size() + i;
+        CHECK(r.cases[c].y == ys[i]);
+        CHECK(r.cases[c].yaw == yaws[a]);
+        CHECK(r.elastic[c].y == ys[i]);
+        CHECK(r.elastic[c].converged);
+        CHECK(r.errors[c].empty());
+        REQUIRE(r.rigid[c].has_value());
+        CHECK(r.rigid[c]->converged);
+      }
+  }
+  // Single solves from scratch: the same equilibria. Each result is within (tolerance / stiffness) of the exact
+  // one: 0.2 N / 1e9 N/m = 2e-10 m and 0.2 N m / 1e8 N m/rad = 2e-9 rad; asserted 1e-8 (m, rad).
+  ContactWorkspace ws(model);
+  for (std::size_t c = 0; c < runs[0].cases.size(); ++c) {
+    const SweepCase& sc = runs[0].cases[c];
+    CAPTURE(sc.y);
+    CAPTURE(sc.yaw);
+    const EquilibriumResult e = solve_equilibrium(model, sc.y, sc.yaw, kQ, ws);
+    REQUIRE(e.converged);
+    for (const SweepResult& r : runs) {
+      CHECK(std::abs(r.elastic[c].z - e.z) <= 1e-8);
+      CHECK(std::abs(r.elastic[c].roll - e.roll) <= 1e-8);
+      CHECK(std::abs(r.elastic[c].Y - e.Y) <= 1e-4 * kQ);
+    }
+  }
+}
+
+TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on") {
+  // A wheel without flange (the 1/40 tread from the tape circle outward): at y = 90 mm the left wheel has passed its
+  // rail and only the right wheel's outer edge reaches the right rail's gauge corner, so no equilibrium exists (with a
+  // flange the wheelset would tip over the rail and balance on it instead).
+  std::vector<double> wy, wz;
+  for (int i = 0; i <= 120; ++i) {
+    wy.push_back(0.060 * i / 120);
+    wz.push_back(wy.back() / 40);
+  }
+  auto g = std::make_shared<GeometryModel>(
+      test::make_model(make_profile(ProfileKind::wheel, wy, wz, "flangeless wheel", "test"), test::synthetic_rail(0.5e-3)));
+  g->strategy.make_search = [] { return std::make_unique<NativeSearch>(NativePlan{}); };
+  ContactOptions co;
+  co.element = 1e-3;
+  const ContactModel model(g, contact::Material{2.1e11, 0.3}, co);
+  SweepOptions o;
+  o.threads = 1;
+  o.Q = kQ;
+  int last_failed = -1;
+  o.progress = [&](int, int, int failed) { last_failed = failed; };
+  // 0.09 m: no contact possible; 0.2 m: out of the accepted range (throws).
+  const SweepResult r = run_sweep(model, {0.0, 1e-3, 0.09, 0.2}, {0.0}, o, [&] { return std::make_unique<ContactWorkspace>(model); });
+  REQUIRE(r.elastic.size() == 4);
+  CHECK(r.elastic[0].converged);
+  CHECK(r.elastic[1].converged);
+  CHECK_FALSE(r.elastic[2].converged);
+  CHECK_FALSE(r.elastic[2].message.empty());
+  CHECK(std::isfinite(r.elastic[2].z));
+  CHECK(std::isfinite(r.elastic[2].roll));
+  // The last iterate shows why: a residual above its tolerance (the right wheel's field-side edge still reaches the
+  // rail's gauge corner and may carry Q, but nothing can balance the roll moment).
+  CHECK((std::abs(r.elastic[2].residual_force) > 1e-6 * kQ || std::abs(r.elastic[2].residual_moment) > 1e-6 * kQ));
+  CHECK(r.errors[2].empty());  // no exception: a failed solve
+  CHECK_FALSE(r.elastic[3].converged);
+  CHECK(r.errors[3].find("y = 0.2") != std::string::npos);
+  CHECK(r.elastic[3].message == r.errors[3]);
+  CHECK(r.elastic[3].y == 0.2);
+  CHECK(last_failed == 2);
+}
+
+TEST_CASE("solve_equilibrium: tolerances honoured, a far start converges to the same point, trace, bad input") {
+  const ContactModel& model = synthetic_model();
+  ContactWorkspace ws(model);
+  const double y = 2e-3, yaw = 0.005;
+  const EquilibriumResult ref = solve_equilibrium(model, y, yaw, kQ, ws);
+  REQUIRE(ref.converged);
+  CHECK(std::abs(ref.residual_force) <= 1e-6 * kQ);
+  CHECK(std::abs(ref.residual_moment) <= 1e-6 * kQ);
+
+  EquilibriumOptions tight;
+  tight.force_tolerance = tight.moment_tolerance = 1e-8;
+  std::vector<int> traced;
+  tight.trace = [&](int it, double, double, const ContactResult&) { traced.push_back(it); };
+  const EquilibriumResult t = solve_equilibrium(model, y, yaw, kQ, ws, tight);
+  REQUIRE(t.converged);
+  CHECK(std::abs(t.residual_force) <= 1e-8 * kQ);
+  CHECK(std::abs(t.residual_moment) <= 1e-8 * kQ);
+  CHECK(std::abs(t.contact.force.z() - kQ) <= 1e-8 * kQ);
+  REQUIRE_FALSE(traced.empty());
+  CHECK(traced.back() == t.iterations);
+  CHECK(std::abs(t.z - ref.z) <= 1e-8);
+
+  // A start 1 mm above (no contact) and 3 mrad off: Newton lowers the wheelset and converges to the same point.
+  Start start;
+  start.z = ref.z + 1e-3;
+  start.roll = ref.roll + 3e-3;
+  const EquilibriumResult far = solve_equilibrium(model, y, yaw, kQ, ws, {}, {start});
+  REQUIRE(far.converged);
+  CHECK(std::abs(far.z - ref.z) <= 1e-8);
+  CHECK(std::abs(far.roll - ref.roll) <= 1e-8);
+
+  CHECK_THROWS_AS(solve_equilibrium(model, std::nan(""), 0, kQ, ws), Error);
+  CHECK_THROWS_AS(solve_equilibrium(model, 0, 0, -1, ws), Error);
+  CHECK_THROWS_AS(solve_equilibrium(model, 0, 1.0, kQ, ws), Error);
+  CHECK_THROWS_AS(solve_wheel(model, kLeft, 0, 0, 0, 0, ws), Error);
+  CHECK_THROWS_AS(solve_rigid(model.geometry(), 0.5, 0, kQ), Error);
+}
