@@ -64,7 +64,7 @@ function M.sweep_row(r)
 end
 
 M.rigid_columns = {
-  "yaw_deg", "y_mm", "converged", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "Mz_kNm",
+  "yaw_deg", "y_mm", "converged", "tension", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "Mz_kNm",
   "left_y_mm", "left_angle_deg", "left_N_kN", "right_y_mm", "right_angle_deg", "right_N_kN",
   "rolling_radius_difference_mm",
 }
@@ -73,11 +73,15 @@ function M.rigid_row(r)
   local g = r.rigid
   local row = {yaw_deg = r.yaw * deg, y_mm = r.y * 1e3, converged = (g and g.converged) and 1 or 0}
   if not (g and g.converged) then return row end
-  row.z_mm, row.roll_mrad, row.Y_kN, row.Y_Q, row.Mz_kNm = g.z * 1e3, g.roll * 1e3, g.Y / 1e3, g.Y_Q, g.Mz / 1e3
+  row.tension = g.tension and 1 or 0
+  row.z_mm, row.roll_mrad = g.z * 1e3, g.roll * 1e3
   for _, side in ipairs{"left", "right"} do
     row[side .. "_y_mm"] = g[side].point.y * 1e3
     row[side .. "_angle_deg"] = g[side].angle * deg
-    row[side .. "_N_kN"] = g[side].normal_force / 1e3
+  end
+  if not g.tension then  -- forces only where both wheels push (else no rigid equilibrium on the rails)
+    row.Y_kN, row.Y_Q, row.Mz_kNm = g.Y / 1e3, g.Y_Q, g.Mz / 1e3
+    row.left_N_kN, row.right_N_kN = g.left.normal_force / 1e3, g.right.normal_force / 1e3
   end
   row.rolling_radius_difference_mm = (g.left.rolling_radius - g.right.rolling_radius) * 1e3
   return row
@@ -178,22 +182,22 @@ end
 
 -- Figures 4 and 5 and the rigid/elastic comparison from a sweep.
 function M.plot_sweep(dir, sweep, yaws)
-  local function series_xy(yaw, f, rigid)
+  local function series_xy(yaw, f, rigid, forces)
     local xs, vs = {}, {}
     for _, r in ipairs(M.series(sweep, yaw)) do
       local src = rigid and r.rigid or r
       xs[#xs + 1] = r.y * 1e3
-      vs[#vs + 1] = (src and src.converged) and f(src) or 0 / 0
+      vs[#vs + 1] = (src and src.converged and not (forces and src.tension)) and f(src) or 0 / 0
     end
     return xs, vs
   end
-  local function plot(file, ylabel, f, title, with_rigid)
+  local function plot(file, ylabel, f, title, with_rigid, forces)
     local series = {}
     for _, yaw in ipairs(yaws) do
       local x, v = series_xy(yaw, f)
       series[#series + 1] = {x = x, y = v, title = string.format("elastic, yaw %g deg", yaw * deg), style = "linespoints pt 7 ps 0.4"}
       if with_rigid then
-        local xr, vr = series_xy(yaw, f, true)
+        local xr, vr = series_xy(yaw, f, true, forces)
         series[#series + 1] = {x = xr, y = vr, title = string.format("rigid, yaw %g deg", yaw * deg), style = "lines dt 2"}
       end
     end
@@ -205,7 +209,8 @@ function M.plot_sweep(dir, sweep, yaws)
   plot("fig5_Mz.png", "Mz (kN m)", function(r) return r.Mz / 1e3 end, "Fig. 5: yaw moment that holds the wheelset")
   plot("rigid_vs_elastic_z.png", "z (mm)", function(r) return r.z * 1e3 end, "rigid vs elastic contact: height", true)
   plot("rigid_vs_elastic_roll.png", "roll (mrad)", function(r) return r.roll * 1e3 end, "rigid vs elastic contact: roll", true)
-  plot("rigid_vs_elastic_YQ.png", "Y/Q", function(r) return r.Y_Q end, "rigid vs elastic contact: Y/Q", true)
+  plot("rigid_vs_elastic_YQ.png", "Y/Q", function(r) return r.Y_Q end,
+       "rigid vs elastic contact: Y/Q (rigid: where both wheels push)", true, true)
 end
 
 -- Grid centres (mm) of a patch in its contact plane.

@@ -74,7 +74,7 @@ Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame,
   return -(frame.matrix() * outward);
 }
 
-LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r) {
+LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r, double floor) {
   // Wheelset-frame coordinates of the line point at x: q = a x + b (A^T applied to (x, dy, dz)).
   const double dy = y_r - f.y, dz = z_r - f.z;
   const double a1 = f.a11, a2 = f.a12, a3 = f.a13;
@@ -116,6 +116,12 @@ LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, 
     if (ylo > yhi) break;
     const int p0 = std::max(1, w.first_cone_reaching(ylo)), p1 = std::min(n - 1, w.last_cone_starting_before(yhi) + 1);
     r2max = w.r2_range.max(p0, p1);
+    if (std::sqrt(r2max) - dmin < floor) {  // no point of the line gets deeper than the floor
+      best.x = xc;
+      best.Y = a2 * xc + b2;
+      best.overlap = std::sqrt(r2max) - dmin;
+      return best;
+    }
   }
   auto consider = [&](double x, double radius) {
     const double o = radius - dist(x);
@@ -144,6 +150,17 @@ LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, 
     consider(x, r0 + k * std::clamp(a2 * x + b2 - y0, 0.0, y1 - y0));
   }
   return best;
+}
+
+double line_overlap_at_closest(const WheelCones& w, const PoseFrame& f, double y_r, double z_r) {
+  const double dy = y_r - f.y, dz = z_r - f.z;
+  const double a1 = f.a11, a2 = f.a12, a3 = f.a13;
+  const double b1 = f.a21 * dy, b2 = f.a22 * dy + f.a32 * dz, b3 = f.a23 * dy + f.a33 * dz;
+  const double xc = -(a1 * b1 + a3 * b3) / (a1 * a1 + a3 * a3);
+  const double Y = a2 * xc + b2, d = std::hypot(a1 * xc + b1, a3 * xc + b3);
+  const int n = w.cone_count();
+  if (Y < w.y[1] || Y > w.y[n - 1]) return -d;  // beyond the wheel's lateral range: no wheel there
+  return wheel_radius_at(w, Y) - d;
 }
 
 }  // namespace wrc

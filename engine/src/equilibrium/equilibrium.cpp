@@ -57,9 +57,14 @@ RigidWheel deepest_point(const GeometryModel& g, int side, const Pose& pose) {
   const WheelCones& w = g.side[side].wheel;
   RigidWheel best;
   best.overlap = -std::numeric_limits<double>::infinity();
+  // The largest overlap at the lines' closest approaches is a floor for the deepest point: lines that provably
+  // stay below it are skipped (with yaw, each full line search visits the cones it passes under).
+  double floor = -std::numeric_limits<double>::infinity();
+  if (f.a12 != 0)  // with yaw (without, each line's search is the closed form at its closest approach)
+    for (int r = 0; r < rail.count(); ++r) floor = std::max(floor, line_overlap_at_closest(w, f, rail.y[r], rail.z[r]));
   double x = 0;
   for (int r = 0; r < rail.count(); ++r) {
-    const LineApproach a = line_approach(w, f, rail.y[r], rail.z[r]);
+    const LineApproach a = line_approach(w, f, rail.y[r], rail.z[r], std::max(floor, best.overlap));
     if (a.overlap > best.overlap) {
       best.overlap = a.overlap;
       best.line = r;
@@ -83,7 +88,40 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) 
   res.yaw = yaw;
   res.Q = Q;
   auto pen = [&](int side, double z, double roll) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
-  // For a roll, the height at which the first wheel touches: max overlap over both sides = 0 (decreasing in z).
+  // Newton on (z, roll) for both overlaps = 0, with difference derivatives (the overlaps are piecewise smooth in
+  // the pose: a few iterations where the contact point does not jump)...
+  auto newton = [&](double z, double roll) {
+    Eigen::Vector2d P(pen(kLeft, z, roll), pen(kRight, z, roll));
+    const double h = 1e-8;
+    for (int it = 0; it < 30; ++it) {
+      if (P.cwiseAbs().maxCoeff() <= 1e-12) {
+        res.z = z;
+        res.roll = roll;
+        return true;
+      }
+      Eigen::Matrix2d J;
+      J.col(0) = (Eigen::Vector2d(pen(kLeft, z + h, roll), pen(kRight, z + h, roll)) - P) / h;
+      J.col(1) = (Eigen::Vector2d(pen(kLeft, z, roll + h), pen(kRight, z, roll + h)) - P) / h;
+      Eigen::Vector2d dx = -J.fullPivLu().solve(P);
+      if (!dx.allFinite()) return false;
+      dx /= std::max({1.0, std::abs(dx(0)) / 1e-3, std::abs(dx(1)) / 2e-3});
+      bool accepted = false;
+      for (double t = 1; t > 1e-3 && !accepted; t *= 0.5) {
+        const Eigen::Vector2d Pt(pen(kLeft, z + t * dx(0), roll + t * dx(1)), pen(kRight, z + t * dx(0), roll + t * dx(1)));
+        if (Pt.norm() < (1 - 1e-4 * t) * P.norm()) {
+          z += t * dx(0);
+          roll += t * dx(1);
+          P = Pt;
+          accepted = true;
+        }
+      }
+      if (!accepted) return false;
+    }
+    return false;
+  };
+  // ... and, where it stalls on a jump of the contact point, nested brackets: for a roll, the height at which
+  // the first wheel touches (max overlap over both sides = 0, decreasing in z); then the roll at which both do
+  // (the difference of the overlaps changes sign: the left rises with roll).
   auto touch_z = [&](double roll) {
     auto f = [&](double z) { return std::max(pen(kLeft, z, roll), pen(kRight, z, roll)); };
     double a = -0.02, b = 0.02;
@@ -92,22 +130,23 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) 
     bool ok = false;
     return bracketed_root(f, a, b, fa, fb, 1e-13, 200, ok);
   };
-  // Then the roll at which both wheels touch: the difference of the overlaps changes sign (left rises with roll).
   auto diff = [&](double roll) {
     const double z = touch_z(roll);
     return pen(kLeft, z, roll) - pen(kRight, z, roll);
   };
-  try {
-    double a = -0.02, b = 0.02;
-    double fa = diff(a), fb = diff(b);
-    if (!(fa > 0 && fb < 0)) fail("rigid contact: no roll within +-20 mrad puts both wheels on their rails");
-    bool ok = false;
-    res.roll = bracketed_root(diff, a, b, fa, fb, 1e-13, 200, ok);
-    if (!ok) fail("rigid contact: the roll that puts both wheels on their rails was not found to 1e-13 m");
-    res.z = touch_z(res.roll);
-  } catch (const Error& e) {
-    res.message = e.what();
-    return res;
+  if (!newton(0.0, 0.0)) {
+    try {
+      double a = -0.02, b = 0.02;
+      double fa = diff(a), fb = diff(b);
+      if (!(fa > 0 && fb < 0)) fail("rigid contact: no roll within +-20 mrad puts both wheels on their rails");
+      bool ok = false;
+      res.roll = bracketed_root(diff, a, b, fa, fb, 1e-13, 200, ok);
+      if (!ok) fail("rigid contact: the roll that puts both wheels on their rails was not found to 1e-13 m");
+      res.z = touch_z(res.roll);
+    } catch (const Error& e) {
+      res.message = e.what();
+      return res;
+    }
   }
   const Pose pose{y, res.z, res.roll, yaw};
   const Eigen::Vector3d c(0, y, res.z);
@@ -132,10 +171,16 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) 
   res.Mz = -M.z();
   res.converged = std::isfinite(res.Y) && N.allFinite();
   if (!res.converged) res.message = "rigid contact: the contact normals give a singular force balance";
+  res.tension = res.converged && (N(0) < 0 || N(1) < 0);
   return res;
 }
 
 namespace {
+
+// Thrown when a solve has used its evaluation budget (EquilibriumOptions::max_evaluations).
+struct EvaluationBudget : Error {
+  using Error::Error;
+};
 
 // An iterate of the equilibrium: the contact at (z, roll), the residual (sum Fz - Q, sum Mx) and its Jacobian.
 struct Iterate {
@@ -164,25 +209,29 @@ class EquilibriumSolver {
   bool converged(const Iterate& it) const { return std::abs(it.R(0)) <= ftol_ && std::abs(it.R(1)) <= mtol_; }
 
   // Newton-Raphson from (z, roll) at lateral position y, with step limits and backtracking on the residual norm.
-  // With both wheels loaded the Jacobian comes from the normal problems' sensitivities at every iterate (two
-  // linearised solves, ~60 % of an evaluation; reusing it costs more evaluations than it saves). With a wheel
-  // lifted it comes from forward differences (two evaluations), so that one is reused -- also from the start,
-  // e.g. the previous case of a sweep -- while the residual contracts well. Leaves the last iterate in `cur`;
-  // false with a reason in `why` on failure.
+  // The Jacobian is computed at the first iterate -- from the normal problems' sensitivities with both wheels
+  // loaded (two linearised solves), by forward differences with a wheel lifted (two evaluations; a difference
+  // Jacobian handed in by the caller, e.g. from the previous case of a sweep, is used instead) -- and then
+  // corrected by Broyden's rank-one update after every step. The update also learns what the sensitivities
+  // miss where a conformal flange-root contact turns and moves with the pose (they are 10-20 % off there, which
+  // made plain Newton converge linearly). A fresh Jacobian is computed when a step finds no descent or the
+  // regime (a wheel lifted or not) changes. Leaves the last iterate in `cur`; false with a reason in `why`.
   bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, Iterate& cur,
               std::string& why) {
     cur = evaluate(y, z, roll);
-    std::optional<Eigen::Matrix2d> J = J0;
+    std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
+    if (J0 && cur.lifted) J = J0;
+    bool J_difference = J.has_value();  // J comes from differences (worth handing on)
     for (int k = 0;; ++k) {
       if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
       res_.iterations = k;
       if (converged(cur)) {
-        if (J && J_lifted) res_.jacobian = J;  // worth handing on: it cost two evaluations
+        if (J && J_lifted && J_difference) res_.jacobian = J;
         return true;
       }
       if (k >= opt_.max_iterations) {
-        why = fmt::format("Newton: no convergence in {} iterations", opt_.max_iterations);
+        why = fmt::format("Newton: no convergence in {} iterations ({} evaluations)", k, res_.evaluations);
         return false;
       }
       if (cur.contact.wheel[kLeft].patches.empty() && cur.contact.wheel[kRight].patches.empty()) {
@@ -194,10 +243,11 @@ class EquilibriumSolver {
         cur = evaluate(y, cur.z - opt_.max_step_z, cur.roll);
         continue;
       }
-      bool fresh = false;  // J computed at this iterate (else reused from an earlier one or the start)
-      if (!J || !J_lifted || !cur.lifted) {
+      bool fresh = false;  // J computed at this iterate
+      if (!J || J_lifted != cur.lifted) {
         J = jacobian(y, cur);
         J_lifted = cur.lifted;
+        J_difference = cur.lifted;
         fresh = true;
       }
       Eigen::Vector2d dx = -J->fullPivLu().solve(cur.R);
@@ -207,9 +257,10 @@ class EquilibriumSolver {
       }
       dx /= std::max({1.0, std::abs(dx(0)) / opt_.max_step_z, std::abs(dx(1)) / opt_.max_step_roll});
       const double merit0 = cur.merit;
+      const Eigen::Vector2d R0 = cur.R, x0(cur.z, cur.roll);
       bool accepted = false;
       double t = 1;
-      // Backtracking; a reused Jacobian gets one trial, then a fresh one is computed instead.
+      // Backtracking; an updated Jacobian gets one trial, then a fresh one is computed instead.
       for (int b = 0; b < (fresh ? 10 : 1) && !accepted; ++b, t *= 0.5) {
         Iterate trial = evaluate(y, cur.z + t * dx(0), cur.roll + t * dx(1));
         if (trial.merit < (1 - 1e-4 * t) * merit0) {
@@ -225,8 +276,10 @@ class EquilibriumSolver {
         why = fmt::format("Newton: no descent at z = {:.6f} mm, roll = {:.6f} mrad", cur.z * 1e3, cur.roll * 1e3);
         return false;
       }
-      // Poor contraction: the Jacobian no longer serves.
-      if (cur.merit > 0.04 * merit0) J.reset();
+      // Broyden: make J map the step taken onto the residual change observed.
+      const Eigen::Vector2d step = Eigen::Vector2d(cur.z, cur.roll) - x0, change = cur.R - R0;
+      const double ss = step.squaredNorm();
+      if (ss > 0) *J += (change - *J * step) * step.transpose() / ss;
     }
   }
 
@@ -299,6 +352,14 @@ class EquilibriumSolver {
     }
   }
 
+  // One evaluation past the budget, for the last iterate of a failed solve.
+  Iterate evaluate_unbudgeted(double y, double z, double roll) {
+    unbudgeted_ = true;
+    Iterate it = evaluate(y, z, roll);
+    unbudgeted_ = false;
+    return it;
+  }
+
   Iterate evaluate(double y, double z, double roll) {
     Iterate it;
     it.z = z;
@@ -314,6 +375,8 @@ class EquilibriumSolver {
 
  private:
   ContactResult contact_at(double y, double z, double roll) {
+    if (res_.evaluations >= opt_.max_evaluations && !unbudgeted_)
+      throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", res_.evaluations));
     ++res_.evaluations;
     return evaluate_contact(model_, {y, z, roll, yaw_}, ws_, req_);
   }
@@ -347,6 +410,7 @@ class EquilibriumSolver {
   EquilibriumResult& res_;
   ContactRequest req_;
   double ftol_ = 0, mtol_ = 0;
+  bool unbudgeted_ = false;
 };
 
 }  // namespace
@@ -355,6 +419,8 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
                                     const EquilibriumOptions& opt, const std::vector<Start>& starts,
                                     const ContactRequest& request) {
   check_case(y, yaw, Q, "equilibrium");
+  if (opt.max_iterations < 1 || opt.max_evaluations < 1)
+    fail("equilibrium: max_iterations and max_evaluations must be >= 1");
   EquilibriumResult res;
   res.y = y;
   res.yaw = yaw;
@@ -364,31 +430,34 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   std::vector<std::string> why;
   std::string w;
   bool ok = false;
-  // 1. The given starts (neighbouring solutions, predictions), in order.
-  for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
-    ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, cur, w);
-    if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
-  }
-  // 2. The rigid position pressed in a little: good on the tread, poor where the rigid wheelset climbs a flange.
   std::optional<RigidResult> rigid;
-  if (!ok) {
+  auto from_rigid = [&] {
     rigid = solve_rigid(model.geometry(), y, yaw, Q);
     if (!rigid->message.empty()) {
       why.push_back("rigid start: " + rigid->message);
-    } else {
-      ok = solver.newton(y, rigid->z - opt.initial_approach, rigid->roll, std::nullopt, cur, w);
-      if (!ok) why.push_back("from the rigid position: " + w);
+      return false;
     }
-  }
-  // 3. Continuation from the centred wheelset, in steps of y that shrink where Newton struggles.
-  if (!ok && std::abs(y) > 0.5e-3) {
+    if (solver.newton(y, rigid->z - opt.initial_approach, rigid->roll, std::nullopt, cur, w)) return true;
+    why.push_back("from the rigid position: " + w);
+    return false;
+  };
+  // Continuation from the centred wheelset, in steps of y that shrink where Newton struggles: it follows the
+  // branch of equilibria that a wheelset pushed out from the centre follows. (Beyond flange contact there are
+  // several: e.g. one wheel lifted, or the wheelset climbed up the flange; the rigid position leads to the latter.)
+  auto continuation = [&] {
     const RigidResult r0 = solve_rigid(model.geometry(), 0.0, yaw, Q);
+    if (!r0.message.empty()) {
+      why.push_back("continuation: rigid start at y = 0: " + r0.message);
+      return false;
+    }
     Iterate path;
-    double y_at = 0;
-    bool on_path = r0.message.empty() && solver.newton(0.0, r0.z - opt.initial_approach, r0.roll, std::nullopt, path, w);
-    double step = 0.5e-3 * (y > 0 ? 1 : -1);
+    if (!solver.newton(0.0, r0.z - opt.initial_approach, r0.roll, std::nullopt, path, w)) {
+      why.push_back("continuation: no equilibrium at y = 0: " + w);
+      return false;
+    }
+    double y_at = 0, step = 0.5e-3 * (y > 0 ? 1 : -1);
     double z_prev = path.z, roll_prev = path.roll, y_prev = y_at;
-    while (on_path && y_at != y) {
+    while (y_at != y) {
       const double y_next = std::abs(y - y_at) <= std::abs(step) ? y : y_at + step;
       // Linear predictor through the last two points of the path.
       const double s = y_at != y_prev ? (y_next - y_at) / (y_at - y_prev) : 0.0;
@@ -405,23 +474,35 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
       } else if (std::abs(step) > 0.02e-3) {
         step *= 0.25;
       } else {
-        on_path = false;
         why.push_back(fmt::format("continuation from y = 0 stopped at y = {:.3f} mm: {}", y_at * 1e3, w));
+        return false;
       }
     }
-    if (on_path && y_at == y) {
-      cur = std::move(path);
-      ok = true;
+    cur = std::move(path);
+    return true;
+  };
+  try {
+    // 1. The given starts (neighbouring solutions, predictions), in order.
+    for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
+      ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, cur, w);
+      if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
     }
-  }
-  // 4. Nested bracketing from the last iterate at y (or the rigid position).
-  if (!ok) {
-    if (cur.contact.pose.y != y || cur.contact.pose.yaw != yaw) {
-      const bool r = rigid && rigid->message.empty();
-      cur = solver.evaluate(y, r ? rigid->z - opt.initial_approach : 0.0, r ? rigid->roll : 0.0);
+    // 2. Near the centre, the rigid position pressed in a little; farther out, continuation first.
+    const bool near_centre = std::abs(y) <= 2e-3;
+    if (!ok) ok = near_centre ? from_rigid() : continuation();
+    if (!ok) ok = near_centre ? (std::abs(y) > 0.5e-3 && continuation()) : from_rigid();
+    // 3. Nested bracketing from the last iterate at y (or the rigid position).
+    if (!ok) {
+      if (cur.contact.pose.y != y || cur.contact.pose.yaw != yaw) {
+        const bool r = rigid && rigid->message.empty();
+        cur = solver.evaluate(y, r ? rigid->z - opt.initial_approach : 0.0, r ? rigid->roll : 0.0);
+      }
+      ok = solver.nested(y, cur, w);
+      if (!ok) why.push_back(w);
     }
-    ok = solver.nested(y, cur, w);
-    if (!ok) why.push_back(w);
+  } catch (const EvaluationBudget& e) {
+    why.push_back(e.what());
+    if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
   }
   res.converged = ok && solver.converged(cur);
   if (!res.converged) {

@@ -121,7 +121,8 @@ void push_area(lua_State* L, const LocationState* st, const PatchContact& pc) {
 }
 
 void push_wheel(lua_State* L, const LocationState* st, const WheelContact& wc) {
-  lua_createtable(L, 0, 5);
+  lua_createtable(L, 0, 6);
+  set_bool(L, "lifted", !(wc.force.z() > 0));  // the wheel carries no load
   push_vec3(L, wc.force);
   lua_setfield(L, -2, "force");
   push_vec3(L, wc.moment);
@@ -175,6 +176,7 @@ void push_contact_result(lua_State* L, const LocationState* st, const ContactRes
 void push_rigid(lua_State* L, const RigidResult& r) {
   lua_createtable(L, 0, 12);
   set_bool(L, "converged", r.converged);
+  set_bool(L, "tension", r.tension);
   if (!r.message.empty()) set_string(L, "error", r.message);
   set_number(L, "y", r.y);
   set_number(L, "yaw", r.yaw);
@@ -273,9 +275,12 @@ EquilibriumOptions read_equilibrium_options(lua_State* L, int idx, const char* c
   o.force_tolerance = get_number(L, idx, "force_tolerance", o.force_tolerance, ctx);
   o.moment_tolerance = get_number(L, idx, "moment_tolerance", o.moment_tolerance, ctx);
   const double it = get_number(L, idx, "max_iterations", o.max_iterations, ctx);
+  const double ev = get_number(L, idx, "max_evaluations", o.max_evaluations, ctx);
   if (!(o.force_tolerance > 0) || !(o.moment_tolerance > 0)) fail("{}: tolerances must be > 0", ctx);
   if (it != static_cast<int>(it) || it < 1) fail("{}: 'max_iterations' must be a whole number >= 1, got {}", ctx, it);
+  if (ev != static_cast<int>(ev) || ev < 1) fail("{}: 'max_evaluations' must be a whole number >= 1, got {}", ctx, ev);
   o.max_iterations = static_cast<int>(it);
+  o.max_evaluations = static_cast<int>(ev);
   return o;
 }
 
@@ -292,7 +297,7 @@ int wheelset_equilibrium(lua_State* L) {
   const auto& ws = check_wheelset(L, ctx);
   check_table(L, 2, ctx);
   check_keys(L, 2, ctx, {"y", "yaw", "Q", "start", "grids", "trace", "on_failure", "force_tolerance",
-                         "moment_tolerance", "max_iterations"});
+                         "moment_tolerance", "max_iterations", "max_evaluations"});
   const double y = need_number(L, 2, "y", ctx);
   const double yaw = get_number(L, 2, "yaw", 0.0, ctx);
   const double Q = need_number(L, 2, "Q", ctx);
@@ -332,7 +337,7 @@ int wheelset_wheel(lua_State* L) {
   const auto& ws = check_wheelset(L, ctx);
   check_table(L, 2, ctx);
   check_keys(L, 2, ctx, {"side", "y", "yaw", "roll", "Fz", "on_failure", "force_tolerance", "max_iterations",
-                         "moment_tolerance"});
+                         "moment_tolerance", "max_evaluations"});
   lua_getfield(L, 2, "side");
   const int side = check_side_arg(L, -1, ctx);
   lua_pop(L, 1);
@@ -374,8 +379,9 @@ std::vector<double> number_list(lua_State* L, int idx, const char* key, const ch
   if (lua_isnumber(L, -1)) {
     v.push_back(check_number(L, -1, ctx));
   } else if (lua_istable(L, -1) && luaL_len(L, -1) == 0) {
-    const double from = need_number(L, -1, "from", ctx), to = need_number(L, -1, "to", ctx);
-    const double step = need_number(L, -1, "step", ctx);
+    const std::string c = fmt::format("{}: '{}' (an array, or {{from=, to=, step=}})", ctx, key);
+    const double from = need_number(L, -1, "from", c), to = need_number(L, -1, "to", c);
+    const double step = need_number(L, -1, "step", c);
     if (!(step > 0)) fail("{}: '{}.step' must be > 0, got {}", ctx, key, step);
     const double n = std::floor(std::abs(to - from) / step + 1e-9);
     if (n > 1e6) fail("{}: '{}' asks for {} values", ctx, key, n);
@@ -400,7 +406,7 @@ int wheelset_sweep(lua_State* L) {
   const auto& ws = check_wheelset(L, ctx);
   check_table(L, 2, ctx);
   check_keys(L, 2, ctx, {"y", "yaw", "Q", "threads", "rigid", "grids", "progress", "force_tolerance",
-                         "moment_tolerance", "max_iterations"});
+                         "moment_tolerance", "max_iterations", "max_evaluations"});
   const std::vector<double> ys = number_list(L, 2, "y", ctx);
   std::vector<double> yaws{0.0};
   lua_getfield(L, 2, "yaw");

@@ -159,7 +159,8 @@ int check_side_arg(lua_State* L, int idx, const char* what) {
     if (s == "left") return kLeft;
     if (s == "right") return kRight;
   }
-  fail("{}: side must be \"left\" or \"right\"", what);
+  fail("{}: side must be \"left\" or \"right\", got {}", what,
+       lua_type(L, idx) == LUA_TSTRING ? fmt::format("\"{}\"", lua_tostring(L, idx)) : std::string(luaL_typename(L, idx)));
 }
 
 // ---- the located patches (geometry only; contact_binding.cpp adds the normal-contact fields). ----

@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include <limits>
+
 namespace wrc {
 
 struct WheelSurfacePoint {
@@ -40,6 +42,11 @@ struct LineApproach {
   double x = 0;        // track-frame x of that point (m)
   double Y = 0;        // its wheelset-frame lateral position (m)
 };
-LineApproach line_approach(const WheelCones& wheel, const PoseFrame& frame, double y_r, double z_r);
+// With `floor`: a line whose overlap provably stays below it (its distance to the axle against the largest radius
+// it passes under) returns at once with an overlap below the floor (the search of the deepest of many lines).
+LineApproach line_approach(const WheelCones& wheel, const PoseFrame& frame, double y_r, double z_r,
+                           double floor = -std::numeric_limits<double>::infinity());
+// The overlap at the line's closest approach to the axle: a cheap lower bound of line_approach(...).overlap.
+double line_overlap_at_closest(const WheelCones& wheel, const PoseFrame& frame, double y_r, double z_r);
 
 }  // namespace wrc

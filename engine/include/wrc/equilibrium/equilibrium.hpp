@@ -27,6 +27,7 @@ struct EquilibriumOptions {
   double force_tolerance = 1e-6;   // |sum Fz - Q| <= force_tolerance * Q
   double moment_tolerance = 1e-6;  // |sum Mx| <= moment_tolerance * Q * 1 m
   int max_iterations = 50;
+  int max_evaluations = 400;       // contact evaluations per solve (all attempts), then it gives up
   double max_step_z = 0.5e-3;      // largest Newton step in z (m)
   double max_step_roll = 2e-3;     // largest Newton step in roll (rad)
   double initial_approach = 0.05e-3;  // cold start: the rigid position pressed in by this much (m)
@@ -94,11 +95,15 @@ struct RigidWheel {
   double normal_force = 0;            // N, from the force balance
 };
 struct RigidResult {
-  bool converged = false;
+  bool converged = false;     // both wheels touch (the kinematic constraint holds)
   std::string message;
   double y = 0, yaw = 0, Q = 0;
   double z = 0, roll = 0;
   double Y = 0, My = 0, Mz = 0;
+  // A wheel would need a pulling normal force to balance Q with no roll moment (e.g. a flange contact steeper
+  // than ~57 deg, whose line of action passes below the centre): the kinematics hold, the forces are no
+  // equilibrium of a wheelset resting on its rails.
+  bool tension = false;
   std::array<RigidWheel, 2> wheel;
 };
 RigidResult solve_rigid(const GeometryModel& geometry, double y, double yaw, double Q);
