@@ -83,7 +83,7 @@ local function header(o)
   local s = {}
   s[#s + 1] = string.format("set terminal pngcairo size %d,%d enhanced font 'Sans,10'", o.width or 900, o.height or 600)
   s[#s + 1] = "set output " .. quote(o.file)
-  if o.title then s[#s + 1] = "set title " .. quote(o.title) end
+  if o.title then s[#s + 1] = "set title " .. quote(o.title) .. " noenhanced" end
   if o.xlabel then s[#s + 1] = "set xlabel " .. quote(o.xlabel) end
   if o.ylabel then s[#s + 1] = "set ylabel " .. quote(o.ylabel) end
   if o.zlabel then s[#s + 1] = "set zlabel " .. quote(o.zlabel) end

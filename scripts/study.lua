@@ -198,7 +198,7 @@ function M.plot_sweep(dir, sweep, yaws)
       series[#series + 1] = {x = x, y = v, title = string.format("elastic, yaw %g deg", yaw * deg), style = "linespoints pt 7 ps 0.4"}
       if with_rigid then
         local xr, vr = series_xy(yaw, f, true, forces)
-        series[#series + 1] = {x = xr, y = vr, title = string.format("rigid, yaw %g deg", yaw * deg), style = "lines dt 2"}
+        series[#series + 1] = {x = xr, y = vr, title = string.format("rigid, yaw %g deg", yaw * deg), style = "lines lw 2 dt 2"}
       end
     end
     out.plot{file = dir .. "/" .. file, title = title, xlabel = "lateral displacement y (mm)", ylabel = ylabel, series = series}
@@ -297,7 +297,7 @@ function M.plot_rail_pressure(dir, name, title, e)
   g:write(string.format([[
 set terminal pngcairo size 900,700 enhanced font 'Sans,10'
 set output '%s/%s_rail_pressure.png'
-set title 'Fig. 8: pressure on the left rail surface, %s'
+set title 'Fig. 8: pressure on the left rail surface, %s' noenhanced
 set xlabel 'x (mm)'
 set ylabel 'y (mm)'
 set zlabel 'z (mm)' rotate parallel
