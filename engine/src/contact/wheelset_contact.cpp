@@ -122,20 +122,29 @@ Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
   return pl;
 }
 
+// The rectangle of a plane's coordinates (u along t1, v along t2) that holds the segments' end points.
+struct Bounds {
+  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
+};
+Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) {
+  Bounds b;
+  for (const auto& s : infos)
+    for (double x : {s.xm - 0.5 * s.L, s.xm + 0.5 * s.L}) {
+      const Eigen::Vector3d d = Eigen::Vector3d(x, s.y, s.z) - pl.O;
+      b.umin = std::min(b.umin, d.dot(pl.t1));
+      b.umax = std::max(b.umax, d.dot(pl.t1));
+      b.vmin = std::min(b.vmin, d.dot(pl.t2));
+      b.vmax = std::max(b.vmax, d.dot(pl.t2));
+    }
+  return b;
+}
+
 // Footprint of a patch for the interaction criterion, in the frame of `ref`.
 contact::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const Plane& own, const Plane& ref,
                                   double element) {
-  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY, depth = 0;
-  for (const auto& s : infos) {
-    for (double x : {s.xm - 0.5 * s.L, s.xm + 0.5 * s.L}) {
-      const Eigen::Vector3d d = Eigen::Vector3d(x, s.y, s.z) - own.O;
-      umin = std::min(umin, d.dot(own.t1));
-      umax = std::max(umax, d.dot(own.t1));
-      vmin = std::min(vmin, d.dot(own.t2));
-      vmax = std::max(vmax, d.dot(own.t2));
-    }
-    depth = std::max(depth, s.sagitta);
-  }
+  const auto [umin, umax, vmin, vmax] = projected_bounds(infos, own);
+  double depth = 0;
+  for (const auto& s : infos) depth = std::max(depth, s.sagitta);
   contact::PatchFootprint fp;
   const Eigen::Vector3d c = own.O - ref.O;
   fp.x = c.dot(ref.t1);
@@ -288,16 +297,9 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
 
   // Grid: aligned with the plane origin, covering the projected segments plus the margin.
   const double e = opt.element;
-  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
+  const auto [umin, umax, vmin, vmax] = projected_bounds(all, pl);
   int rmin = rail.count(), rmax = -1;
   for (const auto& s : all) {
-    for (double x : {s.xm - 0.5 * s.L, s.xm + 0.5 * s.L}) {
-      const Eigen::Vector3d d = Eigen::Vector3d(x, s.y, s.z) - pl.O;
-      umin = std::min(umin, d.dot(pl.t1));
-      umax = std::max(umax, d.dot(pl.t1));
-      vmin = std::min(vmin, d.dot(pl.t2));
-      vmax = std::max(vmax, d.dot(pl.t2));
-    }
     rmin = std::min(rmin, s.line);
     rmax = std::max(rmax, s.line);
   }
