@@ -7,8 +7,9 @@
 // wheelset there are reported: Y = -sum Fy, My = -sum My, Mz = -sum Mz.
 //
 // The Jacobian comes from the sensitivities of the normal problems (wheelset_contact.hpp): each area's
-// pressure response to the rigid motion of the wheel surface, on its contact set. Steps are limited and
-// backtracked on the residual norm (|R_F|/Q)^2 + (|R_M|/(Q 1 m))^2.
+// pressure response to the rigid motion of the wheel surface, on its contact set (forward differences while a
+// wheel is lifted), and is corrected by Broyden updates between steps. Steps are limited and backtracked on the
+// residual norm (|R_F|/Q)^2 + (|R_M|/(Q 1 m))^2.
 //
 // Rigid reference: the same (y, yaw) with undeformable bodies: z and roll such that both wheels just touch
 // (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q.
