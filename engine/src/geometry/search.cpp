@@ -297,22 +297,30 @@ void SearchContext::check_window(int side, const Window& w, const char* what) co
          what, w.line_first, w.line_last, w.cone_first, w.cone_last, side_name(side), nl, nc);
 }
 
+namespace {
+
+// The scanner of one side's fine lines and cones at the state's pose, writing into the state (with the coarse
+// level's skip bound when the window carries one).
+template <class PerSide>  // LocationState::PerSide (private; deduced)
+Scanner side_scanner(const GeometryModel& model, PerSide& s, const PoseFrame& frame, int side,
+                     const Window& w) {
+  Scanner sc(frame, model.side[side].wheel, model.side[side].rail, s.crossings, s.counters.tests, s.counters.bounds,
+             s.counters.lines, s.hint_lo, s.hint_hi);
+  if (w.skip_within > 0 && model.side[side].coarse) sc.set_skip(&model.side[side].coarse->offset, w.skip_within);
+  return sc;
+}
+
+}  // namespace
+
 void SearchContext::test(int side, const Window& w) {
   check_window(side, w, "test");
-  auto& s = state_.side_[side];
-  Scanner sc(state_.frame(), model_.side[side].wheel, model_.side[side].rail, s.crossings, s.counters.tests,
-             s.counters.bounds, s.counters.lines, s.hint_lo, s.hint_hi);
-  if (w.skip_within > 0 && model_.side[side].coarse) sc.set_skip(&model_.side[side].coarse->offset, w.skip_within);
-  sc.test(w);
+  side_scanner(model_, state_.side_[side], state_.frame(), side, w).test(w);
 }
 
 void SearchContext::walk(int side, const Window& w) {
   check_window(side, w, "walk");
   auto& s = state_.side_[side];
-  Scanner sc(state_.frame(), model_.side[side].wheel, model_.side[side].rail, s.crossings, s.counters.tests,
-             s.counters.bounds, s.counters.lines, s.hint_lo, s.hint_hi);
-  if (w.skip_within > 0 && model_.side[side].coarse) sc.set_skip(&model_.side[side].coarse->offset, w.skip_within);
-  sc.walk(w, s.scratch_int, s.scratch_int2);
+  side_scanner(model_, s, state_.frame(), side, w).walk(w, s.scratch_int, s.scratch_int2);
 }
 
 // Coarse pre-search (paper Fig. 3).
