@@ -42,16 +42,6 @@ double gauge_point_y(const std::vector<double>& y, const std::vector<double>& z,
   fail("wrc.wheelset: rail profile {} does not reach {} mm below its top on the gauge side", source, depth * 1e3);
 }
 
-double interp(const std::vector<double>& x, const std::vector<double>& f, double xq) {
-  const auto it = std::lower_bound(x.begin(), x.end(), xq);
-  const auto i = static_cast<std::size_t>(it - x.begin());
-  if (i == 0) return f.front();
-  if (i == x.size()) return f.back();
-  if (x[i] == xq) return f[i];
-  const double a = (xq - x[i - 1]) / (x[i] - x[i - 1]);
-  return f[i - 1] + a * (f[i] - f[i - 1]);
-}
-
 // Smallest vertical gap wheel - rail over the lateral overlap of two polylines ordered by y. The gap of
 // two piecewise-linear functions is smallest at a vertex of one of them.
 double min_vertical_gap(const std::vector<double>& wy, const std::vector<double>& wz, const std::vector<double>& ry,
@@ -59,9 +49,9 @@ double min_vertical_gap(const std::vector<double>& wy, const std::vector<double>
   const double lo = std::max(wy.front(), ry.front()), hi = std::min(wy.back(), ry.back());
   double g = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < wy.size(); ++i)
-    if (wy[i] >= lo && wy[i] <= hi) g = std::min(g, wz[i] - interp(ry, rz, wy[i]));
+    if (wy[i] >= lo && wy[i] <= hi) g = std::min(g, wz[i] - interpolate(ry, rz, wy[i]));
   for (std::size_t i = 0; i < ry.size(); ++i)
-    if (ry[i] >= lo && ry[i] <= hi) g = std::min(g, interp(wy, wz, ry[i]) - rz[i]);
+    if (ry[i] >= lo && ry[i] <= hi) g = std::min(g, interpolate(wy, wz, ry[i]) - rz[i]);
   return g;
 }
 

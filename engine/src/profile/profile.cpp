@@ -131,16 +131,17 @@ Profile resample_arc(const Profile& p, double step) {
   return resampled_copy(p, std::move(y), std::move(z), fmt::format("resampled along the arc every {:.6g} m", L / m));
 }
 
-double interpolate_z(const Profile& p, double yq) {
-  const auto& y = p.y;
-  if (yq <= y.front()) return p.z.front();
-  if (yq >= y.back()) return p.z.back();
-  const auto it = std::lower_bound(y.begin(), y.end(), yq);  // first y >= yq
-  const std::size_t i = static_cast<std::size_t>(it - y.begin());
-  if (y[i] == yq) return p.z[i];
-  const double a = (yq - y[i - 1]) / (y[i] - y[i - 1]);
-  return p.z[i - 1] + a * (p.z[i] - p.z[i - 1]);
+double interpolate(const std::vector<double>& x, const std::vector<double>& f, double xq) {
+  if (xq <= x.front()) return f.front();
+  if (xq >= x.back()) return f.back();
+  const auto it = std::lower_bound(x.begin(), x.end(), xq);  // first x >= xq
+  const std::size_t i = static_cast<std::size_t>(it - x.begin());
+  if (x[i] == xq) return f[i];
+  const double a = (xq - x[i - 1]) / (x[i] - x[i - 1]);
+  return f[i - 1] + a * (f[i] - f[i - 1]);
 }
+
+double interpolate_z(const Profile& p, double yq) { return interpolate(p.y, p.z, yq); }
 
 Profile resample_y(const Profile& p, double step) {
   if (!(step > 0) || !std::isfinite(step)) fail("resample: step must be a positive number of metres, got {}", step);

@@ -52,5 +52,7 @@ Profile resample_y(const Profile& p, double step);
 
 // Linear interpolation of z at y (y clamped to the profile's range). On a vertical run, the first z.
 double interpolate_z(const Profile& p, double y);
+// The same on any polyline: f at xq for x sorted increasing (clamped to [x.front(), x.back()]).
+double interpolate(const std::vector<double>& x, const std::vector<double>& f, double xq);
 
 }  // namespace wrc
