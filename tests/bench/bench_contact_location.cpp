@@ -10,6 +10,7 @@
 #include "geometry/geometry_fixtures.hpp"
 #include "lua/bindings.hpp"
 #include "lua/strategy_binding.hpp"
+#include "lua/wheelset_binding.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/location.hpp"
 
@@ -63,7 +64,7 @@ void run(lua_State* L, const std::string& code) {
 std::shared_ptr<const wrc::GeometryModel> build(lua_State* L, const std::string& strategy) {
   run(L, fmt::format("bench_ws = wrc.wheelset{{wheel = bench_wheel, rail = bench_rail, strategy = {}}}", strategy));
   lua_getglobal(L, "bench_ws");
-  auto m = wrc::lua::wheelset_model(L, -1);
+  auto m = wrc::lua::check_wheelset(L, -1, "bench")->geometry_ptr();
   lua_pop(L, 1);
   return m;
 }
@@ -159,7 +160,7 @@ int main(int argc, char** argv) try {
   double brute_t = 0;
   for (const auto& e : entries) {
     const auto& m = *models[e.name];
-    auto lua_search = wrc::lua::make_lua_search(L, m);
+    auto lua_search = wrc::lua::make_lua_search(L, m.strategy);
     wrc::NativeSearch native(e.plan);
     const int n = e.all_pairs ? nb : a.poses;
     const int reps = e.all_pairs ? 1 : a.reps;
@@ -180,7 +181,7 @@ int main(int argc, char** argv) try {
   for (const auto& [ref_name, members] : families) {
     std::vector<int> mismatches(members.size(), 0);
     std::vector<std::unique_ptr<wrc::lua::LuaSearch>> searches;
-    for (const auto& name : members) searches.push_back(wrc::lua::make_lua_search(L, *models[name]));
+    for (const auto& name : members) searches.push_back(wrc::lua::make_lua_search(L, models[name]->strategy));
     int patches = 0, segments = 0;
     wrc::LocationState ref, st;
     for (int i = 0; i < nc; ++i) {

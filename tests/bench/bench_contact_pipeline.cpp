@@ -11,7 +11,7 @@
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/wheelset_binding.hpp"
-#include "wrc/contact/wheelset_contact.hpp"
+#include "wrc/wheelset/contact.hpp"
 
 #include <fmt/format.h>
 
@@ -83,9 +83,9 @@ int main(int argc, char** argv) {
   run(L, "bench_ws = wrc.wheelset{wheel = wrc.profile.load(wrc.paths.profiles .. '/s1002.lua'), "
          "rail = wrc.profile.load(wrc.paths.profiles .. '/60e1.lua')}");
   lua_getglobal(L, "bench_ws");
-  const auto& lws = wrc::lua::check_shared<wrc::lua::Wheelset>(L, -1, wrc::lua::kWheelsetType, "bench");
-  const auto geometry = lws->model;
-  const wrc::contact::Material material = lws->contact->material();
+  const auto lws = wrc::lua::check_wheelset(L, -1, "bench");
+  const auto geometry = lws->geometry_ptr();
+  const wrc::contact::Material material = lws->contact_model().material();
   fmt::print("S1002 / 60E1, strategy '{}', cant 1/40; the left wheel at ~100 kN vertical; CPU ms per pose (best of {})\n",
              geometry->strategy.name, reps);
 

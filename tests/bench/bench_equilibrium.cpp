@@ -138,7 +138,7 @@ int main(int argc, char** argv) try {
   }
   lua_getglobal(L, "bench_ws");
   const std::shared_ptr<const wrc::ContactModel> model =
-      wrc::lua::check_shared<wrc::lua::Wheelset>(L, -1, wrc::lua::kWheelsetType, "bench_equilibrium")->contact;
+      wrc::lua::check_wheelset(L, -1, "bench_equilibrium")->contact_model_ptr();
   lua_pop(L, 1);
   auto make_workspace = [&] { return std::make_unique<wrc::ContactWorkspace>(*model); };
 

@@ -10,6 +10,7 @@
 #include "geometry/geometry_fixtures.hpp"
 #include "lua/bindings.hpp"
 #include "lua/strategy_binding.hpp"
+#include "lua/wheelset_binding.hpp"
 #include "wrc/geometry/location.hpp"
 
 #include <fmt/format.h>
@@ -74,7 +75,7 @@ int main(int argc, char** argv) try {
     return 1;
   }
   lua_getglobal(L, "bench_ws");
-  const auto model = wrc::lua::wheelset_model(L, -1);
+  const auto model = wrc::lua::check_wheelset(L, -1, "bench")->geometry_ptr();
   lua_pop(L, 1);
 
   std::mt19937_64 rng(3);
@@ -86,7 +87,7 @@ int main(int argc, char** argv) try {
   std::vector<Segments> ref(poses.size());
   const auto t0 = std::chrono::steady_clock::now();
   {
-    wrc::Locator loc(model, wrc::lua::make_lua_search(L, *model));
+    wrc::Locator loc(model, wrc::lua::make_lua_search(L, model->strategy));
     for (std::size_t i = 0; i < poses.size(); ++i) ref[i] = all_segments(loc.locate(poses[i]));
   }
   const double serial = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -106,7 +107,7 @@ int main(int argc, char** argv) try {
             loc = std::make_unique<wrc::Locator>(model);  // model.strategy.make_search(): its own Lua state
           } else {
             W = wrc::lua::new_state();  // the worker's own state, as a sweep worker has
-            loc = std::make_unique<wrc::Locator>(model, wrc::lua::make_lua_search(W, *model));
+            loc = std::make_unique<wrc::Locator>(model, wrc::lua::make_lua_search(W, model->strategy));
           }
           for (int i; (i = next.fetch_add(1)) < static_cast<int>(poses.size());)
             if (!same(all_segments(loc->locate(poses[i])), ref[i])) ++mismatches;

@@ -1,13 +1,14 @@
 // Elastic equilibrium (Newton on z and roll), one wheel with its vertical force given, and the rigid reference.
 #include "wrc/equilibrium/equilibrium.hpp"
 
-#include "wrc/contact/wheel_surface.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace wrc {
@@ -74,8 +75,7 @@ RigidWheel deepest_point(const GeometryModel& g, int side, const Pose& pose) {
   if (best.line >= 0) {
     best.point = {x, rail.y[best.line], rail.z[best.line]};
     best.normal = wheel_inward_normal(w, f, best.point);
-    const double sign = side == kLeft ? 1.0 : -1.0;
-    best.angle = std::atan2(-sign * best.normal.y(), best.normal.z());
+    best.angle = contact_angle(side, best.normal);
     best.rolling_radius = wheel_surface_at(w, f.to_wheelset(best.point).y()).radius;
   }
   return best;
@@ -352,6 +352,74 @@ class EquilibriumSolver {
     }
   }
 
+  // Newton from the rigid position at y pressed in by initial_approach (the rigid solution is kept in `rigid`).
+  bool from_rigid(double y, Iterate& cur, std::vector<std::string>& why) {
+    rigid = solve_rigid(model_.geometry(), y, yaw_, Q_);
+    if (!rigid->message.empty()) {
+      why.push_back("rigid start: " + rigid->message);
+      return false;
+    }
+    std::string w;
+    if (newton(y, rigid->z - opt_.initial_approach, rigid->roll, std::nullopt, cur, w)) return true;
+    why.push_back("from the rigid position: " + w);
+    return false;
+  }
+
+  // Continuation from the centred wheelset, in steps of y that shrink where Newton struggles: it follows the
+  // branch of equilibria that a wheelset pushed out from the centre follows. (Beyond flange contact there are
+  // several: e.g. one wheel lifted, or the wheelset climbed up the flange; the rigid position leads to the latter.)
+  bool continuation(double y, Iterate& cur, std::vector<std::string>& why) {
+    const RigidResult r0 = solve_rigid(model_.geometry(), 0.0, yaw_, Q_);
+    if (!r0.message.empty()) {
+      why.push_back("continuation: rigid start at y = 0: " + r0.message);
+      return false;
+    }
+    Iterate path;
+    std::string w;
+    if (!newton(0.0, r0.z - opt_.initial_approach, r0.roll, std::nullopt, path, w)) {
+      why.push_back("continuation: no equilibrium at y = 0: " + w);
+      return false;
+    }
+    double y_at = 0, step = 0.5e-3 * (y > 0 ? 1 : -1);
+    double z_prev = path.z, roll_prev = path.roll, y_prev = y_at;
+    while (y_at != y) {
+      const double y_next = std::abs(y - y_at) <= std::abs(step) ? y : y_at + step;
+      // Linear predictor through the last two points of the path.
+      const double s = y_at != y_prev ? (y_next - y_at) / (y_at - y_prev) : 0.0;
+      Iterate next;
+      if (newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), std::nullopt, next, w) ||
+          newton(y_next, path.z, path.roll, std::nullopt, next, w)) {
+        y_prev = y_at;
+        z_prev = path.z;
+        roll_prev = path.roll;
+        y_at = y_next;
+        path = std::move(next);
+        step = std::clamp(step * 1.5, -1e-3, 1e-3);
+      } else if (std::abs(step) > 0.02e-3) {
+        step *= 0.25;
+      } else {
+        why.push_back(fmt::format("continuation from y = 0 stopped at y = {:.3f} mm: {}", y_at * 1e3, w));
+        return false;
+      }
+    }
+    cur = std::move(path);
+    return true;
+  }
+
+  // Nested bracketing at y from the last iterate there (or from the rigid position).
+  bool bracketing(double y, Iterate& cur, std::vector<std::string>& why) {
+    if (cur.contact.pose.y != y || cur.contact.pose.yaw != yaw_) {
+      const bool r = rigid && rigid->message.empty();
+      cur = evaluate(y, r ? rigid->z - opt_.initial_approach : 0.0, r ? rigid->roll : 0.0);
+    }
+    std::string w;
+    const bool ok = nested(y, cur, w);
+    if (!ok) why.push_back(w);
+    return ok;
+  }
+
+  std::optional<RigidResult> rigid;  // the rigid solution at y, once from_rigid has run
+
   // One evaluation past the budget, for the last iterate of a failed solve.
   Iterate evaluate_unbudgeted(double y, double z, double roll) {
     unbudgeted_ = true;
@@ -415,95 +483,11 @@ class EquilibriumSolver {
 
 }  // namespace
 
-EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
-                                    const EquilibriumOptions& opt, const std::vector<Start>& starts,
-                                    const ContactRequest& request) {
-  check_case(y, yaw, Q, "equilibrium");
-  if (opt.max_iterations < 1 || opt.max_evaluations < 1)
-    fail("equilibrium: max_iterations and max_evaluations must be >= 1");
-  EquilibriumResult res;
-  res.y = y;
-  res.yaw = yaw;
-  res.Q = Q;
-  EquilibriumSolver solver(model, yaw, Q, ws, opt, request, res);
-  Iterate cur;
-  std::vector<std::string> why;
-  std::string w;
-  bool ok = false;
-  std::optional<RigidResult> rigid;
-  auto from_rigid = [&] {
-    rigid = solve_rigid(model.geometry(), y, yaw, Q);
-    if (!rigid->message.empty()) {
-      why.push_back("rigid start: " + rigid->message);
-      return false;
-    }
-    if (solver.newton(y, rigid->z - opt.initial_approach, rigid->roll, std::nullopt, cur, w)) return true;
-    why.push_back("from the rigid position: " + w);
-    return false;
-  };
-  // Continuation from the centred wheelset, in steps of y that shrink where Newton struggles: it follows the
-  // branch of equilibria that a wheelset pushed out from the centre follows. (Beyond flange contact there are
-  // several: e.g. one wheel lifted, or the wheelset climbed up the flange; the rigid position leads to the latter.)
-  auto continuation = [&] {
-    const RigidResult r0 = solve_rigid(model.geometry(), 0.0, yaw, Q);
-    if (!r0.message.empty()) {
-      why.push_back("continuation: rigid start at y = 0: " + r0.message);
-      return false;
-    }
-    Iterate path;
-    if (!solver.newton(0.0, r0.z - opt.initial_approach, r0.roll, std::nullopt, path, w)) {
-      why.push_back("continuation: no equilibrium at y = 0: " + w);
-      return false;
-    }
-    double y_at = 0, step = 0.5e-3 * (y > 0 ? 1 : -1);
-    double z_prev = path.z, roll_prev = path.roll, y_prev = y_at;
-    while (y_at != y) {
-      const double y_next = std::abs(y - y_at) <= std::abs(step) ? y : y_at + step;
-      // Linear predictor through the last two points of the path.
-      const double s = y_at != y_prev ? (y_next - y_at) / (y_at - y_prev) : 0.0;
-      Iterate next;
-      if (solver.newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), std::nullopt,
-                        next, w) ||
-          solver.newton(y_next, path.z, path.roll, std::nullopt, next, w)) {
-        y_prev = y_at;
-        z_prev = path.z;
-        roll_prev = path.roll;
-        y_at = y_next;
-        path = std::move(next);
-        step = std::clamp(step * 1.5, -1e-3, 1e-3);
-      } else if (std::abs(step) > 0.02e-3) {
-        step *= 0.25;
-      } else {
-        why.push_back(fmt::format("continuation from y = 0 stopped at y = {:.3f} mm: {}", y_at * 1e3, w));
-        return false;
-      }
-    }
-    cur = std::move(path);
-    return true;
-  };
-  try {
-    // 1. The given starts (neighbouring solutions, predictions), in order.
-    for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
-      ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, cur, w);
-      if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
-    }
-    // 2. Near the centre, the rigid position pressed in a little; farther out, continuation first.
-    const bool near_centre = std::abs(y) <= 2e-3;
-    if (!ok) ok = near_centre ? from_rigid() : continuation();
-    if (!ok) ok = near_centre ? (std::abs(y) > 0.5e-3 && continuation()) : from_rigid();
-    // 3. Nested bracketing from the last iterate at y (or the rigid position).
-    if (!ok) {
-      if (cur.contact.pose.y != y || cur.contact.pose.yaw != yaw) {
-        const bool r = rigid && rigid->message.empty();
-        cur = solver.evaluate(y, r ? rigid->z - opt.initial_approach : 0.0, r ? rigid->roll : 0.0);
-      }
-      ok = solver.nested(y, cur, w);
-      if (!ok) why.push_back(w);
-    }
-  } catch (const EvaluationBudget& e) {
-    why.push_back(e.what());
-    if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
-  }
+namespace {
+
+// The result of a solve from its last iterate.
+void finish_result(const ContactModel& model, ContactWorkspace& ws, const ContactRequest& request, bool ok,
+                   const std::vector<std::string>& why, EquilibriumSolver& solver, Iterate& cur, EquilibriumResult& res) {
   res.converged = ok && solver.converged(cur);
   if (!res.converged) {
     std::string m;
@@ -520,6 +504,42 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   if (request.sensitivity && !cur.lifted) add_sensitivity(model, cur.contact, ws);
   if (!request.keep_grids) drop_grids(cur.contact);
   res.contact = std::move(cur.contact);
+}
+
+}  // namespace
+
+EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
+                                    const EquilibriumOptions& opt, const std::vector<Start>& starts,
+                                    const ContactRequest& request) {
+  check_case(y, yaw, Q, "equilibrium");
+  if (opt.max_iterations < 1 || opt.max_evaluations < 1)
+    fail("equilibrium: max_iterations and max_evaluations must be >= 1");
+  EquilibriumResult res;
+  res.y = y;
+  res.yaw = yaw;
+  res.Q = Q;
+  EquilibriumSolver solver(model, yaw, Q, ws, opt, request, res);
+  Iterate cur;
+  std::vector<std::string> why;
+  bool ok = false;
+  try {
+    // 1. The given starts (neighbouring solutions, predictions), in order.
+    for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
+      std::string w;
+      ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, cur, w);
+      if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
+    }
+    // 2. Near the centre, the rigid position pressed in a little; farther out, continuation first.
+    const bool near_centre = std::abs(y) <= 2e-3;
+    if (!ok) ok = near_centre ? solver.from_rigid(y, cur, why) : solver.continuation(y, cur, why);
+    if (!ok) ok = near_centre ? (std::abs(y) > 0.5e-3 && solver.continuation(y, cur, why)) : solver.from_rigid(y, cur, why);
+    // 3. Nested bracketing.
+    if (!ok) ok = solver.bracketing(y, cur, why);
+  } catch (const EvaluationBudget& e) {
+    why.push_back(e.what());
+    if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
+  }
+  finish_result(model, ws, request, ok, why, solver, cur, res);
   return res;
 }
 
@@ -530,6 +550,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   if (!std::isfinite(Fz) || !(Fz > 0)) fail("wheel: Fz = {} N must be a positive number", Fz);
   WheelResult res;
   res.side = side;
+  res.Fz = Fz;
   // Start: the height at which this wheel touches, pressed in a little.
   auto pen = [&](double z) { return deepest_point(model.geometry(), side, {y, z, roll, yaw}).overlap; };
   double fa = pen(-0.02), fb = pen(0.02);
@@ -574,6 +595,112 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   res.z = z;
   res.wheel = std::move(cur.wheel[side]);
   return res;
+}
+
+// ---- options and messages ----
+
+EquilibriumOptions read_equilibrium_options(OptionReader& r) {
+  EquilibriumOptions o;
+  o.force_tolerance = r.number("force_tolerance", o.force_tolerance);
+  o.moment_tolerance = r.number("moment_tolerance", o.moment_tolerance);
+  if (!(o.force_tolerance > 0) || !(o.moment_tolerance > 0)) fail("{}: tolerances must be > 0", r.context());
+  o.max_iterations = r.integer("max_iterations", 1, 1 << 20).value_or(o.max_iterations);
+  o.max_evaluations = r.integer("max_evaluations", 1, 1 << 20).value_or(o.max_evaluations);
+  if (r.boolean("trace").value_or(false)) {
+    o.trace = [](int it, double z, double roll, const ContactResult& c) {
+      std::fprintf(stderr, "  newton %2d: z = %+.6f mm, roll = %+.6f mrad, Fz = %.3f kN (left %.3f, right %.3f), Mx = %+.3f N m\n",
+                   it, z * 1e3, roll * 1e3, c.force.z() / 1e3, c.wheel[kLeft].force.z() / 1e3,
+                   c.wheel[kRight].force.z() / 1e3, c.moment.x());
+    };
+  }
+  return o;
+}
+
+std::string failure_message(const EquilibriumResult& e) {
+  return fmt::format("no equilibrium found at y = {:.4f} mm, yaw = {:.6g} rad, Q = {:.6g} kN: {}; last iterate z = "
+                     "{:.6f} mm, roll = {:.6f} mrad, residuals: force {:.4g} N, moment {:.4g} N m",
+                     e.y * 1e3, e.yaw, e.Q / 1e3, e.message, e.z * 1e3, e.roll * 1e3, e.residual_force,
+                     e.residual_moment);
+}
+
+std::string failure_message(const WheelResult& w) {
+  return fmt::format("the {} wheel's vertical force {:.6g} N was not reached: {}; last iterate z = {:.6f} mm, residual "
+                     "{:.4g} N", side_name(w.side), w.Fz, w.message, w.z * 1e3, w.residual);
+}
+
+// ---- results as fields ----
+
+void describe(const EquilibriumResult& e, FieldSink& out) {
+  out.boolean("converged", e.converged);
+  if (!e.message.empty()) out.string("error", e.message);
+  out.number("y", e.y);
+  out.number("yaw", e.yaw);
+  out.number("Q", e.Q);
+  out.number("z", e.z);
+  out.number("roll", e.roll);
+  out.number("Y", e.Y);
+  out.number("My", e.My);
+  out.number("Mz", e.Mz);
+  out.number("Y_Q", e.Q > 0 ? e.Y / e.Q : 0.0);
+  out.integer("iterations", e.iterations);
+  out.integer("evaluations", e.evaluations);
+  out.begin("residual");
+  out.number("force", e.residual_force);
+  out.number("moment", e.residual_moment);
+  out.end();
+  for (int s : {kLeft, kRight}) {
+    out.begin(side_name(s));
+    describe(e.contact.wheel[s], out);
+    out.end();
+  }
+  out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
+  out.vec3("force", e.contact.force);
+  out.vec3("moment", e.contact.moment);
+}
+
+void describe(const WheelResult& w, FieldSink& out) {
+  describe(w.wheel, out);
+  out.boolean("converged", w.converged);
+  if (!w.message.empty()) out.string("error", w.message);
+  out.number("z", w.z);
+  out.number("residual", w.residual);
+  out.integer("iterations", w.iterations);
+}
+
+void describe(const RigidResult& r, FieldSink& out) {
+  out.boolean("converged", r.converged);
+  out.boolean("tension", r.tension);
+  if (!r.message.empty()) out.string("error", r.message);
+  out.number("y", r.y);
+  out.number("yaw", r.yaw);
+  out.number("Q", r.Q);
+  out.number("z", r.z);
+  out.number("roll", r.roll);
+  out.number("Y", r.Y);
+  out.number("My", r.My);
+  out.number("Mz", r.Mz);
+  out.number("Y_Q", r.Y / r.Q);
+  for (int s : {kLeft, kRight}) {
+    const RigidWheel& w = r.wheel[s];
+    out.begin(side_name(s));
+    out.vec3("point", w.point);
+    out.vec3("normal", w.normal);
+    out.number("angle", w.angle);
+    out.number("rolling_radius", w.rolling_radius);
+    out.number("normal_force", w.normal_force);
+    out.number("overlap", w.overlap);
+    out.integer("line", w.line + 1);
+    out.end();
+  }
+}
+
+void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out) {
+  describe(sweep.elastic[i], out);
+  if (sweep.rigid[i]) {
+    out.begin("rigid");
+    describe(*sweep.rigid[i], out);
+    out.end();
+  }
 }
 
 }  // namespace wrc

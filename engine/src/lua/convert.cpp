@@ -1,5 +1,7 @@
 #include "lua/convert.hpp"
 
+#include "wrc/profile/profile.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -7,28 +9,6 @@ namespace wrc::lua {
 
 void check_table(lua_State* L, int idx, std::string_view context) {
   if (!lua_istable(L, idx)) fail("{}: expected a table, got {}", context, type_name(L, idx));
-}
-
-void check_keys(lua_State* L, int idx, std::string_view context, std::initializer_list<std::string_view> known) {
-  idx = lua_absindex(L, idx);
-  lua_pushnil(L);
-  while (lua_next(L, idx) != 0) {
-    lua_pop(L, 1);  // value
-    if (lua_type(L, -1) != LUA_TSTRING) {
-      lua_pop(L, 1);
-      fail("{}: unexpected non-string key in the options table", context);
-    }
-    std::string_view key = lua_tostring(L, -1);
-    bool ok = false;
-    for (auto k : known) ok = ok || k == key;
-    if (!ok) {
-      std::string list;
-      for (auto k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      std::string bad(key);
-      lua_pop(L, 1);
-      fail("{}: unknown key '{}' (expected one of: {})", context, bad, list);
-    }
-  }
 }
 
 double check_number(lua_State* L, int idx, std::string_view context) {
@@ -42,96 +22,6 @@ double check_number(lua_State* L, int idx, std::string_view context) {
 std::string check_string(lua_State* L, int idx, std::string_view context) {
   if (lua_type(L, idx) != LUA_TSTRING) fail("{}: argument {} must be a string, got {}", context, idx, type_name(L, idx));
   return lua_tostring(L, idx);
-}
-
-std::optional<double> opt_number(lua_State* L, int idx, const char* key, std::string_view context) {
-  lua_getfield(L, idx, key);
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    return std::nullopt;
-  }
-  int isnum = 0;
-  double v = lua_tonumberx(L, -1, &isnum);
-  const char* tn = type_name(L, -1);
-  lua_pop(L, 1);
-  if (!isnum) fail("{}: '{}' must be a number, got {}", context, key, tn);
-  if (!std::isfinite(v)) fail("{}: '{}' must be finite, got {}", context, key, v);
-  return v;
-}
-
-double get_number(lua_State* L, int idx, const char* key, double fallback, std::string_view context) {
-  return opt_number(L, idx, key, context).value_or(fallback);
-}
-
-double need_number(lua_State* L, int idx, const char* key, std::string_view context) {
-  auto v = opt_number(L, idx, key, context);
-  if (!v) fail("{}: '{}' is required (a number)", context, key);
-  return *v;
-}
-
-std::optional<std::string> opt_string(lua_State* L, int idx, const char* key, std::string_view context) {
-  lua_getfield(L, idx, key);
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    return std::nullopt;
-  }
-  if (lua_type(L, -1) != LUA_TSTRING) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: '{}' must be a string, got {}", context, key, tn);
-  }
-  std::string s = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  return s;
-}
-
-std::optional<bool> opt_bool(lua_State* L, int idx, const char* key, std::string_view context) {
-  lua_getfield(L, idx, key);
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    return std::nullopt;
-  }
-  if (!lua_isboolean(L, -1)) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: '{}' must be a boolean, got {}", context, key, tn);
-  }
-  bool b = lua_toboolean(L, -1);
-  lua_pop(L, 1);
-  return b;
-}
-
-std::vector<double> number_array(lua_State* L, int idx, const char* key, std::string_view context) {
-  idx = lua_absindex(L, idx);
-  std::string what = key ? fmt::format("'{}'", key) : std::string("argument");
-  if (key) lua_getfield(L, idx, key);
-  else lua_pushvalue(L, idx);
-  if (!lua_istable(L, -1)) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: {} must be an array of numbers, got {}", context, what, tn);
-  }
-  const lua_Integer n = luaL_len(L, -1);
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(n));
-  for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, -1, i);
-    int isnum = 0;
-    double v = lua_tonumberx(L, -1, &isnum);
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    if (!isnum) {
-      lua_pop(L, 1);
-      fail("{}: {}[{}] must be a number, got {}", context, what, i, tn);
-    }
-    if (!std::isfinite(v)) {
-      lua_pop(L, 1);
-      fail("{}: {}[{}] must be finite, got {}", context, what, i, v);
-    }
-    out.push_back(v);
-  }
-  lua_pop(L, 1);
-  return out;
 }
 
 void push_vec3(lua_State* L, const Eigen::Vector3d& v) {
@@ -167,6 +57,79 @@ void set_string(lua_State* L, const char* key, std::string_view v) {
 void set_bool(lua_State* L, const char* key, bool v) {
   lua_pushboolean(L, v);
   lua_setfield(L, -2, key);
+}
+
+namespace {
+
+OptionValue table_option(lua_State* L, int idx, std::string_view context, int depth) {
+  if (depth > 16) fail("{}: tables nested too deeply", context);
+  std::vector<OptionValue> array;
+  OptionTable table;
+  const lua_Integer n = luaL_len(L, idx);
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    int isint = 0;
+    const lua_Integer k = lua_tointegerx(L, -2, &isint);
+    if (lua_type(L, -2) == LUA_TSTRING) {
+      const std::string key = lua_tostring(L, -2);
+      table.entries.emplace_back(key, to_option_at(L, lua_gettop(L), fmt::format("{}.{}", context, key), depth + 1));
+    } else if (!(lua_type(L, -2) == LUA_TNUMBER && isint && k >= 1 && k <= n)) {
+      lua_pop(L, 2);
+      fail("{}: a table with keys that are neither names nor 1..n", context);
+    }
+    lua_pop(L, 1);
+  }
+  if (n > 0 && !table.empty()) fail("{}: a table with both an array part and named keys", context);
+  if (n == 0) return OptionValue::of(std::move(table));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, idx, i);
+    array.push_back(to_option_at(L, lua_gettop(L), fmt::format("{}[{}]", context, i), depth + 1));
+    lua_pop(L, 1);
+  }
+  return OptionValue::of(std::move(array));
+}
+
+}  // namespace
+
+OptionValue to_option_at(lua_State* L, int idx, std::string_view context, int depth) {
+  switch (lua_type(L, idx)) {
+    case LUA_TNUMBER: return OptionValue::of(static_cast<double>(lua_tonumber(L, idx)));
+    case LUA_TBOOLEAN: return OptionValue::of(static_cast<bool>(lua_toboolean(L, idx)));
+    case LUA_TSTRING: return OptionValue::of(std::string(lua_tostring(L, idx)));
+    case LUA_TTABLE: return table_option(L, lua_absindex(L, idx), context, depth);
+    case LUA_TUSERDATA:
+      if (auto* p = static_cast<std::shared_ptr<const Profile>*>(luaL_testudata(L, idx, "wrc.Profile")))
+        return OptionValue::of_object(*p, "wrc.Profile");
+      [[fallthrough]];
+    default: fail("{}: a {} cannot be an option value", context, type_name(L, idx));
+  }
+}
+
+OptionValue to_option(lua_State* L, int idx, std::string_view context) { return to_option_at(L, idx, context, 0); }
+
+OptionTable to_options(lua_State* L, int idx, std::string_view context, std::initializer_list<std::string_view> skip) {
+  if (lua_isnoneornil(L, idx)) return {};
+  check_table(L, idx, context);
+  idx = lua_absindex(L, idx);
+  OptionTable t;
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    if (lua_type(L, -2) != LUA_TSTRING) {
+      lua_pop(L, 2);
+      fail("{}: option keys must be names", context);
+    }
+    const std::string key = lua_tostring(L, -2);
+    bool skipped = false;
+    for (auto k : skip) skipped = skipped || k == key;
+    if (!skipped) t.entries.emplace_back(key, to_option_at(L, lua_gettop(L), fmt::format("{}: '{}'", context, key), 1));
+    lua_pop(L, 1);
+  }
+  return t;
+}
+
+OptionTable table_options(lua_State* L, int idx, std::string_view context, std::initializer_list<std::string_view> skip) {
+  check_table(L, idx, context);
+  return to_options(L, idx, context, skip);
 }
 
 }  // namespace wrc::lua

@@ -4,6 +4,7 @@
 
 #include "lua/lua.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/core/options.hpp"
 
 #include <Eigen/Core>
 
@@ -22,20 +23,20 @@ inline const char* type_name(lua_State* L, int idx) { return luaL_typename(L, id
 // Table argument at stack index idx (context names the function for the message).
 void check_table(lua_State* L, int idx, std::string_view context);
 
-// Rejects keys of the table at idx that are not in `known` (catches typos such as `raduis`).
-void check_keys(lua_State* L, int idx, std::string_view context, std::initializer_list<std::string_view> known);
-
 double check_number(lua_State* L, int idx, std::string_view context);  // finite number at a stack index
 std::string check_string(lua_State* L, int idx, std::string_view context);
 
-// Fields of the table at idx. `opt_` returns nothing when the field is nil; the value must be finite.
-std::optional<double> opt_number(lua_State* L, int idx, const char* key, std::string_view context);
-double get_number(lua_State* L, int idx, const char* key, double fallback, std::string_view context);
-double need_number(lua_State* L, int idx, const char* key, std::string_view context);
-std::optional<std::string> opt_string(lua_State* L, int idx, const char* key, std::string_view context);
-std::optional<bool> opt_bool(lua_State* L, int idx, const char* key, std::string_view context);
-// Array of finite numbers in field `key` (or at idx itself when key is null).
-std::vector<double> number_array(lua_State* L, int idx, const char* key, std::string_view context);
+// The Lua value at idx as an engine option value: numbers, booleans, strings, arrays (keys 1..n), tables with
+// string keys, wrc.Profile userdata (objects of type "wrc.Profile"). Anything else (a function, a mixed table) is
+// an error naming `context` and the key. to_options reads a table argument, leaving out the keys in `skip`
+// (values the binding handles itself, e.g. a strategy given as a table of functions).
+OptionValue to_option(lua_State* L, int idx, std::string_view context);
+OptionValue to_option_at(lua_State* L, int idx, std::string_view context, int depth);
+OptionTable to_options(lua_State* L, int idx, std::string_view context,
+                       std::initializer_list<std::string_view> skip = {});
+// The same for a required table argument (nil is an error).
+OptionTable table_options(lua_State* L, int idx, std::string_view context,
+                          std::initializer_list<std::string_view> skip = {});
 
 // Pushes {x=, y=, z=}.
 void push_vec3(lua_State* L, const Eigen::Vector3d& v);

@@ -57,193 +57,13 @@ struct CurrentState {
   ~CurrentState() { r.current = saved; }
 };
 
-// Numbers of an optional array field, NaN kept (the host checks finiteness with the line).
-std::vector<double> raw_numbers(lua_State* L, int idx, const char* key, const std::string& ctx, bool required) {
-  std::vector<double> out;
-  lua_getfield(L, idx, key);
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    if (required) fail("{}: the result has no '{}' array", ctx, key);
-    return out;
-  }
-  if (!lua_istable(L, -1)) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: '{}' must be an array of numbers, got {}", ctx, key, tn);
-  }
-  const lua_Integer n = luaL_len(L, -1);
-  out.reserve(static_cast<std::size_t>(std::max<lua_Integer>(n, 0)));
-  for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, -1, i);
-    int isnum = 0;
-    const double v = lua_tonumberx(L, -1, &isnum);
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    if (!isnum) {
-      lua_pop(L, 1);
-      fail("{}: {}[{}] must be a number, got {}", ctx, key, i, tn);
-    }
-    out.push_back(v);
-  }
-  lua_pop(L, 1);
-  return out;
-}
-
-std::vector<std::string> string_array(lua_State* L, int idx, const char* key, const std::string& ctx) {
-  std::vector<std::string> out;
-  lua_getfield(L, idx, key);
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    return out;
-  }
-  if (!lua_istable(L, -1)) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: '{}' must be an array of strings, got {}", ctx, key, tn);
-  }
-  const lua_Integer n = luaL_len(L, -1);
-  for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, -1, i);
-    if (lua_type(L, -1) != LUA_TSTRING) {
-      const char* tn = type_name(L, -1);
-      lua_pop(L, 2);
-      fail("{}: {}[{}] must be a string, got {}", ctx, key, i, tn);
-    }
-    out.emplace_back(lua_tostring(L, -1));
-    lua_pop(L, 1);
-  }
-  lua_pop(L, 1);
-  return out;
-}
-
-// The table a Lua reader returns -> RawProfile.
-RawProfile raw_from_table(lua_State* L, int idx, const std::string& ctx) {
-  RawProfile raw;
-  if (!lua_istable(L, idx)) fail("{}: the read function must return a table {{y=, z=, ...}}, got {}", ctx, type_name(L, idx));
-  check_keys(L, idx, ctx, {"y", "z", "lines", "kind", "units", "name", "transforms"});
-  raw.y = raw_numbers(L, idx, "y", ctx, true);
-  raw.z = raw_numbers(L, idx, "z", ctx, true);
-  for (double l : raw_numbers(L, idx, "lines", ctx, false)) raw.lines.push_back(std::isfinite(l) && l > 0 && l < 2e9 ? static_cast<int>(l) : 0);
-  if (auto k = opt_string(L, idx, "kind", ctx)) raw.kind = parse_profile_kind(*k, ctx);
-  lua_getfield(L, idx, "units");
-  if (lua_type(L, -1) == LUA_TNUMBER) {
-    raw.metres_per_unit = lua_tonumber(L, -1);
-    raw.units_declared_by = fmt::format("units = {} (reader)", *raw.metres_per_unit);
-  } else if (lua_type(L, -1) == LUA_TSTRING) {
-    const std::string u = lua_tostring(L, -1);
-    raw.units_declared_by = fmt::format("units = \"{}\" (reader)", u);
-    raw.metres_per_unit = parse_units(u, ctx);
-  } else if (!lua_isnil(L, -1)) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: 'units' must be \"mm\", \"m\" or a number, got {}", ctx, tn);
-  }
-  lua_pop(L, 1);
-  if (auto n = opt_string(L, idx, "name", ctx)) raw.name = *n;
-  raw.transforms = string_array(L, idx, "transforms", ctx);
-  return raw;
-}
-
-// ---- Options ----
-
-std::string option_text(lua_State* L, int idx, const std::string& key, std::string_view ctx) {
-  switch (lua_type(L, idx)) {
-    case LUA_TBOOLEAN: return lua_toboolean(L, idx) ? "true" : "false";
-    case LUA_TNUMBER:
-      if (lua_isinteger(L, idx)) return std::to_string(lua_tointeger(L, idx));
-      return fmt::format("{}", lua_tonumber(L, idx));  // shortest exact representation
-    case LUA_TSTRING: return lua_tostring(L, idx);
-    default: fail("{}: option '{}' must be a string, number or boolean, got {}", ctx, key, type_name(L, idx));
-  }
-}
-
-// crop = {y = {min, max}, z = {min, max}} (metres; either may be left out).
-CropWindow read_crop(lua_State* L, int idx, std::string_view ctx) {
-  if (!lua_istable(L, idx)) fail("{}: 'crop' must be a table {{y = {{min, max}}, z = {{min, max}}}}, got {}", ctx, type_name(L, idx));
-  check_keys(L, idx, fmt::format("{}: crop", ctx), {"y", "z"});
-  CropWindow w;
-  for (const char* axis : {"y", "z"}) {
-    lua_getfield(L, idx, axis);
-    if (!lua_isnil(L, -1)) {
-      const auto v = number_array(L, -1, nullptr, fmt::format("{}: crop.{}", ctx, axis));
-      if (v.size() != 2 || !(v[0] < v[1])) {
-        lua_pop(L, 1);
-        fail("{}: crop.{} must be {{min, max}} with min < max (metres)", ctx, axis);
-      }
-      (axis[0] == 'y' ? w.y_min : w.z_min) = v[0];
-      (axis[0] == 'y' ? w.y_max : w.z_max) = v[1];
-    }
-    lua_pop(L, 1);
-  }
-  return w;
-}
-
 // The options table at idx (may be none). For a file, keys the host does not know go to the reader;
 // `geometric_only` (p:transform) rejects them.
 LoadOptions read_options(lua_State* L, int idx, std::string_view ctx, bool geometric_only) {
-  LoadOptions o;
-  if (lua_isnoneornil(L, idx)) return o;
-  if (!lua_istable(L, idx)) fail("{}: options must be a table, got {}", ctx, type_name(L, idx));
-  idx = lua_absindex(L, idx);
-  if (geometric_only) check_keys(L, idx, ctx, {"mirror_y", "mirror_z", "shift", "crop", "name", "kind"});
-  if (auto v = opt_bool(L, idx, "mirror_y", ctx)) o.mirror_y = *v;
-  if (auto v = opt_bool(L, idx, "mirror_z", ctx)) o.mirror_z = *v;
-  if (auto v = opt_string(L, idx, "name", ctx)) o.name = *v;
-  if (auto v = opt_string(L, idx, "kind", ctx)) o.kind = parse_profile_kind(*v, ctx);
-  if (auto v = opt_string(L, idx, "reader", ctx)) o.reader = *v;
-  lua_getfield(L, idx, "units");
-  if (lua_type(L, -1) == LUA_TNUMBER || lua_type(L, -1) == LUA_TSTRING) {
-    o.units_text = option_text(L, -1, "units", ctx);
-    lua_pop(L, 1);
-    o.metres_per_unit = parse_units(o.units_text, std::string(ctx));
-  } else if (!lua_isnil(L, -1)) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("{}: 'units' must be \"mm\", \"cm\", \"m\", \"in\" or a number (metres per file unit), got {}", ctx, tn);
-  } else {
-    lua_pop(L, 1);
-  }
-  lua_getfield(L, idx, "shift");
-  if (!lua_isnil(L, -1)) {
-    if (!lua_istable(L, -1)) {
-      const char* tn = type_name(L, -1);
-      lua_pop(L, 1);
-      fail("{}: 'shift' must be a table {{y =, z =}} (metres), got {}", ctx, tn);
-    }
-    const std::string sctx = fmt::format("{}: shift", ctx);
-    check_keys(L, -1, sctx, {"y", "z"});
-    o.shift_y = get_number(L, -1, "y", 0.0, sctx);
-    o.shift_z = get_number(L, -1, "z", 0.0, sctx);
-  }
-  lua_pop(L, 1);
-  lua_getfield(L, idx, "crop");
-  if (!lua_isnil(L, -1)) o.crop = read_crop(L, lua_gettop(L), ctx);
-  lua_pop(L, 1);
-  if (geometric_only) return o;
-  // Everything else belongs to the reader.
-  lua_pushnil(L);
-  while (lua_next(L, idx) != 0) {
-    if (lua_type(L, -2) != LUA_TSTRING) {
-      lua_pop(L, 2);
-      fail("{}: option keys must be strings", ctx);
-    }
-    const std::string key = lua_tostring(L, -2);
-    static const char* const host_keys[] = {"mirror_y", "mirror_z", "name", "kind", "reader", "units", "shift", "crop"};
-    bool host = false;
-    for (const char* k : host_keys) host = host || key == k;
-    if (!host) {
-      std::string value;
-      try {
-        value = option_text(L, -1, key, ctx);
-      } catch (...) {
-        lua_pop(L, 2);
-        throw;
-      }
-      o.reader_options.emplace_back(key, std::move(value));
-    }
-    lua_pop(L, 1);
-  }
-  return o;
+  if (!lua_isnoneornil(L, idx) && !lua_istable(L, idx)) fail("{}: options must be a table, got {}", ctx, type_name(L, idx));
+  const OptionTable t = to_options(L, idx, ctx);
+  OptionReader r(t, std::string(ctx));
+  return read_load_options(r, geometric_only);
 }
 
 bool has_geometric_options(const LoadOptions& o) {
@@ -298,14 +118,15 @@ Profile load_definition(lua_State* L, const std::string& path, int options_idx, 
 // wrc.profile.points{kind=, y={...}, z={...}, name=}: metres, left-side frame.
 int profile_points(lua_State* L) {
   const char* ctx = "wrc.profile.points";
-  check_table(L, 1, ctx);
-  check_keys(L, 1, ctx, {"kind", "y", "z", "name"});
-  const auto kind_text = opt_string(L, 1, "kind", ctx);
+  const OptionTable t = table_options(L, 1, ctx);
+  OptionReader r(t, ctx);
+  const auto kind_text = r.string("kind");
   if (!kind_text) fail("{}: 'kind' is required (\"wheel\" or \"rail\")", ctx);
   const ProfileKind kind = parse_profile_kind(*kind_text, ctx);
-  auto y = number_array(L, 1, "y", ctx);
-  auto z = number_array(L, 1, "z", ctx);
-  const std::string name = opt_string(L, 1, "name", ctx).value_or(std::string(to_string(kind)));
+  auto y = r.numbers("y").value_or(std::vector<double>{});
+  auto z = r.numbers("z").value_or(std::vector<double>{});
+  const std::string name = r.string("name").value_or(std::string(to_string(kind)));
+  r.finish();
   push_profile(L, std::make_shared<const Profile>(make_profile(kind, std::move(y), std::move(z), name, ctx)));
   return 1;
 }
@@ -343,29 +164,37 @@ RawProfile call_lua_reader(LuaReaders& lr, int ref, const std::string& id, const
     lua_pop(L, 1);
     fail("{} failed: {}", ctx, msg);
   }
+  if (!lua_istable(L, -1)) {
+    const char* tn = type_name(L, -1);
+    lua_pop(L, 1);
+    fail("{}: the read function must return a table {{y=, z=, ...}}, got {}", ctx, tn);
+  }
   const int top = lua_gettop(L);
+  OptionTable t;
   try {
-    RawProfile raw = raw_from_table(L, top, ctx);
-    lua_settop(L, top - 1);
-    return raw;
+    t = to_options(L, top, ctx);
   } catch (...) {
     lua_settop(L, top - 1);
     throw;
   }
+  lua_settop(L, top - 1);
+  OptionReader r(t, ctx);
+  return read_raw_profile(r);
 }
 
 // wrc.profile.register_reader{id=, extensions={...}, read=function(path, options) ... end, options={...}, description=}
 int profile_register_reader(lua_State* L) {
   const char* ctx = "wrc.profile.register_reader";
-  check_table(L, 1, ctx);
-  check_keys(L, 1, ctx, {"id", "extensions", "read", "options", "description"});
+  const OptionTable t = table_options(L, 1, ctx, {"read"});
+  OptionReader o(t, ctx);
+  o.allow({"read"});
   Reader r;
-  const auto id = opt_string(L, 1, "id", ctx);
-  if (!id) fail("{}: 'id' is required (a string of a-z, 0-9, _)", ctx);
-  r.id = *id;
-  r.extensions = string_array(L, 1, "extensions", ctx);
-  r.options = string_array(L, 1, "options", ctx);
-  r.description = opt_string(L, 1, "description", ctx).value_or("");
+  r.id = o.string("id").value_or("");
+  if (r.id.empty()) fail("{}: 'id' is required (a string of a-z, 0-9, _)", ctx);
+  r.extensions = o.strings("extensions").value_or(std::vector<std::string>{});
+  r.options = o.strings("options").value_or(std::vector<std::string>{});
+  r.description = o.string("description").value_or("");
+  o.finish();
   lua_Debug ar;
   r.origin = "Lua";
   if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar)) r.origin = fmt::format("Lua ({}:{})", ar.short_src, ar.currentline);
@@ -442,14 +271,14 @@ int profile_method_points(lua_State* L) {
 int profile_method_resample(lua_State* L) {
   const char* ctx = "profile:resample";
   const auto& p = check_profile(L, 1, ctx);
-  check_table(L, 2, ctx);
-  check_keys(L, 2, ctx, {"step", "along"});
-  const double step = need_number(L, 2, "step", ctx);
-  const std::string along = opt_string(L, 2, "along", ctx).value_or("arc");
+  const OptionTable t = table_options(L, 2, ctx);
+  OptionReader r(t, ctx);
+  const double step = r.need_number("step");
+  const std::string along = r.choice("along", {"arc", "y"}).value_or("arc");
+  r.finish();
   if (!(step > 0)) fail("{}: 'step' must be a positive number of metres, got {}", ctx, step);
   if (along == "arc") push_profile(L, std::make_shared<const Profile>(resample_arc(*p, step)));
-  else if (along == "y") push_profile(L, std::make_shared<const Profile>(resample_y(*p, step)));
-  else fail("{}: 'along' must be \"arc\" or \"y\", got \"{}\"", ctx, along);
+  else push_profile(L, std::make_shared<const Profile>(resample_y(*p, step)));
   return 1;
 }
 

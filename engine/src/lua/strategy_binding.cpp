@@ -1,11 +1,12 @@
 // Lua strategies (strategy_binding.hpp): the SearchContext userdata handed to `locate`, the Lua-driven PoseSearch,
-// strategy resolution and the wrc.geometry helpers.
+// LuaStrategy (resolution, discretise, searches per thread) and the wrc.geometry helpers.
 #include "lua/strategy_binding.hpp"
 
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"
 #include "lua/profile_binding.hpp"
+#include "wrc/core/conventions.hpp"
 
 #include <string>
 #include <thread>
@@ -28,15 +29,7 @@ SearchContext& check_context(lua_State* L, const char* what) {
   return *box->ctx;
 }
 
-int check_side(lua_State* L, int idx, const char* what) {
-  if (lua_type(L, idx) == LUA_TSTRING) {
-    const std::string_view s = lua_tostring(L, idx);
-    if (s == "left") return kLeft;
-    if (s == "right") return kRight;
-  }
-  fail("{}: side must be \"left\" or \"right\", got {}", what,
-       lua_type(L, idx) == LUA_TSTRING ? std::string("\"") + lua_tostring(L, idx) + "\"" : type_name(L, idx));
-}
+int check_side(lua_State* L, int idx, const char* what) { return parse_side(check_string(L, idx, what), what); }
 
 int check_index(lua_State* L, int idx, const char* what) {
   int isint = 0;
@@ -229,24 +222,19 @@ void LuaSearch::search(SearchContext& ctx, int side) {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// Resolution
+// LuaStrategy
 
-StrategyInfo resolve_strategy(lua_State* L, int idx) {
-  call_resolve(L, idx);
+namespace {
+
+// What a resolved strategy table (on the top of the stack) says of itself.
+StrategyInfo read_info(lua_State* L) {
   const int t = lua_gettop(L);
+  const OptionTable fields = to_options(L, t, "strategy", {"discretise", "locate", "options"});
+  OptionReader r(fields, "strategy");
   StrategyInfo info;
-  info.name = opt_string(L, t, "name", "strategy").value_or("(unnamed)");
-  info.portable = opt_bool(L, t, "portable", "strategy").value_or(false);
-  lua_getfield(L, t, "components");
-  if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
-    for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
-      if (lua_type(L, -1) == LUA_TSTRING) info.components.emplace_back(lua_tostring(L, -1));
-      lua_pop(L, 1);
-    }
-  }
-  lua_pop(L, 1);
+  info.name = r.string("name").value_or("(unnamed)");
+  info.portable = r.boolean("portable").value_or(false);
+  info.components = r.strings("components").value_or(std::vector<std::string>{});
   lua_getfield(L, t, "options");
   if (lua_istable(L, -1)) {
     lua_pushnil(L);
@@ -268,6 +256,7 @@ StrategyInfo resolve_strategy(lua_State* L, int idx) {
   return info;
 }
 
+// Pushes the strategy table for `info` rebuilt in L (by name and options).
 void push_strategy(lua_State* L, const StrategyInfo& info) {
   if (!info.portable)
     fail("strategy '{}' is an inline Lua table: it runs only in the Lua state that built the wheelset (use a named "
@@ -289,31 +278,98 @@ void push_strategy(lua_State* L, const StrategyInfo& info) {
   lua_remove(L, spec);
 }
 
-void attach_search_factory(StrategyInfo& info) {
-  if (!info.portable) {
-    info.make_search = nullptr;
-    return;
-  }
-  // The factory owns a copy of what it needs (not the StrategyInfo it is stored in).
-  StrategyInfo spec;
-  spec.name = info.name;
-  spec.components = info.components;
-  spec.options = info.options;
-  spec.portable = true;
-  info.make_search = [spec]() -> std::unique_ptr<PoseSearch> {
-    lua_State* L = new_state();
-    try {
-      push_strategy(L, spec);
-    } catch (...) {
-      lua_close(L);
-      throw;
-    }
-    return std::make_unique<LuaSearch>(L, true);
-  };
+}  // namespace
+
+LuaStrategy::LuaStrategy(lua_State* L, int idx) : L_(L) {
+  call_resolve(L, idx);
+  info_ = read_info(L);
+  lua_pushvalue(L, -1);
+  table_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  main_ = std::make_unique<LuaSearch>(L, false);  // pops the table
 }
 
-std::unique_ptr<LuaSearch> make_lua_search(lua_State* L, const GeometryModel& model) {
-  push_strategy(L, model.strategy);
+SideDiscretisation LuaStrategy::discretise(int side, const Profile& wheel, const Profile& rail) const {
+  lua_State* L = L_;
+  const std::string ctx = fmt::format("strategy '{}': discretise ({} side)", info_.name, side_name(side));
+  lua_rawgeti(L, LUA_REGISTRYINDEX, table_ref_);
+  lua_getfield(L, -1, "discretise");
+  lua_remove(L, -2);
+  if (!lua_isfunction(L, -1)) {
+    lua_pop(L, 1);
+    fail("{}: the strategy table has no discretise function", ctx);
+  }
+  lua_createtable(L, 0, 3);
+  set_string(L, "side", side_name(side));
+  push_profile(L, std::make_shared<const Profile>(wheel));
+  lua_setfield(L, -2, "wheel");
+  push_profile(L, std::make_shared<const Profile>(rail));
+  lua_setfield(L, -2, "rail");
+  if (pcall_traceback(L, 1, 1) != LUA_OK) fail("{}: {}", ctx, pop_message(L));
+  if (!lua_istable(L, -1)) {
+    lua_pop(L, 1);
+    fail("{}: must return a table {{wheel =, rail =, coarse =}}", ctx);
+  }
+  OptionTable result;  // the fields the engine reads (a strategy may keep others of its own in d)
+  for (const char* key : {"wheel", "rail", "coarse"}) {
+    lua_getfield(L, -1, key);
+    if (!lua_isnil(L, -1)) {
+      try {
+        result.set(key, to_option(L, -1, fmt::format("{} result '{}'", ctx, key)));
+      } catch (...) {
+        lua_pop(L, 2);
+        throw;
+      }
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  OptionReader r(result, ctx + " result");
+  auto profile = [&](OptionReader& rd, const char* key) -> std::optional<Profile> {
+    auto p = std::static_pointer_cast<const Profile>(rd.object(key, kProfileType));
+    return p ? std::optional<Profile>(*p) : std::nullopt;
+  };
+  SideDiscretisation out{wheel, rail};
+  auto w = profile(r, "wheel");
+  auto rl = profile(r, "rail");
+  if (!w || !rl) fail("{}: must return a table {{wheel =, rail =, coarse =}} with both profiles", ctx);
+  out.wheel = std::move(*w);
+  out.rail = std::move(*rl);
+  if (auto c = r.table("coarse")) {
+    const auto every = c->integer("every", 2, 1 << 20);
+    if (!every) fail("{}: coarse.every (an integer >= 2) is required", ctx);
+    out.coarse_every = *every;
+    out.coarse_wheel_step = c->number("wheel_step", out.coarse_wheel_step);
+    out.coarse_wheel = profile(*c, "wheel");
+    c->finish();
+  }
+  return out;
+}
+
+std::unique_ptr<PoseSearch> LuaStrategy::make_search() const {
+  if (!info_.portable) return std::make_unique<SearchRef>(*main_);
+  lua_State* L = new_state();
+  try {
+    push_strategy(L, info_);
+  } catch (...) {
+    lua_close(L);
+    throw;
+  }
+  return std::make_unique<LuaSearch>(L, true);
+}
+
+PoseSearch& LuaStrategy::main_search(lua_State* L) {
+  main_->set_thread(L);
+  return *main_;
+}
+
+void LuaStrategy::release(lua_State* L) {
+  main_->release(L);
+  luaL_unref(L, LUA_REGISTRYINDEX, table_ref_);
+  table_ref_ = LUA_NOREF;
+}
+
+std::unique_ptr<LuaSearch> make_lua_search(lua_State* L, const StrategyInfo& info) {
+  push_strategy(L, info);
   return std::make_unique<LuaSearch>(L, false);
 }
 
@@ -326,13 +382,10 @@ namespace {
 int geometry_constant_slope(lua_State* L) {
   const char* ctx = "wrc.geometry.constant_slope";
   const auto& p = check_profile(L, 1, ctx);
-  double slope_step = 0.01, max_step = 1e-3;
-  if (!lua_isnoneornil(L, 2)) {
-    check_table(L, 2, ctx);
-    check_keys(L, 2, ctx, {"slope_step", "max_step"});
-    slope_step = get_number(L, 2, "slope_step", slope_step, ctx);
-    max_step = get_number(L, 2, "max_step", max_step, ctx);
-  }
+  const OptionTable t = to_options(L, 2, ctx);
+  OptionReader r(t, ctx);
+  const double slope_step = r.number("slope_step", 0.01), max_step = r.number("max_step", 1e-3);
+  r.finish();
   push_profile(L, std::make_shared<const Profile>(resample_constant_slope(*p, slope_step, max_step)));
   return 1;
 }

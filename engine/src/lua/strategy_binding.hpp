@@ -1,22 +1,22 @@
-// Discretisation strategies written in Lua (scripts/strategies/*.lua, DESIGN.md section 1): resolving a
-// `strategy = ...` value into a strategy table, running its `discretise` at model build and its `locate` per pose.
+// Location strategies written in Lua (scripts/strategies/*.lua, a user's file or an inline table; docs/design.md,
+// section 3): LuaStrategy is the engine's LocationStrategy for them. `strategy = ...` is resolved by
+// wrc.strategies.compose into a table with discretise(d) and locate(ctx, side); discretise runs when the wheelset
+// is built, locate per pose with a SearchContext userdata whose primitives (ctx:test, ctx:walk, ...) are native.
 //
-// Threads: a strategy chosen by name (or by a list of names, with options) is rebuilt in any Lua state from its
-// StrategyInfo, so a worker thread with its own state (new_state()) can run it: make_lua_search(L, model), or
-// model.strategy.make_search() which creates a fresh state. An inline strategy table lives in the state that
-// built the wheelset and runs only there (StrategyInfo::portable = false).
+// Threads: a strategy chosen by name (or a list of names, with options) is rebuilt in another Lua state from its
+// StrategyInfo, so make_search() on a worker thread makes a fresh state running it. An inline table lives in the
+// state that built the wheelset and runs only there (StrategyInfo::portable = false).
 #pragma once
 
 #include "lua/lua.hpp"
-#include "wrc/geometry/location.hpp"
-#include "wrc/geometry/model.hpp"
+#include "wrc/geometry/strategy.hpp"
 
 #include <memory>
 #include <string>
 
 namespace wrc::lua {
 
-// A PoseSearch that calls the strategy's `locate(ctx, side)` in a Lua state.
+// A PoseSearch that calls a strategy's `locate(ctx, side)` in a Lua state.
 class LuaSearch final : public PoseSearch {
  public:
   // Takes the strategy table on the top of L's stack (popped). If `owns_state`, lua_close(L) on destruction.
@@ -36,23 +36,30 @@ class LuaSearch final : public PoseSearch {
   bool owns_;
 };
 
-// Resolves the strategy value at stack index idx (nil: the default strategy) by calling
-// require("wrc.strategies.compose").resolve(value); pushes the strategy table and returns its description.
-// The returned info has no make_search yet (see attach_search_factory).
-StrategyInfo resolve_strategy(lua_State* L, int idx);
+class LuaStrategy final : public LocationStrategy {
+ public:
+  // Resolves the `strategy` value at stack index idx of L (the building state) with wrc.strategies.compose.
+  LuaStrategy(lua_State* L, int idx);
+  const StrategyInfo& info() const override { return info_; }
+  // Runs the table's discretise in the building state (called while the wheelset is built, on its thread).
+  SideDiscretisation discretise(int side, const Profile& wheel, const Profile& rail) const override;
+  // Portable: a fresh Lua state running the strategy. Otherwise the building state's search (that thread only).
+  std::unique_ptr<PoseSearch> make_search() const override;
+  // The building state's search, bound to the calling coroutine L of that state.
+  PoseSearch& main_search(lua_State* L);
+  // Drops the references into the building state (before it closes).
+  void release(lua_State* L);
 
-// Pushes the strategy table for `info` rebuilt in L (by name and options). Throws for a non-portable strategy.
-void push_strategy(lua_State* L, const StrategyInfo& info);
+ private:
+  lua_State* L_;       // the building state (discretise)
+  int table_ref_ = LUA_NOREF;
+  StrategyInfo info_;
+  std::unique_ptr<LuaSearch> main_;
+};
 
-// Sets info.make_search to a factory creating, per call, a new Lua state running the strategy (portable ones).
-void attach_search_factory(StrategyInfo& info);
-
-// A search running the model's strategy in the worker's own state L (created with new_state()); L must outlive
-// the search and be used by one thread.
-std::unique_ptr<LuaSearch> make_lua_search(lua_State* L, const GeometryModel& model);
-
-// The geometry model of the wrc.Wheelset at stack index idx (throws if it is not one).
-std::shared_ptr<const GeometryModel> wheelset_model(lua_State* L, int idx);
+// A search running the strategy described by `info` in the state L of the calling thread (made with new_state());
+// L must outlive the search. Throws for a non-portable strategy.
+std::unique_ptr<LuaSearch> make_lua_search(lua_State* L, const StrategyInfo& info);
 
 // wrc.geometry: strategy helpers (constant_slope, offset_outward, cell_dilation) and the SearchContext type.
 void open_geometry(lua_State* L);

@@ -102,6 +102,88 @@ void apply_shift(std::vector<double>& y, std::vector<double>& z, const LoadOptio
 
 }  // namespace
 
+namespace {
+
+// A reader option as the text the reader receives.
+std::string option_text(const std::string& key, const OptionValue& v, const std::string& context) {
+  switch (v.type) {
+    case OptionValue::Type::boolean: return v.boolean ? "true" : "false";
+    case OptionValue::Type::number: return fmt::format("{}", v.number);  // shortest exact representation
+    case OptionValue::Type::string: return v.string;
+    default: fail("{}: option '{}' must be a string, number or boolean, got {}", context, key, v.type_name());
+  }
+}
+
+CropWindow read_crop(OptionReader& crop) {
+  CropWindow w;
+  for (const char* axis : {"y", "z"}) {
+    const auto v = crop.numbers(axis);
+    if (!v) continue;
+    if (v->size() != 2 || !((*v)[0] < (*v)[1]))
+      fail("{}.{} must be {{min, max}} with min < max (metres)", crop.context(), axis);
+    (axis[0] == 'y' ? w.y_min : w.z_min) = (*v)[0];
+    (axis[0] == 'y' ? w.y_max : w.z_max) = (*v)[1];
+  }
+  crop.finish();
+  return w;
+}
+
+}  // namespace
+
+LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
+  LoadOptions o;
+  o.mirror_y = r.boolean("mirror_y").value_or(false);
+  o.mirror_z = r.boolean("mirror_z").value_or(false);
+  o.name = r.string("name");
+  if (auto k = r.string("kind")) o.kind = parse_profile_kind(*k, r.context());
+  if (auto shift = r.table("shift")) {
+    o.shift_y = shift->number("y", 0.0);
+    o.shift_z = shift->number("z", 0.0);
+    shift->finish();
+  }
+  if (auto crop = r.table("crop")) o.crop = read_crop(*crop);
+  if (geometric_only) {
+    r.finish();
+    return o;
+  }
+  o.reader = r.string("reader");
+  if (const OptionValue* u = r.value("units")) {
+    if (u->type != OptionValue::Type::number && u->type != OptionValue::Type::string)
+      fail("{}: 'units' must be \"mm\", \"cm\", \"m\", \"in\" or a number (metres per file unit), got {}", r.context(),
+           u->type_name());
+    o.units_text = option_text("units", *u, r.context());
+    o.metres_per_unit = parse_units(o.units_text, r.context());
+  }
+  for (const auto* e : r.rest()) o.reader_options.emplace_back(e->first, option_text(e->first, e->second, r.context()));
+  return o;
+}
+
+RawProfile read_raw_profile(OptionReader& r) {
+  RawProfile raw;
+  auto y = r.numbers("y", false), z = r.numbers("z", false);
+  if (!y || !z) fail("{}: the result has no '{}' array", r.context(), y ? "z" : "y");
+  raw.y = std::move(*y);
+  raw.z = std::move(*z);
+  for (double l : r.numbers("lines", false).value_or(std::vector<double>{}))
+    raw.lines.push_back(std::isfinite(l) && l > 0 && l < 2e9 ? static_cast<int>(l) : 0);
+  if (auto k = r.string("kind")) raw.kind = parse_profile_kind(*k, r.context());
+  if (const OptionValue* u = r.value("units")) {
+    if (u->type == OptionValue::Type::number) {
+      raw.metres_per_unit = u->number;
+      raw.units_declared_by = fmt::format("units = {} (reader)", u->number);
+    } else if (u->type == OptionValue::Type::string) {
+      raw.units_declared_by = fmt::format("units = \"{}\" (reader)", u->string);
+      raw.metres_per_unit = parse_units(u->string, r.context());
+    } else {
+      fail("{}: 'units' must be \"mm\", \"m\" or a number, got {}", r.context(), u->type_name());
+    }
+  }
+  raw.name = r.string("name").value_or("");
+  raw.transforms = r.strings("transforms").value_or(std::vector<std::string>{});
+  r.finish();
+  return raw;
+}
+
 Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& source, const std::string& reader_id) {
   if (raw.y.size() != raw.z.size()) fail("{}: reader '{}' gave {} y values but {} z values", source, reader_id, raw.y.size(), raw.z.size());
   if (!raw.lines.empty() && raw.lines.size() != raw.y.size())

@@ -1,4 +1,4 @@
-// Static, frictionless wheelset on the track (paper section 4, DESIGN.md section 3).
+// Static, frictionless wheelset on the track (paper section 4, docs/design.md section 3).
 //
 // Elastic equilibrium: lateral position y, yaw and the vertical load Q at the centre are given; the height z
 // and the roll are solved (Newton-Raphson) so that the contact forces carry Q and have no moment about x:
@@ -15,7 +15,8 @@
 // (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q.
 #pragma once
 
-#include "wrc/contact/wheelset_contact.hpp"
+#include "wrc/core/options.hpp"
+#include "wrc/wheelset/contact.hpp"
 
 #include <functional>
 #include <optional>
@@ -77,6 +78,7 @@ struct WheelResult {
   bool converged = false;
   std::string message;
   int side = kLeft;
+  double Fz = 0;             // the prescribed vertical force (N)
   double z = 0;              // solved height of the wheelset centre (m)
   double residual = 0;       // Fz(side) - Fz (N)
   int iterations = 0;
@@ -139,5 +141,26 @@ struct SweepResult {
 SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
                       const SweepOptions& options,
                       const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
+
+// Options as Lua and the C API give them: force_tolerance, moment_tolerance, max_iterations, max_evaluations,
+// trace (true: print the Newton iterates to stderr).
+EquilibriumOptions read_equilibrium_options(OptionReader& options);
+// A sweep's options: Q (required), threads (0: all cores), rigid, grids, progress (default: stderr is a
+// terminal), and the equilibrium options above.
+SweepOptions read_sweep_options(OptionReader& options);
+// Why a solve did not converge, with its last iterate (the error of a Lua call that does not return failures).
+std::string failure_message(const EquilibriumResult& result);
+std::string failure_message(const WheelResult& result);
+
+// The results as fields (Lua tables, C API paths; docs in README "Equilibrium"). An equilibrium: converged,
+// error, y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations, evaluations, residual = {force, moment}, left, right (as
+// wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right), force, moment. A wheel:
+// the side's wheel fields, converged, error, z, residual, iterations. A rigid case: converged, tension, error, y,
+// yaw, Q, z, roll, Y, My, Mz, Y_Q, left/right = {point, normal, angle, rolling_radius, normal_force, overlap, line}.
+void describe(const EquilibriumResult& result, FieldSink& out);
+void describe(const WheelResult& result, FieldSink& out);
+void describe(const RigidResult& result, FieldSink& out);
+// Case i of a sweep: its equilibrium, and `rigid` (a rigid case) when the sweep solved it.
+void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out);
 
 }  // namespace wrc

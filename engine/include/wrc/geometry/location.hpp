@@ -118,6 +118,16 @@ class PoseSearch {
   virtual void search(SearchContext& ctx, int side) = 0;
 };
 
+// A non-owning view of another search (e.g. one bound to a Lua state), for a workspace that must not own it.
+class SearchRef final : public PoseSearch {
+ public:
+  explicit SearchRef(PoseSearch& s) : s_(&s) {}
+  void search(SearchContext& ctx, int side) override { s_->search(ctx, side); }
+
+ private:
+  PoseSearch* s_;
+};
+
 // The strategies' pipelines run natively (used by tests and benchmarks, and by models built without Lua).
 struct NativePlan {
   bool coarse = false;  // coarse pre-search first, then the scan inside its windows

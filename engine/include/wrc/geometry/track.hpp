@@ -2,6 +2,7 @@
 // the rail profiles in the track frame, so that the centred, unrotated wheelset at z = 0 just touches.
 #pragma once
 
+#include "wrc/core/conventions.hpp"
 #include "wrc/profile/profile.hpp"
 
 #include <Eigen/Core>
@@ -10,9 +11,6 @@
 #include <vector>
 
 namespace wrc {
-
-enum Side : int { kLeft = 0, kRight = 1 };
-inline const char* side_name(int side) { return side == kLeft ? "left" : "right"; }
 
 struct TrackParams {
   double radius = 0.45;        // wheel nominal radius r0 at the tape circle (m)

@@ -3,6 +3,7 @@
 // validated Profile: units, extent check, mirrors, crop window, shift, then make_profile.
 #pragma once
 
+#include "wrc/core/options.hpp"
 #include "wrc/profile/profile.hpp"
 
 #include <optional>
@@ -43,6 +44,18 @@ struct LoadOptions {
   std::optional<std::string> name;        // overrides the profile's name
   std::vector<std::pair<std::string, std::string>> reader_options;
 };
+
+// Reads the options of wrc.profile.load and p:transform: mirror_y, mirror_z (booleans), name, kind, reader
+// (strings), units ("mm", "cm", "m", "in" or a number = metres per file unit), shift = {y =, z =} (m),
+// crop = {y = {min, max}, z = {min, max}} (m). With `geometric_only` (p:transform) reader and units are not
+// allowed and the reader is finished; otherwise every other key goes to the reader as text (checked by the host
+// against the reader's own options when it reads).
+LoadOptions read_load_options(OptionReader& options, bool geometric_only);
+
+// What a reader written in a scripting language returns: y, z (arrays, required; NaN kept for the host to report
+// with its line), lines (source line per point), kind, units (a name or metres per unit), name, transforms
+// (array of strings). Unknown keys are errors.
+RawProfile read_raw_profile(OptionReader& result);
 
 // Plausible total chord (sum of the chords between consecutive points) of a profile, metres. Outside this
 // range the units are probably wrong (a file in metres read as millimetres, or the reverse).

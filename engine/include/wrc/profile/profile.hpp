@@ -13,6 +13,9 @@ namespace wrc {
 
 enum class ProfileKind { wheel, rail };
 
+// The type name of a profile passed as an option value (OptionValue::object) and of the Lua userdata.
+inline constexpr const char* kProfileTypeName = "wrc.Profile";
+
 const char* to_string(ProfileKind kind);
 // "wheel" or "rail"; anything else is an error naming `context`.
 ProfileKind parse_profile_kind(std::string_view text, std::string_view context);

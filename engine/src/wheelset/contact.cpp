@@ -1,9 +1,10 @@
 // Patches -> potential contact areas -> normal problems -> forces (wheelset_contact.hpp).
-#include "wrc/contact/wheelset_contact.hpp"
+#include "wrc/wheelset/contact.hpp"
 
 #include "wrc/contact/interaction.hpp"
-#include "wrc/contact/wheel_surface.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/core/union_find.hpp"
 
 #include <Eigen/Geometry>
 
@@ -155,11 +156,6 @@ contact::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const P
   return fp;
 }
 
-int find_root(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 // h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point.
 struct LineProfile {
   double v = 0, u0 = 0;          // plane coordinates: v of the line, u of its point at x = 0
@@ -269,60 +265,42 @@ bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const P
   return true;
 }
 
-PatchContact solve_area(const ContactModel& model, const LocationState& st, int side, const std::vector<int>& group,
-                        const std::vector<std::vector<SegmentInfo>>& infos, ContactWorkspace& ws,
-                        const ContactRequest& request, std::vector<ContactWorkspace::Previous>& next_previous) {
-  const GeometryModel& g = model.geometry();
-  const ContactOptions& opt = model.options();
-  const PoseFrame& f = st.frame();
-  const WheelCones& wheel = g.side[side].wheel;
-  const RailLines& rail = g.side[side].rail;
-  const auto& patches = st.patches(side);
-
-  std::vector<SegmentInfo> all;
-  for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
-  const Plane pl = plane_of(all, patches[group.front()]);
-
-  PatchContact pc;
-  pc.side = side;
-  pc.patches = group;
-  pc.origin = pl.O;
-  pc.normal = pl.n;
-  pc.t1 = pl.t1;
-  pc.t2 = pl.t2;
-  pc.nominal = patches[group.front()].point;
-  const double sgn = side == kLeft ? 1.0 : -1.0;  // Patch::normal is the wheel's outward normal: -n into the wheel
-  pc.nominal_angle = std::atan2(sgn * patches[group.front()].normal.y(), -patches[group.front()].normal.z());
-  pc.segments = static_cast<int>(all.size());
-
-  // Grid: aligned with the plane origin, covering the projected segments plus the margin.
+// The potential contact area: a grid aligned with the plane origin covering the projected segments plus the margin.
+contact::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all, const Plane& pl, int side,
+                        const Pose& pose) {
   const double e = opt.element;
   const auto [umin, umax, vmin, vmax] = projected_bounds(all, pl);
-  int rmin = rail.count(), rmax = -1;
-  for (const auto& s : all) {
-    rmin = std::min(rmin, s.line);
-    rmax = std::max(rmax, s.line);
-  }
   const long i0 = static_cast<long>(std::floor(umin / e)) - opt.margin, i1 = static_cast<long>(std::ceil(umax / e)) + opt.margin;
   const long j0 = static_cast<long>(std::floor(vmin / e)) - opt.margin, j1 = static_cast<long>(std::ceil(vmax / e)) + opt.margin;
   const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
   if (nx * ny > opt.max_elements)
     fail("contact: the {} wheel's potential contact area needs {} x {} elements (more than max_elements = {}): "
          "the pose (y = {}, z = {}, roll = {}, yaw = {}) is far too deep",
-         side_name(side), nx, ny, opt.max_elements, st.pose().y, st.pose().z, st.pose().roll, st.pose().yaw);
+         side_name(side), nx, ny, opt.max_elements, pose.y, pose.z, pose.roll, pose.yaw);
   contact::Grid grid;
   grid.nx = static_cast<int>(nx);
   grid.ny = static_cast<int>(ny);
   grid.dx = grid.dy = e;
   grid.x0 = static_cast<double>(i0) * e;
   grid.y0 = static_cast<double>(j0) * e;
-  const double vlo = grid.y0, vhi = grid.y(grid.ny - 1);
+  return grid;
+}
 
-  // Rail lines across the grid's lateral range (one beyond each side when the rail has it).
+// The rail lines across the grid's lateral range (one beyond each side when the rail has it), projected on the
+// plane and ordered across it, each with its h(x): the arcs of its segments, or the arc through its deepest point.
+std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationState& st, int side,
+                                       const std::vector<SegmentInfo>& all, const Plane& pl, const contact::Grid& grid) {
+  const WheelCones& wheel = g.side[side].wheel;
+  const RailLines& rail = g.side[side].rail;
+  int rmin = rail.count(), rmax = -1;
+  for (const auto& s : all) {
+    rmin = std::min(rmin, s.line);
+    rmax = std::max(rmax, s.line);
+  }
   auto v_of = [&](int r) { return (Eigen::Vector3d(0, rail.y[r], rail.z[r]) - pl.O).dot(pl.t2); };
   int rlo = rmin, rhi = rmax;
-  while (rlo > 0 && v_of(rlo) > vlo) --rlo;
-  while (rhi < rail.count() - 1 && v_of(rhi) < vhi) ++rhi;
+  while (rlo > 0 && v_of(rlo) > grid.y0) --rlo;
+  while (rhi < rail.count() - 1 && v_of(rhi) < grid.y(grid.ny - 1)) ++rhi;
   std::vector<LineProfile> lines(static_cast<std::size_t>(rhi - rlo + 1));
   for (int r = rlo; r <= rhi; ++r) {
     LineProfile& lp = lines[static_cast<std::size_t>(r - rlo)];
@@ -334,30 +312,32 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   for (int r = rlo; r <= rhi; ++r) {
     LineProfile& lp = lines[static_cast<std::size_t>(r - rlo)];
     if (!lp.arcs.empty()) continue;
-    const LineApproach a = line_approach(wheel, f, rail.y[r], rail.z[r]);
+    const LineApproach a = line_approach(wheel, st.frame(), rail.y[r], rail.z[r]);
     const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
     lp.R = arc_radius(sp, st.pose().yaw);
     lp.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
     lp.x_apex = a.x;
   }
   // The projected lines must be ordered across the plane (they are, unless the plane is far off the rail).
-  std::vector<int> order(lines.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return lines[a].v < lines[b].v; });
-  std::vector<double> vs(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) vs[k] = lines[order[k]].v;
+  std::stable_sort(lines.begin(), lines.end(), [](const LineProfile& a, const LineProfile& b) { return a.v < b.v; });
+  return lines;
+}
 
+// h at the element centres: along each projected line its arcs, linear in v between the two lines bracketing
+// the element.
+std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, const Plane& pl, const contact::Grid& grid) {
+  std::vector<double> vs(lines.size());
+  for (std::size_t k = 0; k < lines.size(); ++k) vs[k] = lines[k].v;
   const double t1x = pl.t1.x();  // u = x t1x + u0 along a line
-  std::vector<double>& h = pc.h;
-  h.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  std::vector<double> h(static_cast<std::size_t>(grid.size()), 0.0);
   for (int j = 0; j < grid.ny; ++j) {
     const double v = grid.y(j);
     const auto it = std::upper_bound(vs.begin(), vs.end(), v);
     std::size_t b = static_cast<std::size_t>(it - vs.begin());
     const std::size_t a = b == 0 ? 0 : b - 1;
     b = std::min(b, vs.size() - 1);
-    const LineProfile& la = lines[order[a]];
-    const LineProfile& lb = lines[order[b]];
+    const LineProfile& la = lines[a];
+    const LineProfile& lb = lines[b];
     const double t = (a == b || lb.v == la.v) ? 0.0 : std::clamp((v - la.v) / (lb.v - la.v), 0.0, 1.0);
     for (int i = 0; i < grid.nx; ++i) {
       const double u = grid.x(i);
@@ -366,80 +346,138 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
       h[static_cast<std::size_t>(grid.index(i, j))] = (1 - t) * ha + t * hb;
     }
   }
+  return h;
+}
 
-  const contact::NormalLoad load = contact::NormalLoad::penetration();
+// The located patches of a group and their segments, copied (the result must not depend on the workspace).
+void copy_located(const LocationState& st, int side, const std::vector<int>& group, PatchContact& pc) {
+  const auto& patches = st.patches(side);
+  const auto& segs = st.segments(side);
+  for (int p : group) {
+    Patch patch = patches[static_cast<std::size_t>(p)];
+    const int first = static_cast<int>(pc.segments.size());
+    pc.segments.insert(pc.segments.end(), segs.begin() + patch.first_segment,
+                       segs.begin() + patch.first_segment + patch.segment_count);
+    patch.longest += first - patch.first_segment;
+    patch.first_segment = first;
+    pc.located.push_back(patch);
+  }
+}
+
+// Forces, moments and the measures of a solved area.
+void area_results(const WheelCones& wheel, const PoseFrame& f, PatchContact& pc) {
+  const contact::NormalSolution& sol = pc.solution;
+  pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
+  pc.regions = contact_regions(sol);
+  const Eigen::Vector3d c(0, f.y, f.z);
+  pc.normal_force = sol.force;
+  pc.force = sol.force * pc.normal;
+  pc.point = pc.origin + sol.cop_x * pc.t1 + sol.cop_y * pc.t2;
+  pc.moment = (pc.point - c).cross(pc.force);
+  pc.angle = contact_angle(pc.side, pc.normal);
+  pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
+}
+
+PatchContact solve_area(const ContactModel& model, const LocationState& st, int side, const std::vector<int>& group,
+                        const std::vector<std::vector<SegmentInfo>>& infos, ContactWorkspace& ws,
+                        const ContactRequest& request, std::vector<ContactWorkspace::Previous>& next_previous) {
+  const GeometryModel& g = model.geometry();
+  const ContactOptions& opt = model.options();
+  std::vector<SegmentInfo> all;
+  for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
+  const Patch& first = st.patches(side)[static_cast<std::size_t>(group.front())];
+  const Plane pl = plane_of(all, first);
+
+  PatchContact pc;
+  pc.side = side;
+  copy_located(st, side, group, pc);
+  pc.origin = pl.O;
+  pc.normal = pl.n;
+  pc.t1 = pl.t1;
+  pc.t2 = pl.t2;
+  pc.nominal = first.point;
+  pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
+
+  const contact::Grid grid = area_grid(opt, all, pl, side, st.pose());
+  pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
+
   contact::NormalOptions nopt = opt.normal;
   if (request.tolerance > 0) nopt.tolerance = request.tolerance;
   std::vector<double> start;
   if (ws.warm_start && warm_start(ws.previous[side], pl, grid, start)) nopt.initial_pressure = start;
-  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
-                          : model.solver().solve(grid, h, load, ws.normal, nopt);
-  pc.penetration = *std::max_element(h.begin(), h.end());
-  pc.regions = contact_regions(pc.solution);
-  const contact::NormalSolution& sol = pc.solution;
-  const Eigen::Vector3d c(0, f.y, f.z);
-  pc.normal_force = sol.force;
-  pc.force = sol.force * pl.n;
-  pc.point = pl.O + sol.cop_x * pl.t1 + sol.cop_y * pl.t2;
-  pc.moment = (pc.point - c).cross(pc.force);
-  const double sign = side == kLeft ? 1.0 : -1.0;
-  pc.angle = std::atan2(-sign * pl.n.y(), pl.n.z());
-  pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
-
+  const contact::NormalLoad load = contact::NormalLoad::penetration();
+  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
+                          : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
+  area_results(g.side[side].wheel, st.frame(), pc);
   if (request.sensitivity) area_sensitivity(model, st.pose(), pc, ws);
-  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, sol.grid, sol.pressure});
+  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure});
   return pc;
+}
+
+// The areas of one wheel that are solved together: patches whose separate solutions would interact (and whose
+// planes are close enough for one plane to serve them), as groups of patch indices.
+std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::vector<std::vector<SegmentInfo>>& infos,
+                                          const std::vector<Plane>& planes) {
+  const ContactOptions& opt = model.options();
+  const int np = static_cast<int>(infos.size());
+  UnionFind sets(np);
+  for (int a = 0; a < np; ++a)
+    for (int b = a + 1; b < np; ++b) {
+      if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > opt.merge_angle) continue;
+      const auto fa = footprint(infos[a], planes[a], planes[a], opt.element);
+      const auto fb = footprint(infos[b], planes[b], planes[a], opt.element);
+      if (contact::patches_interact(model.material(), fa, fb, opt.merge_tolerance)) sets.unite(a, b);
+    }
+  std::map<int, std::vector<int>> groups;
+  for (int p = 0; p < np; ++p) groups[sets.find(p)].push_back(p);
+  std::vector<std::vector<int>> out;
+  for (auto& [root, group] : groups) out.push_back(std::move(group));
+  return out;
+}
+
+WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& st, int side, ContactWorkspace& ws,
+                               const ContactRequest& request) {
+  const auto& patches = st.patches(side);
+  const std::size_t np = patches.size();
+  std::vector<std::vector<SegmentInfo>> infos(np);
+  std::vector<Plane> planes;
+  for (std::size_t p = 0; p < np; ++p) {
+    collect_segments(model.geometry(), st, side, patches[p], infos[p]);
+    planes.push_back(plane_of(infos[p], patches[p]));
+  }
+  WheelContact wc;
+  double rr = 0, N = 0;
+  std::vector<ContactWorkspace::Previous> next_previous;
+  for (const auto& group : area_groups(model, infos, planes)) {
+    PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
+    wc.force += pc.force;
+    wc.moment += pc.moment;
+    wc.sensitivity += pc.sensitivity;
+    rr += pc.rolling_radius * pc.normal_force;
+    N += pc.normal_force;
+    wc.patches.push_back(std::move(pc));
+  }
+  ws.previous[side] = std::move(next_previous);
+  wc.rolling_radius = N > 0 ? rr / N : 0.0;
+  wc.angle = N > 0 ? contact_angle(side, wc.force) : 0.0;
+  return wc;
 }
 
 }  // namespace
 
+void ContactWorkspace::forget() {
+  for (auto& p : previous) p.clear();
+}
+
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,
                                const ContactRequest& request) {
   const LocationState& st = ws.locator.locate(pose);
-  const GeometryModel& g = model.geometry();
-  const ContactOptions& opt = model.options();
   ContactResult res;
   res.pose = pose;
   for (int side : {kLeft, kRight}) {
     if (request.only_side >= 0 && request.only_side != side) continue;
-    const auto& patches = st.patches(side);
-    const int np = static_cast<int>(patches.size());
-    std::vector<std::vector<SegmentInfo>> infos(static_cast<std::size_t>(np));
-    std::vector<Plane> planes;
-    for (int p = 0; p < np; ++p) {
-      collect_segments(g, st, side, patches[p], infos[p]);
-      planes.push_back(plane_of(infos[p], patches[p]));
-    }
-    // Merge areas that interact (and share a plane closely enough).
-    std::vector<int> parent(static_cast<std::size_t>(np));
-    std::iota(parent.begin(), parent.end(), 0);
-    for (int a = 0; a < np; ++a)
-      for (int b = a + 1; b < np; ++b) {
-        if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > opt.merge_angle) continue;
-        const auto fa = footprint(infos[a], planes[a], planes[a], opt.element);
-        const auto fb = footprint(infos[b], planes[b], planes[a], opt.element);
-        if (contact::patches_interact(model.material(), fa, fb, opt.merge_tolerance))
-          parent[find_root(parent, b)] = find_root(parent, a);
-      }
-    std::map<int, std::vector<int>> groups;
-    for (int p = 0; p < np; ++p) groups[find_root(parent, p)].push_back(p);
-
     WheelContact& wc = res.wheel[side];
-    double rr = 0, N = 0;
-    std::vector<ContactWorkspace::Previous> next_previous;
-    for (const auto& [root, group] : groups) {
-      PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
-      wc.force += pc.force;
-      wc.moment += pc.moment;
-      wc.sensitivity += pc.sensitivity;
-      rr += pc.rolling_radius * pc.normal_force;
-      N += pc.normal_force;
-      wc.patches.push_back(std::move(pc));
-    }
-    ws.previous[side] = std::move(next_previous);
-    wc.rolling_radius = N > 0 ? rr / N : 0.0;
-    const double sign = side == kLeft ? 1.0 : -1.0;
-    wc.angle = N > 0 ? std::atan2(-sign * wc.force.y(), wc.force.z()) : 0.0;
+    wc = solve_wheel_areas(model, st, side, ws, request);
     res.force += wc.force;
     res.moment += wc.moment;
     res.sensitivity += wc.sensitivity;
@@ -467,6 +505,97 @@ void drop_grids(ContactResult& result) {
       pc.solution.pressure = {};
       pc.solution.gap = {};
     }
+}
+
+// ---- results as fields ----
+
+void describe(const PatchContact& pc, FieldSink& out) {
+  if (!pc.located.empty()) describe_patch_fields(pc.located.front(), out);
+  else out.string("side", side_name(pc.side));
+  out.begin_list("segments", pc.segments.size());
+  for (const Segment& s : pc.segments) {
+    out.item();
+    describe(s, out);
+    out.end();
+  }
+  out.end();
+  const contact::NormalSolution& s = pc.solution;
+  out.integer("merged", static_cast<long long>(pc.located.size()));
+  out.number("normal_force", pc.normal_force);
+  out.vec3("force", pc.force);
+  out.vec3("moment", pc.moment);
+  out.vec3("point", pc.point);
+  out.vec3("normal", pc.normal);
+  out.number("angle", pc.angle);
+  out.number("nominal_angle", pc.nominal_angle);
+  out.number("area", s.area);
+  out.number("pmax", s.max_pressure);
+  out.integer("elements", s.elements_in_contact);
+  out.integer("regions", pc.regions);
+  out.number("penetration", pc.penetration);
+  out.number("rolling_radius", pc.rolling_radius);
+  out.integer("iterations", s.iterations);
+  out.number("complementarity", s.residual.relative);
+  out.begin("frame");  // the contact plane: grid coordinates (u, v) are at origin + u t1 + v t2
+  out.vec3("origin", pc.origin);
+  out.vec3("t1", pc.t1);
+  out.vec3("t2", pc.t2);
+  out.end();
+  out.begin("grid");
+  out.integer("nx", s.grid.nx);
+  out.integer("ny", s.grid.ny);
+  out.number("dx", s.grid.dx);
+  out.number("dy", s.grid.dy);
+  out.number("x0", s.grid.x0);
+  out.number("y0", s.grid.y0);
+  out.end();
+  if (!s.pressure.empty()) out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny);
+  if (!pc.h.empty()) out.grid("h", pc.h.data(), s.grid.nx, s.grid.ny);
+}
+
+void describe(const WheelContact& wc, FieldSink& out) {
+  out.boolean("lifted", !(wc.force.z() > 0));  // the wheel carries no load
+  out.vec3("force", wc.force);
+  out.vec3("moment", wc.moment);
+  out.number("angle", wc.angle);
+  out.number("rolling_radius", wc.rolling_radius);
+  out.begin_list("patches", wc.patches.size());
+  for (const PatchContact& pc : wc.patches) {
+    out.item();
+    describe(pc, out);
+    out.end();
+  }
+  out.end();
+}
+
+void describe_sensitivity(const Sensitivity& S, FieldSink& out) {
+  out.begin("sensitivity");
+  for (int col = 0; col < 2; ++col) {
+    const double v[6] = {S(0, col), S(1, col), S(2, col), S(3, col), S(4, col), S(5, col)};
+    out.numbers(col == 0 ? "z" : "roll", v, 6);
+  }
+  out.end();
+}
+
+void describe(const Pose& p, FieldSink& out) {
+  out.begin("pose");
+  out.number("y", p.y);
+  out.number("z", p.z);
+  out.number("roll", p.roll);
+  out.number("yaw", p.yaw);
+  out.end();
+}
+
+void describe(const ContactResult& c, FieldSink& out, bool sensitivity) {
+  if (sensitivity) describe_sensitivity(c.sensitivity, out);
+  for (int s : {kLeft, kRight}) {
+    out.begin(side_name(s));
+    describe(c.wheel[s], out);
+    out.end();
+  }
+  out.vec3("force", c.force);
+  out.vec3("moment", c.moment);
+  describe(c.pose, out);
 }
 
 }  // namespace wrc

@@ -1,4 +1,4 @@
-// From the inter-penetration patches of a wheelset pose to forces (paper section 3, DESIGN.md section 3):
+// From the inter-penetration patches of a wheelset pose to forces (paper section 3, docs/design.md section 3):
 // contact plane, potential contact area, undeformed distance h, Kalker's normal problem per area, and the
 // resulting forces and moments on the wheelset.
 //
@@ -24,6 +24,7 @@
 #pragma once
 
 #include "wrc/contact/normal.hpp"
+#include "wrc/core/fields.hpp"
 #include "wrc/geometry/location.hpp"
 
 #include <Eigen/Core>
@@ -50,7 +51,8 @@ using Sensitivity = Eigen::Matrix<double, 6, 2>;
 // One potential contact area (one or more merged inter-penetration patches of one wheel) and its solution.
 struct PatchContact {
   int side = kLeft;
-  std::vector<int> patches;            // indices in LocationState::patches(side)
+  std::vector<Patch> located;          // the inter-penetration patches of the area (copied from the location;
+  std::vector<Segment> segments;       // Patch::first_segment indexes `segments`)
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // contact plane (track frame, m)
   Eigen::Vector3d t1 = Eigen::Vector3d::UnitX();     // first axis (rolling direction), grid x
   Eigen::Vector3d t2 = Eigen::Vector3d::UnitY();     // second axis (lateral), grid y
@@ -66,7 +68,6 @@ struct PatchContact {
   double angle = 0;                    // contact angle (rad): normal vs z, > 0 tilted toward the track centre
   double rolling_radius = 0;           // wheel radius at the centre of pressure (m)
   double penetration = 0;              // max h (m)
-  int segments = 0;                    // inter-penetration segments of the area
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
                                        // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
                                        // inter-penetration area holds
@@ -123,6 +124,9 @@ class ContactWorkspace {
   };
   std::array<std::vector<Previous>, 2> previous;  // per side, the areas of the last evaluation
   bool warm_start = true;                         // use them (off to measure what it gains)
+  // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
+  // the workspace did before (every top-level operation and every chain of a sweep starts so).
+  void forget();
 };
 
 struct ContactRequest {
@@ -141,5 +145,21 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& workspace);
 // Releases the pressure, gap and h grids of a result.
 void drop_grids(ContactResult& result);
+
+// The results as fields (the Lua tables, the C API's paths). A wheel: lifted, force, moment, angle,
+// rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
+// force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
+// iterations, complementarity, frame, grid, and the pressure and h grids when kept.
+void describe(const PatchContact& area, FieldSink& out);
+void describe(const WheelContact& wheel, FieldSink& out);
+// With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.
+void describe(const ContactResult& result, FieldSink& out, bool sensitivity = false);
+void describe_sensitivity(const Sensitivity& s, FieldSink& out);
+void describe(const Pose& pose, FieldSink& out);  // pose = {y, z, roll, yaw}
+// The fields of a located patch (side, nominal_point, nominal_normal, wheel_point, cone, eps, wheel_radius, depth,
+// first_line, last_line, longest; 1-based indices) without its segments, and one segment (line, y, z, x_t, x_l,
+// cones).
+void describe_patch_fields(const Patch& patch, FieldSink& out);
+void describe(const Segment& segment, FieldSink& out);
 
 }  // namespace wrc

@@ -1,4 +1,4 @@
-#include "wrc/contact/wheel_surface.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,101 @@
+// Named options as the engine reads them, whoever supplies them: a Lua table (the binding converts it), a C
+// string "key=value key2=value2" (the C API), or C++ code building them. One reader checks every key, type and
+// range and names what is wrong, so the same call gets the same message from Lua, C and Python.
+#pragma once
+
+#include "wrc/core/error.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace wrc {
+
+struct OptionTable;
+
+// One value: a number, a boolean, a string, an array (of values), a table (named values) or an engine object
+// (e.g. a profile) with the name of its type.
+struct OptionValue {
+  enum class Type { number, boolean, string, array, table, object };
+  Type type = Type::number;
+  double number = 0;
+  bool boolean = false;
+  std::string string;                    // the string, or the object's type name ("wrc.Profile")
+  std::vector<OptionValue> array;
+  std::shared_ptr<const OptionTable> table;
+  std::shared_ptr<const void> object;
+
+  static OptionValue of(double v);
+  static OptionValue of(bool v);
+  static OptionValue of(std::string v);
+  static OptionValue of(std::vector<OptionValue> v);
+  static OptionValue of(OptionTable t);
+  static OptionValue of_object(std::shared_ptr<const void> p, std::string type);
+  const char* type_name() const;  // "number", "boolean", "string", "array", "table" or the object's type
+};
+
+// Named values in the order given.
+struct OptionTable {
+  std::vector<std::pair<std::string, OptionValue>> entries;
+  const OptionValue* find(std::string_view key) const;
+  OptionTable& set(std::string key, OptionValue v);  // replaces an entry of the same key
+  bool empty() const { return entries.empty(); }
+};
+
+// Parses "key=value key2=value2" (blanks or ';' between pairs; a value is a number, true/false, a list of numbers
+// "a,b,c", or a string; dotted keys "shift.y=1e-3" make nested tables). Errors name `context` and the pair.
+OptionTable parse_option_text(std::string_view text, std::string_view context);
+
+// Reads an OptionTable, remembering which keys were asked for; finish() rejects the others, naming the closest
+// known key (a typo such as 'raduis' for 'radius'). Every getter checks the type and that numbers are finite.
+class OptionReader {
+ public:
+  OptionReader(const OptionTable& table, std::string context);
+  const std::string& context() const { return context_; }
+  bool has(std::string_view key);  // present (and counted as known)
+  const OptionValue* value(std::string_view key);  // nullptr when absent
+
+  std::optional<double> number(std::string_view key);
+  double number(std::string_view key, double fallback) { return number(key).value_or(fallback); }
+  double need_number(std::string_view key);
+  // A whole number in [lo, hi].
+  std::optional<int> integer(std::string_view key, int lo, int hi);
+  std::optional<bool> boolean(std::string_view key);
+  std::optional<std::string> string(std::string_view key);
+  // One of `choices`; the message lists them.
+  std::optional<std::string> choice(std::string_view key, std::initializer_list<std::string_view> choices);
+  // An array of finite numbers (a single number counts as an array of one). With finite = false, NaN and
+  // infinities are kept (for the caller to report with more context).
+  std::optional<std::vector<double>> numbers(std::string_view key, bool finite = true);
+  // An array of strings.
+  std::optional<std::vector<std::string>> strings(std::string_view key);
+  // A list of numbers: an array, a single number, or a table {from =, to =, step =} (inclusive; the step's sign
+  // follows from and to). At most max_count values.
+  std::optional<std::vector<double>> number_list(std::string_view key, std::size_t max_count = 1000000);
+  // A nested table (nullopt when absent); its reader's context is "<context>: <key>".
+  std::optional<OptionReader> table(std::string_view key);
+  // An engine object of the given type name.
+  std::shared_ptr<const void> object(std::string_view key, std::string_view type);
+
+  // Declares keys as known without reading them (handled elsewhere, e.g. by the binding).
+  void allow(std::initializer_list<std::string_view> keys);
+  // The entries never asked for, in the order given (options passed on to someone else, e.g. a reader plugin).
+  std::vector<const std::pair<std::string, OptionValue>*> rest() const;
+  // Throws for a key that was never asked for: "<context>: unknown key 'raduis' (did you mean 'radius'?
+  // expected one of: ...)". A nested reader (table()) is finished by whoever reads it.
+  void finish() const;
+
+ private:
+  [[noreturn]] void type_error(std::string_view key, const OptionValue& v, std::string_view expected) const;
+  const OptionTable& table_;
+  std::string context_;
+  std::vector<std::string> known_;
+};
+
+// The entry of `known` closest to `key` by edit distance, or "" when none is plausibly a typo of it.
+std::string closest_name(std::string_view key, const std::vector<std::string>& known);
+
+}  // namespace wrc

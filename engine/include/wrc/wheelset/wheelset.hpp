@@ -1,0 +1,102 @@
+// The wheelset model (docs/design.md, section 4): profiles placed on the track, discretised by a location
+// strategy, with the material and the normal-contact options -- made once by build_wheelset and then shared,
+// read-only, by every thread. Per-thread state lives in a ContactWorkspace (wheelset/contact.hpp) made by
+// make_workspace(): the model/data split of MuJoCo.
+//
+// The operations are engine functions on the model (contact_model()): evaluate_contact (wheelset/contact.hpp),
+// solve_wheel, solve_equilibrium, solve_rigid, run_sweep (equilibrium/equilibrium.hpp), and locate below.
+#pragma once
+
+#include "wrc/core/fields.hpp"
+#include "wrc/core/options.hpp"
+#include "wrc/geometry/strategy.hpp"
+#include "wrc/wheelset/contact.hpp"
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace wrc {
+
+// Every parameter of a wheelset with its default: the one definition of the defaults, used by wrc.wheelset{} in
+// Lua, by the C API and by C++ callers.
+struct WheelsetParams {
+  TrackParams track;            // radius 0.45 m, back_to_back 1.360 m, tape_offset 0.070 m, gauge 1.435 m,
+                                // gauge_depth 0.014 m, cant 1/40 (track.hpp)
+  contact::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (contact/material.hpp)
+  ContactOptions contact;       // grid 0.2 mm, margin 2 elements, tolerance 1e-8, merge_tolerance 0.01,
+                                // merge_angle 0.26 rad, the fast solver (wheelset/contact.hpp)
+  // The location strategy: "accurate" (the profiles every 0.1 mm along the arc, coarse pre-search, topology walk).
+  // The constant-slope wheel of "fast" stripes the pressure of near-conformal contacts (S1002/60E1 at y = 0), and
+  // the search is a small part of an evaluation beside the normal problems.
+  std::string strategy = "accurate";
+};
+
+// Reads wrc.wheelset{}'s keys over the defaults: radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E,
+// nu, grid, margin, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), strategy (a name). Range
+// checks happen when the wheelset is built. Does not finish() the reader (the caller may read more keys).
+WheelsetParams read_wheelset_params(OptionReader& options);
+// The parameters as fields (wrc.defaults, ws.params).
+void describe(const WheelsetParams& params, FieldSink& out);
+
+// The four profiles, indexed by Side, each in its own left-side frame (the right side is mirrored when placed).
+struct WheelsetProfiles {
+  std::array<Profile, 2> wheel, rail;
+};
+// Reads them from `wheel` / `rail` (both sides) or `left_wheel`, `right_wheel`, `left_rail`, `right_rail`
+// (objects of type kProfileTypeName).
+WheelsetProfiles read_wheelset_profiles(OptionReader& options);
+// Reads a pose {y, z, roll, yaw} (m, rad; each 0 when absent).
+Pose read_pose(OptionReader& options);
+
+class Wheelset {
+ public:
+  Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
+           std::shared_ptr<const LocationStrategy> strategy);
+  const WheelsetParams& params() const { return params_; }
+  const Track& track() const { return *track_; }
+  const GeometryModel& geometry() const { return *geometry_; }
+  const ContactModel& contact_model() const { return *contact_; }
+  const std::shared_ptr<const GeometryModel>& geometry_ptr() const { return geometry_; }
+  const std::shared_ptr<const ContactModel>& contact_model_ptr() const { return contact_; }
+  const LocationStrategy& strategy() const { return *strategy_; }
+  // A workspace for the calling thread, with the strategy's search for that thread.
+  std::unique_ptr<ContactWorkspace> make_workspace() const;
+  // A workspace using `search` (not owned; it must outlive the workspace), e.g. a search bound to a Lua state.
+  std::unique_ptr<ContactWorkspace> make_workspace_with(PoseSearch& search) const;
+
+ private:
+  WheelsetParams params_;
+  std::shared_ptr<const LocationStrategy> strategy_;
+  std::shared_ptr<const Track> track_;
+  std::shared_ptr<const GeometryModel> geometry_;
+  std::shared_ptr<const ContactModel> contact_;
+};
+
+// Places the profiles, discretises them with `strategy` and builds the contact model. Throws wrc::Error naming
+// what is wrong (a parameter out of range, a profile of the wrong kind, profiles that do not meet, ...).
+std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
+                                               std::shared_ptr<const LocationStrategy> strategy);
+// The same with the built-in strategy params.strategy names (native_strategy).
+std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params = {});
+
+// The inter-penetration areas at a pose, as a value (ws:locate).
+struct SideLocation {
+  std::vector<Patch> patches;      // Patch::first_segment indexes `segments`
+  std::vector<Segment> segments;
+  SearchCounters counters;
+  int grazes = 0;                  // graze crossings dropped (location.hpp)
+};
+struct LocateResult {
+  Pose pose;
+  std::array<SideLocation, 2> side;
+};
+// Locates with the workspace's search (or `search` when given, e.g. brute force for a check).
+LocateResult locate(const Wheelset& wheelset, const Pose& pose, ContactWorkspace& workspace);
+LocateResult locate_with(const Wheelset& wheelset, const Pose& pose, PoseSearch& search);
+void describe(const LocateResult& result, FieldSink& out);
+// One located patch (side, nominal point and normal, wheel point, cone, eps, ..., segments) and one segment.
+void describe(const Patch& patch, const std::vector<Segment>& segments, FieldSink& out);
+void describe(const Segment& segment, FieldSink& out);
+
+}  // namespace wrc

@@ -1,0 +1,325 @@
+#include "wrc/core/options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace wrc {
+
+OptionValue OptionValue::of(double v) {
+  OptionValue o;
+  o.type = Type::number;
+  o.number = v;
+  return o;
+}
+
+OptionValue OptionValue::of(bool v) {
+  OptionValue o;
+  o.type = Type::boolean;
+  o.boolean = v;
+  return o;
+}
+
+OptionValue OptionValue::of(std::string v) {
+  OptionValue o;
+  o.type = Type::string;
+  o.string = std::move(v);
+  return o;
+}
+
+OptionValue OptionValue::of(std::vector<OptionValue> v) {
+  OptionValue o;
+  o.type = Type::array;
+  o.array = std::move(v);
+  return o;
+}
+
+OptionValue OptionValue::of(OptionTable t) {
+  OptionValue o;
+  o.type = Type::table;
+  o.table = std::make_shared<const OptionTable>(std::move(t));
+  return o;
+}
+
+OptionValue OptionValue::of_object(std::shared_ptr<const void> p, std::string type) {
+  OptionValue o;
+  o.type = Type::object;
+  o.object = std::move(p);
+  o.string = std::move(type);
+  return o;
+}
+
+const char* OptionValue::type_name() const {
+  switch (type) {
+    case Type::number: return "number";
+    case Type::boolean: return "boolean";
+    case Type::string: return "string";
+    case Type::array: return "array";
+    case Type::table: return "table";
+    case Type::object: return string.c_str();
+  }
+  return "?";
+}
+
+const OptionValue* OptionTable::find(std::string_view key) const {
+  for (const auto& [k, v] : entries)
+    if (k == key) return &v;
+  return nullptr;
+}
+
+OptionTable& OptionTable::set(std::string key, OptionValue v) {
+  for (auto& [k, old] : entries)
+    if (k == key) {
+      old = std::move(v);
+      return *this;
+    }
+  entries.emplace_back(std::move(key), std::move(v));
+  return *this;
+}
+
+namespace {
+
+bool parse_double(std::string_view s, double& out) {
+  if (s.empty()) return false;
+  const std::string t(s);
+  char* end = nullptr;
+  out = std::strtod(t.c_str(), &end);
+  return end == t.c_str() + t.size();
+}
+
+OptionValue parse_scalar_or_list(std::string_view text) {
+  double d = 0;
+  if (text == "true" || text == "false") return OptionValue::of(text == "true");
+  if (parse_double(text, d)) return OptionValue::of(d);
+  if (text.find(',') != std::string_view::npos) {
+    std::vector<OptionValue> list;
+    std::size_t start = 0;
+    bool numeric = true;
+    while (numeric && start <= text.size()) {
+      const std::size_t comma = std::min(text.find(',', start), text.size());
+      numeric = parse_double(text.substr(start, comma - start), d);
+      list.push_back(OptionValue::of(d));
+      start = comma + 1;
+    }
+    if (numeric) return OptionValue::of(std::move(list));
+  }
+  return OptionValue::of(std::string(text));
+}
+
+// Sets a dotted key ("shift.y") in nested tables.
+void set_path(OptionTable& t, std::string_view key, OptionValue v, std::string_view context) {
+  const std::size_t dot = key.find('.');
+  if (dot == std::string_view::npos) {
+    t.set(std::string(key), std::move(v));
+    return;
+  }
+  const std::string head(key.substr(0, dot));
+  OptionTable sub;
+  if (const OptionValue* old = t.find(head)) {
+    if (old->type != OptionValue::Type::table) fail("{}: '{}' is both a value and a table", context, head);
+    sub = *old->table;
+  }
+  set_path(sub, key.substr(dot + 1), std::move(v), context);
+  t.set(head, OptionValue::of(std::move(sub)));
+}
+
+}  // namespace
+
+OptionTable parse_option_text(std::string_view text, std::string_view context) {
+  OptionTable t;
+  std::size_t i = 0;
+  auto is_sep = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ';'; };
+  while (i < text.size()) {
+    while (i < text.size() && is_sep(text[i])) ++i;
+    if (i >= text.size()) break;
+    std::size_t j = i;
+    while (j < text.size() && !is_sep(text[j])) ++j;
+    const std::string_view pair = text.substr(i, j - i);
+    const std::size_t eq = pair.find('=');
+    if (eq == std::string_view::npos || eq == 0 || pair.front() == '.' || pair[eq - 1] == '.')
+      fail("{}: '{}' is not a key=value pair", context, pair);
+    set_path(t, pair.substr(0, eq), parse_scalar_or_list(pair.substr(eq + 1)), context);
+    i = j;
+  }
+  return t;
+}
+
+std::string closest_name(std::string_view key, const std::vector<std::string>& known) {
+  auto distance = [](std::string_view a, std::string_view b) {  // Levenshtein, one row
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diag = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diag = up;
+      }
+    }
+    return row[b.size()];
+  };
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(2, key.size() / 3) + 1;  // more edits than that: not a typo
+  for (const auto& k : known) {
+    const std::size_t d = distance(key, k);
+    if (d < best_d) {
+      best_d = d;
+      best = k;
+    }
+  }
+  return best;
+}
+
+OptionReader::OptionReader(const OptionTable& table, std::string context)
+    : table_(table), context_(std::move(context)) {}
+
+const OptionValue* OptionReader::value(std::string_view key) {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+  return table_.find(key);
+}
+
+bool OptionReader::has(std::string_view key) { return value(key) != nullptr; }
+
+void OptionReader::allow(std::initializer_list<std::string_view> keys) {
+  for (auto k : keys) value(k);
+}
+
+void OptionReader::type_error(std::string_view key, const OptionValue& v, std::string_view expected) const {
+  fail("{}: '{}' must be {}, got {}", context_, key, expected, v.type_name());
+}
+
+std::optional<double> OptionReader::number(std::string_view key) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  if (v->type != OptionValue::Type::number) type_error(key, *v, "a number");
+  if (!std::isfinite(v->number)) fail("{}: '{}' must be finite, got {}", context_, key, v->number);
+  return v->number;
+}
+
+double OptionReader::need_number(std::string_view key) {
+  const auto v = number(key);
+  if (!v) fail("{}: '{}' is required (a number)", context_, key);
+  return *v;
+}
+
+std::optional<int> OptionReader::integer(std::string_view key, int lo, int hi) {
+  const auto v = number(key);
+  if (!v) return std::nullopt;
+  if (*v != std::floor(*v) || *v < lo || *v > hi)
+    fail("{}: '{}' must be a whole number in {}..{}, got {}", context_, key, lo, hi, *v);
+  return static_cast<int>(*v);
+}
+
+std::optional<bool> OptionReader::boolean(std::string_view key) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  if (v->type != OptionValue::Type::boolean) type_error(key, *v, "a boolean");
+  return v->boolean;
+}
+
+std::optional<std::string> OptionReader::string(std::string_view key) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  if (v->type != OptionValue::Type::string) type_error(key, *v, "a string");
+  return v->string;
+}
+
+std::optional<std::string> OptionReader::choice(std::string_view key, std::initializer_list<std::string_view> choices) {
+  auto s = string(key);
+  if (!s) return s;
+  std::string list;
+  for (auto c : choices) {
+    if (*s == c) return s;
+    list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+  }
+  fail("{}: '{}' must be one of {}, got \"{}\"", context_, key, list, *s);
+}
+
+std::optional<std::vector<double>> OptionReader::numbers(std::string_view key, bool finite) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  if (v->type == OptionValue::Type::number && !finite) return std::vector<double>{v->number};
+  if (v->type == OptionValue::Type::number) return std::vector<double>{*number(key)};
+  if (v->type != OptionValue::Type::array) type_error(key, *v, "an array of numbers");
+  std::vector<double> out;
+  out.reserve(v->array.size());
+  for (std::size_t i = 0; i < v->array.size(); ++i) {
+    const OptionValue& e = v->array[i];
+    if (e.type != OptionValue::Type::number)
+      fail("{}: '{}'[{}] must be a number, got {}", context_, key, i + 1, e.type_name());
+    if (finite && !std::isfinite(e.number)) fail("{}: '{}'[{}] must be finite, got {}", context_, key, i + 1, e.number);
+    out.push_back(e.number);
+  }
+  return out;
+}
+
+std::optional<std::vector<std::string>> OptionReader::strings(std::string_view key) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  if (v->type != OptionValue::Type::array) type_error(key, *v, "an array of strings");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < v->array.size(); ++i) {
+    if (v->array[i].type != OptionValue::Type::string)
+      fail("{}: '{}'[{}] must be a string, got {}", context_, key, i + 1, v->array[i].type_name());
+    out.push_back(v->array[i].string);
+  }
+  return out;
+}
+
+std::optional<std::vector<double>> OptionReader::number_list(std::string_view key, std::size_t max_count) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  std::vector<double> out;
+  if (v->type == OptionValue::Type::table) {
+    OptionReader r(*v->table, fmt::format("{}: '{}' ({{from =, to =, step =}})", context_, key));
+    const double from = r.need_number("from"), to = r.need_number("to"), step = r.need_number("step");
+    r.finish();
+    if (!(step > 0)) fail("{}: '{}.step' must be > 0, got {}", context_, key, step);
+    const double n = std::floor(std::abs(to - from) / step + 1e-9);
+    if (n + 1 > static_cast<double>(max_count)) fail("{}: '{}' asks for {} values (at most {})", context_, key, n + 1, max_count);
+    const double dir = to >= from ? 1.0 : -1.0;
+    for (int i = 0; i <= static_cast<int>(n); ++i) out.push_back(from + dir * step * i);
+  } else if (v->type == OptionValue::Type::number || v->type == OptionValue::Type::array) {
+    out = *numbers(key);
+    if (out.size() > max_count) fail("{}: '{}' has {} values (at most {})", context_, key, out.size(), max_count);
+  } else {
+    type_error(key, *v, "a number, an array of numbers or {from =, to =, step =}");
+  }
+  if (out.empty()) fail("{}: '{}' is empty", context_, key);
+  return out;
+}
+
+std::optional<OptionReader> OptionReader::table(std::string_view key) {
+  const OptionValue* v = value(key);
+  if (!v) return std::nullopt;
+  if (v->type != OptionValue::Type::table) type_error(key, *v, "a table");
+  return OptionReader(*v->table, fmt::format("{}: '{}'", context_, key));
+}
+
+std::shared_ptr<const void> OptionReader::object(std::string_view key, std::string_view type) {
+  const OptionValue* v = value(key);
+  if (!v) return nullptr;
+  if (v->type != OptionValue::Type::object || v->string != type) type_error(key, *v, fmt::format("a {}", type));
+  return v->object;
+}
+
+std::vector<const std::pair<std::string, OptionValue>*> OptionReader::rest() const {
+  std::vector<const std::pair<std::string, OptionValue>*> out;
+  for (const auto& e : table_.entries)
+    if (std::find(known_.begin(), known_.end(), e.first) == known_.end()) out.push_back(&e);
+  return out;
+}
+
+void OptionReader::finish() const {
+  for (const auto& [key, v] : table_.entries) {
+    if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
+    std::string list;
+    for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
+    const std::string near = closest_name(key, known_);
+    fail("{}: unknown key '{}' ({}expected one of: {})", context_, key,
+         near.empty() ? "" : fmt::format("did you mean '{}'? ", near), list);
+  }
+}
+
+}  // namespace wrc

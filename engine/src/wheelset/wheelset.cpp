@@ -1,0 +1,190 @@
+// The wheelset model (wheelset.hpp): parameters, construction, workspaces and location as a value.
+#include "wrc/wheelset/wheelset.hpp"
+
+#include "wrc/core/error.hpp"
+
+namespace wrc {
+
+WheelsetParams read_wheelset_params(OptionReader& r) {
+  WheelsetParams p;
+  TrackParams& t = p.track;
+  t.radius = r.number("radius", t.radius);
+  t.back_to_back = r.number("back_to_back", t.back_to_back);
+  t.tape_offset = r.number("tape_offset", t.tape_offset);
+  t.gauge = r.number("gauge", t.gauge);
+  t.gauge_depth = r.number("gauge_depth", t.gauge_depth);
+  t.cant = r.number("cant", t.cant);
+  p.material.E = r.number("E", p.material.E);
+  p.material.nu = r.number("nu", p.material.nu);
+  ContactOptions& c = p.contact;
+  c.element = r.number("grid", c.element);
+  c.margin = r.integer("margin", 1, 100).value_or(c.margin);
+  c.max_elements = r.integer("max_elements", 1, 1 << 30).value_or(c.max_elements);
+  c.normal.tolerance = r.number("tolerance", c.normal.tolerance);
+  c.merge_tolerance = r.number("merge_tolerance", c.merge_tolerance);
+  c.merge_angle = r.number("merge_angle", c.merge_angle);
+  c.dense = r.choice("solver", {"fast", "dense"}).value_or(c.dense ? "dense" : "fast") == "dense";
+  p.strategy = r.string("strategy").value_or(p.strategy);
+  return p;
+}
+
+WheelsetProfiles read_wheelset_profiles(OptionReader& r) {
+  auto get = [&](const char* key, const char* both) {
+    auto p = std::static_pointer_cast<const Profile>(r.object(key, kProfileTypeName));
+    if (!p) p = std::static_pointer_cast<const Profile>(r.object(both, kProfileTypeName));
+    if (!p) fail("{}: '{}' (or '{}') is required: a {}", r.context(), key, both, kProfileTypeName);
+    return *p;
+  };
+  WheelsetProfiles w;
+  w.wheel = {get("left_wheel", "wheel"), get("right_wheel", "wheel")};
+  w.rail = {get("left_rail", "rail"), get("right_rail", "rail")};
+  return w;
+}
+
+Pose read_pose(OptionReader& r) {
+  Pose p;
+  p.y = r.number("y", 0.0);
+  p.z = r.number("z", 0.0);
+  p.roll = r.number("roll", 0.0);
+  p.yaw = r.number("yaw", 0.0);
+  return p;
+}
+
+void describe(const WheelsetParams& p, FieldSink& out) {
+  out.number("radius", p.track.radius);
+  out.number("back_to_back", p.track.back_to_back);
+  out.number("tape_offset", p.track.tape_offset);
+  out.number("gauge", p.track.gauge);
+  out.number("gauge_depth", p.track.gauge_depth);
+  out.number("cant", p.track.cant);
+  out.number("E", p.material.E);
+  out.number("nu", p.material.nu);
+  out.number("grid", p.contact.element);
+  out.integer("margin", p.contact.margin);
+  out.integer("max_elements", p.contact.max_elements);
+  out.number("tolerance", p.contact.normal.tolerance);
+  out.number("merge_tolerance", p.contact.merge_tolerance);
+  out.number("merge_angle", p.contact.merge_angle);
+  out.string("solver", p.contact.dense ? "dense" : "fast");
+  out.string("strategy", p.strategy);
+}
+
+Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
+                   std::shared_ptr<const LocationStrategy> strategy)
+    : params_(params), strategy_(std::move(strategy)) {
+  if (!strategy_) fail("wheelset: no location strategy");
+  track_ = std::make_shared<const Track>(assemble_track(profiles.wheel, profiles.rail, params.track));
+  std::array<SideDiscretisation, 2> sides;
+  for (int s : {kLeft, kRight}) sides[s] = strategy_->discretise(s, profiles.wheel[s], profiles.rail[s]);
+  StrategyInfo info = strategy_->info();
+  if (info.portable) {
+    std::shared_ptr<const LocationStrategy> st = strategy_;
+    info.make_search = [st] { return st->make_search(); };
+  }
+  geometry_ = std::make_shared<const GeometryModel>(build_geometry(track_, sides, std::move(info)));
+  contact_ = std::make_shared<const ContactModel>(geometry_, params.material, params.contact);
+}
+
+std::unique_ptr<ContactWorkspace> Wheelset::make_workspace() const {
+  return std::make_unique<ContactWorkspace>(*contact_, strategy_->make_search());
+}
+
+std::unique_ptr<ContactWorkspace> Wheelset::make_workspace_with(PoseSearch& search) const {
+  return std::make_unique<ContactWorkspace>(*contact_, std::make_unique<SearchRef>(search));
+}
+
+std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
+                                               std::shared_ptr<const LocationStrategy> strategy) {
+  return std::make_shared<const Wheelset>(profiles, params, std::move(strategy));
+}
+
+std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params) {
+  return build_wheelset(profiles, params, native_strategy(params.strategy));
+}
+
+namespace {
+
+LocateResult copy_location(const LocationState& st) {
+  LocateResult r;
+  r.pose = st.pose();
+  for (int s : {kLeft, kRight}) {
+    r.side[s].patches = st.patches(s);
+    r.side[s].segments = st.segments(s);
+    r.side[s].counters = st.counters(s);
+    r.side[s].grazes = st.grazes_dropped(s);
+  }
+  return r;
+}
+
+}  // namespace
+
+LocateResult locate(const Wheelset&, const Pose& pose, ContactWorkspace& workspace) {
+  return copy_location(workspace.locator.locate(pose));
+}
+
+LocateResult locate_with(const Wheelset& wheelset, const Pose& pose, PoseSearch& search) {
+  LocationState st;
+  locate_contact(wheelset.geometry(), pose, st, search);
+  return copy_location(st);
+}
+
+void describe_patch_fields(const Patch& p, FieldSink& out) {
+  out.string("side", side_name(p.side));
+  out.vec3("nominal_point", p.point);  // "point" is the centre of pressure of the normal-contact stage
+  out.vec3("nominal_normal", p.normal);
+  out.vec3("wheel_point", p.wheel_point);
+  out.integer("cone", p.cone + 1);
+  out.number("eps", p.eps);
+  out.number("wheel_radius", p.wheel_radius);
+  out.number("depth", p.depth);
+  out.integer("first_line", p.first_line + 1);
+  out.integer("last_line", p.last_line + 1);
+  out.integer("longest", p.longest - p.first_segment + 1);
+}
+
+void describe(const Segment& s, FieldSink& out) {
+  out.integer("line", s.line + 1);
+  out.number("y", s.y);
+  out.number("z", s.z);
+  out.number("x_t", s.x_t);
+  out.number("x_l", s.x_l);
+  const long long cones[2] = {s.cone_t + 1, s.cone_l + 1};
+  out.integers("cones", cones, 2);
+}
+
+void describe(const Patch& p, const std::vector<Segment>& segments, FieldSink& out) {
+  describe_patch_fields(p, out);
+  out.begin_list("segments", static_cast<std::size_t>(p.segment_count));
+  for (int i = 0; i < p.segment_count; ++i) {
+    out.item();
+    describe(segments[static_cast<std::size_t>(p.first_segment + i)], out);
+    out.end();
+  }
+  out.end();
+}
+
+void describe(const LocateResult& r, FieldSink& out) {
+  long long tests = 0;
+  for (int s : {kLeft, kRight}) {
+    const SideLocation& l = r.side[s];
+    out.begin(side_name(s));
+    out.begin_list("patches", l.patches.size());
+    for (const Patch& p : l.patches) {
+      out.item();
+      describe(p, l.segments, out);
+      out.end();
+    }
+    out.end();
+    out.integer("tests", l.counters.tests);
+    out.integer("coarse_tests", l.counters.coarse_tests);
+    out.integer("bounds", l.counters.bounds);
+    out.integer("lines_visited", l.counters.lines);
+    out.integer("grazes", l.grazes);
+    tests += l.counters.tests;
+    out.end();
+  }
+  describe(r.pose, out);
+  out.integer("tests", tests);
+}
+
+}  // namespace wrc
