@@ -125,7 +125,7 @@ local function build(names, user_opt)
 end
 
 function M.resolve(spec)
-  if spec == nil then spec = "fast" end
+  if spec == nil then spec = wrc.defaults.wheelset.strategy end  -- the engine's one default
   if type(spec) == "string" then return build({spec}, {}) end
   if type(spec) ~= "table" then error("strategy must be a name, a list of names or a table, got " .. type(spec), 0) end
   if spec.locate ~= nil then  -- inline strategy

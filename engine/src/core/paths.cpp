@@ -2,6 +2,8 @@
 
 #include "wrc/core/config.hpp"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
@@ -22,6 +24,26 @@ fs::path executable_dir() {
   return ec ? fs::path() : exe.parent_path();
 }
 
+// The folder of the binary holding this code: the wrc executable, or libwrc.so loaded by another program (a C
+// program, Python's ctypes), whose own executable says nothing of where wrc is installed.
+fs::path module_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&module_dir), &info) == 0 || !info.dli_fname) return {};
+  std::error_code ec;
+  const fs::path p = fs::canonical(info.dli_fname, ec);
+  return ec ? fs::path() : p.parent_path();
+}
+
+// The install prefix 1 to 3 levels above `dir` (<prefix>/bin, <prefix>/lib, <prefix>/lib/<multiarch>), or empty.
+fs::path install_prefix(const fs::path& dir) {
+  fs::path p = dir;
+  for (int up = 0; up < 3 && !p.empty() && p != p.parent_path(); ++up) {
+    p = p.parent_path();
+    if (has_library(p / WRC_INSTALL_DATADIR)) return p;
+  }
+  return {};
+}
+
 Paths resolve() {
   Paths p;
   const fs::path exe_dir = executable_dir();
@@ -30,13 +52,13 @@ Paths resolve() {
   if (const char* home = std::getenv("WRC_HOME"); home && *home && has_library(home)) {
     root = home;
   }
-  // Installed: <prefix>/bin/wrc with <prefix>/share/wrc and <prefix>/lib/wrc/plugins.
-  if (!exe_dir.empty()) {
-    const fs::path prefix = exe_dir.parent_path();
-    if (has_library(prefix / WRC_INSTALL_DATADIR)) {
-      if (root.empty()) root = prefix / WRC_INSTALL_DATADIR;
-      own_plugins = (prefix / WRC_INSTALL_PLUGINDIR).string();
-    }
+  // Installed: <prefix>/bin/wrc or <prefix>/lib/libwrc.so with <prefix>/share/wrc and <prefix>/lib/wrc/plugins.
+  for (const fs::path& dir : {exe_dir, module_dir()}) {
+    if (dir.empty() || !own_plugins.empty()) continue;
+    const fs::path prefix = install_prefix(dir);
+    if (prefix.empty()) continue;
+    if (root.empty()) root = prefix / WRC_INSTALL_DATADIR;
+    own_plugins = (prefix / WRC_INSTALL_PLUGINDIR).string();
   }
   // Build tree: the sources this binary was built from, plugins in <build>/plugins.
   if (root.empty()) root = WRC_SOURCE_DIR;

@@ -127,6 +127,32 @@ OptionTable to_options(lua_State* L, int idx, std::string_view context, std::ini
   return t;
 }
 
+void push_option(lua_State* L, const OptionValue& v) {
+  switch (v.type) {
+    case OptionValue::Type::number: lua_pushnumber(L, v.number); return;
+    case OptionValue::Type::boolean: lua_pushboolean(L, v.boolean); return;
+    case OptionValue::Type::string: lua_pushlstring(L, v.string.data(), v.string.size()); return;
+    case OptionValue::Type::array:
+      lua_createtable(L, static_cast<int>(v.array.size()), 0);
+      for (std::size_t i = 0; i < v.array.size(); ++i) {
+        push_option(L, v.array[i]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+      }
+      return;
+    case OptionValue::Type::table:
+      lua_createtable(L, 0, static_cast<int>(v.table->entries.size()));
+      for (const auto& [k, e] : v.table->entries) {
+        push_option(L, e);
+        lua_setfield(L, -2, k.c_str());
+      }
+      return;
+    case OptionValue::Type::object:
+      if (v.string != kProfileTypeName) fail("an object of type {} has no Lua value", v.string);
+      push_shared(L, std::static_pointer_cast<const Profile>(v.object), kProfileTypeName);
+      return;
+  }
+}
+
 OptionTable table_options(lua_State* L, int idx, std::string_view context, std::initializer_list<std::string_view> skip) {
   check_table(L, idx, context);
   return to_options(L, idx, context, skip);

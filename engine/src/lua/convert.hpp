@@ -38,6 +38,9 @@ OptionTable to_options(lua_State* L, int idx, std::string_view context,
 OptionTable table_options(lua_State* L, int idx, std::string_view context,
                           std::initializer_list<std::string_view> skip = {});
 
+// Pushes an option value as the Lua value to_option would read back (a profile object as a wrc.Profile).
+void push_option(lua_State* L, const OptionValue& v);
+
 // Pushes {x=, y=, z=}.
 void push_vec3(lua_State* L, const Eigen::Vector3d& v);
 // Pushes a Lua array of numbers.

@@ -402,4 +402,16 @@ void open_profile(lua_State* L) {
   lua_setfield(L, -2, "profile");
 }
 
+std::shared_ptr<const Profile> load_profile(const std::string& path, const OptionTable& options) {
+  const std::unique_ptr<lua_State, void (*)(lua_State*)> state(new_state(), lua_close);
+  lua_State* L = state.get();
+  lua_getglobal(L, "wrc");
+  lua_getfield(L, -1, "profile");
+  lua_getfield(L, -1, "load");
+  lua_pushstring(L, path.c_str());
+  push_option(L, OptionValue::of(options));
+  if (pcall_traceback(L, 2, 1) != LUA_OK) throw Error(lua_tostring(L, -1) ? lua_tostring(L, -1) : "wrc.profile.load failed");
+  return check_profile(L, -1, "wrc.profile.load");
+}
+
 }  // namespace wrc::lua

@@ -15,8 +15,9 @@ struct Paths {
 };
 
 // Resolves the paths once per process. Order: $WRC_HOME (a root with scripts/ and profiles/),
-// then the install prefix derived from the running executable (<prefix>/bin/wrc ->
-// <prefix>/share/wrc), then the source tree this binary was built from.
+// then the install prefix above the running executable (<prefix>/bin/wrc -> <prefix>/share/wrc) or above the
+// library holding the engine (<prefix>/lib/libwrc.so, for C and Python callers), then the source tree this binary
+// was built from.
 const Paths& paths();
 
 }  // namespace wrc

@@ -2,6 +2,9 @@
 // rest of the program has of Lua; lua.h is included by engine/src/lua alone.
 #pragma once
 
+#include "wrc/core/options.hpp"
+#include "wrc/profile/profile.hpp"
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +18,10 @@ namespace wrc::lua {
 // the script path. Errors (missing file, syntax, runtime) are printed to stderr as `file:line: message`
 // with a traceback. Returns the process exit code (0 on success).
 int run_file(const std::string& path, const std::vector<std::string>& args);
+
+// Loads a profile as wrc.profile.load(path, options) does -- a Lua definition or a file through the readers -- in a
+// Lua state of its own, closed before returning (for callers without a Lua state: the C API). Throws wrc::Error.
+std::shared_ptr<const Profile> load_profile(const std::string& path, const OptionTable& options);
 
 // An interpreter with the standard libraries and the `wrc` module loaded, for embedding and tests.
 class Session {

@@ -1,0 +1,132 @@
+/* wrc.h -- the C API of wrc, the wheel-rail contact engine (docs/design.md, section 5).
+ *
+ * ABI version 1 (WRC_ABI_VERSION). A library whose wrc_abi_version() differs from the WRC_ABI_VERSION a program was
+ * compiled with is not compatible with it. Within one ABI version functions are only added, never changed.
+ *
+ * Conventions (docs/design.md, section 2): SI units (m, N, Pa, rad). Track frame: x along the track, z up, +y toward
+ * the LEFT rail. Pose of the wheelset: lateral y, height z (0 where the centred wheelset first touches, < 0 pressed
+ * in), roll (> 0 lifts the left wheel), yaw. Forces are those the rail exerts on the wheel, in the track frame;
+ * moments about the wheelset centre.
+ *
+ * Errors: every function returns a wrc_status. On anything but WRC_OK, wrc_last_error() gives a message that names
+ * what is wrong. No C++ exception and no Lua state crosses this interface; bad input (a null or freed handle, NaN, an
+ * unknown option, an array too small) gives a status and a message, never a crash.
+ *
+ * Handles: opaque pointers made by the *_new / *_load / solve functions and released by the matching *_free. A
+ * handle that was freed (or never made) is detected and refused with WRC_INVALID_ARGUMENT (until its address is
+ * reused by a new handle). Handles are independent of each other: freeing a profile does not affect a wheelset
+ * built from it, freeing a wheelset does not affect its results.
+ *
+ * Threads: every function may be called from any thread. One wheelset may be used by several threads at once (each
+ * call uses a workspace of its own from the wheelset's pool); profiles and results are read-only after they are
+ * made and may be read from several threads at once. A handle must not be freed while another thread uses it.
+ *
+ * Options: a string of "key=value" pairs separated by blanks or ';' (NULL or "" for none). A value is a number, true
+ * or false, a list of numbers "a,b" or a word; dotted keys make nested tables ("shift.y=1e-3"). The keys are those of
+ * the Lua API (README): an unknown key is an error naming the closest known one.
+ */
+#ifndef WRC_WRC_H
+#define WRC_WRC_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define WRC_ABI_VERSION 1
+
+typedef struct wrc_profile wrc_profile;
+typedef struct wrc_wheelset wrc_wheelset;
+typedef struct wrc_result wrc_result;
+
+typedef enum wrc_status {
+  WRC_OK = 0,
+  WRC_INVALID_ARGUMENT = 1, /* a null, freed or wrong handle, a NaN, a bad side or option, a null output pointer */
+  WRC_ERROR = 2,            /* the engine refused the input or failed (a file, a profile, a pose far too deep...) */
+  WRC_NOT_CONVERGED = 3,    /* a solve did not converge; its result is still returned (converged = 0, error) */
+  WRC_NOT_FOUND = 4,        /* a result path that the result does not hold */
+  WRC_TOO_SMALL = 5         /* a caller-owned array is too small; the count says how many values are needed */
+} wrc_status;
+
+enum { WRC_LEFT = 0, WRC_RIGHT = 1 };
+
+/* The library's version ("0.1.0"): a static string. */
+const char* wrc_version(void);
+/* The ABI version the library implements (compare with WRC_ABI_VERSION). */
+int wrc_abi_version(void);
+/* The message of the calling thread's last call that did not return WRC_OK ("" if none). The string is owned by the
+ * library and valid until the calling thread's next wrc call. */
+const char* wrc_last_error(void);
+
+/* ---- profiles ---- */
+
+/* Loads a profile: a Lua definition (.lua, e.g. "profiles/s1002.lua") or a file read by a reader plugin (.txt, .csv,
+ * .prr, .prw, .ban, .whl, ...). A relative path is looked up in the working directory, then in the installed data
+ * folder. Options: those of wrc.profile.load (units, mirror_y, mirror_z, crop.y, crop.z, shift.y, shift.z, kind, name,
+ * reader, the reader's own options; a Lua definition's own options such as step). The caller owns *out. */
+wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out);
+/* A profile from n points (m, left-side frame; docs/design.md section 2); kind is "wheel" or "rail"; name may be
+ * NULL. The arrays are copied. The caller owns *out. */
+wrc_status wrc_profile_from_points(const char* kind, const double* y, const double* z, size_t n, const char* name,
+                                   wrc_profile** out);
+/* Copies the points into caller-owned arrays of `capacity` values; *n = the number of points (WRC_TOO_SMALL when
+ * capacity < *n; y and z may be NULL with capacity 0 to ask for the size). */
+wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, size_t capacity, size_t* n);
+/* Releases a profile (NULL: nothing to do). */
+wrc_status wrc_profile_free(wrc_profile* profile);
+
+/* ---- wheelsets ---- */
+
+/* A wheelset from one wheel and one rail profile (the right side their mirror image), or from four. The profiles are
+ * copied. Options: those of wrc.wheelset (radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E, nu, grid,
+ * margin, max_elements, tolerance, merge_tolerance, merge_angle, solver, strategy) where strategy is one of the
+ * built-in strategies (accurate, fast, uniform, topology, coarse, constant_slope, brute or a composition
+ * "uniform+coarse+topology") and strategy_options.<key> its options. The caller owns *out. */
+wrc_status wrc_wheelset_new(const wrc_profile* wheel, const wrc_profile* rail, const char* options, wrc_wheelset** out);
+wrc_status wrc_wheelset_new4(const wrc_profile* left_wheel, const wrc_profile* right_wheel,
+                             const wrc_profile* left_rail, const wrc_profile* right_rail, const char* options,
+                             wrc_wheelset** out);
+/* Releases a wheelset (NULL: nothing to do). */
+wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
+
+/* ---- solves; each makes a result the caller owns (*out), also when it returns WRC_NOT_CONVERGED ---- */
+
+/* Contact at a prescribed pose (m, rad). Options: grids (keep pressure and h grids, default true), sensitivity. */
+wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
+                       wrc_result** out);
+/* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N) prescribed at y, yaw, roll. Options:
+ * force_tolerance, max_iterations, max_evaluations. */
+wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz,
+                     const char* options, wrc_result** out);
+/* The static equilibrium under the vertical load Q (N) at the centre: z and roll solved at y, yaw. Options: grids
+ * (default true), force_tolerance, moment_tolerance, max_iterations, max_evaluations, start.z, start.roll. */
+wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double Q, const char* options,
+                           wrc_result** out);
+/* The rigid (kinematic) reference at y, yaw with load Q. */
+wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc_result** out);
+
+/* ---- results: fields by path, as the Lua tables have them ("Y", "z", "left.force.z", "left.patches.1.pmax",
+ * "left.patches.1.pressure"; lists are 1-based). Booleans and integers read as numbers. ---- */
+
+/* A number (or boolean: 0/1, or integer). */
+wrc_status wrc_result_number(const wrc_result* result, const char* path, double* value);
+/* The length of a list ("left.patches") or of an array or grid ("left.patches.1.pressure": nx * ny values). */
+wrc_status wrc_result_count(const wrc_result* result, const char* path, size_t* n);
+/* Copies an array or grid (grid values row by row: v[i + nx j], nx and ny in "<patch>.grid.nx/ny") into values[0 ..
+ * capacity); *n = its length (WRC_TOO_SMALL when capacity < *n). */
+wrc_status wrc_result_numbers(const wrc_result* result, const char* path, double* values, size_t capacity, size_t* n);
+/* Copies a string field ("error") into buffer (NUL-terminated, truncated to capacity - 1); *length = its length. */
+wrc_status wrc_result_string(const wrc_result* result, const char* path, char* buffer, size_t capacity,
+                             size_t* length);
+/* The number of fields and the path of field i (a string owned by the result), to list what a result holds. */
+wrc_status wrc_result_fields(const wrc_result* result, size_t* n);
+wrc_status wrc_result_field(const wrc_result* result, size_t index, const char** path);
+/* Releases a result (NULL: nothing to do). */
+wrc_status wrc_result_free(wrc_result* result);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* WRC_WRC_H */

@@ -1,0 +1,464 @@
+// The C API (wrc/wrc.h): a thin layer that checks its arguments, converts them and calls the engine. Every entry
+// point runs its body through `guard`, which turns every C++ exception into a status and a thread-local message.
+#include "wrc/wrc.h"
+
+#include "wrc/core/config.hpp"
+#include "wrc/core/error.hpp"
+#include "wrc/core/options.hpp"
+#include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/lua/host.hpp"
+#include "wrc/wheelset/wheelset.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+// The opaque handle types: what a handle's address stands for (the objects live in the registry).
+struct wrc_profile {
+  std::shared_ptr<const wrc::Profile> profile;
+};
+
+struct wrc_wheelset {
+  std::shared_ptr<const wrc::Wheelset> model;
+  std::mutex pool_mutex;
+  std::vector<std::unique_ptr<wrc::ContactWorkspace>> pool;  // idle workspaces, one taken per call
+};
+
+struct wrc_result {
+  struct Field {
+    bool is_string = false, is_list = false;
+    double number = 0;
+    std::string text;
+    std::vector<double> values;  // arrays and grids
+    std::size_t count = 0;       // list length
+  };
+  std::vector<std::string> order;  // paths in the order described
+  std::unordered_map<std::string, Field> fields;
+};
+
+namespace {
+
+thread_local std::string last_error;
+
+// A status with its message, thrown inside an entry point.
+struct Failure {
+  wrc_status status;
+  std::string message;
+};
+
+[[noreturn]] void invalid(std::string message) { throw Failure{WRC_INVALID_ARGUMENT, std::move(message)}; }
+
+template <class F>
+wrc_status guard(const char* function, F&& body) {
+  try {
+    last_error.clear();
+    return body();
+  } catch (const Failure& f) {
+    last_error = std::string(function) + ": " + f.message;
+    return f.status;
+  } catch (const wrc::Error& e) {
+    last_error = std::string(function) + ": " + e.what();
+    return WRC_ERROR;
+  } catch (const std::bad_alloc&) {
+    last_error = std::string(function) + ": out of memory";
+    return WRC_ERROR;
+  } catch (const std::exception& e) {
+    last_error = std::string(function) + ": internal error: " + e.what();
+    return WRC_ERROR;
+  } catch (...) {
+    last_error = std::string(function) + ": internal error";
+    return WRC_ERROR;
+  }
+}
+
+// Live handles by address, each kept alive by the registry (and by a call that uses it, so that a handle freed by
+// another thread during a call is released only when the call ends).
+class Registry {
+ public:
+  template <class T>
+  T* add(std::shared_ptr<T> object) {
+    std::lock_guard lock(mutex_);
+    T* key = object.get();
+    live_[key] = Entry{std::move(object), typeid(T).name()};
+    return key;
+  }
+  template <class T>
+  std::shared_ptr<T> get(const T* handle, const char* what) {
+    if (!handle) invalid(fmt::format("the {} is NULL", what));
+    std::lock_guard lock(mutex_);
+    const auto it = live_.find(handle);
+    if (it == live_.end() || it->second.type != typeid(T).name())
+      invalid(fmt::format("the {} handle {} is not a live {} (freed, or never made)", what, static_cast<const void*>(handle), what));
+    return std::static_pointer_cast<T>(it->second.object);
+  }
+  template <class T>
+  void remove(const T* handle, const char* what) {
+    get(handle, what);
+    std::lock_guard lock(mutex_);
+    live_.erase(handle);
+  }
+
+ private:
+  struct Entry {
+    std::shared_ptr<void> object;
+    const char* type = "";
+  };
+  std::mutex mutex_;
+  std::unordered_map<const void*, Entry> live_;
+};
+
+Registry& registry() {
+  static Registry r;
+  return r;
+}
+
+template <class T>
+void set_out(T** out, const char* what) {
+  if (!out) invalid(fmt::format("the output pointer for the {} is NULL", what));
+  *out = nullptr;
+}
+
+void finite(const char* name, double v) {
+  if (!std::isfinite(v)) invalid(fmt::format("{} = {} must be a finite number", name, v));
+}
+
+wrc::OptionTable options_of(const char* text, const char* context) {
+  return text ? wrc::parse_option_text(text, context) : wrc::OptionTable{};
+}
+
+// A workspace of the wheelset's pool for the duration of one call (returned to the pool after it).
+class Lease {
+ public:
+  explicit Lease(wrc_wheelset& w) : w_(w) {
+    std::lock_guard lock(w.pool_mutex);
+    if (!w.pool.empty()) {
+      ws_ = std::move(w.pool.back());
+      w.pool.pop_back();
+    }
+    if (!ws_) ws_ = w.model->make_workspace();
+    ws_->forget();  // a call's result does not depend on earlier calls
+  }
+  ~Lease() {
+    std::lock_guard lock(w_.pool_mutex);
+    w_.pool.push_back(std::move(ws_));
+  }
+  wrc::ContactWorkspace& operator*() { return *ws_; }
+
+ private:
+  wrc_wheelset& w_;
+  std::unique_ptr<wrc::ContactWorkspace> ws_;
+};
+
+// Flattens a described result into paths ("left.patches.1.force.z").
+class FlatSink final : public wrc::FieldSink {
+ public:
+  explicit FlatSink(wrc_result& r) : r_(r) {}
+  void number(std::string_view key, double v) override { add(key).number = v; }
+  void integer(std::string_view key, long long v) override { add(key).number = static_cast<double>(v); }
+  void boolean(std::string_view key, bool v) override { add(key).number = v ? 1 : 0; }
+  void string(std::string_view key, std::string_view v) override {
+    auto& f = add(key);
+    f.is_string = true;
+    f.text = v;
+  }
+  void numbers(std::string_view key, const double* v, std::size_t n) override { add(key).values.assign(v, v + n); }
+  void integers(std::string_view key, const long long* v, std::size_t n) override {
+    auto& f = add(key);
+    for (std::size_t i = 0; i < n; ++i) f.values.push_back(static_cast<double>(v[i]));
+  }
+  void grid(std::string_view key, const double* v, int nx, int ny) override {
+    add(key).values.assign(v, v + static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+  }
+  void begin(std::string_view key) override { frames_.push_back({path(key) + ".", 0}); }
+  void begin_list(std::string_view key, std::size_t n) override {
+    auto& f = add(key);
+    f.is_list = true;
+    f.count = n;
+    frames_.push_back({path(key) + ".", 0});
+  }
+  void item() override {
+    Frame& list = frames_.back();
+    frames_.push_back({list.prefix + std::to_string(++list.items) + ".", 0});
+  }
+  void end() override { frames_.pop_back(); }
+
+ private:
+  struct Frame {
+    std::string prefix;  // "left.patches."
+    int items;           // items so far, for a list
+  };
+  std::string path(std::string_view key) const { return (frames_.empty() ? "" : frames_.back().prefix) + std::string(key); }
+  wrc_result::Field& add(std::string_view key) {
+    const std::string p = path(key);
+    r_.order.push_back(p);
+    return r_.fields[p];
+  }
+  wrc_result& r_;
+  std::vector<Frame> frames_;
+};
+
+template <class Result, class... Extra>
+wrc_status make_result(wrc_result** out, bool converged, const std::string& failure, const Result& r, Extra&&... extra) {
+  auto res = std::make_shared<wrc_result>();
+  FlatSink sink(*res);
+  describe(r, sink, std::forward<Extra>(extra)...);
+  *out = registry().add(std::move(res));
+  if (converged) return WRC_OK;
+  last_error = failure;
+  return WRC_NOT_CONVERGED;
+}
+
+const wrc_result::Field& field(const wrc_result* result, const char* path) {
+  const auto r = registry().get(result, "result");
+  if (!path) invalid("the path is NULL");
+  const auto it = r->fields.find(path);
+  if (it == r->fields.end()) throw Failure{WRC_NOT_FOUND, fmt::format("the result has no field '{}'", path)};
+  return it->second;  // the result outlives the call: the caller may not free it meanwhile (wrc.h)
+}
+
+template <class T>
+void need_output(T* p, const char* what) {
+  if (!p) invalid(fmt::format("the output pointer {} is NULL", what));
+}
+
+}  // namespace
+
+extern "C" {
+
+const char* wrc_version(void) { return WRC_VERSION; }
+
+int wrc_abi_version(void) { return WRC_ABI_VERSION; }
+
+const char* wrc_last_error(void) { return last_error.c_str(); }
+
+wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out) {
+  return guard("wrc_profile_load", [&] {
+    set_out(out, "profile");
+    if (!path) invalid("the path is NULL");
+    auto p = std::make_shared<wrc_profile>();
+    p->profile = wrc::lua::load_profile(path, options_of(options, "wrc_profile_load: options"));
+    *out = registry().add(std::move(p));
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_profile_from_points(const char* kind, const double* y, const double* z, size_t n, const char* name,
+                                   wrc_profile** out) {
+  return guard("wrc_profile_from_points", [&] {
+    set_out(out, "profile");
+    if (!kind) invalid("the kind is NULL (\"wheel\" or \"rail\")");
+    if (n > 0 && (!y || !z)) invalid("the point arrays are NULL");
+    const wrc::ProfileKind k = wrc::parse_profile_kind(kind, "wrc_profile_from_points");
+    auto p = std::make_shared<wrc_profile>();
+    p->profile = std::make_shared<const wrc::Profile>(wrc::make_profile(
+        k, std::vector<double>(y, y + n), std::vector<double>(z, z + n), name ? name : wrc::to_string(k),
+        "wrc_profile_from_points"));
+    *out = registry().add(std::move(p));
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, size_t capacity, size_t* n) {
+  return guard("wrc_profile_points", [&] {
+    need_output(n, "n");
+    const auto p = registry().get(profile, "profile");
+    *n = p->profile->size();
+    if (capacity < *n) throw Failure{WRC_TOO_SMALL, fmt::format("the arrays hold {} values, the profile has {} points", capacity, *n)};
+    if (!y || !z) invalid("the point arrays are NULL");
+    std::copy(p->profile->y.begin(), p->profile->y.end(), y);
+    std::copy(p->profile->z.begin(), p->profile->z.end(), z);
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_profile_free(wrc_profile* profile) {
+  return guard("wrc_profile_free", [&] {
+    if (profile) registry().remove(profile, "profile");
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_wheelset_new4(const wrc_profile* left_wheel, const wrc_profile* right_wheel, const wrc_profile* left_rail,
+                             const wrc_profile* right_rail, const char* options, wrc_wheelset** out) {
+  return guard("wrc_wheelset_new", [&] {
+    set_out(out, "wheelset");
+    wrc::WheelsetProfiles profiles;
+    profiles.wheel = {*registry().get(left_wheel, "left wheel profile")->profile,
+                      *registry().get(right_wheel, "right wheel profile")->profile};
+    profiles.rail = {*registry().get(left_rail, "left rail profile")->profile,
+                     *registry().get(right_rail, "right rail profile")->profile};
+    const wrc::OptionTable t = options_of(options, "wrc_wheelset_new: options");
+    wrc::OptionReader r(t, "wrc_wheelset_new");
+    const wrc::WheelsetParams params = read_wheelset_params(r);
+    wrc::OptionTable strategy_options;
+    if (const wrc::OptionValue* v = r.value("strategy_options")) {
+      if (v->type != wrc::OptionValue::Type::table) invalid("'strategy_options' must be a table (strategy_options.step=...)");
+      strategy_options = *v->table;
+    }
+    r.finish();
+    auto w = std::make_shared<wrc_wheelset>();
+    w->model = wrc::build_wheelset(profiles, params, wrc::native_strategy(params.strategy, strategy_options));
+    *out = registry().add(std::move(w));
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_wheelset_new(const wrc_profile* wheel, const wrc_profile* rail, const char* options, wrc_wheelset** out) {
+  return wrc_wheelset_new4(wheel, wheel, rail, rail, options, out);
+}
+
+wrc_status wrc_wheelset_free(wrc_wheelset* wheelset) {
+  return guard("wrc_wheelset_free", [&] {
+    if (wheelset) registry().remove(wheelset, "wheelset");
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
+                       wrc_result** out) {
+  return guard("wrc_contact", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
+    const wrc::OptionTable t = options_of(options, "wrc_contact: options");
+    wrc::OptionReader r(t, "wrc_contact");
+    wrc::ContactRequest req;
+    req.keep_grids = r.boolean("grids").value_or(true);
+    req.sensitivity = r.boolean("sensitivity").value_or(false);
+    r.finish();
+    Lease ws(*w);
+    const wrc::ContactResult c = evaluate_contact(w->model->contact_model(), {y, z, roll, yaw}, *ws, req);
+    return make_result(out, true, "", c, req.sensitivity);
+  });
+}
+
+wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz, const char* options,
+                     wrc_result** out) {
+  return guard("wrc_wheel", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    if (side != WRC_LEFT && side != WRC_RIGHT) invalid(fmt::format("side = {} must be WRC_LEFT (0) or WRC_RIGHT (1)", side));
+    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
+    const wrc::OptionTable t = options_of(options, "wrc_wheel: options");
+    wrc::OptionReader r(t, "wrc_wheel");
+    const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
+    r.finish();
+    Lease ws(*w);
+    const wrc::WheelResult res = solve_wheel(w->model->contact_model(), side, y, yaw, roll, Fz, *ws, opt);
+    return make_result(out, res.converged, res.converged ? "" : "wrc_wheel: " + failure_message(res), res);
+  });
+}
+
+wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double Q, const char* options, wrc_result** out) {
+  return guard("wrc_equilibrium", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"Q", Q}}) finite(name, v);
+    const wrc::OptionTable t = options_of(options, "wrc_equilibrium: options");
+    wrc::OptionReader r(t, "wrc_equilibrium");
+    const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
+    std::vector<wrc::Start> starts;
+    if (auto s = r.table("start")) {
+      starts.push_back(wrc::Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt});
+      s->finish();
+    }
+    wrc::ContactRequest req;
+    req.keep_grids = r.boolean("grids").value_or(true);
+    r.finish();
+    Lease ws(*w);
+    const wrc::EquilibriumResult e = solve_equilibrium(w->model->contact_model(), y, yaw, Q, *ws, opt, starts, req);
+    return make_result(out, e.converged, e.converged ? "" : "wrc_equilibrium: " + failure_message(e), e);
+  });
+}
+
+wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc_result** out) {
+  return guard("wrc_rigid", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"Q", Q}}) finite(name, v);
+    const wrc::RigidResult r = solve_rigid(w->model->geometry(), y, yaw, Q);
+    return make_result(out, r.converged, r.converged ? "" : "wrc_rigid: " + r.message, r);
+  });
+}
+
+wrc_status wrc_result_number(const wrc_result* result, const char* path, double* value) {
+  return guard("wrc_result_number", [&] {
+    need_output(value, "value");
+    const auto& f = field(result, path);
+    if (f.is_string || f.is_list || !f.values.empty() ) invalid(fmt::format("'{}' is not a number", path));
+    *value = f.number;
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_result_count(const wrc_result* result, const char* path, size_t* n) {
+  return guard("wrc_result_count", [&] {
+    need_output(n, "n");
+    const auto& f = field(result, path);
+    if (f.is_string) invalid(fmt::format("'{}' is a string, not a list or array", path));
+    *n = f.is_list ? f.count : f.values.size();
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_result_numbers(const wrc_result* result, const char* path, double* values, size_t capacity, size_t* n) {
+  return guard("wrc_result_numbers", [&] {
+    need_output(n, "n");
+    const auto& f = field(result, path);
+    if (f.is_string || f.is_list) invalid(fmt::format("'{}' is not an array of numbers", path));
+    *n = f.values.size();
+    if (capacity < *n) throw Failure{WRC_TOO_SMALL, fmt::format("'{}' has {} values, the array holds {}", path, *n, capacity)};
+    if (*n > 0 && !values) invalid("the values array is NULL");
+    std::copy(f.values.begin(), f.values.end(), values);
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_result_string(const wrc_result* result, const char* path, char* buffer, size_t capacity, size_t* length) {
+  return guard("wrc_result_string", [&] {
+    need_output(length, "length");
+    const auto& f = field(result, path);
+    if (!f.is_string) invalid(fmt::format("'{}' is not a string", path));
+    *length = f.text.size();
+    if (capacity > 0) {
+      if (!buffer) invalid("the buffer is NULL");
+      const std::size_t k = std::min(capacity - 1, f.text.size());
+      std::memcpy(buffer, f.text.data(), k);
+      buffer[k] = '\0';
+    }
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_result_fields(const wrc_result* result, size_t* n) {
+  return guard("wrc_result_fields", [&] {
+    need_output(n, "n");
+    *n = registry().get(result, "result")->order.size();
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_result_field(const wrc_result* result, size_t index, const char** path) {
+  return guard("wrc_result_field", [&] {
+    need_output(path, "path");
+    const auto r = registry().get(result, "result");
+    if (index >= r->order.size()) invalid(fmt::format("index {} is past the result's {} fields", index, r->order.size()));
+    *path = r->order[index].c_str();
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_result_free(wrc_result* result) {
+  return guard("wrc_result_free", [&] {
+    if (result) registry().remove(result, "result");
+    return WRC_OK;
+  });
+}
+
+}  // extern "C"
