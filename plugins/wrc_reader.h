@@ -1,4 +1,4 @@
-/* wrc profile reader plugin ABI (DESIGN.md section 6). Plain C; no C++ type crosses this boundary.
+/* wrc profile reader plugin ABI (docs/design.md, section 6). Plain C; no C++ type crosses this boundary.
  *
  * A reader is a shared library exporting one function, WRC_READER_ENTRY_NAME ("wrc_reader_entry"), that
  * returns a versioned descriptor. The descriptor starts with the ABI version and its own size (as CLAP
@@ -9,7 +9,7 @@
  * failures as text with a line number. The host turns the result into a validated wrc::Profile and
  * applies the user's options (units, mirror_y, mirror_z, crop, shift).
  *
- * The engine convention the reader must deliver (DESIGN.md section 2): the LEFT-side profile frame,
+ * The engine convention the reader must deliver (docs/design.md, section 2): the LEFT-side profile frame,
  * y lateral and positive toward the field side, z UP. Wheels: y = s from the tape circle, z = radius
  * offset with the sign of height (flange tip of S1002 at z = -28 mm). Rails: origin as the file defines
  * it (the top of the head for uncanted rails). Lengths stay in the file's unit; `units` says which.

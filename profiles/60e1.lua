@@ -1,6 +1,7 @@
--- 60E1 (ex UIC 60) rail head, EN 13674-1: R300 crown, R80 and R13 arcs, 1:20 flanks (shared/reference/
--- 60E1.txt). Tangent points from the standard (|y| = 10.228 and 26.0265 mm); the arc centres follow
--- from tangency, so the profile is tangent-continuous.
+-- 60E1 (ex UIC 60) rail head, EN 13674-1: R300 crown, R80 and R13 arcs, 1:20 flanks. Tangent points
+-- from the standard (|y| = 10.228 and 26.0265 mm, i.e. the chords 20.456 and 52.053 mm of its drawing);
+-- the arc centres follow from tangency, so the profile is tangent-continuous. Checked by
+-- tests/scripts/profile_analytic.lua (head width 72 mm where the R13 meets the flank).
 --
 -- Returns a wrc.Profile in the engine's rail frame: y lateral (m, + toward the field side), z up (m),
 -- origin at the top of the uncanted head. Options: step = sampling step along the arc in metres

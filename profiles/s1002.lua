@@ -1,7 +1,9 @@
--- S1002 wheel profile (ORE S1002 / EN 13715 h28 e32.5 slope 6.7 %), analytic definition.
--- Coefficients and breakpoints: the Netter/DLR coefficient set, checked against the EN 13715 tables
--- (shared/reference/S1002.txt). F(s) in mm is the radius offset from the tape circle (flange tip
--- F = +28); s in mm is lateral from the tape circle, + toward the field side, flange back at s = -70.
+-- S1002 wheel profile (ORE S1002 / UIC 510-2 / EN 13715 "S1002 / h28 / e32,5 / 6,7 %"), analytic
+-- definition. Coefficients and breakpoints: the Netter/DLR coefficient set of the EN 13715 S1002
+-- sections A-H. F(s) in mm is the radius offset from the tape circle (flange tip F = +28); s in mm is
+-- lateral from the tape circle, + toward the field side, flange back at s = -70. Checked by
+-- tests/scripts/profile_analytic.lua against the standard's nominal dimensions (flange height 28 mm,
+-- thickness 32.5 mm at F = 10 mm, flank 70 deg).
 --
 -- Returns a wrc.Profile in the engine's left-side frame: y = s (m), z = -F(s) (m, flange tip at -0.028).
 -- Options (the table passed to wrc.profile.load): step = sampling step along s in metres (default

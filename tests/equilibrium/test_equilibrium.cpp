@@ -105,7 +105,8 @@ TEST_CASE("rigid reference = both wheels touching, by an independent kinematic c
     CHECK(std::abs(r.z - right.z) <= 1e-9);
     CHECK(r.wheel[kLeft].line == left.line);
     CHECK(r.wheel[kRight].line == right.line);
-    // The normal forces balance Q with no roll moment, and Y, My, Mz follow from them (DESIGN.md: Y = -sum Fy).
+    // The normal forces balance Q with no roll moment, and Y, My, Mz follow from them (Y = -sum Fy:
+    // docs/design.md, section 2).
     Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
     const Eigen::Vector3d centre(0, y, r.z);
     for (int s : {kLeft, kRight}) {

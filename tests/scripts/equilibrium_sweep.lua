@@ -11,8 +11,8 @@
 --   - |sum Fz - Q| <= 1e-6 Q and |sum Mx| <= 1e-6 Q x 1 m (the solver's defaults);
 --   - the pose re-evaluated by ws:contact (a fresh evaluation of the whole pipeline) is an equilibrium too:
 --     same tolerances plus 1e-7 Q for the normal solver's own tolerance (1e-8 of the wheel loads);
---   - the outputs follow DESIGN.md: Y = -sum Fy, My = -sum My, Mz = -sum Mz (what a support at the centre must
---     apply), Y_Q = Y / Q, rolling_radius_difference = left - right; Mz = 0 at yaw 0.
+--   - the outputs follow docs/design.md, section 2: Y = -sum Fy, My = -sum My, Mz = -sum Mz (what a support at
+--     the centre must apply), Y_Q = Y / Q, rolling_radius_difference = left - right; Mz = 0 at yaw 0.
 local check = require "wrc.check"
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
@@ -76,7 +76,7 @@ for _, r in ipairs(sweep) do
   check.ok(math.abs(rm) <= mtol, ("%s: |sum Mx| = %.3g N m <= %.3g N m"):format(what, math.abs(rm), mtol))
   check.near(r.residual.force, rf, 1e-9 * Q, what .. ": reported force residual")
   check.near(r.residual.moment, rm, 1e-9 * Q, what .. ": reported moment residual")
-  -- Outputs (DESIGN.md conventions).
+  -- Outputs (docs/design.md, section 2).
   check.near(r.Y, -F.y, 1e-9 * Q, what .. ": Y = -sum Fy")
   check.near(r.My, -M.y, 1e-9 * Q, what .. ": My = -sum My")
   check.near(r.Mz, -M.z, 1e-9 * Q, what .. ": Mz = -sum Mz")

@@ -1,4 +1,4 @@
--- ws:locate{...} and the discretisation as seen from Lua (DESIGN.md section 5): fields, symmetry, units, the
+-- ws:locate{...} and the discretisation as seen from Lua (docs/design.md, section 5): fields, symmetry, units, the
 -- default strategy, counters and bad input.
 local check = require "wrc.check"
 

@@ -46,7 +46,8 @@ check.fails(function() wrc.profile.load("profiles/s1002.lua", {step = -1}) end, 
             "a definition's own validation reaches the caller")
 
 -- 60E1: head width 72 mm at 14.3 mm below the top (R13/flank tangent points), and the width at the
--- gauge depth 14 mm (71.963 mm per shared/reference/60E1.txt).
+-- gauge depth 14 mm, still on the R13 arcs (centres at |y| = 23.016 mm, 14.949 mm below the top):
+-- 2 (23.016 + sqrt(13^2 - 0.949^2)) = 71.963 mm.
 local r = wrc.profile.load("profiles/60e1.lua")
 check.ok(r.kind == "rail", "60E1 is a rail profile")
 local ry, rz = r:points()

@@ -1,8 +1,10 @@
 -- The reader plugins on sample files written by this test from the analytic S1002 and 60E1 (each format,
 -- each orientation convention), read back and compared with the analytic profiles by the distance of
--- every read point to the analytic polyline. Then, when shared/reference/profiles is there, the real
--- MBench files: .prw against the analytic S1002 (0.01 mm), .prr against .ban (0.01 mm) and both against
--- the analytic 60E1 canted 1:40 with the origin at the highest point of the canted head (0.05 mm).
+-- every read point to the analytic polyline. Then the sample files the repository carries
+-- (tests/data/profile/samples, made by generate_samples.lua there, with the headers of such files in
+-- practice): .prw and .whl against the analytic S1002, the canted .prr against the .ban and the .prr
+-- canted by its own shift and rotate keys, and all three against the analytic 60E1 canted 1:40 with the
+-- origin at the highest point of the canted head.
 local check = require "wrc.check"
 local H = dofile(os.getenv("WRC_TEST_DATA") .. "/profile/helpers.lua")
 local tmp = H.tmpdir() .. "/profile_readers_"
@@ -102,25 +104,37 @@ check.fails(function() wrc.profile.load(tmp .. "s1002.xyz") end, "no such file",
 H.write(tmp .. "s1002.xyz", "1 2\n")
 check.fails(function() wrc.profile.load(tmp .. "s1002.xyz") end, "no reader for the extension '.xyz'", "unknown extension")
 
--- Real files (not in the repository).
-local ref = H.reference_dir()
-if not ref then
-  print("profile_readers: SKIPPED the MBench reference files: shared/reference/profiles not found "
-        .. "(set WRC_REFERENCE_PROFILES to the folder holding MBench_S1002_v3.prw)")
-  return
-end
-print("profile_readers: reference files from " .. ref)
-local mw = wrc.profile.load(ref .. "/MBench_S1002_v3.prw")
-near_profile(mw, s1002_fine, 1e-5, "MBench_S1002_v3.prw vs analytic S1002")
-local mr = wrc.profile.load(ref .. "/MBench_UIC60_v3.prr")
-local mb = wrc.profile.load(ref .. "/MBench_UIC60_v3.ban", {mirror_y = true})
-check.ok(has(mb.transforms, "Y points down (reversed)"), "MBench .ban: Y found pointing down")
-near_profile(mb, mr, 1e-5, "MBench_UIC60_v3.ban vs .prr")
-near_profile(mr, mb, 1e-5, "MBench_UIC60_v3.prr vs .ban")
--- Over the head down to 30 mm below the top (below ~35 mm the file has the R3 fillet to the underside,
--- which the analytic head does not model); the analytic flanks reach 34 mm so that every compared point
--- has its counterpart.
-local deep = H.canted_60e1(0.01e-3, 0.034)
-local function head(_, z) return z >= -0.030 end
-near_profile(mr, deep, 0.05e-3, "MBench_UIC60_v3.prr vs 60E1 canted 1:40", head)
-near_profile(mb, deep, 0.05e-3, "MBench_UIC60_v3.ban vs 60E1 canted 1:40", head)
+-- The sample files of the repository.
+local samples = os.getenv("WRC_TEST_DATA") .. "/profile/samples/"
+local mw = wrc.profile.load(samples .. "s1002.prw")
+check.ok(mw.kind == "wheel" and mw.name == "s1002", "s1002.prw: a wheel named after the file")
+check.ok(has(mw.transforms, "5 mirror.y = 1") and has(mw.transforms, "6 inversion = 1")
+         and has(mw.transforms, "units.len.f = +1.000000000000000e+03"),
+         "s1002.prw: the processing keys are applied and reported: " .. table.concat(mw.transforms, "; "))
+check.ok(mw.metadata.comment == "S1002 h28 e32.5 6.7% ! sampled every 0.5 mm", "s1002.prw: a quoted '!' is kept")
+near_profile(mw, s1002_fine, 1e-5, "s1002.prw vs analytic S1002")
+
+local ww = wrc.profile.load(samples .. "s1002.whl")
+check.ok(ww.kind == "wheel" and has(ww.transforms, "toward the flange tip (standard)"),
+         "s1002.whl: Y toward the flange tip detected: " .. table.concat(ww.transforms, "; "))
+check.ok(ww.metadata.Sh == "28.00" and ww.metadata.Sd == "32.50" and ww.metadata.ColumnDef == "X,Y,A",
+         "s1002.whl: the header keys are kept")
+near_profile(ww, s1002_fine, 1e-5, "s1002.whl vs analytic S1002")
+near_profile(ww, mw, 1e-6, "s1002.whl vs s1002.prw")
+
+local mr = wrc.profile.load(samples .. "60e1_canted.prr")
+local mb = wrc.profile.load(samples .. "60e1_canted.ban", {mirror_y = true})
+local mt = wrc.profile.load(samples .. "60e1_rotated.prr")
+check.ok(mr.kind == "rail" and mb.kind == "rail" and mt.kind == "rail", "the rail samples are rails")
+check.ok(has(mb.transforms, "Y points down (reversed)"), "60e1_canted.ban: Y found pointing down")
+check.ok(mb.metadata.marked_points == tostring(#mb - 2), "60e1_canted.ban: the points marked with '\"' are counted")
+check.ok(has(mt.transforms, "2 shift.y") and has(mt.transforms, "rotated by -0.0249947936 rad"),
+         "60e1_rotated.prr: shift, then rotate in degrees (units.ang.f) by -atan(1/40): " .. table.concat(mt.transforms, "; "))
+near_profile(mb, mr, 1e-6, "60e1_canted.ban vs .prr")
+near_profile(mr, mb, 1e-6, "60e1_canted.prr vs .ban")
+near_profile(mt, mr, 1e-6, "60e1_rotated.prr (uncanted + rotate) vs 60e1_canted.prr")
+-- Canted files against the uncanted analytic 60E1 canted 1:40 here (H.canted_60e1; track_paper.lua checks
+-- it against the track assembly's own canting).
+near_profile(mr, canted_fine, 1e-5, "60e1_canted.prr vs 60E1 canted 1:40")
+near_profile(mb, canted_fine, 1e-5, "60e1_canted.ban vs 60E1 canted 1:40")
+near_profile(mt, canted_fine, 1e-5, "60e1_rotated.prr vs 60E1 canted 1:40")

@@ -6,7 +6,10 @@
 // lua_error is called only after the catch block has ended (the exception object is destroyed too).
 //
 // Rule for binding code: inside F use the `check_*` helpers of convert.hpp, which throw wrc::Error,
-// never luaL_check*/luaL_error, which longjmp past F's locals.
+// never luaL_check*/luaL_error, which longjmp past F's locals. The test "lint: longjmp-safe Lua bindings"
+// (tests/lint) enforces it: under engine/src/lua, a call of luaL_error, luaL_check*, luaL_opt*, luaL_arg*,
+// luaL_typeerror or lua_error is an error unless the line (or a comment line just above it) carries the
+// marker comment "longjmp-safe: <why>", written after checking that no C++ object with a destructor is alive.
 #pragma once
 
 #include "lua/lua.hpp"
@@ -31,7 +34,7 @@ int guarded(lua_State* L) {
     lua_concat(L, 2);
     failed = true;
   }
-  if (failed) return lua_error(L);
+  if (failed) return lua_error(L);  // longjmp-safe: after the catch block, no C++ objects alive
   return 0;
 }
 

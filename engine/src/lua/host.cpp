@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace wrc::lua {
@@ -34,26 +35,27 @@ int pcall_traceback(lua_State* L, int nargs, int nresults) {
 namespace {
 
 // require "wrc.x.y" -> <scripts>/x/y.lua (the engine's own Lua library, from any working directory).
+// A package searcher is called by Lua, not through `guarded`: it may raise Lua errors itself, so it keeps
+// no C++ object with a destructor alive (Lua strings on the stack instead; paths() is a static).
 int search_wrc_scripts(lua_State* L) {
-  const char* name = luaL_checkstring(L, 1);
-  const std::string_view prefix = "wrc.";
-  std::string n = name;
-  if (n.rfind(prefix, 0) != 0) {
-    lua_pushstring(L, "\n\tno 'wrc.' prefix");
+  const char* name = luaL_checkstring(L, 1);  // longjmp-safe: no C++ objects alive
+  if (std::strncmp(name, "wrc.", 4) != 0) {
+    lua_pushliteral(L, "\n\tno 'wrc.' prefix");
     return 1;
   }
-  std::string rel = n.substr(prefix.size());
-  for (char& c : rel)
-    if (c == '.') c = '/';
+  const char* rel = luaL_gsub(L, name + 4, ".", "/");  // "wrc.x.y" -> "x/y"
+  const char* scripts = paths().scripts.c_str();
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "searchpath");
-  lua_pushstring(L, rel.c_str());
-  lua_pushstring(L, (paths().scripts + "/?.lua;" + paths().scripts + "/?/init.lua").c_str());
+  lua_pushstring(L, rel);
+  lua_pushfstring(L, "%s/?.lua;%s/?/init.lua", scripts, scripts);
   lua_call(L, 2, 2);
   if (lua_isnil(L, -2)) return 1;  // message from searchpath
   const char* file = lua_tostring(L, -2);
-  if (luaL_loadfile(L, file) != LUA_OK)
+  if (luaL_loadfile(L, file) != LUA_OK) {
+    // longjmp-safe: no C++ objects alive
     return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name, file, lua_tostring(L, -1));
+  }
   lua_pushstring(L, file);
   return 2;
 }

@@ -89,7 +89,8 @@ function H.interp(ys, zs, y)
 end
 
 -- The analytic 60E1 canted 1:40 (field side up, as on the track) with the origin moved to the highest
--- point of the canted head, as MBench_UIC60_v3.prr defines it. The R300 crown centre sits 300 mm below
+-- point of the canted head, as files of canted rails define it (tests/data/profile/samples/60e1_canted.prr;
+-- the Manchester benchmark's UIC60 .prr does the same). The R300 crown centre sits 300 mm below
 -- the uncanted top; after the rotation the circle's top is at (300 sin a, 300 (1 - cos a)).
 function H.canted_60e1(step, depth)
   local rail = wrc.profile.load("profiles/60e1.lua", {step = step or 0.02e-3, depth = depth or 0.030})
@@ -173,22 +174,6 @@ function H.write_text(path, p, csv)
     out[#out + 1] = string.format(csv and "%.9f,%.9f\n" or "%.9f %.9f\n", ys[i] * 1e3, zs[i] * 1e3)
   end
   return write(path, table.concat(out))
-end
-
--- The folder with the reference profiles of shared/ (MBench files), or nil: $WRC_REFERENCE_PROFILES, else
--- shared/reference/profiles beside the source tree.
-function H.reference_dir()
-  local candidates = {os.getenv("WRC_REFERENCE_PROFILES") or "", wrc.paths.root .. "/../shared/reference/profiles"}
-  for _, d in ipairs(candidates) do
-    if d ~= "" then
-      local f = io.open(d .. "/MBench_S1002_v3.prw", "r")
-      if f then
-        f:close()
-        return d
-      end
-    end
-  end
-  return nil
 end
 
 function H.tmpdir()

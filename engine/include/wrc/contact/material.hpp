@@ -1,4 +1,4 @@
-// Elastic material of the two bodies of a contact (DESIGN.md section 2: both bodies have the same E and nu,
+// Elastic material of the two bodies of a contact (docs/design.md, section 2: both bodies have the same E and nu,
 // hence the factor 2 of eq. 2 of the paper, 2 D p = h).
 #pragma once
 

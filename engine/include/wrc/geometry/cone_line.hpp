@@ -1,6 +1,6 @@
 // Closed-form intersection of one wheel cone with one rail line (Baeza et al. 2018, eq. 1 and A.1-A.7).
 //
-// Frames (DESIGN.md section 2): a wheelset-frame point p_w is at (0, y, z) + A p_w in the track frame, with
+// Frames (docs/design.md, section 2): a wheelset-frame point p_w is at (0, y, z) + A p_w in the track frame, with
 // A = Rz(yaw) Rx(roll), so A31 = 0 as the appendix requires. A wheel cone joins the generatrix points
 // (y_w, z_w) and (y_w1, z_w1) of the wheelset frame, z = -radius (z <= 0): rotating the point (0, Y, Z) by
 // eps about the wheelset y axis sweeps the circle of radius |Z| (eq. 1). A rail line is parallel to x through

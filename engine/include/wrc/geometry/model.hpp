@@ -1,4 +1,4 @@
-// The discretised contact geometry of a wheelset on its track (DESIGN.md sections 1-3): the immutable MODEL
+// The discretised contact geometry of a wheelset on its track (docs/design.md, sections 1-3): the immutable MODEL
 // built once per wheelset from the strategy's discretisation. Per-pose data live in LocationState
 // (location.hpp); one model may be used by many threads at once, each with its own state.
 //
@@ -58,7 +58,7 @@ struct Cone {
   double radius_at(double Y) const;
   // Angle (rad) of the generatrix to the axle, atan2(r1 - r0, y1 - y0) with r = -z: 0 for a cylinder, negative where
   // the radius decreases toward +y (the left tread), +-pi/2 for a flat ring. The rolling-direction curvature radius
-  // of the surface at radius r is r / cos(angle) (used for the undeformed distance h of DESIGN.md section 3).
+  // of the surface at radius r is r / cos(angle) (used for the undeformed distance h of docs/design.md, section 3).
   double slope_angle() const;
   // Outward unit normal of the wheel solid in the meridian half-plane: (n_y, n_r) with n_r >= 0 on the tread.
   // A point at angular position eps (eq. 1) has the wheelset-frame normal (n_r sin eps, n_y, -n_r cos eps).

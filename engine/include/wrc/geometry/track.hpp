@@ -1,4 +1,4 @@
-// Track assembly (DESIGN.md section 2): places the left/right wheel profiles in the wheelset frame and
+// Track assembly (docs/design.md, section 2): places the left/right wheel profiles in the wheelset frame and
 // the rail profiles in the track frame, so that the centred, unrotated wheelset at z = 0 just touches.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Loading profiles from files (DESIGN.md section 5): what a reader produces (RawProfile), the options
+// Loading profiles from files (docs/design.md, section 6): what a reader produces (RawProfile), the options
 // every reader shares (LoadOptions) and the host's post-processing that turns raw points into a
 // validated Profile: units, extent check, mirrors, crop window, shift, then make_profile.
 #pragma once

@@ -1,4 +1,4 @@
-// 2-D wheel and rail profiles (DESIGN.md section 2): ordered points in the LEFT-side frame, metres, z up.
+// 2-D wheel and rail profiles (docs/design.md, section 2): ordered points in the LEFT-side frame, metres, z up.
 // wheel: y = s (lateral from the tape circle, + toward the field side), z = height offset (flange tip of
 //        S1002 at z = -0.028); rail: y lateral (+ toward the field side), z up, origin at the top of the
 //        uncanted head unless the source says the profile is already canted.
