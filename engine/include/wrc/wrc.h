@@ -42,8 +42,9 @@ typedef struct wrc_result wrc_result;
 
 typedef enum wrc_status {
   WRC_OK = 0,
-  WRC_INVALID_ARGUMENT = 1, /* a null, freed or wrong handle, a NaN, a bad side or option, a null output pointer */
-  WRC_ERROR = 2,            /* the engine refused the input or failed (a file, a profile, a pose far too deep...) */
+  WRC_INVALID_ARGUMENT = 1, /* a null, freed or wrong handle, a NaN argument, a bad side, a null pointer */
+  WRC_ERROR = 2,            /* the engine refused the input or failed: an unknown or bad option, a file, a profile,
+                               a parameter out of range, a pose far too deep, ... */
   WRC_NOT_CONVERGED = 3,    /* a solve did not converge; its result is still returned (converged = 0, error) */
   WRC_NOT_FOUND = 4,        /* a result path that the result does not hold */
   WRC_TOO_SMALL = 5         /* a caller-owned array is too small; the count says how many values are needed */

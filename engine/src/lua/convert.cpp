@@ -65,7 +65,8 @@ OptionValue table_option(lua_State* L, int idx, std::string_view context, int de
   if (depth > 16) fail("{}: tables nested too deeply", context);
   std::vector<OptionValue> array;
   OptionTable table;
-  const lua_Integer n = luaL_len(L, idx);
+  // Raw access only: a metamethod that raised would longjmp past the C++ objects being built here.
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, idx));
   lua_pushnil(L);
   while (lua_next(L, idx) != 0) {
     int isint = 0;
@@ -82,7 +83,7 @@ OptionValue table_option(lua_State* L, int idx, std::string_view context, int de
   if (n > 0 && !table.empty()) fail("{}: a table with both an array part and named keys", context);
   if (n == 0) return OptionValue::of(std::move(table));
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, idx, i);
+    lua_rawgeti(L, idx, i);
     array.push_back(to_option_at(L, lua_gettop(L), fmt::format("{}[{}]", context, i), depth + 1));
     lua_pop(L, 1);
   }

@@ -1,0 +1,174 @@
+// The C API (wrc/wrc.h) through libwrc alone: results agree with the engine's own checks (the equilibrium's
+// residuals), bad input gets a status and a message (never a crash: this suite runs under ASan/UBSan), handles are
+// independent, and one wheelset serves several threads at once with the results of sequential calls.
+#include "wrc/wrc.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+std::string last() { return wrc_last_error(); }
+
+// The S1002 wheel and the 60E1 rail canted 1:40 as files (tests/data/profile/samples, every 0.5 mm), read by the
+// reader plugins; a coarse grid keeps the tests fast.
+struct Fixture {
+  wrc_profile *wheel = nullptr, *rail = nullptr;
+  wrc_wheelset* ws = nullptr;
+  Fixture() {
+    REQUIRE_MESSAGE(wrc_profile_load(WRC_SAMPLES "/s1002.prw", nullptr, &wheel) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_profile_load(WRC_SAMPLES "/60e1_canted.prr", nullptr, &rail) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_wheelset_new(wheel, rail, "cant=0 grid=0.5e-3 strategy=uniform+coarse+topology", &ws) == WRC_OK,
+                    last());
+  }
+  ~Fixture() {
+    wrc_wheelset_free(ws);
+    wrc_profile_free(wheel);
+    wrc_profile_free(rail);
+  }
+};
+
+double number(const wrc_result* r, const char* path) {
+  double v = NAN;
+  REQUIRE_MESSAGE(wrc_result_number(r, path, &v) == WRC_OK, last());
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("version and ABI") {
+  CHECK(wrc_abi_version() == WRC_ABI_VERSION);
+  CHECK(std::strlen(wrc_version()) > 0);
+}
+
+TEST_CASE("an equilibrium through the C API carries Q with no roll moment, and its fields read back") {
+  Fixture f;
+  wrc_result* e = nullptr;
+  REQUIRE_MESSAGE(wrc_equilibrium(f.ws, 2e-3, 0.0, 100e3, nullptr, &e) == WRC_OK, last());
+  CHECK(number(e, "converged") == 1);
+  CHECK(std::abs(number(e, "left.force.z") + number(e, "right.force.z") - 100e3) <= 1e-6 * 100e3);
+  CHECK(std::abs(number(e, "residual.force")) <= 1e-6 * 100e3);
+  CHECK(number(e, "Y") == doctest::Approx(-(number(e, "left.force.y") + number(e, "right.force.y"))));
+  size_t n = 0;
+  REQUIRE(wrc_result_count(e, "left.patches", &n) == WRC_OK);
+  REQUIRE(n >= 1);
+  // The pressure grid integrates to the patch's normal force.
+  const double nx = number(e, "left.patches.1.grid.nx"), ny = number(e, "left.patches.1.grid.ny");
+  const double dA = number(e, "left.patches.1.grid.dx") * number(e, "left.patches.1.grid.dy");
+  size_t count = 0;
+  CHECK(wrc_result_numbers(e, "left.patches.1.pressure", nullptr, 0, &count) == WRC_TOO_SMALL);
+  CHECK(count == static_cast<size_t>(nx * ny));
+  std::vector<double> p(count);
+  REQUIRE(wrc_result_numbers(e, "left.patches.1.pressure", p.data(), p.size(), &count) == WRC_OK);
+  double sum = 0;
+  for (double v : p) sum += v * dA;
+  CHECK(sum == doctest::Approx(number(e, "left.patches.1.normal_force")).epsilon(1e-9));
+  // Enumeration lists the same paths.
+  size_t fields = 0;
+  REQUIRE(wrc_result_fields(e, &fields) == WRC_OK);
+  bool seen = false;
+  for (size_t i = 0; i < fields; ++i) {
+    const char* path = nullptr;
+    REQUIRE(wrc_result_field(e, i, &path) == WRC_OK);
+    seen = seen || std::string(path) == "left.patches.1.pmax";
+  }
+  CHECK(seen);
+  CHECK(wrc_result_free(e) == WRC_OK);
+}
+
+TEST_CASE("bad input: a status and a message that names what is wrong") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  CHECK(wrc_equilibrium(nullptr, 0, 0, 1e5, nullptr, &r) == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("wheelset is NULL") != std::string::npos);
+  CHECK(wrc_equilibrium(f.ws, NAN, 0, 1e5, nullptr, &r) == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("y = nan") != std::string::npos);
+  CHECK(r == nullptr);
+  CHECK(wrc_equilibrium(f.ws, 0, 0, 1e5, "max_evaluatons=3", &r) == WRC_ERROR);
+  CHECK(last().find("did you mean 'max_evaluations'") != std::string::npos);
+  CHECK(wrc_equilibrium(f.ws, 0, 0, -5, nullptr, &r) == WRC_ERROR);
+  CHECK(last().find("Q = -5") != std::string::npos);
+  CHECK(wrc_wheel(f.ws, 2, 0, 0, 0, 5e4, nullptr, &r) == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("WRC_LEFT") != std::string::npos);
+  CHECK(wrc_contact(f.ws, 0, 0, 0, 0, nullptr, nullptr) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_wheelset_new(f.wheel, f.wheel, nullptr, nullptr) == WRC_INVALID_ARGUMENT);
+  wrc_wheelset* w2 = nullptr;
+  CHECK(wrc_wheelset_new(f.wheel, f.wheel, nullptr, &w2) == WRC_ERROR);  // a wheel as the rail
+  CHECK(w2 == nullptr);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "raduis=0.45", &w2) == WRC_ERROR);
+  CHECK(last().find("did you mean 'radius'") != std::string::npos);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "strategy=fastest", &w2) == WRC_ERROR);
+  CHECK(last().find("unknown strategy 'fastest'") != std::string::npos);
+  wrc_profile* p = nullptr;
+  CHECK(wrc_profile_load("no/such/file.prr", nullptr, &p) == WRC_ERROR);
+  CHECK(last().find("no such file") != std::string::npos);
+  const double y[2] = {0, 1e-3}, z[2] = {0, 0};
+  CHECK(wrc_profile_from_points("rail", y, z, 2, nullptr, &p) == WRC_ERROR);  // fewer than 3 points
+  CHECK(wrc_profile_from_points("tyre", y, z, 2, nullptr, &p) == WRC_ERROR);
+  CHECK(wrc_profile_from_points("rail", nullptr, z, 2, nullptr, &p) == WRC_INVALID_ARGUMENT);
+  // Result paths and sizes.
+  REQUIRE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, nullptr, &r) == WRC_OK);
+  double v = 0;
+  CHECK(wrc_result_number(r, "left.nosuch", &v) == WRC_NOT_FOUND);
+  CHECK(wrc_result_number(r, "left.patches", &v) == WRC_INVALID_ARGUMENT);  // a list, not a number
+  CHECK(wrc_result_number(r, nullptr, &v) == WRC_INVALID_ARGUMENT);
+  char buf[4];
+  size_t len = 0;
+  CHECK(wrc_result_string(r, "left.patches.1.side", buf, sizeof buf, &len) == WRC_OK);
+  CHECK(std::string(buf) == "lef");  // truncated, NUL-terminated
+  CHECK(len == 4);
+  size_t n = 0;
+  CHECK(wrc_profile_points(f.rail, nullptr, nullptr, 0, &n) == WRC_TOO_SMALL);
+  CHECK(n > 3);
+  wrc_result_free(r);
+}
+
+TEST_CASE("freed handles are refused, and handles are independent") {
+  wrc_result* r = nullptr;
+  wrc_wheelset* ws = nullptr;
+  {
+    Fixture f;
+    REQUIRE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "grids=false", &r) == WRC_OK);
+    ws = f.ws;
+    // Freeing the profiles leaves the wheelset working.
+    REQUIRE(wrc_profile_free(f.wheel) == WRC_OK);
+    REQUIRE(wrc_profile_free(f.rail) == WRC_OK);
+    wrc_result* r2 = nullptr;
+    CHECK(wrc_contact(f.ws, 1e-3, -0.05e-3, 0, 0, nullptr, &r2) == WRC_OK);
+    wrc_result_free(r2);
+    CHECK(wrc_profile_free(f.wheel) == WRC_INVALID_ARGUMENT);  // double free
+    CHECK(last().find("not a live profile") != std::string::npos);
+    f.wheel = f.rail = nullptr;
+  }  // the fixture frees the wheelset
+  CHECK(number(r, "left.force.z") > 0);  // the result outlives its wheelset
+  wrc_result* r3 = nullptr;
+  CHECK(wrc_contact(ws, 0, 0, 0, 0, nullptr, &r3) == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("not a live wheelset") != std::string::npos);
+  // A handle of another type.
+  CHECK(wrc_wheelset_free(reinterpret_cast<wrc_wheelset*>(r)) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_result_free(r) == WRC_OK);
+  CHECK(wrc_result_free(r) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_result_free(nullptr) == WRC_OK);
+}
+
+TEST_CASE("one wheelset from several threads at once gives the results of sequential calls") {
+  Fixture f;
+  const std::vector<double> ys = {-3e-3, -1e-3, 0.0, 1e-3, 2e-3, 3e-3};
+  std::vector<double> seq(ys.size()), par(ys.size());
+  auto solve = [&](std::size_t i, std::vector<double>& out) {
+    wrc_result* e = nullptr;
+    if (wrc_equilibrium(f.ws, ys[i], 0.0, 100e3, "grids=false", &e) != WRC_OK) return;
+    wrc_result_number(e, "z", &out[i]);
+    wrc_result_free(e);
+  };
+  for (std::size_t i = 0; i < ys.size(); ++i) solve(i, seq);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < ys.size(); ++i) threads.emplace_back([&, i] { solve(i, par); });
+  for (auto& t : threads) t.join();
+  for (std::size_t i = 0; i < ys.size(); ++i) CHECK(par[i] == seq[i]);
+}
