@@ -50,32 +50,69 @@ int kind_of(const Request& rq) {
   return rq.kind_hint;
 }
 
-void parse(std::string_view data, const Request& rq, Out& out) {
-  const int kind = kind_of(rq);
-  if (kind == WRC_KIND_UNKNOWN)
-    fail_at(0, "a MiniProf file without the extension .ban (rail) or .whl (wheel): pass kind = \"wheel\" or \"rail\"");
-  out.kind(kind);
-  const bool wheel = kind == WRC_KIND_WHEEL;
-
+// The reader's options: tape_x (wheels only) and y_axis, which overrides the orientation detection.
+struct Options {
   double tape_x = 70.0;
+  int forced_axis = 0;  // +1 standard, -1 reversed, 0 detect
+};
+
+Options read_options(const Request& rq, bool wheel) {
+  Options o;
   if (const std::string* t = rq.option("tape_x")) {
     if (!wheel) fail_at(0, "option tape_x applies to wheels (.whl) only");
-    tape_x = number(*t, 0, "option tape_x");
+    o.tape_x = number(*t, 0, "option tape_x");
   }
-  int forced_axis = 0;  // +1 standard, -1 reversed
   if (const std::string* a = rq.option("y_axis")) {
-    if (*a == "standard") forced_axis = 1;
-    else if (*a == "reversed") forced_axis = -1;
+    if (*a == "standard") o.forced_axis = 1;
+    else if (*a == "reversed") o.forced_axis = -1;
     else fail_at(0, "option y_axis must be \"standard\" or \"reversed\", got {}", quoted(*a));
   }
+  return o;
+}
 
-  const auto lines = split_lines(data);
-  std::size_t i = 0;
-  // Header.
+// What the header says about the points.
+struct Header {
   std::size_t col_x = 0, col_y = 1, ncols = 2;
-  long long declared = -1;
+  long long declared = -1;  // XYPoints, -1: not given
   int declared_line = 0, last_header_line = 0;
   bool column_def = false;
+};
+
+// The keys that shape the reading of the points: ColumnDef and XYPoints.
+void read_header_key(const std::string& key, std::string_view value, int line, Header& h) {
+  if (key == "ColumnDef") {
+    const auto names = split_fields(value, ',');
+    h.ncols = names.size();
+    bool hx = false, hy = false;
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      const std::string n = lower(names[c]);
+      if (n == "x") h.col_x = c, hx = true;
+      if (n == "y") h.col_y = c, hy = true;
+    }
+    if (!hx || !hy) fail_at(line, "ColumnDef must name the columns X and Y, got {}", quoted(value));
+    h.column_def = true;
+  } else if (key == "XYPoints") {
+    const auto v = parse_double(value);
+    if (!v || *v < 0 || *v != std::floor(*v) || *v > 1e8)
+      fail_at(line, "XYPoints must be a whole number of points, got {}", quoted(value));
+    h.declared = static_cast<long long>(*v);
+    h.declared_line = line;
+  }
+}
+
+// A line without '=' that starts (after an optional mark `"`) with a number: a point row.
+bool is_point_row(std::string_view s) {
+  std::string_view row = s;
+  if (!row.empty() && row.front() == '"') row.remove_prefix(1);
+  row = trim(row);
+  const auto fields = split_fields(row, detect_separator(row));
+  return !fields.empty() && parse_double(fields[0]);
+}
+
+// The header, up to the first empty line or the first point row; every key becomes metadata. Advances i to
+// the first line after the header.
+Header read_header(const std::vector<Line>& lines, std::size_t& i, Out& out) {
+  Header h;
   for (; i < lines.size(); ++i) {
     const Line& ln = lines[i];
     const std::string_view s = trim(ln.text);
@@ -86,44 +123,23 @@ void parse(std::string_view data, const Request& rq, Out& out) {
     if (i == 0 && lower(s) == "miniprof") continue;
     const auto eq = s.find('=');
     if (eq == std::string_view::npos) {
-      // No empty line before the data: a numeric row ends the header too.
-      std::string_view row = s;
-      if (!row.empty() && row.front() == '"') row.remove_prefix(1);
-      row = trim(row);
-      const auto fields = split_fields(row, detect_separator(row));
-      if (!fields.empty() && parse_double(fields[0])) break;
+      if (is_point_row(s)) break;  // no empty line before the data: a numeric row ends the header too
       fail_at(ln.number, "expected a `Key=Value` header line, got {}", quoted(s));
     }
     const std::string key(trim(s.substr(0, eq)));
     const std::string_view value = trim(s.substr(eq + 1));
-    last_header_line = ln.number;
+    h.last_header_line = ln.number;
     out.metadata(key, std::string(value));
-    if (key == "ColumnDef") {
-      const auto names = split_fields(value, ',');
-      ncols = names.size();
-      bool hx = false, hy = false;
-      for (std::size_t c = 0; c < names.size(); ++c) {
-        const std::string n = lower(names[c]);
-        if (n == "x") col_x = c, hx = true;
-        if (n == "y") col_y = c, hy = true;
-      }
-      if (!hx || !hy) fail_at(ln.number, "ColumnDef must name the columns X and Y, got {}", quoted(value));
-      column_def = true;
-    } else if (key == "XYPoints") {
-      const auto v = parse_double(value);
-      if (!v || *v < 0 || *v != std::floor(*v) || *v > 1e8)
-        fail_at(ln.number, "XYPoints must be a whole number of points, got {}", quoted(value));
-      declared = static_cast<long long>(*v);
-      declared_line = ln.number;
-    }
+    read_header_key(key, value, ln.number, h);
   }
-  if (lines.empty()) fail_at(0, "the file is empty");
-  if (!column_def) out.transform("no ColumnDef: columns taken as X, Y");
+  return h;
+}
 
-  // Points.
+// The point rows from line i on, in the columns of the header; one separator for all rows.
+std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const Header& h, int& marked) {
   std::vector<Row> rows;
   char sep = 0;
-  int first_row_line = 0, marked = 0;
+  int first_row_line = 0;
   for (; i < lines.size(); ++i) {
     const Line& ln = lines[i];
     std::string_view s = trim(strip_comment(ln.text, "!%"));
@@ -140,51 +156,71 @@ void parse(std::string_view data, const Request& rq, Out& out) {
       fail_at(ln.number, "fields separated by {}, but the rows from line {} are separated by {} (mixed separators)",
               separator_name(here), first_row_line, separator_name(sep));
     const auto f = split_fields(s, sep);
-    if (f.size() != ncols)
-      fail_at(ln.number, "{} fields, but {} declares {} columns", f.size(), column_def ? "ColumnDef" : "the default X,Y", ncols);
-    rows.push_back({number(f[col_x], ln.number, "X"), number(f[col_y], ln.number, "Y"), ln.number});
+    if (f.size() != h.ncols)
+      fail_at(ln.number, "{} fields, but {} declares {} columns", f.size(), h.column_def ? "ColumnDef" : "the default X,Y", h.ncols);
+    rows.push_back({number(f[h.col_x], ln.number, "X"), number(f[h.col_y], ln.number, "Y"), ln.number});
   }
-  if (rows.empty()) fail_at(last_header_line, "a header but no points after it");
-  if (declared >= 0 && static_cast<long long>(rows.size()) != declared)
-    fail_at(declared_line, "XYPoints = {} but the file holds {} points (lines {} .. {})", declared, rows.size(),
+  return rows;
+}
+
+// Which way Y points (+1 standard, -1 reversed) and why.
+struct Orientation {
+  int axis;
+  std::string why;
+};
+
+// The option if given; else the head top (flange tip) is the interior extreme of Y.
+Orientation orientation(const std::vector<Row>& rows, bool wheel, int forced_axis) {
+  if (forced_axis != 0) return {forced_axis, fmt::format("option y_axis = {}", forced_axis > 0 ? "standard" : "reversed")};
+  const auto [ymin_it, ymax_it] = std::minmax_element(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.y < b.y; });
+  const double ymin = ymin_it->y, ymax = ymax_it->y, e1 = rows.front().y, e2 = rows.back().y;
+  const double up = ymax - std::max(e1, e2), down = std::min(e1, e2) - ymin, extent = ymax - ymin;
+  const char* extreme = wheel ? "flange tip" : "head top";
+  if (up > 4 * down && up > 0.05 * extent)
+    return {1, fmt::format("detected: the {} is the largest Y = {:.4f}, the ends lie at Y = {:.4f} and {:.4f}", extreme, ymax, e1, e2)};
+  if (down > 4 * up && down > 0.05 * extent)
+    return {-1, fmt::format("detected: the {} is the smallest Y = {:.4f}, the ends lie at Y = {:.4f} and {:.4f}", extreme, ymin, e1, e2)};
+  fail_at(rows.front().line,
+          "cannot tell which way Y points: no clear {} between the ends (Y {:.4f} .. {:.4f}, ends {:.4f} and {:.4f}); "
+          "pass y_axis = \"standard\" or \"reversed\"",
+          extreme, ymin, ymax, e1, e2);
+}
+
+void parse(std::string_view data, const Request& rq, Out& out) {
+  const int kind = kind_of(rq);
+  if (kind == WRC_KIND_UNKNOWN)
+    fail_at(0, "a MiniProf file without the extension .ban (rail) or .whl (wheel): pass kind = \"wheel\" or \"rail\"");
+  out.kind(kind);
+  const bool wheel = kind == WRC_KIND_WHEEL;
+  const Options opt = read_options(rq, wheel);
+
+  const auto lines = split_lines(data);
+  std::size_t i = 0;
+  const Header h = read_header(lines, i, out);
+  if (lines.empty()) fail_at(0, "the file is empty");
+  if (!h.column_def) out.transform("no ColumnDef: columns taken as X, Y");
+
+  int marked = 0;
+  const std::vector<Row> rows = read_rows(lines, i, h, marked);
+  if (rows.empty()) fail_at(h.last_header_line, "a header but no points after it");
+  if (h.declared >= 0 && static_cast<long long>(rows.size()) != h.declared)
+    fail_at(h.declared_line, "XYPoints = {} but the file holds {} points (lines {} .. {})", h.declared, rows.size(),
             rows.front().line, rows.back().line);
   if (marked) out.metadata("marked_points", std::to_string(marked));
   if (rows.size() < 3)
     fail_at(rows.back().line, "only {} point{} read; a profile needs at least 3", rows.size(), rows.size() == 1 ? "" : "s");
 
-  // Which way does Y point? The head top (flange tip) is the interior extreme.
-  const auto [ymin_it, ymax_it] = std::minmax_element(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.y < b.y; });
-  const double ymin = ymin_it->y, ymax = ymax_it->y, e1 = rows.front().y, e2 = rows.back().y;
-  const double up = ymax - std::max(e1, e2), down = std::min(e1, e2) - ymin, extent = ymax - ymin;
-  const char* extreme = wheel ? "flange tip" : "head top";
-  int axis = forced_axis;
-  std::string why;
-  if (axis == 0) {
-    if (up > 4 * down && up > 0.05 * extent) {
-      axis = 1;
-      why = fmt::format("detected: the {} is the largest Y = {:.4f}, the ends lie at Y = {:.4f} and {:.4f}", extreme, ymax, e1, e2);
-    } else if (down > 4 * up && down > 0.05 * extent) {
-      axis = -1;
-      why = fmt::format("detected: the {} is the smallest Y = {:.4f}, the ends lie at Y = {:.4f} and {:.4f}", extreme, ymin, e1, e2);
-    } else {
-      fail_at(rows.front().line,
-              "cannot tell which way Y points: no clear {} between the ends (Y {:.4f} .. {:.4f}, ends {:.4f} and {:.4f}); "
-              "pass y_axis = \"standard\" or \"reversed\"",
-              extreme, ymin, ymax, e1, e2);
-    }
-  } else {
-    why = fmt::format("option y_axis = {}", axis > 0 ? "standard" : "reversed");
-  }
+  const auto [axis, why] = orientation(rows, wheel, opt.forced_axis);
   // Rails: standard Y is up (z = Y). Wheels: standard Y is the radius offset toward the flange tip (z = -Y).
   const double zsign = (wheel ? -1.0 : 1.0) * axis;
   if (wheel)
     out.transform(fmt::format("MiniProf wheel, Y {} ({}): z = {}Y; y = X - {} (tape circle {} from the flange back)",
                               axis > 0 ? "toward the flange tip (standard)" : "away from the flange tip (reversed)", why,
-                              zsign > 0 ? "" : "-", tape_x, tape_x));
+                              zsign > 0 ? "" : "-", opt.tape_x, opt.tape_x));
   else
     out.transform(fmt::format("MiniProf rail, Y points {} ({}): z = {}Y; y = X", axis > 0 ? "up (standard)" : "down (reversed)",
                               why, zsign > 0 ? "" : "-"));
-  for (const Row& r : rows) out.point(wheel ? r.x - tape_x : r.x, zsign * r.y, r.line);
+  for (const Row& r : rows) out.point(wheel ? r.x - opt.tape_x : r.x, zsign * r.y, r.line);
 }
 
 }  // namespace

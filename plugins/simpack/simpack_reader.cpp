@@ -101,90 +101,111 @@ void check_header(const Section& header, Out& out) {
   for (const auto& [k, v] : header.keys) out.metadata("header." + k, v.text);
 }
 
-void parse(std::string_view data, const Request&, Out& out) {
-  const auto lines = split_lines(data);
-  enum class State { top, header, spline, points, done } st = State::top;
+// The sections of a file as read, before the processing.
+struct File {
   Section header, spline;
   std::vector<Point> pts;
   int points_begin = 0, points_end = 0;
   bool seen_header = false, seen_points = false;
+};
+
+enum class State { top, header, spline, points, done };
+
+// Outside a section (before or after spline.end) only header.begin and spline.begin may come.
+State begin_section(std::string_view s, int line, File& f) {
+  if (s == "header.begin") {
+    if (f.seen_header) fail_at(line, "a second header.begin (the first is on line {})", f.header.begin_line);
+    f.seen_header = true;
+    f.header.begin_line = line;
+    return State::header;
+  }
+  if (s == "spline.begin") {
+    if (f.spline.begin_line) fail_at(line, "a second spline.begin (the first is on line {}); one profile per file", f.spline.begin_line);
+    f.spline.begin_line = line;
+    return State::spline;
+  }
+  fail_at(line, "expected header.begin or spline.begin, got {}", quoted(s));
+}
+
+// A line of point.begin/end: `y z [weight]` separated by blanks (the weight is checked, not used).
+Point read_point(std::string_view s, int line) {
+  if (s.find_first_of(",;") != std::string_view::npos)
+    fail_at(line, "a ',' or ';' in a point line; Simpack points are separated by blanks (mixed separators)");
+  const auto f = split_fields(s, ' ');
+  if (f.size() < 2 || f.size() > 3) fail_at(line, "a point line holds `y z [weight]`, got {} fields", f.size());
+  const double y = number(f[0], line, "y");
+  const double z = number(f[1], line, "z");
+  if (f.size() == 3) number(f[2], line, "weight");
+  return {y, z, line};
+}
+
+// A line inside header, spline or points: the section's end, a nested point.begin, a key or a point.
+State read_in_section(State st, std::string_view s, int line, File& f, Out& out) {
+  switch (st) {
+    case State::header:
+      if (s == "header.end") {
+        f.header.end_line = line;
+        check_header(f.header, out);
+        return State::top;
+      }
+      read_key(s, line, f.header);
+      return st;
+    case State::spline:
+      if (s == "spline.end") {
+        f.spline.end_line = line;
+        return State::done;
+      }
+      if (s == "point.begin") {
+        if (f.seen_points) fail_at(line, "a second point.begin (the first is on line {})", f.points_begin);
+        f.seen_points = true;
+        f.points_begin = line;
+        return State::points;
+      }
+      read_key(s, line, f.spline);
+      return st;
+    case State::points:
+      if (s == "point.end") {
+        f.points_end = line;
+        return State::spline;
+      }
+      f.pts.push_back(read_point(s, line));
+      return st;
+    case State::top:
+    case State::done:
+      break;
+  }
+  return st;  // top and done: begin_section
+}
+
+// At the end of the file: every section closed, and points read.
+void check_complete(const File& f, State st, const std::vector<Line>& lines) {
+  const int last = lines.empty() ? 0 : lines.back().number;
+  if (lines.empty() || (!f.seen_header && !f.spline.begin_line)) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
+  if (st == State::header) fail_at(last, "the file ends inside header.begin (line {}): no header.end", f.header.begin_line);
+  if (st == State::points) fail_at(last, "the file ends inside point.begin (line {}): no point.end", f.points_begin);
+  if (st == State::spline) fail_at(last, "the file ends inside spline.begin (line {}): no spline.end", f.spline.begin_line);
+  if (!f.seen_header) fail_at(0, "no header.begin ... header.end (it says version and type)");
+  if (!f.spline.begin_line) fail_at(f.header.end_line, "no spline.begin ... spline.end after the header: no points");
+  if (!f.seen_points) fail_at(f.spline.end_line, "no point.begin ... point.end in the spline section: no points");
+  if (f.pts.empty()) fail_at(f.points_end, "no points between point.begin (line {}) and point.end", f.points_begin);
+}
+
+// Reads the sections line by line (a state machine); the header is checked as soon as it ends.
+File read_sections(std::string_view data, Out& out) {
+  const auto lines = split_lines(data);
+  File f;
+  State st = State::top;
   for (const Line& ln : lines) {
     const std::string_view s = trim(strip_bang(ln.text));
     if (s.empty()) continue;
-    switch (st) {
-      case State::top:
-      case State::done:
-        if (s == "header.begin") {
-          if (seen_header) fail_at(ln.number, "a second header.begin (the first is on line {})", header.begin_line);
-          seen_header = true;
-          header.begin_line = ln.number;
-          st = State::header;
-        } else if (s == "spline.begin") {
-          if (spline.begin_line) fail_at(ln.number, "a second spline.begin (the first is on line {}); one profile per file", spline.begin_line);
-          spline.begin_line = ln.number;
-          st = State::spline;
-        } else {
-          fail_at(ln.number, "expected header.begin or spline.begin, got {}", quoted(s));
-        }
-        break;
-      case State::header:
-        if (s == "header.end") {
-          header.end_line = ln.number;
-          st = State::top;
-          check_header(header, out);
-        } else {
-          read_key(s, ln.number, header);
-        }
-        break;
-      case State::spline:
-        if (s == "spline.end") {
-          spline.end_line = ln.number;
-          st = State::done;
-        } else if (s == "point.begin") {
-          if (seen_points) fail_at(ln.number, "a second point.begin (the first is on line {})", points_begin);
-          seen_points = true;
-          points_begin = ln.number;
-          st = State::points;
-        } else {
-          read_key(s, ln.number, spline);
-        }
-        break;
-      case State::points: {
-        if (s == "point.end") {
-          points_end = ln.number;
-          st = State::spline;
-          break;
-        }
-        if (s.find_first_of(",;") != std::string_view::npos)
-          fail_at(ln.number, "a ',' or ';' in a point line; Simpack points are separated by blanks (mixed separators)");
-        const auto f = split_fields(s, ' ');
-        if (f.size() < 2 || f.size() > 3)
-          fail_at(ln.number, "a point line holds `y z [weight]`, got {} fields", f.size());
-        const double y = number(f[0], ln.number, "y");
-        const double z = number(f[1], ln.number, "z");
-        if (f.size() == 3) number(f[2], ln.number, "weight");
-        pts.push_back({y, z, ln.number});
-        break;
-      }
-    }
+    st = st == State::top || st == State::done ? begin_section(s, ln.number, f) : read_in_section(st, s, ln.number, f, out);
   }
-  const int last = lines.empty() ? 0 : lines.back().number;
-  if (lines.empty() || (!seen_header && !spline.begin_line)) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
-  if (st == State::header) fail_at(last, "the file ends inside header.begin (line {}): no header.end", header.begin_line);
-  if (st == State::points) fail_at(last, "the file ends inside point.begin (line {}): no point.end", points_begin);
-  if (st == State::spline) fail_at(last, "the file ends inside spline.begin (line {}): no spline.end", spline.begin_line);
-  if (!seen_header) fail_at(0, "no header.begin ... header.end (it says version and type)");
-  if (!spline.begin_line) fail_at(header.end_line, "no spline.begin ... spline.end after the header: no points");
-  if (!seen_points) fail_at(spline.end_line, "no point.begin ... point.end in the spline section: no points");
-  if (pts.empty()) fail_at(points_end, "no points between point.begin (line {}) and point.end", points_begin);
+  check_complete(f, st, lines);
+  return f;
+}
 
-  const Keys sk(spline);
-  for (const auto& [k, v] : spline.keys) out.metadata(k, v.text);
-
-  if (const Value* sm = sk.find("approx.smooth"); sm && number(sm->text, sm->line, "approx.smooth") != 0)
-    out.transform(fmt::format("{}: smoothing not applied (the points are used as given)", sk.where("approx.smooth")));
-
-  // 1: minimum point distance.
+// 1: minimum point distance.
+void drop_close_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
   const double dmin = sk.num("point.dist.min", 0);
   if (dmin < 0) fail_at(sk.find("point.dist.min")->line, "point.dist.min must be >= 0");
   if (dmin > 0) {
@@ -195,14 +216,20 @@ void parse(std::string_view data, const Request&, Out& out) {
                               pts.size() - kept.size()));
     pts = std::move(kept);
   }
-  // 2: shift.
+}
+
+// 2: shift.
+void shift_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
   const double sy = sk.num("shift.y", 0), sz = sk.num("shift.z", 0);
   if (sy != 0 || sz != 0) {
     for (Point& p : pts) p.y += sy, p.z += sz;
     out.transform(fmt::format("2 {}, {}: y += {}, z += {}", sk.where("shift.y"), sk.where("shift.z"), sy, sz));
   }
-  // 3: rotation about x by rotate / units.ang.f radians: (y, z) -> (y cos a - z sin a, y sin a + z cos a),
-  // in the file's (y, z-down) frame.
+}
+
+// 3: rotation about x by rotate / units.ang.f radians: (y, z) -> (y cos a - z sin a, y sin a + z cos a),
+// in the file's (y, z-down) frame.
+void rotate_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
   const double angf = sk.num("units.ang.f", 1.0);
   if (!(angf > 0)) fail_at(sk.find("units.ang.f")->line, "units.ang.f must be positive, got {}", angf);
   const double rot = sk.num("rotate", 0) / angf;
@@ -214,22 +241,24 @@ void parse(std::string_view data, const Request&, Out& out) {
     }
     out.transform(fmt::format("3 {}: points rotated by {:.9g} rad about x (file frame, z down)", sk.where("rotate"), rot));
   }
-  // 4: bounds, each pair only when min <= max.
-  auto bound = [&](const char* kmin, const char* kmax, bool on_y) {
-    const Value* vmin = sk.find(kmin);
-    const Value* vmax = sk.find(kmax);
-    if (!vmin || !vmax) return;
-    const double lo = number(vmin->text, vmin->line, kmin), hi = number(vmax->text, vmax->line, kmax);
-    if (lo > hi) return;  // Simpack: bounds switched off
-    const std::size_t before = pts.size();
-    pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { const double v = on_y ? p.y : p.z; return v < lo || v > hi; }),
-              pts.end());
-    out.transform(fmt::format("4 {}, {}: {} points outside dropped", sk.where(kmin), sk.where(kmax), before - pts.size()));
-    if (pts.empty()) fail_at(vmin->line, "no point lies within {} .. {} = {} .. {}", kmin, kmax, lo, hi);
-  };
-  bound("bound.y.min", "bound.y.max", true);
-  bound("bound.z.min", "bound.z.max", false);
-  // 5: mirror.
+}
+
+// 4: bounds on y (on_y) or z; a pair applies only when both are given and min <= max.
+void bound_points(const Keys& sk, const char* kmin, const char* kmax, bool on_y, std::vector<Point>& pts, Out& out) {
+  const Value* vmin = sk.find(kmin);
+  const Value* vmax = sk.find(kmax);
+  if (!vmin || !vmax) return;
+  const double lo = number(vmin->text, vmin->line, kmin), hi = number(vmax->text, vmax->line, kmax);
+  if (lo > hi) return;  // Simpack: bounds switched off
+  const std::size_t before = pts.size();
+  pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { const double v = on_y ? p.y : p.z; return v < lo || v > hi; }),
+            pts.end());
+  out.transform(fmt::format("4 {}, {}: {} points outside dropped", sk.where(kmin), sk.where(kmax), before - pts.size()));
+  if (pts.empty()) fail_at(vmin->line, "no point lies within {} .. {} = {} .. {}", kmin, kmax, lo, hi);
+}
+
+// 5: mirror, 6: inversion of the point order.
+void mirror_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
   if (sk.flag("mirror.y")) {
     for (Point& p : pts) p.y = -p.y;
     out.transform(fmt::format("5 {}: y -> -y", sk.where("mirror.y")));
@@ -238,19 +267,41 @@ void parse(std::string_view data, const Request&, Out& out) {
     for (Point& p : pts) p.z = -p.z;
     out.transform(fmt::format("5 {}: z -> -z", sk.where("mirror.z")));
   }
-  // 6: inversion of the point order.
   if (sk.flag("inversion")) {
     std::reverse(pts.begin(), pts.end());
     out.transform(fmt::format("6 {}: point order reversed", sk.where("inversion")));
   }
-  // 7: units.len.f = file units per metre.
+}
+
+// 7: units.len.f = file units per metre.
+void set_units(const Keys& sk, Out& out) {
   if (const Value* u = sk.find("units.len.f")) {
     const double f = number(u->text, u->line, "units.len.f");
     if (!(f > 0)) fail_at(u->line, "units.len.f must be positive (file units per metre), got {}", quoted(u->text));
     out.units(1.0 / f, fmt::format("units.len.f = {} (line {})", u->text, u->line));
   }
+}
+
+// The spline section's keys become metadata; its processing steps are applied in their numbered order.
+void process(const Section& spline, std::vector<Point>& pts, Out& out) {
+  const Keys sk(spline);
+  for (const auto& [k, v] : spline.keys) out.metadata(k, v.text);
+  if (const Value* sm = sk.find("approx.smooth"); sm && number(sm->text, sm->line, "approx.smooth") != 0)
+    out.transform(fmt::format("{}: smoothing not applied (the points are used as given)", sk.where("approx.smooth")));
+  drop_close_points(sk, pts, out);
+  shift_points(sk, pts, out);
+  rotate_points(sk, pts, out);
+  bound_points(sk, "bound.y.min", "bound.y.max", true, pts, out);
+  bound_points(sk, "bound.z.min", "bound.z.max", false, pts, out);
+  mirror_points(sk, pts, out);
+  set_units(sk, out);
+}
+
+void parse(std::string_view data, const Request&, Out& out) {
+  File f = read_sections(data, out);
+  process(f.spline, f.pts, out);
   out.transform("Simpack z points down: z -> -z (engine z up)");
-  for (const Point& p : pts) out.point(p.y, -p.z, p.line);
+  for (const Point& p : f.pts) out.point(p.y, -p.z, p.line);
 }
 
 }  // namespace

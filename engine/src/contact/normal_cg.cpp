@@ -130,6 +130,223 @@ void prolong(const Grid& coarse, const std::vector<double>& pc, const Grid& fine
   }
 }
 
+// The start of a solve: the pressure to start from (empty: none) and the work done on coarser grids for it.
+struct Start {
+  std::vector<double> pressure;
+  int iterations = 0, products = 0;
+};
+
+// Nested start: the coarse grid's solution, interpolated, is a start whose contact set is right to a coarse
+// element or two, so the fine grid mostly runs the CG's converging phase. Otherwise the warm start if given.
+// solve_coarse(coarse grid, its h, its options) is the solver itself, one level down.
+template <class SolveCoarse>
+Start make_start(const Grid& grid, std::span<const double> h, const NormalOptions& options,
+                 SolveCoarse&& solve_coarse) {
+  Start start;
+  if (options.initial_pressure.empty() && options.nested && grid.size() > options.coarse_limit && grid.nx >= 4 &&
+      grid.ny >= 4) {
+    const Grid coarse = coarse_grid(grid);
+    const std::vector<double> hc = restrict_to(grid, coarse, h);
+    NormalOptions coarse_options = options;
+    coarse_options.tolerance = std::max(options.tolerance, 1e-2);  // a start only: the coarse grid's own
+                                                                   // discretisation error is of this order
+    const NormalSolution sc = solve_coarse(coarse, hc, coarse_options);
+    start.iterations = sc.iterations + sc.coarse_iterations;
+    start.products = sc.products + sc.coarse_products;
+    if (sc.force > 0) {
+      start.pressure.resize(grid.size());
+      prolong(coarse, sc.pressure, grid, start.pressure);
+    }
+  } else if (!options.initial_pressure.empty()) {
+    start.pressure.assign(options.initial_pressure.begin(), options.initial_pressure.end());
+  }
+  return start;
+}
+
+// The projected CG on one grid (see the top of the file), on the workspace's vectors: p the pressure, u = K p,
+// r the residual, z the preconditioned residual, d the search direction, q = K d.
+class ProjectedCg {
+ public:
+  ProjectedCg(FftOperator& K, const Grid& grid, std::span<const double> h, const NormalLoad& load,
+              NormalWorkspace& ws)
+      : K_(K), grid_(grid), h_(h), load_(load), force_control_(load.control == NormalLoad::Control::force),
+        n_(grid.size()), dA_(grid.element_area()), direct_limit_(K.direct_limit()), ws_(ws), p_(ws.p), u_(ws.u),
+        r_(ws.r), z_(ws.z), d_(ws.d), q_(ws.q) {
+    for (auto* v : {&p_, &u_, &r_, &z_, &d_, &q_}) v->assign(n_, 0.0);
+    ws_.active.assign(n_, 0);
+    ws_.previous_active.assign(n_, 0);
+  }
+
+  void start(const std::vector<double>& pressure);
+  // Iterates until the gap on the working set is within options.tolerance of the penetration hmax + approach
+  // (confirmed on a fresh product); throws wrc::Error after the iteration limit.
+  void run(const NormalOptions& options, double hmax);
+
+  double approach() const { return delta_; }
+  int iterations() const { return iterations_; }
+
+ private:
+  struct Residual {
+    bool changed;  // the working set differs from the previous iteration's
+    double error;  // max |r|
+    int count;     // elements in the working set
+  };
+  Residual update_working_set();
+  bool find_direction(const Residual& res, bool precondition, double& rz, double& dq);
+  void take_step(double alpha);
+  void rescale_to_force();
+
+  FftOperator& K_;
+  const Grid& grid_;
+  std::span<const double> h_;
+  const NormalLoad& load_;
+  const bool force_control_;
+  const int n_;
+  const double dA_;
+  const int direct_limit_;  // clipped elements up to this count are added back by direct sums
+  NormalWorkspace& ws_;
+  std::vector<double>&p_, &u_, &r_, &z_, &d_, &q_;
+  double delta_ = 0;  // the approach
+  double rz_previous_ = 0;
+  bool have_direction_ = false, fresh_ = true;  // fresh: u = K p by a product, not by updates
+  int iterations_ = 0;
+  std::vector<std::pair<int, double>> clipped_;
+};
+
+// A prescribed force is kept by scaling p (and u = K p with it).
+void ProjectedCg::rescale_to_force() {
+  double sum = 0;
+  for (double v : p_) sum += v;
+  const double f = load_.force / (sum * dA_);
+  for (int k = 0; k < n_; ++k) p_[k] *= f, u_[k] *= f;
+}
+
+// The warm or nested start, else nothing (penetration) or a uniform pressure on {h > 0} (force).
+void ProjectedCg::start(const std::vector<double>& pressure) {
+  for (std::size_t k = 0; k < pressure.size(); ++k) p_[k] = std::max(0.0, pressure[k]);
+  if (force_control_) {
+    double sum = 0;
+    for (double v : p_) sum += v;
+    if (!(sum > 0)) {
+      int count = 0;
+      for (int k = 0; k < n_; ++k) count += h_[k] > 0;
+      if (count > 0) {
+        for (int k = 0; k < n_; ++k) p_[k] = h_[k] > 0 ? 1.0 : 0.0;
+      } else {
+        p_[std::max_element(h_.begin(), h_.end()) - h_.begin()] = 1.0;
+      }
+    }
+  }
+  if (std::any_of(p_.begin(), p_.end(), [](double v) { return v > 0; })) K_.apply(p_, u_);  // else u = 0 already
+  if (force_control_) rescale_to_force();
+}
+
+// Working set S = {p > 0} U {g < 0}, the approach, and the residual r = -g on S (0 elsewhere).
+ProjectedCg::Residual ProjectedCg::update_working_set() {
+  std::swap(ws_.active, ws_.previous_active);
+  unsigned char* S = ws_.active.data();
+  const unsigned char* S_previous = ws_.previous_active.data();
+  const double* hp = h_.data();
+  if (force_control_) {  // the approach seen by the current contact, then by the working set
+    double sum = 0;
+    int count = 0;
+    for (int k = 0; k < n_; ++k)
+      if (p_[k] > 0) sum += u_[k] - hp[k], ++count;
+    delta_ = sum / count;
+  }
+  Residual res{false, 0.0, 0};
+  double sum = 0;
+  for (int k = 0; k < n_; ++k) {
+    const double g = u_[k] - hp[k] - delta_;
+    const unsigned char in = p_[k] > 0 || g < 0;
+    S[k] = in;
+    res.changed |= in != S_previous[k];
+    r_[k] = in ? -g : 0.0;
+    sum += in ? u_[k] - hp[k] : 0.0;
+    res.count += in;
+  }
+  if (force_control_) {  // re-centre on S: the residual has zero mean there
+    const double shift = sum / res.count - delta_;
+    delta_ += shift;
+    for (int k = 0; k < n_; ++k) r_[k] += S[k] ? shift : 0.0;
+  }
+  for (int k = 0; k < n_; ++k) res.error = std::max(res.error, std::abs(r_[k]));
+  return res;
+}
+
+// Preconditioned residual z on S (zero mean on S for a prescribed force), the conjugate direction d (restarted
+// when S changed) and q = K d. Returns false if rz or dq lost their sign to rounding.
+bool ProjectedCg::find_direction(const Residual& res, bool precondition, double& rz, double& dq) {
+  const unsigned char* S = ws_.active.data();
+  if (precondition)
+    K_.invert(r_, z_);
+  else
+    z_ = r_;
+  rz = 0;
+  double zsum = 0;
+  for (int k = 0; k < n_; ++k) {
+    z_[k] = S[k] ? z_[k] : 0.0;
+    rz += r_[k] * z_[k];
+    zsum += z_[k];
+  }
+  const double zmean = force_control_ ? zsum / res.count : 0.0;  // r sums to zero on S: rz is unchanged
+  const double beta = have_direction_ && !res.changed ? rz / rz_previous_ : 0.0;
+  for (int k = 0; k < n_; ++k) d_[k] = S[k] ? z_[k] - zmean + beta * d_[k] : 0.0;
+  K_.apply(d_, q_);
+  dq = 0;
+  for (int k = 0; k < n_; ++k) dq += d_[k] * q_[k];
+  return dq > 0 && rz > 0;
+}
+
+// Step, projection onto p >= 0, and the matching update of u = K p: the clipped elements are added back by
+// direct sums when few, else u is recomputed by a product.
+void ProjectedCg::take_step(double alpha) {
+  clipped_.clear();
+  for (int k = 0; k < n_; ++k) {
+    const double v = p_[k] + alpha * d_[k];
+    if (v < 0) clipped_.emplace_back(k, -v);  // the projection adds -v back
+    p_[k] = std::max(v, 0.0);
+    u_[k] += alpha * q_[k];
+  }
+  if (static_cast<int>(clipped_.size()) > direct_limit_) {
+    K_.apply(p_, u_);
+    fresh_ = true;
+  } else {
+    for (const auto& [k, amount] : clipped_) K_.add_element(k, amount, u_);
+    fresh_ = false;
+  }
+  if (force_control_ && !clipped_.empty()) rescale_to_force();
+}
+
+void ProjectedCg::run(const NormalOptions& options, double hmax) {
+  const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 2000;
+  for (;;) {
+    const Residual res = update_working_set();
+    const double scale = hmax + delta_;
+    if (res.error <= options.tolerance * scale) {
+      if (fresh_) break;
+      K_.apply(p_, u_);  // incremental updates may have drifted: confirm with a fresh product
+      fresh_ = true;
+      continue;
+    }
+    if (iterations_ >= max_iterations)
+      fail("NormalSolver::solve: no convergence in {} CG iterations on a {} x {} grid (max |gap| on the contact "
+           "set {:.3g} of the penetration, tolerance {:.3g})",
+           max_iterations, grid_.nx, grid_.ny, res.error / scale, options.tolerance);
+    ++iterations_;
+    double rz, dq;
+    if (!find_direction(res, options.precondition, rz, dq)) {  // lost to rounding at the end of convergence:
+      have_direction_ = false;                                  // restart afresh
+      K_.apply(p_, u_);
+      fresh_ = true;
+      continue;
+    }
+    take_step(rz / dq);
+    rz_previous_ = rz;
+    have_direction_ = true;
+  }
+}
+
 }  // namespace
 
 NormalSolution NormalSolver::solve(const Grid& grid, std::span<const double> h, const NormalLoad& load,
@@ -141,175 +358,31 @@ NormalSolution NormalSolver::solve(const Grid& grid, std::span<const double> h, 
 NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const double> h, const NormalLoad& load,
                                            NormalWorkspace& ws, const NormalOptions& options) const {
   const bool force_control = load.control == NormalLoad::Control::force;
-  const int n = grid.size();
   const double hmax = *std::max_element(h.begin(), h.end());
   if ((force_control && load.force == 0) || (!force_control && hmax <= 0)) return detail::zero_solution(grid, h, load);
 
-  // Nested start: the coarse grid's solution, interpolated, is a start whose contact set is right to a
-  // coarse element or two, so the fine grid mostly runs the CG's converging phase.
-  int coarse_iterations = 0, coarse_products = 0;
-  std::vector<double> start;
-  if (options.initial_pressure.empty() && options.nested && n > options.coarse_limit && grid.nx >= 4 &&
-      grid.ny >= 4) {
-    const Grid coarse = coarse_grid(grid);
-    const std::vector<double> hc = restrict_to(grid, coarse, h);
-    NormalOptions coarse_options = options;
-    coarse_options.tolerance = std::max(options.tolerance, 1e-2);  // a start only: the coarse grid's own
-                                                                   // discretisation error is of this order
-    const NormalSolution sc = solve_checked(coarse, hc, load, ws, coarse_options);
-    coarse_iterations = sc.iterations + sc.coarse_iterations;
-    coarse_products = sc.products + sc.coarse_products;
-    if (sc.force > 0) {
-      start.resize(n);
-      prolong(coarse, sc.pressure, grid, start);
-    }
-  } else if (!options.initial_pressure.empty()) {
-    start.assign(options.initial_pressure.begin(), options.initial_pressure.end());
-  }
+  const Start start = make_start(grid, h, options, [&](const Grid& coarse, std::span<const double> hc,
+                                                       const NormalOptions& coarse_options) {
+    return solve_checked(coarse, hc, load, ws, coarse_options);
+  });
 
   const auto spectrum = cache_.get(grid);
   const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
   FftOperator K{*spectrum, *periodic, grid, 1.0 / (std::numbers::pi * material_.combined_modulus()), ws.fft};
-  const double dA = grid.element_area();
-  const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 2000;
-  auto& p = ws.p;
-  auto& u = ws.u;
-  auto& r = ws.r;
-  auto& z = ws.z;
-  auto& d = ws.d;
-  auto& q = ws.q;
-  for (auto* v : {&p, &u, &r, &z, &d, &q}) v->assign(n, 0.0);
-  ws.active.assign(n, 0);
-  ws.previous_active.assign(n, 0);
-
-  // Start: the warm or nested start, else nothing (penetration) or a uniform pressure on {h > 0} (force).
-  for (std::size_t k = 0; k < start.size(); ++k) p[k] = std::max(0.0, start[k]);
-  const auto rescale_to_force = [&] {
-    double sum = 0;
-    for (double v : p) sum += v;
-    const double f = load.force / (sum * dA);
-    for (int k = 0; k < n; ++k) p[k] *= f, u[k] *= f;
-  };
-  if (force_control) {
-    double sum = 0;
-    for (double v : p) sum += v;
-    if (!(sum > 0)) {
-      int count = 0;
-      for (int k = 0; k < n; ++k) count += h[k] > 0;
-      if (count > 0) {
-        for (int k = 0; k < n; ++k) p[k] = h[k] > 0 ? 1.0 : 0.0;
-      } else {
-        p[std::max_element(h.begin(), h.end()) - h.begin()] = 1.0;
-      }
-    }
-  }
-  if (std::any_of(p.begin(), p.end(), [](double v) { return v > 0; })) K.apply(p, u);  // else u = 0 already
-  if (force_control) rescale_to_force();
-
-  double delta = 0;  // the approach
-  double rz_previous = 0;
-  bool have_direction = false, fresh = true;
-  int iterations = 0;
-  const int direct_limit = K.direct_limit();
-  std::vector<std::pair<int, double>> clipped;
-  const double* hp = h.data();
-  for (;;) {
-    // Working set S = {p > 0} U {g < 0}, the approach, and the residual r = -g on S (0 elsewhere).
-    std::swap(ws.active, ws.previous_active);
-    unsigned char* S = ws.active.data();
-    const unsigned char* S_previous = ws.previous_active.data();
-    if (force_control) {  // the approach seen by the current contact, then by the working set
-      double sum = 0;
-      int count = 0;
-      for (int k = 0; k < n; ++k)
-        if (p[k] > 0) sum += u[k] - hp[k], ++count;
-      delta = sum / count;
-    }
-    bool changed = false;
-    double error = 0, sum = 0;
-    int count = 0;
-    for (int k = 0; k < n; ++k) {
-      const double g = u[k] - hp[k] - delta;
-      const unsigned char in = p[k] > 0 || g < 0;
-      S[k] = in;
-      changed |= in != S_previous[k];
-      r[k] = in ? -g : 0.0;
-      sum += in ? u[k] - hp[k] : 0.0;
-      count += in;
-    }
-    if (force_control) {  // re-centre on S: the residual has zero mean there
-      const double shift = sum / count - delta;
-      delta += shift;
-      for (int k = 0; k < n; ++k) r[k] += S[k] ? shift : 0.0;
-    }
-    for (int k = 0; k < n; ++k) error = std::max(error, std::abs(r[k]));
-    const double scale = hmax + delta;
-    if (error <= options.tolerance * scale) {
-      if (fresh) break;
-      K.apply(p, u);  // incremental updates may have drifted: confirm with a fresh product
-      fresh = true;
-      continue;
-    }
-    if (iterations >= max_iterations)
-      fail("NormalSolver::solve: no convergence in {} CG iterations on a {} x {} grid (max |gap| on the contact "
-           "set {:.3g} of the penetration, tolerance {:.3g})",
-           max_iterations, grid.nx, grid.ny, error / scale, options.tolerance);
-    ++iterations;
-
-    // Preconditioned residual z on S (zero mean on S for a prescribed force).
-    if (options.precondition)
-      K.invert(r, z);
-    else
-      z = r;
-    double rz = 0, zsum = 0;
-    for (int k = 0; k < n; ++k) {
-      z[k] = S[k] ? z[k] : 0.0;
-      rz += r[k] * z[k];
-      zsum += z[k];
-    }
-    const double zmean = force_control ? zsum / count : 0.0;  // r sums to zero on S: rz is unchanged
-    const double beta = have_direction && !changed ? rz / rz_previous : 0.0;
-    for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] - zmean + beta * d[k] : 0.0;
-    K.apply(d, q);
-    double dq = 0;
-    for (int k = 0; k < n; ++k) dq += d[k] * q[k];
-    if (!(dq > 0) || !(rz > 0)) {  // lost to rounding at the end of convergence: restart afresh
-      have_direction = false;
-      K.apply(p, u);
-      fresh = true;
-      continue;
-    }
-    // Step, projection onto p >= 0, and the matching update of u = K p.
-    const double alpha = rz / dq;
-    clipped.clear();
-    for (int k = 0; k < n; ++k) {
-      const double v = p[k] + alpha * d[k];
-      if (v < 0) clipped.emplace_back(k, -v);  // the projection adds -v back
-      p[k] = std::max(v, 0.0);
-      u[k] += alpha * q[k];
-    }
-    if (static_cast<int>(clipped.size()) > direct_limit) {
-      K.apply(p, u);
-      fresh = true;
-    } else {
-      for (const auto& [k, amount] : clipped) K.add_element(k, amount, u);
-      fresh = false;
-    }
-    if (force_control && !clipped.empty()) rescale_to_force();
-    rz_previous = rz;
-    have_direction = true;
-  }
+  ProjectedCg cg(K, grid, h, load, ws);
+  cg.start(start.pressure);
+  cg.run(options, hmax);
 
   NormalSolution s;
   s.grid = grid;
   s.load = load;
-  s.pressure = p;
-  s.approach = force_control ? delta : 0.0;
-  s.iterations = iterations;
+  s.pressure = ws.p;
+  s.approach = force_control ? cg.approach() : 0.0;
+  s.iterations = cg.iterations();
   s.products = K.products;
-  s.coarse_iterations = coarse_iterations;
-  s.coarse_products = coarse_products;
-  detail::finish_solution(s, u, h);
+  s.coarse_iterations = start.iterations;
+  s.coarse_products = start.products;
+  detail::finish_solution(s, ws.u, h);
   return s;
 }
 

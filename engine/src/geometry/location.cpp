@@ -13,11 +13,12 @@
 // cut a segment, which is an error of the strategy.
 #include "geometry/crossings.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/core/union_find.hpp"
 #include "wrc/geometry/location.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <utility>
 
 namespace wrc {
 
@@ -104,11 +105,6 @@ void LocationState::reset(const Pose& pose) {
 
 namespace {
 
-int find(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 // The cone of the wheel above a wheelset-frame lateral position (not an end face, preferably not a flat ring).
 int cone_above(const WheelCones& w, double Y) {
   const int n = w.cone_count();
@@ -128,11 +124,9 @@ struct Workspace {
   std::vector<int>&parent, &root, &start;
 };
 
-void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side, std::vector<Crossing>& xs,
-                   std::vector<Segment>& segs, std::vector<Patch>& patches, int& grazes, Workspace ws) {
-  const SideGeometry& g = model.side[side];
-  // The searches emit crossings nearly in order (lines increasing, few per line): insertion sort, with a full
-  // sort if that turns out not to be the case.
+// The searches emit crossings nearly in order (lines increasing, few per line): insertion sort, with a full
+// sort if that turns out not to be the case.
+void sort_crossings(std::vector<Crossing>& xs) {
   auto less = [](const Crossing& a, const Crossing& b) {
     if (a.line != b.line) return a.line < b.line;
     if (a.x != b.x) return a.x < b.x;
@@ -142,8 +136,13 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
   for (std::size_t a = 1; a < xs.size() && moves <= 16 * xs.size(); ++a)
     for (std::size_t b = a; b > 0 && less(xs[b], xs[b - 1]); --b, ++moves) std::swap(xs[b], xs[b - 1]);
   if (moves > 16 * xs.size()) std::sort(xs.begin(), xs.end(), less);
-  // Segments, line by line.
-  std::vector<Segment>& raw = ws.raw;
+}
+
+// Segments, line by line: each line's sorted crossings, cleaned (detail::clean_line), taken in pairs (enter,
+// leave). Throws if a line keeps an odd count.
+void make_segments(const GeometryModel& model, int side, std::vector<Crossing>& xs, int& grazes,
+                   std::vector<Segment>& raw) {
+  const SideGeometry& g = model.side[side];
   raw.clear();
   std::size_t i = 0;
   while (i < xs.size()) {
@@ -169,11 +168,12 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
     }
     i = end;  // clean_line erased (j - end) entries: the next line now starts at `end`
   }
-  // Patches: union of overlapping segments on adjacent lines.
+}
+
+// Patches: union of segments that overlap in x on adjacent lines. raw is ordered by line then x, so the
+// segments of two adjacent lines are walked together like two sorted lists.
+void link_overlapping(const std::vector<Segment>& raw, UnionFind& sets) {
   const int n = static_cast<int>(raw.size());
-  std::vector<int>& parent = ws.parent;
-  parent.resize(n);
-  std::iota(parent.begin(), parent.end(), 0);
   int a = 0;
   while (a < n) {
     int b = a;
@@ -183,59 +183,80 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
     if (b < n && raw[b].line == raw[a].line + 1) {
       int p = a, q = b;
       while (p < b && q < c) {
-        if (raw[p].x_l >= raw[q].x_t && raw[q].x_l >= raw[p].x_t) {
-          const int rp = find(parent, p), rq = find(parent, q);
-          if (rp != rq) parent[std::max(rp, rq)] = std::min(rp, rq);
-        }
+        if (raw[p].x_l >= raw[q].x_t && raw[q].x_l >= raw[p].x_t) sets.unite(p, q);
         if (raw[p].x_l < raw[q].x_l) ++p; else ++q;
       }
     }
     a = b;
   }
-  // Order: patches by their first segment (the root: the smallest index of the group); segments of a patch by line
-  // then x -- a stable counting sort by root.
-  std::vector<int>& root = ws.root;
-  std::vector<int>& start = ws.start;
+}
+
+// Order: patches by their first segment (the root: the smallest index of the group); segments of a patch by line
+// then x -- a stable counting sort by root into segs. Leaves root[k] (the group of raw segment k) and start[r]
+// (the end of group r in segs).
+void sort_by_patch(const std::vector<Segment>& raw, UnionFind& sets, std::vector<int>& root, std::vector<int>& start,
+                   std::vector<Segment>& segs) {
+  const int n = static_cast<int>(raw.size());
   root.resize(n);
   start.assign(n + 1, 0);
   for (int k = 0; k < n; ++k) {
-    root[k] = find(parent, k);
+    root[k] = sets.find(k);
     ++start[root[k] + 1];
   }
   for (int k = 0; k < n; ++k) start[k + 1] += start[k];
   segs.resize(n);
   for (int k = 0; k < n; ++k) segs[start[root[k]]++] = raw[k];
-  // start[r] now points past group r; rebuild the patch ranges in order of their roots.
+}
+
+// The patch of the segments [k, e): its lines, its longest segment, and at the middle of that segment the
+// nominal point with the wheel cone above it and the wheel's normal there.
+Patch make_patch(const SideGeometry& g, const PoseFrame& frame, int side, const std::vector<Segment>& segs, int k,
+                 int e) {
+  Patch p;
+  p.side = side;
+  p.first_segment = k;
+  p.segment_count = e - k;
+  p.longest = k;
+  p.first_line = segs[k].line;
+  p.last_line = segs[k].line;
+  for (int m = k; m < e; ++m) {
+    if (segs[m].length() > segs[p.longest].length()) p.longest = m;
+    p.first_line = std::min(p.first_line, segs[m].line);
+    p.last_line = std::max(p.last_line, segs[m].line);
+  }
+  const Segment& s = segs[p.longest];
+  p.point = Eigen::Vector3d(0.5 * (s.x_t + s.x_l), s.y, s.z);
+  p.wheel_point = frame.to_wheelset(p.point);
+  const double rho = std::hypot(p.wheel_point.x(), p.wheel_point.z());
+  p.eps = std::atan2(p.wheel_point.x(), -p.wheel_point.z());
+  p.cone = cone_above(g.wheel, p.wheel_point.y());
+  const Cone cone = g.wheel.cone(p.cone);
+  p.wheel_radius = cone.radius_at(p.wheel_point.y());
+  p.depth = p.wheel_radius - rho;
+  double ny = 0, nr = 0;
+  cone.meridian_normal(ny, nr);
+  const Eigen::Vector3d n_w(nr * std::sin(p.eps), ny, -nr * std::cos(p.eps));
+  p.normal = frame.matrix() * n_w;
+  return p;
+}
+
+// Crossings -> segments -> patches (groups of touching segments) with their nominal points.
+void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side, std::vector<Crossing>& xs,
+                   std::vector<Segment>& segs, std::vector<Patch>& patches, int& grazes, Workspace ws) {
+  sort_crossings(xs);
+  make_segments(model, side, xs, grazes, ws.raw);
+  UnionFind sets(std::move(ws.parent));  // the state's storage, handed back below: no allocation per pose
+  sets.reset(static_cast<int>(ws.raw.size()));
+  link_overlapping(ws.raw, sets);
+  sort_by_patch(ws.raw, sets, ws.root, ws.start, segs);
+  ws.parent = std::move(sets).take_storage();
+  // start[r] now points past group r; the patch ranges in order of their roots.
   patches.clear();
+  const int n = static_cast<int>(segs.size());
   for (int k = 0, r = 0; k < n; ++r) {
-    if (root[r] != r) continue;  // r is not the first segment of a group
-    const int e = start[r];      // the group occupies [k, e)
-    Patch p;
-    p.side = side;
-    p.first_segment = k;
-    p.segment_count = e - k;
-    p.longest = k;
-    p.first_line = segs[k].line;
-    p.last_line = segs[k].line;
-    for (int m = k; m < e; ++m) {
-      if (segs[m].length() > segs[p.longest].length()) p.longest = m;
-      p.first_line = std::min(p.first_line, segs[m].line);
-      p.last_line = std::max(p.last_line, segs[m].line);
-    }
-    const Segment& s = segs[p.longest];
-    p.point = Eigen::Vector3d(0.5 * (s.x_t + s.x_l), s.y, s.z);
-    p.wheel_point = frame.to_wheelset(p.point);
-    const double rho = std::hypot(p.wheel_point.x(), p.wheel_point.z());
-    p.eps = std::atan2(p.wheel_point.x(), -p.wheel_point.z());
-    p.cone = cone_above(g.wheel, p.wheel_point.y());
-    const Cone cone = g.wheel.cone(p.cone);
-    p.wheel_radius = cone.radius_at(p.wheel_point.y());
-    p.depth = p.wheel_radius - rho;
-    double ny = 0, nr = 0;
-    cone.meridian_normal(ny, nr);
-    const Eigen::Vector3d n_w(nr * std::sin(p.eps), ny, -nr * std::cos(p.eps));
-    p.normal = frame.matrix() * n_w;
-    patches.push_back(p);
+    if (ws.root[r] != r) continue;  // r is not the first segment of a group
+    const int e = ws.start[r];      // the group occupies [k, e)
+    patches.push_back(make_patch(model.side[side], frame, side, segs, k, e));
     k = e;
   }
 }

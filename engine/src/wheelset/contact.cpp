@@ -420,7 +420,8 @@ std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::
                                           const std::vector<Plane>& planes) {
   const ContactOptions& opt = model.options();
   const int np = static_cast<int>(infos.size());
-  UnionFind sets(np);
+  UnionFind sets;
+  sets.reset(np);
   for (int a = 0; a < np; ++a)
     for (int b = a + 1; b < np; ++b) {
       if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > opt.merge_angle) continue;
