@@ -46,12 +46,11 @@ double interaction_ratio(const Material& material, const PatchFootprint& source,
   validate(material, "patch interaction");
   check(source, "source");
   check(target, "target");
-  const double Es = material.combined_modulus();
   const double F = source.force > 0 ? source.force : estimated_force(material, source);
   const double s = std::hypot(target.x - source.x, target.y - source.y);
   const double a = contact_radius(source);
   const double r = std::max(s, a);  // overlapping patches: at least the edge value (they merge anyway)
-  const double w = F / (std::numbers::pi * Es * r) * near_field_factor(r, a);
+  const double w = F * material.pair_compliance() / r * near_field_factor(r, a);
   return 1.5 * w / target.penetration;
 }
 

@@ -10,6 +10,8 @@ namespace wrc::contact {
 
 double Material::compliance() const { return (1.0 - nu * nu) / (std::numbers::pi * E); }
 
+double Material::pair_compliance() const { return 1.0 / (std::numbers::pi * combined_modulus()); }
+
 void validate(const Material& material, std::string_view context) {
   if (!std::isfinite(material.E) || !(material.E > 0))
     fail("{}: Young's modulus E = {} Pa must be finite and positive", context, material.E);

@@ -368,7 +368,7 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
 
   const auto spectrum = cache_.get(grid);
   const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
-  FftOperator K{*spectrum, *periodic, grid, 1.0 / (std::numbers::pi * material_.combined_modulus()), ws.fft};
+  FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft};
   ProjectedCg cg(K, grid, h, load, ws);
   cg.start(start.pressure);
   cg.run(options, hmax);
@@ -406,7 +406,7 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   }
   const auto spectrum = cache_.get(grid);
   const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
-  FftOperator K{*spectrum, *periodic, grid, 1.0 / (std::numbers::pi * material_.combined_modulus()), ws.fft};
+  FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft};
   auto& x = out.pressure;
   auto& r = ws.r;
   auto& z = ws.z;

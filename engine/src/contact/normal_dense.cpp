@@ -69,7 +69,7 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
   const double hmax = *std::max_element(h.begin(), h.end());
   if ((force_control && load.force == 0) || (!force_control && hmax <= 0)) return detail::zero_solution(grid, h, load);
 
-  const double factor = 1.0 / (std::numbers::pi * material.combined_modulus());  // 2 D = factor * I
+  const double factor = material.pair_compliance();  // 2 D = factor * I
   const InfluenceTable table(grid.dx, grid.dy, grid.nx, grid.ny);
   const double dA = grid.element_area();
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 200;
@@ -150,7 +150,7 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
     detail::finish_response(r, grid);
     return r;
   }
-  const double factor = 1.0 / (std::numbers::pi * material.combined_modulus());
+  const double factor = material.pair_compliance();
   const InfluenceTable table(grid.dx, grid.dy, grid.nx, grid.ny);
   const ActiveBlock block(table, factor, grid, active);
   const int m = static_cast<int>(active.size());

@@ -105,19 +105,6 @@ void LocationState::reset(const Pose& pose) {
 
 namespace {
 
-// The cone of the wheel above a wheelset-frame lateral position (not an end face, preferably not a flat ring).
-int cone_above(const WheelCones& w, double Y) {
-  const int n = w.cone_count();
-  int c = std::clamp(w.first_cone_reaching(Y), 1, n - 2);
-  if (w.cone(c).is_ring()) {
-    for (int d = 1; d < n; ++d) {
-      if (c + d <= n - 2 && !w.cone(c + d).is_ring() && w.y[c + d] <= Y) return c + d;
-      if (c - d >= 1 && !w.cone(c - d).is_ring() && w.y[c - d + 1] >= Y) return c - d;
-      if (c + d > n - 2 && c - d < 1) break;
-    }
-  }
-  return c;
-}
 
 struct Workspace {
   std::vector<Segment>& raw;
@@ -229,7 +216,7 @@ Patch make_patch(const SideGeometry& g, const PoseFrame& frame, int side, const 
   p.wheel_point = frame.to_wheelset(p.point);
   const double rho = std::hypot(p.wheel_point.x(), p.wheel_point.z());
   p.eps = std::atan2(p.wheel_point.x(), -p.wheel_point.z());
-  p.cone = cone_above(g.wheel, p.wheel_point.y());
+  p.cone = g.wheel.running_cone(p.wheel_point.y());
   const Cone cone = g.wheel.cone(p.cone);
   p.wheel_radius = cone.radius_at(p.wheel_point.y());
   p.depth = p.wheel_radius - rho;

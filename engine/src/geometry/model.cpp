@@ -48,6 +48,17 @@ void Cone::meridian_normal(double& n_y, double& n_r) const {
   n_r = dy / L;
 }
 
+int WheelCones::running_cone(double Y) const {
+  // Profile points are 1 .. n - 1 (0 and n are on the axle); running-surface cones 1 .. n - 2.
+  const int n = cone_count();
+  Y = std::clamp(Y, y[1], y[n - 1]);
+  // First point with y >= Y among the profile points; the cone before it holds Y.
+  const auto it = std::lower_bound(y.begin() + 1, y.begin() + n, Y);
+  int c = std::clamp(static_cast<int>(it - y.begin()) - 1, 1, n - 2);
+  while (c < n - 2 && y[c + 1] == y[c]) ++c;  // a flat ring holds Y only at its own y: take the cone after it
+  return c;
+}
+
 int WheelCones::first_cone_reaching(double y_lo) const {
   // Cone w spans [y[w], y[w+1]]: the first w with y[w+1] >= y_lo.
   const auto it = std::lower_bound(y.begin() + 1, y.end(), y_lo);

@@ -31,14 +31,9 @@ namespace {
 
 // The running-surface cone holding Y (clamped to the profile) and the position t in [0, 1] on it.
 int cone_holding(const WheelCones& w, double& Y, double& t) {
-  // Profile points are 1 .. n - 1 (0 and n are on the axle); running-surface cones 1 .. n - 2.
   const int n = w.cone_count();
   Y = std::clamp(Y, w.y[1], w.y[n - 1]);
-  // First point with y >= Y among the profile points; the cone before it holds Y.
-  const auto it = std::lower_bound(w.y.begin() + 1, w.y.begin() + n, Y);
-  int c = std::clamp(static_cast<int>(it - w.y.begin()) - 1, 1, n - 2);
-  // Skip flat rings (vertical runs): they hold Y only at their own y; take the neighbouring cone that spans Y.
-  while (c < n - 2 && w.y[c + 1] == w.y[c]) ++c;
+  const int c = w.running_cone(Y);
   const double y0 = w.y[c], y1 = w.y[c + 1];
   t = y1 > y0 ? std::clamp((Y - y0) / (y1 - y0), 0.0, 1.0) : 0.0;
   return c;

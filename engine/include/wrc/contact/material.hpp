@@ -15,6 +15,9 @@ struct Material {
   // Displacement of ONE body's surface per unit of the 1/r integral of the pressure: (1 - nu^2) / (pi E)
   // (1/Pa). The pair's approach is twice this (both bodies deform).
   double compliance() const;
+  // The pair's approach per unit of the 1/r integral of the pressure, 1 / (pi E*) (1/Pa): twice compliance(), the
+  // factor of the influence matrix 2 D of eq. 2 (both bodies deform) and of Boussinesq's far field F / (pi E* r).
+  double pair_compliance() const;
 };
 
 // Throws wrc::Error naming `context` when E is not finite and > 0 or nu is not in ]-1, 0.5[.

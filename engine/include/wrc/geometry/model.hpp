@@ -73,6 +73,10 @@ struct WheelCones {
   int cone_count() const { return static_cast<int>(y.size()) - 1; }  // cone w joins points w and w + 1
   Cone cone(int w) const { return {y[w], z[w], y[w + 1], z[w + 1]}; }
   bool is_end_face(int w) const { return w == 0 || w == cone_count() - 1; }
+  // The running-surface cone (not an end face) that holds the lateral position Y, clamped to the profile: the cone
+  // spanning Y, the next one when a flat ring (a vertical run) sits exactly at Y. The one rule for "the wheel above
+  // a point" (location's nominal point, the smooth surface queries of wheel_surface.hpp).
+  int running_cone(double Y) const;
   // First cone whose closed y range reaches y_lo, last cone whose closed y range starts at or before y_hi.
   int first_cone_reaching(double y_lo) const;
   int last_cone_starting_before(double y_hi) const;
