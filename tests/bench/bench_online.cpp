@@ -233,6 +233,7 @@ int main(int argc, char** argv) {
     }
     const int steps = quick ? 200 : 1000;
     wrc::Trajectory traj(*wsg);
+    traj.workspace().timing = true;
     std::vector<double> per_step;
     const double V = 100 / 3.6, f = 1.5;
     for (int k = 0; k < steps; ++k) {
@@ -245,6 +246,7 @@ int main(int argc, char** argv) {
     }
     fmt::print("grid {:.1f} mm: {:.3f} ms per wheel and step (median {:.3f} ms per step for both wheels, {} steps)\n",
                grid * 1e3, 1e3 * median(per_step) / 2, 1e3 * median(per_step), steps);
+    print_times("per step", traj.workspace().times, steps);
   }
   return 0;
 }

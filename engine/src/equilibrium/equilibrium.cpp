@@ -201,7 +201,9 @@ class EquilibriumSolver {
     req_ = request;
     req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
     req_.keep_grids = true;
-    req_.tolerance = std::max(opt.normal_tolerance, model.options().normal.tolerance);
+    // Inexact solves no looser than the residual tolerance asked for (a force accuracy of the same order).
+    inexact_ = std::max(std::min({opt.normal_tolerance, opt.force_tolerance, opt.moment_tolerance}),
+                        model.options().normal.tolerance);
     ftol_ = opt.force_tolerance * Q;
     mtol_ = opt.moment_tolerance * Q * 1.0;  // the moment scale Q x 1 m
   }
@@ -218,6 +220,7 @@ class EquilibriumSolver {
   // regime (a wheel lifted or not) changes. Leaves the last iterate in `cur`; false with a reason in `why`.
   bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, bool J0_lifted,
               Iterate& cur, std::string& why) {
+    req_.tolerance = inexact_;
     cur = evaluate(y, z, roll);
     std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
@@ -225,6 +228,13 @@ class EquilibriumSolver {
     for (int k = 0;; ++k) {
       if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
       res_.iterations = k;
+      if (converged(cur) && req_.tolerance > model_.options().normal.tolerance) {
+        // Converged on inexact normal solves: confirm at the model's tolerance (the forces evaluate_contact
+        // gives at this pose; from the converged pressures, a few CG iterations), and go on from there if the
+        // residuals moved out of tolerance.
+        req_.tolerance = model_.options().normal.tolerance;
+        cur = evaluate(y, cur.z, cur.roll);
+      }
       if (converged(cur)) {
         if (J) res_.jacobian = J, res_.jacobian_lifted = J_lifted;  // for a neighbouring case (a sweep)
         return true;
@@ -475,6 +485,7 @@ class EquilibriumSolver {
   const EquilibriumOptions& opt_;
   EquilibriumResult& res_;
   ContactRequest req_;
+  double inexact_ = 0;  // the normal solves' tolerance while Newton iterates (options.normal_tolerance)
   double ftol_ = 0, mtol_ = 0;
   bool unbudgeted_ = false;
 };

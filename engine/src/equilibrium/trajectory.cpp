@@ -5,6 +5,7 @@ namespace wrc {
 
 Trajectory::Trajectory(const Wheelset& wheelset, const TrajectoryOptions& options)
     : wheelset_(wheelset), options_(options), workspace_(wheelset.make_workspace()) {
+  workspace_->follow_lattice = true;
   if (!(options.tolerance >= 1e-14 && options.tolerance < 1e-2))
     fail("trajectory: tolerance must be in [1e-14, 1e-2[, got {}", options.tolerance);
 }

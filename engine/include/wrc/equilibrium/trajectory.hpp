@@ -30,6 +30,8 @@ class Trajectory {
   // Forget the previous steps.
   void reset();
   const TrajectoryOptions& options() const { return options_; }
+  // The workspace's accumulated times (set timing on to measure; benchmarks).
+  ContactWorkspace& workspace() { return *workspace_; }
 
  private:
   const Wheelset& wheelset_;
