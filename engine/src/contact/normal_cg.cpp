@@ -33,6 +33,7 @@ struct FftOperator {
   const Grid& grid;
   double factor;
   ConvolutionWorkspace& ws;
+  ConvolutionWorkspace& ws_periodic;
   int products = 0;
 
   void apply(const std::vector<double>& x, std::vector<double>& y) {
@@ -40,7 +41,7 @@ struct FftOperator {
     ++products;
   }
   void invert(const std::vector<double>& r, std::vector<double>& z) {
-    deconvolve(periodic, grid, r.data(), z.data(), ws, 1.0 / factor);
+    deconvolve(periodic, grid, r.data(), z.data(), ws_periodic, 1.0 / factor);
     ++products;
   }
   // y += K e_at * amount: a direct sum over the grid, cheaper than a product for a few elements.
@@ -425,7 +426,7 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
                           double hmax) {
   const auto spectrum = cache.get(grid);
   const auto periodic = cache.get(grid, InfluenceSpectrum::Kind::periodic);
-  FftOperator K{*spectrum, *periodic, grid, factor, ws.fft};
+  FftOperator K{*spectrum, *periodic, grid, factor, ws.fft, ws.fft_periodic};
   ProjectedCg cg(K, grid, h, load, ws);
   cg.start(start.pressure);
   cg.run(options, hmax);
@@ -531,7 +532,7 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   }
   const auto spectrum = cache_.get(grid);
   const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
-  FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft};
+  FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft, ws.fft_periodic};
   auto& x = out.pressure;
   auto& r = ws.r;
   auto& z = ws.z;

@@ -201,9 +201,10 @@ class EquilibriumSolver {
     req_ = request;
     req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
     req_.keep_grids = true;
-    // Inexact solves no looser than the residual tolerance asked for (a force accuracy of the same order).
-    inexact_ = std::max(std::min({opt.normal_tolerance, opt.force_tolerance, opt.moment_tolerance}),
-                        model.options().normal.tolerance);
+    // Inexact solves a tenth of the residual tolerance asked for (their force error is of the order of their
+    // tolerance), so that the confirmation at the model's tolerance (confirm) rarely moves a solution out.
+    req_.tolerance = std::max(std::min({opt.normal_tolerance, 0.1 * opt.force_tolerance, 0.1 * opt.moment_tolerance}),
+                              model.options().normal.tolerance);
     ftol_ = opt.force_tolerance * Q;
     mtol_ = opt.moment_tolerance * Q * 1.0;  // the moment scale Q x 1 m
   }
@@ -220,7 +221,6 @@ class EquilibriumSolver {
   // regime (a wheel lifted or not) changes. Leaves the last iterate in `cur`; false with a reason in `why`.
   bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, bool J0_lifted,
               Iterate& cur, std::string& why) {
-    req_.tolerance = inexact_;
     cur = evaluate(y, z, roll);
     std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
@@ -228,13 +228,6 @@ class EquilibriumSolver {
     for (int k = 0;; ++k) {
       if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
       res_.iterations = k;
-      if (converged(cur) && req_.tolerance > model_.options().normal.tolerance) {
-        // Converged on inexact normal solves: confirm at the model's tolerance (the forces evaluate_contact
-        // gives at this pose; from the converged pressures, a few CG iterations), and go on from there if the
-        // residuals moved out of tolerance.
-        req_.tolerance = model_.options().normal.tolerance;
-        cur = evaluate(y, cur.z, cur.roll);
-      }
       if (converged(cur)) {
         if (J) res_.jacobian = J, res_.jacobian_lifted = J_lifted;  // for a neighbouring case (a sweep)
         return true;
@@ -428,6 +421,20 @@ class EquilibriumSolver {
 
   std::optional<RigidResult> rigid;  // the rigid solution at y, once from_rigid has run
 
+  // A solution found with inexact normal solves, evaluated again at the model's tolerance (the forces
+  // evaluate_contact gives at the pose; from the converged pressures, a few CG iterations); if that moved the
+  // residuals out of tolerance, Newton goes on from there with solves at the model's tolerance.
+  bool confirm(double y, Iterate& cur, std::string& why) {
+    if (req_.tolerance <= model_.options().normal.tolerance) return true;
+    req_.tolerance = model_.options().normal.tolerance;
+    cur = evaluate(y, cur.z, cur.roll);
+    if (converged(cur)) return true;
+    Iterate next;
+    if (!newton(y, cur.z, cur.roll, res_.jacobian, res_.jacobian_lifted, next, why)) return false;
+    cur = std::move(next);
+    return true;
+  }
+
   // One evaluation past the budget, for the last iterate of a failed solve.
   Iterate evaluate_unbudgeted(double y, double z, double roll) {
     unbudgeted_ = true;
@@ -485,7 +492,6 @@ class EquilibriumSolver {
   const EquilibriumOptions& opt_;
   EquilibriumResult& res_;
   ContactRequest req_;
-  double inexact_ = 0;  // the normal solves' tolerance while Newton iterates (options.normal_tolerance)
   double ftol_ = 0, mtol_ = 0;
   bool unbudgeted_ = false;
 };
@@ -544,6 +550,11 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     if (!ok) ok = near_centre ? (std::abs(y) > 0.5e-3 && solver.continuation(y, cur, why)) : solver.from_rigid(y, cur, why);
     // 3. Nested bracketing.
     if (!ok) ok = solver.bracketing(y, cur, why);
+    if (ok) {
+      std::string w;
+      ok = solver.confirm(y, cur, w);
+      if (!ok) why.push_back("confirming at the model's tolerance: " + w);
+    }
   } catch (const EvaluationBudget& e) {
     why.push_back(e.what());
     if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);

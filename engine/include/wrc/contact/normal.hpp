@@ -104,7 +104,9 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
 class NormalWorkspace {
  public:
   NormalWorkspace() = default;
-  ConvolutionWorkspace fft;
+  ConvolutionWorkspace fft;           // products with D (zero-padded grids)
+  ConvolutionWorkspace fft_periodic;  // the preconditioner (periodic grids): its own buffers, so that alternating
+                                      // the two does not re-zero a padded buffer at every product
   std::vector<double> p, u, r, z, d, q;
   std::vector<unsigned char> active, previous_active;
 };
