@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
       for (const auto& e : r.elastic) tz.push_back(e.z), troll.push_back(e.roll);
     }
     const int steps = quick ? 200 : 1000;
-    wrc::Trajectory traj(*wsg);
+    wrc::Trajectory traj(wsg);
     traj.workspace().timing = true;
     std::vector<double> per_step;
     const double V = 100 / 3.6, f = 1.5;

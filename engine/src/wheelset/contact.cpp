@@ -276,15 +276,6 @@ const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspa
   return best;
 }
 
-// Moves the plane's origin within the plane onto the lattice of the previous area's element centres (a tangential
-// shift of less than half an element: the same plane, another sampling), so that a slowly moving contact keeps its
-// grid and the previous pressures start the solve element for element (ContactWorkspace::follow_lattice).
-void snap_to_lattice(const ContactWorkspace::Previous& prev, double element, Plane& pl) {
-  const Eigen::Vector3d d = pl.O - (prev.origin + prev.grid.x0 * prev.t1 + prev.grid.y0 * prev.t2);
-  const double du = d.dot(pl.t1), dv = d.dot(pl.t2);
-  pl.O -= (du - std::round(du / element) * element) * pl.t1 + (dv - std::round(dv / element) * element) * pl.t2;
-}
-
 bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
                 std::vector<double>& start) {
   if (!best) return false;
@@ -428,9 +419,8 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   std::vector<SegmentInfo> all;
   for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
   const Patch& first = st.patches(side)[static_cast<std::size_t>(group.front())];
-  Plane pl = plane_of(all, first);
+  const Plane pl = plane_of(all, first);
   const ContactWorkspace::Previous* prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
-  if (prev && ws.follow_lattice) snap_to_lattice(*prev, opt.element, pl);
 
   PatchContact pc;
   pc.side = side;
