@@ -67,7 +67,14 @@ struct FftOperator {
 
 }  // namespace
 
-NormalSolver::NormalSolver(const Material& material, FftPlanning planning) : material_(material), cache_(planning) {
+std::shared_ptr<const InfluenceCache> shared_cache(FftPlanning planning) {
+  static const auto estimate = std::make_shared<const InfluenceCache>(FftPlanning::estimate);
+  static const auto measure = std::make_shared<const InfluenceCache>(FftPlanning::measure);
+  return planning == FftPlanning::measure ? measure : estimate;
+}
+
+NormalSolver::NormalSolver(const Material& material, FftPlanning planning)
+    : material_(material), cache_(shared_cache(planning)) {
   validate(material, "NormalSolver");
 }
 
@@ -504,12 +511,12 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
   std::vector<int> penetrating;
   std::vector<double> found;
   for (int attempt = 0; attempt < 3 && w.size() > 0 && w.size() <= (1 - kWindowGain) * grid.size(); ++attempt) {
-    if (auto s = solve_window(cache_, factor, grid, h, load, ws, options, w, start, hmax, found, penetrating)) return *s;
+    if (auto s = solve_window(*cache_, factor, grid, h, load, ws, options, w, start, hmax, found, penetrating)) return *s;
     for (int k : penetrating) w.extend(k % grid.nx, k / grid.nx);
     w.dilate(grid, kWindowMargin);
     start.pressure = found;
   }
-  return solve_grid(cache_, factor, grid, h, load, ws, options, start, hmax);
+  return solve_grid(*cache_, factor, grid, h, load, ws, options, start, hmax);
 }
 
 NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<const double> dh,
@@ -530,8 +537,8 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
     detail::finish_response(out, grid);
     return out;
   }
-  const auto spectrum = cache_.get(grid);
-  const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
+  const auto spectrum = cache_->get(grid);
+  const auto periodic = cache_->get(grid, InfluenceSpectrum::Kind::periodic);
   FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft, ws.fft_periodic};
   auto& x = out.pressure;
   auto& r = ws.r;

@@ -190,6 +190,7 @@ struct Iterate {
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // d R / d(z, roll)
   double merit = 0;
   bool lifted = false;  // a wheel carries no load
+  double tolerance = 0;  // of the normal solves it was evaluated with
 };
 
 // The equilibrium solver's methods for one call (a lateral position may change along a continuation).
@@ -203,8 +204,9 @@ class EquilibriumSolver {
     req_.keep_grids = true;
     // Inexact solves a tenth of the residual tolerance asked for (their force error is of the order of their
     // tolerance), so that the confirmation at the model's tolerance (confirm) rarely moves a solution out.
-    req_.tolerance = std::max(std::min({opt.normal_tolerance, 0.1 * opt.force_tolerance, 0.1 * opt.moment_tolerance}),
-                              model.options().normal.tolerance);
+    inexact_ = std::max(std::min({opt.normal_tolerance, 0.1 * opt.force_tolerance, 0.1 * opt.moment_tolerance}),
+                        model.options().normal.tolerance);
+    req_.tolerance = inexact_;
     ftol_ = opt.force_tolerance * Q;
     mtol_ = opt.moment_tolerance * Q * 1.0;  // the moment scale Q x 1 m
   }
@@ -221,6 +223,7 @@ class EquilibriumSolver {
   // regime (a wheel lifted or not) changes. Leaves the last iterate in `cur`; false with a reason in `why`.
   bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, bool J0_lifted,
               Iterate& cur, std::string& why) {
+    req_.tolerance = inexact_;
     cur = evaluate(y, z, roll);
     std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
@@ -263,6 +266,9 @@ class EquilibriumSolver {
       double t = 1;
       // Backtracking; an updated Jacobian gets one trial, then a fresh one is computed instead.
       for (int b = 0; b < (fresh ? 10 : 1) && !accepted; ++b, t *= 0.5) {
+        // Within 100 tolerances the step should converge: evaluate it at the model's tolerance, so that the
+        // solution needs no confirmation (confirm).
+        if (std::abs(R0(0)) < 100 * ftol_ && std::abs(R0(1)) < 100 * mtol_) req_.tolerance = model_.options().normal.tolerance;
         Iterate trial = evaluate(y, cur.z + t * dx(0), cur.roll + t * dx(1));
         if (trial.merit < (1 - 1e-4 * t) * merit0) {
           cur = std::move(trial);
@@ -425,14 +431,18 @@ class EquilibriumSolver {
   // evaluate_contact gives at the pose; from the converged pressures, a few CG iterations); if that moved the
   // residuals out of tolerance, Newton goes on from there with solves at the model's tolerance.
   bool confirm(double y, Iterate& cur, std::string& why) {
-    if (req_.tolerance <= model_.options().normal.tolerance) return true;
-    req_.tolerance = model_.options().normal.tolerance;
+    const double tight = model_.options().normal.tolerance;
+    if (cur.tolerance <= tight) return true;
+    req_.tolerance = tight;
     cur = evaluate(y, cur.z, cur.roll);
     if (converged(cur)) return true;
+    const double saved = inexact_;
+    inexact_ = tight;  // go on at the model's tolerance
     Iterate next;
-    if (!newton(y, cur.z, cur.roll, res_.jacobian, res_.jacobian_lifted, next, why)) return false;
-    cur = std::move(next);
-    return true;
+    const bool ok = newton(y, cur.z, cur.roll, res_.jacobian, res_.jacobian_lifted, next, why);
+    inexact_ = saved;
+    if (ok) cur = std::move(next);
+    return ok;
   }
 
   // One evaluation past the budget, for the last iterate of a failed solve.
@@ -448,6 +458,7 @@ class EquilibriumSolver {
     it.z = z;
     it.roll = roll;
     it.contact = contact_at(y, z, roll);
+    it.tolerance = req_.tolerance;
     const ContactResult& c = it.contact;
     it.R = {c.force.z() - Q_, c.moment.x()};
     it.lifted = !(c.wheel[kLeft].force.z() > 0) || !(c.wheel[kRight].force.z() > 0);
@@ -492,6 +503,7 @@ class EquilibriumSolver {
   const EquilibriumOptions& opt_;
   EquilibriumResult& res_;
   ContactRequest req_;
+  double inexact_ = 0;  // the normal solves' tolerance while far from a solution
   double ftol_ = 0, mtol_ = 0;
   bool unbudgeted_ = false;
 };

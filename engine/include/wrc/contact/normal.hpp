@@ -111,6 +111,10 @@ class NormalWorkspace {
   std::vector<unsigned char> active, previous_active;
 };
 
+// The process-wide store of influence spectra for a planning mode: spectra depend only on the element size and the
+// FFT shape, so every solver (every wheelset of a fleet study) shares them.
+std::shared_ptr<const InfluenceCache> shared_cache(FftPlanning planning);
+
 // The fast solver: conjugate gradients on the active set (a projected CG in the manner of Polonsky and
 // Keer, Wear 231, 1999) preconditioned with the inverse of the grid's periodic circulant (an FFT
 // deconvolution, in the spirit of Vollebregt's NormCG, J. Comput. Phys. 257, 2014), started from the
@@ -124,7 +128,7 @@ class NormalSolver {
   explicit NormalSolver(const Material& material, FftPlanning planning = FftPlanning::estimate);
 
   const Material& material() const { return material_; }
-  const InfluenceCache& cache() const { return cache_; }
+  const InfluenceCache& cache() const { return *cache_; }
 
   NormalSolution solve(const Grid& grid, std::span<const double> h, const NormalLoad& load,
                        NormalWorkspace& workspace, const NormalOptions& options = {}) const;
@@ -140,7 +144,7 @@ class NormalSolver {
   NormalSolution solve_checked(const Grid& grid, std::span<const double> h, const NormalLoad& load,
                                NormalWorkspace& workspace, const NormalOptions& options) const;
   Material material_;
-  InfluenceCache cache_;
+  std::shared_ptr<const InfluenceCache> cache_;  // the process-wide one of the planning mode (shared_cache)
 };
 
 // Helpers shared by the solvers and useful to callers.
