@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 using namespace wrc;
@@ -66,6 +67,50 @@ TEST_CASE("rejected libraries: no entry point, wrong ABI major, NULL descriptor,
   std::ofstream(junk) << "not an ELF file\n";
   CHECK(reason(junk).find("cannot load the library") != std::string::npos);
   CHECK(r.readers().empty());
+}
+
+// A copy of a real plugin cut short. dlopen maps a segment that reaches past the end of the file and the loader
+// touches it: SIGBUS, which killed the whole process before the host checked the ELF headers.
+std::string truncated_copy(const std::string& lib, std::size_t bytes, const std::string& name) {
+  std::ifstream in(lib, std::ios::binary);
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(data.size() > bytes);
+  const std::string out = tmp_path(name);
+  std::ofstream(out, std::ios::binary).write(data.data(), static_cast<std::streamsize>(bytes));
+  return out;
+}
+
+TEST_CASE("truncated and broken libraries are rejected with a reason, not a crash") {
+  ReaderRegistry r;
+  const std::string real = paths().plugin_dirs.at(0) + "/wrc_reader_text.so";
+  std::ifstream probe(real, std::ios::binary | std::ios::ate);
+  const auto size = static_cast<std::size_t>(probe.tellg());
+  REQUIRE(size > 20000);
+  auto reason = [&](const std::string& lib) {
+    const auto why = r.load_plugin(lib);
+    REQUIRE(why.has_value());
+    INFO(*why);
+    CHECK(why->rfind(lib + ": cannot load the library: ", 0) == 0);
+    return *why;
+  };
+  // The issue's case: the first 20,000 bytes.
+  CHECK(reason(truncated_copy(real, 20000, "cut20000.so")).find("the file is truncated") != std::string::npos);
+  for (std::size_t n : {std::size_t{4}, std::size_t{40}, std::size_t{64}, std::size_t{1000}, size / 2, size - 1})
+    CHECK(reason(truncated_copy(real, n, fmt::format("cut{}.so", n))).find("truncated") != std::string::npos);
+  // The ELF magic only, and a program header table moved past the end.
+  const std::string magic = tmp_path("magic.so");
+  std::ofstream(magic, std::ios::binary) << "\x7f" "ELF";
+  CHECK(reason(magic).find("truncated") != std::string::npos);
+  std::ifstream in(real, std::ios::binary);
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  data[0x20] = '\xff';  // e_phoff (64-bit ELF): a byte of the offset far out
+  data[0x25] = '\x7f';
+  const std::string moved = tmp_path("moved_phdr.so");
+  std::ofstream(moved, std::ios::binary).write(data.data(), static_cast<std::streamsize>(data.size()));
+  CHECK(reason(moved).find("program header table") != std::string::npos);
+  CHECK(r.readers().empty());
+  // The real library itself passes the checks and loads.
+  CHECK_FALSE(r.load_plugin(real).has_value());
 }
 
 TEST_CASE("a duplicate id is rejected, naming both libraries, and the first keeps the id") {

@@ -5,6 +5,8 @@
 #include "wrc/core/paths.hpp"
 #include "wrc_reader.h"
 
+#include "plugin_file.hpp"
+
 #include <dlfcn.h>
 
 #include <algorithm>
@@ -191,6 +193,9 @@ void ReaderRegistry::add(Reader reader) {
 }
 
 std::optional<std::string> ReaderRegistry::load_plugin(const std::string& library_path) {
+  // A broken file (truncated, not ELF) is refused before dlopen maps it: a mapped segment past the end of the
+  // file kills the process with SIGBUS.
+  if (auto why = check_library_file(library_path)) return fmt::format("{}: cannot load the library: {}", library_path, *why);
   void* handle = dlopen(library_path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* e = dlerror();
