@@ -1,5 +1,6 @@
 #include "reader_support.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -89,8 +90,34 @@ std::string quoted(std::string_view s) {
   return out + "'";
 }
 
+namespace {
+
+std::string with_points(std::string_view s) {
+  std::string t(s);
+  std::replace(t.begin(), t.end(), ',', '.');
+  return t;
+}
+
+bool all_numbers(const std::vector<std::string_view>& fields) {
+  return std::all_of(fields.begin(), fields.end(), [](std::string_view f) { return parse_double(f).has_value(); });
+}
+
+}  // namespace
+
+void reject_decimal_commas(std::string_view row, int line) {
+  if (row.find(',') == std::string_view::npos || all_numbers(split_fields(row, ','))) return;
+  const std::string dotted = with_points(row);
+  const auto fields = split_fields(dotted, dotted.find(';') != std::string::npos ? ';' : ' ');
+  if (fields.size() >= 2 && all_numbers(fields))
+    fail_at(line, "{} looks written with decimal commas; wrc reads numbers with a decimal point ({}): replace the "
+            "decimal commas, or export the file with '.' as the decimal separator", quoted(row), quoted(dotted));
+}
+
 double number(std::string_view field, int line, std::string_view what) {
   const auto v = parse_double(field);
+  if (!v && field.find(',') != std::string_view::npos && parse_double(with_points(field)))
+    fail_at(line, "{} must be a number, got {}: a decimal comma? wrc reads a decimal point ({})", what, quoted(field),
+            quoted(with_points(field)));
   if (!v) fail_at(line, "{} must be a number, got {}", what, quoted(field));
   if (!std::isfinite(*v)) fail_at(line, "{} must be a finite number, got {}", what, quoted(field));
   return *v;
@@ -162,6 +189,12 @@ int run_reader_on(const ReaderSpec& spec, std::string_view data, const wrc_reade
   try {
     const Request q = make_request(request);
     Out out(sink);
+    if (data.substr(0, 2) == "\xff\xfe" || data.substr(0, 2) == "\xfe\xff")
+      fail_at(1, "the file is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8 or ASCII");
+    if (data.substr(0, 3) == "\xef\xbb\xbf") {
+      data.remove_prefix(3);
+      out.transform("skipped the UTF-8 byte-order mark at the start of the file");
+    }
     spec.parse(data, q, out);
     return 0;
   } catch (const ParseError& e) {

@@ -49,6 +49,9 @@ std::optional<double> parse_double(std::string_view s);
 double number(std::string_view field, int line, std::string_view what);
 // Printable form of a field for messages (quoted, shortened, control bytes escaped).
 std::string quoted(std::string_view s);
+// A ParseError when a data row looks written with decimal commas ("1,5;2,3", "1,5 2,3"): read with decimal points
+// it splits (on ';' or blanks) into two or more numbers, while split on its commas it does not.
+void reject_decimal_commas(std::string_view row, int line);
 
 // The request as the parser sees it.
 struct Request {
@@ -85,8 +88,9 @@ struct ReaderSpec {
   void (*parse)(std::string_view data, const Request& request, Out& out);
 };
 
-// Runs spec.parse on the file of the request; every exception ends here as sink->error. Returns the
-// value of the ABI's read function.
+// Runs spec.parse on the file of the request; every exception ends here as sink->error. A UTF-8 byte-order mark
+// at the start is skipped (and reported as a transform) before the parser sees the data; a UTF-16 one is an error.
+// Returns the value of the ABI's read function.
 int run_reader(const ReaderSpec& spec, const wrc_reader_request* request, const wrc_reader_sink* sink);
 // The same on data already in memory (fuzz targets).
 int run_reader_on(const ReaderSpec& spec, std::string_view data, const wrc_reader_request* request,

@@ -150,6 +150,7 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const 
     if (s.empty()) continue;
     if (s.find('=') != std::string_view::npos)
       fail_at(ln.number, "a `Key=Value` line after the points began (line {})", first_row_line ? first_row_line : ln.number);
+    reject_decimal_commas(s, ln.number);
     const char here = detect_separator(s);
     if (sep == 0) sep = here, first_row_line = ln.number;
     else if (here != sep)

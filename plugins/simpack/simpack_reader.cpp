@@ -129,6 +129,7 @@ State begin_section(std::string_view s, int line, File& f) {
 
 // A line of point.begin/end: `y z [weight]` separated by blanks (the weight is checked, not used).
 Point read_point(std::string_view s, int line) {
+  reject_decimal_commas(s, line);
   if (s.find_first_of(",;") != std::string_view::npos)
     fail_at(line, "a ',' or ';' in a point line; Simpack points are separated by blanks (mixed separators)");
   const auto f = split_fields(s, ' ');

@@ -58,14 +58,18 @@ void parse(std::string_view data, const Request& rq, Out& out) {
   for (const Line& ln : lines) {
     const std::string_view s = trim(strip_comment(ln.text, "#"));
     if (s.empty()) continue;
+    reject_decimal_commas(s, ln.number);
     if (sep == 0) {
-      // The first content line: a header when its first field is not a number.
+      // The first content line: a header when its first field is not a number (said in the transforms: a line
+      // taken as a header is a point lost if it was meant as data).
       const char guess = detect_separator(s);
       const auto f = split_fields(s, guess);
       if (header_line == 0 && !parse_double(f[0])) {
         header_line = ln.number;
         header = f;
         out.metadata("header", std::string(s));
+        out.transform(fmt::format("line {} taken as a header (its first field {} is not a number): {}", ln.number,
+                                  quoted(f[0]), quoted(s)));
         continue;
       }
       sep = guess;

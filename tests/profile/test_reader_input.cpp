@@ -183,3 +183,82 @@ TEST_CASE("MiniProf reader: bad input") {
   CHECK(error_of(write("good.ban", miniprof(arc_rows("\t"), 31))) == "(no error)");
   CHECK(error_of(write("good_nocount.ban", "MINIPROF\nColumnDef=X,A,Y\n\n" + arc_rows("\t0\t", 1.0))) == "(no error)");
 }
+
+namespace {
+
+Profile load(const std::string& name, const std::string& text, LoadOptions o = {}) {
+  return load_profile_file(write(name, text), o, {&built_plugins()});
+}
+
+bool has_transform(const Profile& p, const std::string& part) {
+  for (const auto& t : p.transforms)
+    if (t.find(part) != std::string::npos) return true;
+  return false;
+}
+
+// The arc rows written with decimal commas (",") and `sep` between the numbers.
+std::string comma_rows(const char* sep) {
+  std::string s = arc_rows(sep);
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s[i] == '.') s[i] = ',';
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("every reader skips a UTF-8 byte-order mark: the same points as without it") {
+  const std::string bom = "\xEF\xBB\xBF";
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  struct Case {
+    const char* ext;
+    std::string text;
+    LoadOptions options;
+  };
+  const Case cases[] = {{".txt", arc_rows(" "), rail},  // headerless: the first point used to become a "header"
+                        {".csv", "y_mm,z_mm\n" + arc_rows(","), rail},
+                        {".prr", simpack(arc_rows(" ")), {}},
+                        {".ban", miniprof(arc_rows("\t"), 31), {}}};
+  for (const Case& c : cases) {
+    INFO(c.ext);
+    const Profile plain = load(std::string("plain") + c.ext, c.text, c.options);
+    const Profile marked = load(std::string("bom") + c.ext, bom + c.text, c.options);
+    CHECK(marked.size() == plain.size());
+    CHECK(marked.y == plain.y);
+    CHECK(marked.z == plain.z);
+    CHECK(has_transform(marked, "byte-order mark"));
+    CHECK_FALSE(has_transform(plain, "byte-order mark"));
+  }
+  CHECK(load("bom_plain.txt", bom + arc_rows(" "), rail).size() == 31);
+  check_error("utf16.txt", "\xFF\xFE" "0\0 \0" "0\0", 1, "UTF-16", rail);
+}
+
+TEST_CASE("text reader: a line taken as a header is reported in the transforms") {
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  const Profile h = load("header.csv", "y_mm,z_mm\n" + arc_rows(","), rail);
+  CHECK(h.size() == 31);
+  CHECK(has_transform(h, "line 1 taken as a header (its first field 'y_mm' is not a number): 'y_mm,z_mm'"));
+  // A first row mangled into a non-number is a header too, and says so (a point the user may have meant).
+  const Profile lost = load("lost.txt", "x" + arc_rows(" "), rail);
+  CHECK(lost.size() == 30);
+  CHECK(has_transform(lost, "line 1 taken as a header"));
+  CHECK_FALSE(has_transform(load("noheader.txt", arc_rows(" "), rail), "header"));
+}
+
+TEST_CASE("every reader: decimal commas are named as such") {
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  check_error("decimal_semicolon.csv", comma_rows(";"), 1, "looks written with decimal commas", rail);
+  check_error("decimal_blank.txt", comma_rows(" "), 1, "looks written with decimal commas", rail);
+  check_error("decimal_header.csv", "y;z\n" + comma_rows(";"), 2, "looks written with decimal commas", rail);
+  check_error("decimal.prr", simpack(comma_rows(" ")), kSimpackFirstPoint, "looks written with decimal commas");
+  check_error("decimal.ban", miniprof(comma_rows("\t"), 31), kMiniprofFirstRow, "looks written with decimal commas");
+  // One row among decimal points, and one value of a key.
+  check_error("decimal_row.prr", simpack("0 0\n1 0.1\n2 0,2\n"), kSimpackFirstPoint + 2, "'2 0,2' looks written with decimal commas");
+  check_error("decimal_key.prr", simpack(arc_rows(" "), "1000,0"), 6,
+              "units.len.f must be a number, got '1000,0': a decimal comma? wrc reads a decimal point ('1000.0')");
+  // Commas as separators with blanks after them are no decimal commas.
+  CHECK(error_of(write("comma_blank.csv", arc_rows(", ")), rail) == "(no error)");
+  CHECK(error_of(write("integers.csv", "0, 0\n10, -1\n20, -4\n30, -9\n"), rail) == "(no error)");
+}
