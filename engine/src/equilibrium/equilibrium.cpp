@@ -512,6 +512,18 @@ class EquilibriumSolver {
 
 namespace {
 
+// A lifted wheel raised above its rail by more than its flange height is off the rail; the first wheel past flange
+// climb names the equilibrium's flag.
+void flag_flange_climb(const ContactModel& model, EquilibriumResult& res) {
+  for (int s : {kLeft, kRight}) {
+    WheelContact& wc = res.contact.wheel[s];
+    if (wc.flange_climb.empty() && !(wc.force.z() > 0))
+      wc.flange_climb = lifted_off(model.flange(s), -deepest_point(model.geometry(), s, res.contact.pose).overlap);
+    if (!wc.flange_climb.empty() && res.flange_climb.empty())
+      res.flange_climb = fmt::format("{} wheel: {}", side_name(s), wc.flange_climb);
+  }
+}
+
 // The result of a solve from its last iterate.
 void finish_result(const ContactModel& model, ContactWorkspace& ws, const ContactRequest& request, bool ok,
                    const std::vector<std::string>& why, EquilibriumSolver& solver, Iterate& cur, EquilibriumResult& res) {
@@ -531,6 +543,7 @@ void finish_result(const ContactModel& model, ContactWorkspace& ws, const Contac
   if (request.sensitivity && !cur.lifted) add_sensitivity(model, cur.contact, ws);
   if (!request.keep_grids) drop_grids(cur.contact);
   res.contact = std::move(cur.contact);
+  flag_flange_climb(model, res);
 }
 
 }  // namespace
@@ -702,6 +715,8 @@ std::string failure_message(const WheelResult& w) {
 void describe(const EquilibriumResult& e, FieldSink& out) {
   out.boolean("converged", e.converged);
   if (!e.message.empty()) out.string("error", e.message);
+  out.boolean("flange_climb", !e.flange_climb.empty());
+  if (!e.flange_climb.empty()) out.string("flange_climb_reason", e.flange_climb);
   out.number("y", e.y);
   out.number("yaw", e.yaw);
   out.number("Q", e.Q);

@@ -22,6 +22,8 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
                            const ContactOptions& options)
     : geometry_(std::move(geometry)), options_(options), solver_(material) {
   if (!geometry_) fail("contact model: no geometry");
+  if (geometry_->track)
+    for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = flange_of(geometry_->track->wheel[s]);
   contact::validate(material, "contact model");
   if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
     fail("contact model: the element size (grid) must be in ]0, 0.01] m, got {}", options.element);
@@ -484,6 +486,16 @@ std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::
   return out;
 }
 
+// Why a loaded wheel is past flange climb (plausibility.hpp), or "".
+std::string flange_climb(const ContactModel& model, const PoseFrame& f, int side, const WheelContact& wc) {
+  const Flange& flange = model.flange(side);
+  const SidePlacement& place = model.geometry().track->place[side];
+  for (const PatchContact& pc : wc.patches)
+    if (pc.normal_force > 0)
+      if (std::string why = beyond_steepest(flange, profile_y(place, f.to_wheelset(pc.point).y())); !why.empty()) return why;
+  return nadal_exceeded(flange, side, wc.force.y(), wc.force.z());
+}
+
 WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& st, int side, ContactWorkspace& ws,
                                const ContactRequest& request) {
   const auto& patches = st.patches(side);
@@ -514,6 +526,7 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   ws.previous[side] = std::move(next_previous);
   wc.rolling_radius = N > 0 ? rr / N : 0.0;
   wc.angle = N > 0 ? contact_angle(side, wc.force) : 0.0;
+  if (N > 0) wc.flange_climb = flange_climb(model, st.frame(), side, wc);
   return wc;
 }
 
@@ -614,6 +627,8 @@ void describe(const PatchContact& pc, FieldSink& out) {
 
 void describe(const WheelContact& wc, FieldSink& out) {
   out.boolean("lifted", !(wc.force.z() > 0));  // the wheel carries no load
+  out.boolean("flange_climb", !wc.flange_climb.empty());
+  if (!wc.flange_climb.empty()) out.string("flange_climb_reason", wc.flange_climb);
   out.vec3("force", wc.force);
   out.vec3("moment", wc.moment);
   out.number("angle", wc.angle);

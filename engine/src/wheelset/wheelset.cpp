@@ -2,6 +2,7 @@
 #include "wrc/wheelset/wheelset.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 
 namespace wrc {
 
@@ -74,6 +75,7 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
     : params_(params), strategy_(std::move(strategy)) {
   if (!strategy_) fail("wheelset: no location strategy");
   track_ = std::make_shared<const Track>(assemble_track(profiles.wheel, profiles.rail, params.track));
+  check_setup(*track_);  // sizes and shapes for their kind, flanges against the gauge
   std::array<SideDiscretisation, 2> sides;
   for (int s : {kLeft, kRight}) sides[s] = strategy_->discretise(s, profiles.wheel[s], profiles.rail[s]);
   StrategyInfo info = strategy_->info();

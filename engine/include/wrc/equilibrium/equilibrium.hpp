@@ -60,6 +60,9 @@ struct EquilibriumResult {
   std::optional<Eigen::Matrix2d> jacobian;
   bool jacobian_lifted = false;
   ContactResult contact;         // at the solution
+  // "<side> wheel: why" when a wheel is past flange climb (contact beyond the steepest part of its flange, Nadal's
+  // limit exceeded, or lifted off its rail by more than its flange height; wheelset/plausibility.hpp); "" if not.
+  std::string flange_climb;
 };
 
 // A start (z, roll), e.g. the previous point of a sweep.
@@ -165,7 +168,8 @@ std::string failure_message(const EquilibriumResult& result);
 std::string failure_message(const WheelResult& result);
 
 // The results as fields (Lua tables, C API paths; docs in README "Equilibrium"). An equilibrium: converged,
-// error, y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations, evaluations, residual = {force, moment}, left, right (as
+// error, flange_climb (and flange_climb_reason when true), y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations,
+// evaluations, residual = {force, moment}, left, right (as
 // wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right), force, moment. A wheel:
 // the side's wheel fields, converged, error, z, residual, iterations. A rigid case: converged, tension, error, y,
 // yaw, Q, z, roll, Y, My, Mz, Y_Q, left/right = {point, normal, angle, rolling_radius, normal_force, overlap, line}.

@@ -26,6 +26,7 @@
 #include "wrc/contact/normal.hpp"
 #include "wrc/core/fields.hpp"
 #include "wrc/geometry/location.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 
 #include <Eigen/Core>
 
@@ -81,6 +82,7 @@ struct WheelContact {
   double angle = 0;           // contact angle of the resultant force (rad)
   double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); 0 without contact
   Sensitivity sensitivity = Sensitivity::Zero();
+  std::string flange_climb;   // why the wheel is past flange climb (wheelset/plausibility.hpp); "" when it is not
 };
 
 struct ContactResult {
@@ -101,9 +103,12 @@ class ContactModel {
   const contact::Material& material() const { return solver_.material(); }
   const ContactOptions& options() const { return options_; }
   const contact::NormalSolver& solver() const { return solver_; }
+  // The flange of each side's wheel profile (for the flange-climb flags of the results).
+  const Flange& flange(int side) const { return flange_[static_cast<std::size_t>(side)]; }
 
  private:
   std::shared_ptr<const GeometryModel> geometry_;
+  std::array<Flange, 2> flange_;
   ContactOptions options_;
   contact::NormalSolver solver_;
 };
@@ -158,8 +163,8 @@ void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWo
 // Releases the pressure, gap and h grids of a result.
 void drop_grids(ContactResult& result);
 
-// The results as fields (the Lua tables, the C API's paths). A wheel: lifted, force, moment, angle,
-// rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
+// The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
+// flange_climb_reason when true), force, moment, angle, rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
 // iterations, complementarity, frame, grid, and the pressure and h grids when kept.
 void describe(const PatchContact& area, FieldSink& out);

@@ -1,0 +1,138 @@
+// Plausibility of set-ups and results (plausibility.hpp).
+#include "wrc/wheelset/plausibility.hpp"
+
+#include "wrc/core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wrc {
+namespace {
+
+constexpr double kDeg = 180.0 / M_PI;
+
+struct Extent {
+  double lo, hi;  // plausible range of a profile's width and height (m)
+};
+// Widths: S1002 130 mm, a 60E1 head 73 mm, a grooved tram rail with its lip ~115 mm. Heights: a flange 25-40 mm
+// plus some of the flange back; a rail head 30-50 mm, a whole rail section 130-190 mm.
+constexpr Extent kWheelWidth{5e-3, 0.25}, kWheelHeight{0, 0.1}, kRailWidth{5e-3, 0.2}, kRailHeight{0, 0.2};
+constexpr double kFieldSideDrop = 10e-3;  // m: a wheel's radius may grow this much toward the field side (hollow wear)
+
+std::string describe_profile(const Profile& p, int side) {
+  return fmt::format("the {} {} profile '{}' ({})", side_name(side), to_string(p.kind), p.name, p.source);
+}
+
+void check_extent(const Profile& p, int side) {
+  const bool wheel = p.kind == ProfileKind::wheel;
+  const auto [ylo, yhi] = std::minmax_element(p.y.begin(), p.y.end());
+  const auto [zlo, zhi] = std::minmax_element(p.z.begin(), p.z.end());
+  const double width = *yhi - *ylo, height = *zhi - *zlo;
+  const Extent w = wheel ? kWheelWidth : kRailWidth, h = wheel ? kWheelHeight : kRailHeight;
+  const char* what = wheel ? "a wheel profile (S1002: 130 mm)" : "a rail head (60E1: 73 mm)";
+  if (width > w.hi || height > h.hi)
+    fail("wrc.wheelset: {} is {:.4g} mm wide and {:.4g} mm tall; {} is at most {:.0f} mm wide and {:.0f} mm tall: "
+         "are its units right (a file in mm read with units = \"m\")?", describe_profile(p, side), width * 1e3,
+         height * 1e3, what, w.hi * 1e3, h.hi * 1e3);
+  if (width < w.lo)
+    fail("wrc.wheelset: {} is {:.4g} mm wide; {} is at least {:.0f} mm wide: are its units right (a file in metres "
+         "read as mm)?", describe_profile(p, side), width * 1e3, what, w.lo * 1e3);
+}
+
+// A wheel's radius does not grow toward the field side (beyond hollow wear): a rail head read as a wheel does, and
+// so does a wheel whose y axis is reversed (flange on the field side).
+void check_field_side(const Profile& p, int side) {
+  const double z0 = interpolate_z(p, 0.0);
+  std::size_t low = p.size();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.y[i] > 0 && (low == p.size() || p.z[i] < p.z[low])) low = i;
+  if (low < p.size() && p.z[low] < z0 - kFieldSideDrop) {
+    const std::size_t i = low;
+    fail("wrc.wheelset: {} is {:.1f} mm below its tape-circle height at y = {:+.1f} mm, on the field side: a "
+           "wheel's radius grows by at most a few mm toward the field side (the flange is on the gauge side, y < 0). "
+           "Is it a rail profile given as a wheel, or a wheel whose y axis is reversed (mirror_y)?",
+           describe_profile(p, side), (z0 - p.z[i]) * 1e3, p.y[i] * 1e3);
+  }
+}
+
+// back_to_back + both flange thicknesses must be less than the gauge, or the flanges sit on the rails.
+void check_flangeway(const Track& t) {
+  const std::array<Flange, 2> f{flange_of(t.wheel[kLeft]), flange_of(t.wheel[kRight])};
+  if (!f[kLeft].present && !f[kRight].present) return;
+  const double thick[2] = {f[kLeft].present ? t.params.tape_offset + f[kLeft].face_y : 0.0,
+                           f[kRight].present ? t.params.tape_offset + f[kRight].face_y : 0.0};
+  const double span = t.params.back_to_back + thick[kLeft] + thick[kRight];
+  if (span >= t.params.gauge)
+    fail("wrc.wheelset: the flanges do not fit between the rails: back_to_back {:.4f} m + flange thicknesses {:.1f} "
+         "and {:.1f} mm (left, right; measured {:.0f} mm above the tape circle, {:.0f} mm from the flange back to the "
+         "tape circle) = {:.4f} m, not less than the gauge {:.4f} m; expected gauge > back_to_back + both flanges "
+         "(standard gauge: 1.435 m with 1.360 m and S1002's 32.5 mm)", t.params.back_to_back, thick[kLeft] * 1e3,
+         thick[kRight] * 1e3, kFlangeThicknessHeight * 1e3, t.params.tape_offset * 1e3, span, t.params.gauge);
+}
+
+}  // namespace
+
+Flange flange_of(const Profile& w) {
+  Flange f;
+  const double z0 = interpolate_z(w, 0.0);
+  std::size_t tip = w.size();
+  for (std::size_t i = 0; i < w.size() && w.y[i] <= 0; ++i)
+    if (tip == w.size() || w.z[i] <= w.z[tip]) tip = i;  // the lowest z; the last of equals (nearest the tape circle)
+  if (tip == w.size() || z0 - w.z[tip] <= kMinFlangeHeight) return f;
+  f.present = true;
+  f.tip_y = w.y[tip];
+  f.tip_z = w.z[tip];
+  f.height = z0 - f.tip_z;
+  f.face_y = f.tip_y;
+  std::size_t end = tip;  // the last point of the face: the last with y <= 0
+  while (end + 1 < w.size() && w.y[end + 1] <= 0) ++end;
+  std::vector<double> angle;
+  for (std::size_t i = tip; i < end; ++i) angle.push_back(std::atan2(w.z[i + 1] - w.z[i], w.y[i + 1] - w.y[i]));
+  if (angle.empty()) return f;
+  f.max_angle = *std::max_element(angle.begin(), angle.end());
+  for (std::size_t k = 0; k < angle.size(); ++k)
+    if (angle[k] >= f.max_angle - kSteepBand) {
+      f.steep_y = w.y[tip + k];
+      break;
+    }
+  const double level = z0 - kFlangeThicknessHeight;
+  for (std::size_t i = end; i > tip; --i)  // from the tape circle toward the tip: the first crossing of the level
+    if (w.z[i - 1] <= level && w.z[i] > level) {
+      f.face_y = w.y[i - 1] + (level - w.z[i - 1]) / (w.z[i] - w.z[i - 1]) * (w.y[i] - w.y[i - 1]);
+      break;
+    }
+  return f;
+}
+
+void check_setup(const Track& t) {
+  for (int s : {kLeft, kRight}) {
+    check_extent(t.wheel[s], s);
+    check_extent(t.rail[s], s);
+    check_field_side(t.wheel[s], s);
+  }
+  check_flangeway(t);
+}
+
+std::string beyond_steepest(const Flange& f, double y) {
+  if (!f.present || y >= f.steep_y) return "";
+  return fmt::format("contact at y = {:.2f} mm on the wheel profile, beyond the steepest part of the flange face "
+                     "({:.1f} deg, ends at y = {:.2f} mm; tip at {:.2f} mm): the wheel climbs its flange",
+                     y * 1e3, f.max_angle * kDeg, f.steep_y * 1e3, f.tip_y * 1e3);
+}
+
+std::string nadal_exceeded(const Flange& f, int side, double Fy, double Fz) {
+  if (!f.present || f.max_angle >= 0.5 * M_PI) return "";
+  const double L = -side_sign(side) * Fy;  // toward the track centre: -y for the left wheel
+  const double limit = std::tan(f.max_angle);
+  if (Fz > 0 && L <= limit * Fz) return "";
+  return fmt::format("L/V = {:.3g} exceeds Nadal's limit tan({:.1f} deg) = {:.3f} of the frictionless flange",
+                     Fz > 0 ? L / Fz : INFINITY, f.max_angle * kDeg, limit);
+}
+
+std::string lifted_off(const Flange& f, double gap) {
+  if (!f.present || gap <= f.height) return "";
+  return fmt::format("lifted {:.1f} mm off its rail, more than its flange height ({:.1f} mm): the flange no longer "
+                     "guides it (derailed)", gap * 1e3, f.height * 1e3);
+}
+
+}  // namespace wrc

@@ -1,0 +1,121 @@
+-- Implausible set-ups are errors when the wheelset is built, and results past flange climb are flagged (issue 14).
+--
+-- Set-ups: flanges that do not fit between the rails (the S1002 flange is 32.5 mm thick at 10 mm above the tape
+-- circle, EN 13715, so 1.360 m between flange backs needs a gauge above 1.425 m), a rail profile used as a wheel, a
+-- rail or a wheel file in mm read with units = "m".
+-- Results: the paper's sweep (y = -8 .. 8 mm, yaw 0 and 1 deg) has no flagged row; the equilibria at y = +-20 and
+-- +-50 mm (the wheelset tipped over one rail, the other wheel lifted higher than its flange) are flagged, and the
+-- lifted wheel's height above its rail, computed here from the placed profiles, exceeds the flange height; a pose
+-- whose contact sits beyond the steepest part of the flange is flagged, and the steepest part is found here from the
+-- profile's points.
+local check = require "wrc.check"
+
+local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
+local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
+local tmp = arg.tmp or "."
+
+-- ---- set-ups ----
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.4245} end,
+            "the flanges do not fit between the rails", "gauge 1.4245 m with 1.360 m and two 32.5 mm flanges")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.4255, grid = 2e-3}, "gauge 1.4255 m is enough")
+local err = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.35} end,
+                        "flange thicknesses 32.5 and 32.5 mm", "gauge below the flange-back distance")
+check.ok(err:find("gauge 1.3500 m", 1, true), "the message names the gauge: " .. err)
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, back_to_back = 1.38} end,
+            "the flanges do not fit", "flange backs too far apart")
+
+local ry, rz = rail:points()
+local rail_as_wheel = wrc.profile.points{kind = "wheel", name = "60E1 head", y = ry, z = rz}
+check.fails(function() wrc.wheelset{wheel = rail_as_wheel, rail = rail} end, "Is it a rail profile given as a wheel",
+            "a rail head used as a wheel")
+
+local function write_mm(path, p)
+  local y, z = p:points()
+  local f = assert(io.open(path, "w"))
+  for i = 1, #y do f:write(string.format("%.6f %.6f\n", y[i] * 1e3, z[i] * 1e3)) end
+  f:close()
+  return path
+end
+local rail_mm = write_mm(tmp .. "/plausibility_rail_mm.txt", rail)
+local wheel_mm = write_mm(tmp .. "/plausibility_wheel_mm.txt", wheel)
+local rail_m = wrc.profile.load(rail_mm, {kind = "rail", units = "m"})
+check.near(rail_m:bounds().y_max - rail_m:bounds().y_min, 73.57, 0.01, "a 73 m wide rail is what the loader gives")
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail_m} end, "are its units right", "a 73 m wide rail")
+local wheel_m = wrc.profile.load(wheel_mm, {kind = "wheel", units = "m"})
+check.fails(function() wrc.wheelset{wheel = wheel_m, rail = rail} end, "are its units right", "a 130 m wide wheel")
+check.ok(wrc.wheelset{wheel = wrc.profile.load(wheel_mm, {kind = "wheel"}), rail = wrc.profile.load(rail_mm, {kind = "rail"}),
+                      grid = 2e-3}, "the same files in mm build")
+
+-- ---- results ----
+local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
+local Q = 200e3
+
+-- Height of a wheel above its rail at the pose of an equilibrium (2-D section at x = 0, roll only): the smallest
+-- vertical distance from the placed wheel profile's lowest points to the rail under them.
+local function lift(e, side)
+  local w, r = ws[side .. "_wheel"], ws[side .. "_rail"]
+  local c, s = math.cos(e.roll), math.sin(e.roll)
+  local function rail_z(y)
+    for k = 1, #r.y - 1 do
+      local a, b = r.y[k], r.y[k + 1]
+      if (y - a) * (y - b) <= 0 and a ~= b then return r.z[k] + (y - a) / (b - a) * (r.z[k + 1] - r.z[k]) end
+    end
+  end
+  local gap = math.huge
+  for i = 1, #w.y do
+    local yt, zt = e.y + c * w.y[i] - s * w.z[i], e.z + s * w.y[i] + c * w.z[i]
+    local zr = rail_z(yt)
+    if zr then gap = math.min(gap, zt - zr) end
+  end
+  return gap
+end
+
+local s = ws:sweep{y = {from = -8e-3, to = 8e-3, step = 0.5e-3}, yaw = {0, math.rad(1)}, Q = Q, progress = false}
+for _, e in ipairs(s) do
+  check.ok(e.converged, "paper sweep row converged")
+  check.ok(e.flange_climb == false and e.left.flange_climb == false and e.right.flange_climb == false,
+           string.format("paper sweep row y = %.1f mm, yaw %.3f not flagged (%s)", e.y * 1e3, e.yaw, tostring(e.flange_climb_reason)))
+  for _, side in ipairs{"left", "right"} do
+    if e[side].lifted then check.ok(lift(e, side) < 28e-3, "a lifted wheel of the paper's range stays below its flange height") end
+  end
+end
+
+for _, y in ipairs{20e-3, 50e-3, -20e-3, -50e-3} do
+  local e = ws:equilibrium{y = y, Q = Q}
+  local up = y > 0 and "right" or "left"
+  local what = string.format("y = %.0f mm", y * 1e3)
+  check.ok(e.converged and e[up].lifted, what .. ": converged with the " .. up .. " wheel lifted")
+  check.ok(lift(e, up) > 28e-3, what .. ": the lifted wheel is higher than its flange")
+  check.ok(e.flange_climb == true and e[up].flange_climb == true, what .. ": flagged")
+  check.ok(e.flange_climb_reason:find(up .. " wheel: lifted", 1, true), what .. ": " .. tostring(e.flange_climb_reason))
+  local reported = tonumber(e.flange_climb_reason:match("lifted ([%d.]+) mm"))
+  check.near(reported * 1e-3, lift(e, up), 2e-3, what .. ": the reported lift")
+end
+
+-- Contact beyond the steepest part of the flange: the wheelset held 14 mm out at zero roll, pressed onto the flange.
+local wy, wz = wheel:points()
+local steepest, steep_y = 0, nil
+for i = 1, #wy - 1 do
+  if wy[i + 1] <= 0 then steepest = math.max(steepest, math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i])) end
+end
+for i = 1, #wy - 1 do
+  if wy[i + 1] <= 0 and wy[i] > -0.05 and math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i]) >= steepest - math.rad(1) then
+    steep_y = steep_y or wy[i]
+  end
+end
+check.near(math.deg(steepest), 70, 0.01, "S1002's flank angle (EN 13715)")
+local function profile_y(c, p)  -- lateral position of a contact point on the left wheel's profile
+  local cr, sr = math.cos(c.pose.roll), math.sin(c.pose.roll)
+  return cr * (p.point.y - c.pose.y) + sr * (p.point.z - c.pose.z) - 0.75
+end
+for _, case in ipairs{{y = 14e-3, beyond = true}, {y = 6e-3, beyond = false}} do
+  local w = ws:wheel{side = "left", y = case.y, roll = 0, Fz = 100e3}
+  local c = ws:contact{y = case.y, z = w.z, roll = 0}
+  local yp = profile_y(c, c.left.patches[1])
+  check.ok((yp < steep_y) == case.beyond, string.format("y = %.0f mm: contact at %.2f mm, steepest part ends at %.2f mm",
+                                                        case.y * 1e3, yp * 1e3, steep_y * 1e3))
+  check.ok(c.left.flange_climb == case.beyond and w.flange_climb == case.beyond,
+           string.format("y = %.0f mm: flagged = %s", case.y * 1e3, tostring(case.beyond)))
+  if case.beyond then check.ok(c.left.flange_climb_reason:find("beyond the steepest part", 1, true), c.left.flange_climb_reason) end
+end
+print("plausibility: set-ups refused, " .. #s .. " paper rows unflagged, derailed equilibria and flange climb flagged")
