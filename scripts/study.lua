@@ -37,6 +37,7 @@ M.sweep_columns = {
   "left_max_nominal_angle_deg", "left_rolling_radius_mm",
   "right_patches", "right_contact_regions", "right_Fy_kN", "right_Fz_kN", "right_angle_deg", "right_rolling_radius_mm",
   "rolling_radius_difference_mm", "iterations", "residual_force_N", "residual_moment_Nm",
+  "flange_climb",
 }
 
 -- One row of sweep.csv from a sweep (or equilibrium) result.
@@ -60,6 +61,7 @@ function M.sweep_row(r)
   row.rolling_radius_difference_mm = r.rolling_radius_difference * 1e3
   row.iterations = r.iterations
   row.residual_force_N, row.residual_moment_Nm = r.residual.force, r.residual.moment
+  row.flange_climb = r.flange_climb and 1 or 0
   return row
 end
 
