@@ -82,9 +82,10 @@ wrc_status wrc_profile_free(wrc_profile* profile);
 
 /* A wheelset from one wheel and one rail profile (the right side their mirror image), or from four. The profiles are
  * copied. Options: those of wrc.wheelset (radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E, nu, grid,
- * margin, max_elements, tolerance, merge_tolerance, merge_angle, solver, strategy) where strategy is one of the
- * built-in strategies (accurate, fast, uniform, topology, coarse, constant_slope, brute or a composition
- * "uniform+coarse+topology") and strategy_options.<key> its options. The caller owns *out. */
+ * margin, max_elements, tolerance, merge_tolerance, merge_angle, solver, strategy, check_strategy) where strategy is
+ * one of the built-in strategies (accurate, fast, uniform, topology, coarse, constant_slope, brute or a composition
+ * "uniform+coarse+topology") and strategy_options.<key> its options; check_strategy=N checks the strategy against
+ * brute force on N random poses first (an error names the first pose that differs). The caller owns *out. */
 wrc_status wrc_wheelset_new(const wrc_profile* wheel, const wrc_profile* rail, const char* options, wrc_wheelset** out);
 wrc_status wrc_wheelset_new4(const wrc_profile* left_wheel, const wrc_profile* right_wheel,
                              const wrc_profile* left_rail, const wrc_profile* right_rail, const char* options,

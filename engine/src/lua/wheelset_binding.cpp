@@ -248,6 +248,24 @@ void open_trajectory(lua_State* L) {
   lua_pop(L, 1);
 }
 
+// ws:check_strategy{poses =, y = {min, max}, yaw =, roll =, depth =, seed =, threads =}: the strategy against brute
+// force on random poses; an error names the first pose that differs.
+int wheelset_check_strategy(lua_State* L) {
+  const char* ctx = "wheelset:check_strategy";
+  LuaWheelset& w = self(L, ctx);
+  Args a(L, ctx);
+  StrategyCheckOptions o = read_strategy_check_options(a.reader);
+  a.reader.finish();
+  const bool portable = w.model->strategy().info().portable;
+  if (!portable) o.threads = 1;  // an inline Lua strategy runs in this state only
+  const auto r = check_strategy(w.model->geometry(), o, [&]() -> std::unique_ptr<PoseSearch> {
+    if (!portable) return std::make_unique<SearchRef>(w.strategy->main_search(L));
+    return w.model->strategy().make_search();
+  });
+  push_result(L, r);
+  return 1;
+}
+
 void push_placed(lua_State* L, const std::vector<double>& y, const std::vector<double>& z, const char* kind,
                  const char* frame) {
   lua_createtable(L, 0, 4);
@@ -347,6 +365,10 @@ int wheelset_index(lua_State* L) {
     return 1;
   }
   if (key == "params") return push_result(L, w.model->params()), 1;
+  if (key == "strategy_check") {
+    if (!w.model->strategy_check()) return lua_pushnil(L), 1;
+    return push_result(L, *w.model->strategy_check()), 1;
+  }
   if (key == "strategy") return push_strategy_info(L, w.model->geometry().strategy), 1;
   if (key == "tests") {
     if (w.last_tests[kLeft] < 0) return lua_pushnil(L), 1;
@@ -392,7 +414,7 @@ void open_wheelset(lua_State* L) {
                                 {"rigid", guarded<wheelset_rigid>},     {"sweep", guarded<wheelset_sweep>},
                                 {"cones", guarded<wheelset_cones>},     {"lines", guarded<wheelset_lines>},
                                 {"coarse", guarded<wheelset_coarse>},   {"trajectory", guarded<wheelset_trajectory>},
-                                {nullptr, nullptr}};
+                                {"check_strategy", guarded<wheelset_check_strategy>}, {nullptr, nullptr}};
     luaL_setfuncs(L, methods, 0);
     lua_setfield(L, -2, "methods");
   }

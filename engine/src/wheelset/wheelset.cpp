@@ -26,6 +26,7 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   c.merge_angle = r.number("merge_angle", c.merge_angle);
   c.dense = r.choice("solver", {"fast", "dense"}).value_or(c.dense ? "dense" : "fast") == "dense";
   p.strategy = r.string("strategy").value_or(p.strategy);
+  p.check_strategy = r.integer("check_strategy", 0, 10'000'000).value_or(p.check_strategy);
   return p;
 }
 
@@ -68,6 +69,7 @@ void describe(const WheelsetParams& p, FieldSink& out) {
   out.number("merge_angle", p.contact.merge_angle);
   out.string("solver", p.contact.dense ? "dense" : "fast");
   out.string("strategy", p.strategy);
+  out.integer("check_strategy", p.check_strategy);
 }
 
 Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
@@ -85,6 +87,12 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
   }
   geometry_ = std::make_shared<const GeometryModel>(build_geometry(track_, sides, std::move(info)));
   contact_ = std::make_shared<const ContactModel>(geometry_, params.material, params.contact);
+  if (params.check_strategy > 0) {
+    StrategyCheckOptions o;
+    o.poses = params.check_strategy;
+    if (!strategy_->info().portable) o.threads = 1;  // bound to the building thread
+    strategy_check_ = check_strategy(*geometry_, o, [this] { return strategy_->make_search(); });
+  }
 }
 
 std::unique_ptr<ContactWorkspace> Wheelset::make_workspace() const {

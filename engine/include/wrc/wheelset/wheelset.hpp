@@ -11,9 +11,11 @@
 #include "wrc/core/options.hpp"
 #include "wrc/geometry/strategy.hpp"
 #include "wrc/wheelset/contact.hpp"
+#include "wrc/wheelset/strategy_check.hpp"
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace wrc {
@@ -30,10 +32,15 @@ struct WheelsetParams {
   // The constant-slope wheel of "fast" stripes the pressure of near-conformal contacts (S1002/60E1 at y = 0), and
   // the search is a small part of an evaluation beside the normal problems.
   std::string strategy = "accurate";
+  // Random poses located with the strategy and with brute force when the wheelset is built (0: none): an error names
+  // the first pose that differs (wheelset/strategy_check.hpp; range |y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad,
+  // 1 um .. 1 mm deep). Opt-in: ~50 ms of brute force per pose at the paper's 0.1 mm discretisation.
+  int check_strategy = 0;
 };
 
 // Reads wrc.wheelset{}'s keys over the defaults: radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E,
-// nu, grid, margin, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), strategy (a name). Range
+// nu, grid, margin, max_elements, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), strategy (a
+// name), check_strategy. Range
 // checks happen when the wheelset is built. Does not finish() the reader (the caller may read more keys).
 WheelsetParams read_wheelset_params(OptionReader& options);
 // The parameters as fields (wrc.defaults, ws.params).
@@ -60,6 +67,8 @@ class Wheelset {
   const std::shared_ptr<const GeometryModel>& geometry_ptr() const { return geometry_; }
   const std::shared_ptr<const ContactModel>& contact_model_ptr() const { return contact_; }
   const LocationStrategy& strategy() const { return *strategy_; }
+  // The check of params.check_strategy, when it ran (it passed: a difference is an error of the constructor).
+  const std::optional<StrategyCheckResult>& strategy_check() const { return strategy_check_; }
   // A workspace for the calling thread, with the strategy's search for that thread.
   std::unique_ptr<ContactWorkspace> make_workspace() const;
   // A workspace using `search` (not owned; it must outlive the workspace), e.g. a search bound to a Lua state.
@@ -71,6 +80,7 @@ class Wheelset {
   std::shared_ptr<const Track> track_;
   std::shared_ptr<const GeometryModel> geometry_;
   std::shared_ptr<const ContactModel> contact_;
+  std::optional<StrategyCheckResult> strategy_check_;
 };
 
 // Places the profiles, discretises them with `strategy` and builds the contact model. Throws wrc::Error naming
