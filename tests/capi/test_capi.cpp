@@ -128,6 +128,29 @@ TEST_CASE("bad input: a status and a message that names what is wrong") {
   wrc_result_free(r);
 }
 
+TEST_CASE("issue 14's options through the C API: check_strategy, max_elements, max_penetration, flange_climb") {
+  Fixture f;
+  wrc_wheelset* w2 = nullptr;
+  const char* checked = "cant=0 grid=0.5e-3 strategy=uniform+coarse+topology check_strategy=4";
+  REQUIRE_MESSAGE(wrc_wheelset_new(f.wheel, f.rail, checked, &w2) == WRC_OK, last());
+  wrc_wheelset_free(w2);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=0.5e-3 max_elements=100", &w2) == WRC_ERROR);
+  CHECK(last().find("is too fine for max_elements = 100") != std::string::npos);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 gauge=1.42", &w2) == WRC_ERROR);
+  CHECK(last().find("the flanges do not fit between the rails") != std::string::npos);
+  wrc_result* r = nullptr;
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_NOT_CONVERGED);
+  char msg[512];
+  size_t len = 0;
+  REQUIRE(wrc_result_string(r, "error", msg, sizeof msg, &len) == WRC_OK);
+  CHECK(std::string(msg).find("the load is out of reach: Fz = 1e+09 N") != std::string::npos);
+  wrc_result_free(r);
+  REQUIRE_MESSAGE(wrc_equilibrium(f.ws, 2e-3, 0.0, 100e3, nullptr, &r) == WRC_OK, last());
+  CHECK(number(r, "flange_climb") == 0);
+  CHECK(number(r, "left.flange_climb") == 0);
+  wrc_result_free(r);
+}
+
 TEST_CASE("freed handles are refused, and handles are independent") {
   wrc_result* r = nullptr;
   wrc_wheelset* ws = nullptr;

@@ -99,11 +99,12 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
 /* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N) prescribed at y, yaw, roll. Options:
- * force_tolerance, max_iterations, max_evaluations. */
+ * force_tolerance, max_iterations, max_evaluations, max_penetration (m; deeper and still short of Fz: out of reach). */
 wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz,
                      const char* options, wrc_result** out);
 /* The static equilibrium under the vertical load Q (N) at the centre: z and roll solved at y, yaw. Options: grids
- * (default true), force_tolerance, moment_tolerance, max_iterations, max_evaluations, start.z, start.roll. */
+ * (default true), force_tolerance, moment_tolerance, max_iterations, max_evaluations, max_penetration, start.z,
+ * start.roll. */
 wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double Q, const char* options,
                            wrc_result** out);
 /* The rigid (kinematic) reference at y, yaw with load Q. */

@@ -182,6 +182,28 @@ struct EvaluationBudget : Error {
   using Error::Error;
 };
 
+// Thrown when an iterate is deeper than max_penetration and still carries less than the load.
+struct UnreachableLoad : Error {
+  using Error::Error;
+};
+
+// The deepest contact area (max h, m) of one wheel, or of both (side < 0).
+double deepest(const ContactResult& c, int side = -1) {
+  double d = 0;
+  for (int s : {kLeft, kRight})
+    if (side < 0 || side == s)
+      for (const PatchContact& p : c.wheel[s].patches) d = std::max(d, p.penetration);
+  return d;
+}
+
+std::string unreachable(const char* what, double load, double carried, const Pose& p, double depth, double limit) {
+  return fmt::format("the load is out of reach: {} = {:.4g} N, but at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad "
+                     "the contacts are {:.3f} mm deep (more than max_penetration = {:.3g} mm) and carry only {:.4g} N; "
+                     "expected a load the wheels carry within max_penetration (wheel-rail contacts at realistic loads "
+                     "are 0.05-0.3 mm deep; beyond ~1 mm the half-space model no longer holds)",
+                     what, load, p.y * 1e3, p.z * 1e3, p.roll * 1e3, depth * 1e3, limit * 1e3, carried);
+}
+
 // An iterate of the equilibrium: the contact at (z, roll), the residual (sum Fz - Q, sum Mx) and its Jacobian.
 struct Iterate {
   double z = 0, roll = 0;
@@ -464,6 +486,8 @@ class EquilibriumSolver {
     it.lifted = !(c.wheel[kLeft].force.z() > 0) || !(c.wheel[kRight].force.z() > 0);
     const double rf = it.R(0) / Q_, rm = it.R(1) / Q_;
     it.merit = rf * rf + rm * rm;
+    if (!unbudgeted_ && it.R(0) < 0 && deepest(c) > opt_.max_penetration)  // deeper is the only way on: hopeless
+      throw UnreachableLoad(unreachable("Q", Q_, c.force.z(), c.pose, deepest(c), opt_.max_penetration));
     return it;
   }
 
@@ -583,6 +607,9 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   } catch (const EvaluationBudget& e) {
     why.push_back(e.what());
     if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
+  } catch (const UnreachableLoad& e) {
+    why.assign(1, e.what());
+    if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
   }
   finish_result(model, ws, request, ok, why, solver, cur, res);
   return res;
@@ -599,10 +626,6 @@ double touch_height(const GeometryModel& g, int side, double y, double yaw, doub
   bool ok = false;
   return bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-12, 200, ok);
 }
-
-// An approach beyond this (m) is no elastic contact of wheel and rail: a load that needs it is hopeless.
-constexpr double kMaxApproach = 3e-3;
-
 
 }  // namespace
 
@@ -630,9 +653,6 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   auto evaluate = [&](double a, double tolerance) {
     if (evaluations++ >= opt.max_evaluations)
       throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", opt.max_evaluations));
-    if (a > kMaxApproach)
-      throw Error(fmt::format("Fz = {:.6g} N needs an approach beyond {} mm (the force is {:.6g} N at {:.3f} mm): no "
-                              "elastic contact carries it", Fz, kMaxApproach * 1e3, cur.wheel[side].force.z(), a * 1e3));
     ContactRequest req;
     req.only_side = side;
     req.tolerance = tolerance;
@@ -661,7 +681,10 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
       if (!std::isfinite(hi)) a = std::clamp(a, lo, 4 * a1);
       if (std::isfinite(hi) && !(a > lo && a < hi)) a = 0.5 * (lo + hi);
       const double error = std::abs(cur.wheel[side].force.z() - Fz) / Fz;
-      a0 = a1, f0 = f1, a1 = a;
+      if (f1 < 0 && a1 >= opt.max_penetration)  // F grows with the approach: no approach within the limit carries Fz
+        throw UnreachableLoad(unreachable("Fz", Fz, cur.wheel[side].force.z(), cur.pose, deepest(cur, side),
+                                          opt.max_penetration));
+      a0 = a1, f0 = f1, a1 = std::min(a, opt.max_penetration);
       f1 = phi(a1, error > 0.05 ? loose : tight);
     }
     res.converged = std::abs(f1) <= ftol;
@@ -670,6 +693,8 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     const double model_tolerance = model.options().normal.tolerance;
     if (res.converged && opt.final_at_model_tolerance && tight > model_tolerance) evaluate(a1, model_tolerance);
   } catch (const EvaluationBudget& e) {
+    res.message = e.what();
+  } catch (const UnreachableLoad& e) {
     res.message = e.what();
   }
   res.iterations = evaluations;
@@ -688,6 +713,9 @@ EquilibriumOptions read_equilibrium_options(OptionReader& r) {
   if (!(o.force_tolerance > 0) || !(o.moment_tolerance > 0)) fail("{}: tolerances must be > 0", r.context());
   o.max_iterations = r.integer("max_iterations", 1, 1 << 20).value_or(o.max_iterations);
   o.max_evaluations = r.integer("max_evaluations", 1, 1 << 20).value_or(o.max_evaluations);
+  o.max_penetration = r.number("max_penetration", o.max_penetration);
+  if (!(o.max_penetration > 0) || !std::isfinite(o.max_penetration))
+    fail("{}: max_penetration = {} m must be a positive number", r.context(), o.max_penetration);
   if (r.boolean("trace").value_or(false)) {
     o.trace = [](int it, double z, double roll, const ContactResult& c) {
       std::fprintf(stderr, "  newton %2d: z = %+.6f mm, roll = %+.6f mrad, Fz = %.3f kN (left %.3f, right %.3f), Mx = %+.3f N m\n",

@@ -166,8 +166,17 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
   const Plan plan = make_plan(ys, static_cast<int>(yaws.size()));
 
   int threads = opt.threads > 0 ? opt.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, static_cast<int>(std::max(plan.centres.size(), plan.chains.size()))));
+  const int tasks = static_cast<int>(std::max(plan.centres.size(), plan.chains.size()));
+  threads = std::max(1, std::min(threads, opt.single_thread.empty() ? tasks : 1));
   out.threads = threads;
+  if (opt.threads > threads) {
+    out.threads_note = fmt::format("threads = {} asked for, {} used: {}", opt.threads, threads,
+                                   !opt.single_thread.empty() ? opt.single_thread
+                                   : fmt::format("the sweep has {} chain{} of continuation (per yaw, outward from the "
+                                                 "centre on each side), one per thread", tasks,
+                                                 tasks == 1 ? "" : "s"));
+    if (opt.notice) opt.notice(out.threads_note);
+  }
   std::vector<std::unique_ptr<ContactWorkspace>> workspaces(static_cast<std::size_t>(threads));
   for (auto& w : workspaces) w = make_workspace();
 
@@ -189,6 +198,7 @@ SweepOptions read_sweep_options(OptionReader& r) {
   o.rigid = r.boolean("rigid").value_or(false);
   o.keep_grids = r.boolean("grids").value_or(false);
   o.equilibrium = read_equilibrium_options(r);
+  o.notice = [](const std::string& note) { std::fprintf(stderr, "wrc: sweep: %s\n", note.c_str()); };
   if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
     const auto t0 = std::chrono::steady_clock::now();
     o.progress = [t0](int done, int total, int failed) {

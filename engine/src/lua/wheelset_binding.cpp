@@ -153,9 +153,10 @@ int wheelset_sweep(lua_State* L) {
   SweepOptions so = read_sweep_options(a.reader);
   a.reader.finish();
   // An inline Lua strategy runs only in this state: one thread, this state's search.
-  if (!w.model->strategy().info().portable) so.threads = 1;
+  const bool portable = w.model->strategy().info().portable;
+  if (!portable) so.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
   const SweepResult r = run_sweep(w.model->contact_model(), *ys, yaws, so, [&]() -> std::unique_ptr<ContactWorkspace> {
-    if (so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
+    if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
     return w.model->make_workspace();  // a worker's own Lua state
   });
   int failed = 0;
@@ -168,6 +169,7 @@ int wheelset_sweep(lua_State* L) {
   }
   set_number(L, "seconds", r.seconds);
   set_integer(L, "threads", r.threads);
+  if (!r.threads_note.empty()) set_string(L, "threads_note", r.threads_note.c_str());
   set_integer(L, "failed", failed);
   return 1;
 }

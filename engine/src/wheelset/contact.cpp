@@ -300,6 +300,24 @@ bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const c
   return true;
 }
 
+// The potential contact area of a pose exceeds max_elements: either the grid is too fine for the cap or the pose is
+// far deeper than any elastic approach (a solve that lost its way, an unreachable load).
+[[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,
+                                    const Pose& pose, long nx, long ny) {
+  double depth = 0;
+  for (const auto& s : all) depth = std::max(depth, s.sagitta);
+  const double n = static_cast<double>(nx) * static_cast<double>(ny);
+  const std::string area = fmt::format(
+      "the {} wheel's potential contact area at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad, yaw = {:.4f} mrad "
+      "needs {} x {} = {} elements (about {:.0f} MB), more than max_elements = {}", side_name(side), pose.y * 1e3,
+      pose.z * 1e3, pose.roll * 1e3, pose.yaw * 1e3, nx, ny, nx * ny, n * kBytesPerElement / 1e6, opt.max_elements);
+  if (depth > 1e-3)
+    fail("contact: {}: the pose is far too deep ({:.2f} mm of inter-penetration; elastic approaches are a fraction of "
+         "a mm)", area, depth * 1e3);
+  fail("contact: {}: the grid ({:.4g} mm) is too fine for the cap; raise max_elements (about {:.0f} bytes per "
+       "element) or use a coarser grid", area, opt.element * 1e3, kBytesPerElement);
+}
+
 // The potential contact area: a grid aligned with the plane origin covering the projected segments plus the margin.
 contact::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all, const Plane& pl, int side,
                         const Pose& pose) {
@@ -308,10 +326,7 @@ contact::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo
   const long i0 = static_cast<long>(std::floor(umin / e)) - opt.margin, i1 = static_cast<long>(std::ceil(umax / e)) + opt.margin;
   const long j0 = static_cast<long>(std::floor(vmin / e)) - opt.margin, j1 = static_cast<long>(std::ceil(vmax / e)) + opt.margin;
   const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
-  if (nx * ny > opt.max_elements)
-    fail("contact: the {} wheel's potential contact area needs {} x {} elements (more than max_elements = {}): "
-         "the pose (y = {}, z = {}, roll = {}, yaw = {}) is far too deep",
-         side_name(side), nx, ny, opt.max_elements, pose.y, pose.z, pose.roll, pose.yaw);
+  if (nx * ny > opt.max_elements) too_many_elements(opt, all, side, pose, nx, ny);
   contact::Grid grid;
   grid.nx = static_cast<int>(nx);
   grid.ny = static_cast<int>(ny);
@@ -555,6 +570,22 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
   }
   if (!request.keep_grids) drop_grids(res);
   return res;
+}
+
+long long largest_potential_area(const ContactModel& model, const LocationState& st) {
+  const ContactOptions& opt = model.options();
+  long long largest = 0;
+  for (int side : {kLeft, kRight})
+    for (const Patch& p : st.patches(side)) {
+      std::vector<SegmentInfo> infos;
+      collect_segments(model.geometry(), st, side, p, infos);
+      const auto [umin, umax, vmin, vmax] = projected_bounds(infos, plane_of(infos, p));
+      const double e = opt.element;
+      const long long nx = static_cast<long long>(std::ceil(umax / e) - std::floor(umin / e)) + 2 * opt.margin + 1;
+      const long long ny = static_cast<long long>(std::ceil(vmax / e) - std::floor(vmin / e)) + 2 * opt.margin + 1;
+      largest = std::max(largest, nx * ny);
+    }
+  return largest;
 }
 
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& ws) {

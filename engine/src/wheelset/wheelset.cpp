@@ -72,6 +72,29 @@ void describe(const WheelsetParams& p, FieldSink& out) {
   out.integer("check_strategy", p.check_strategy);
 }
 
+namespace {
+
+// The centred wheelset pressed kReferenceApproach into the rails (S1002/60E1 at 100 kN per wheel: 0.075 mm) must fit
+// max_elements, or every solve at a realistic load would fail after the time it took to get there.
+constexpr double kReferenceApproach = 0.1e-3;
+
+void check_grid_cap(const ContactModel& model) {
+  if (model.options().max_elements < 1) fail("wrc.wheelset: max_elements must be >= 1");
+  NativeSearch walk({false, NativePlan::Scan::walk});  // exact on any discretisation; not the user's strategy
+  LocationState st;
+  locate_contact(model.geometry(), {0, -kReferenceApproach, 0, 0}, st, walk);
+  const long long n = largest_potential_area(model, st);
+  const ContactOptions& o = model.options();
+  if (n > o.max_elements)
+    fail("wrc.wheelset: grid = {:.4g} mm is too fine for max_elements = {}: the centred wheelset pressed {:.2f} mm into "
+         "the rails (about what 100 kN per wheel does on S1002/60E1) already needs {} elements in one potential "
+         "contact area (about {:.0f} MB); raise max_elements (about {:.0f} bytes per element) or use a coarser grid",
+         o.element * 1e3, o.max_elements, kReferenceApproach * 1e3, n,
+         static_cast<double>(n) * kBytesPerElement / 1e6, kBytesPerElement);
+}
+
+}  // namespace
+
 Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
                    std::shared_ptr<const LocationStrategy> strategy)
     : params_(params), strategy_(std::move(strategy)) {
@@ -87,6 +110,7 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
   }
   geometry_ = std::make_shared<const GeometryModel>(build_geometry(track_, sides, std::move(info)));
   contact_ = std::make_shared<const ContactModel>(geometry_, params.material, params.contact);
+  check_grid_cap(*contact_);
   if (params.check_strategy > 0) {
     StrategyCheckOptions o;
     o.poses = params.check_strategy;

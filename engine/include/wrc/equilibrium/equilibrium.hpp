@@ -33,6 +33,11 @@ struct EquilibriumOptions {
   double max_step_z = 0.5e-3;      // largest Newton step in z (m)
   double max_step_roll = 2e-3;     // largest Newton step in roll (rad)
   double initial_approach = 0.05e-3;  // cold start: the rigid position pressed in by this much (m)
+  // An iterate whose contacts are deeper than this (m) and still carry less than the load ends the solve at once: the
+  // load is out of reach. Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075 mm at 100 kN
+  // per wheel, 0.24 mm for 367 kN on the flange root); at 1 mm the contact is tens of mm long on a 0.45 m wheel,
+  // where the half-space model no longer holds (Hertz: ~5 MN).
+  double max_penetration = 1e-3;
   // Tolerance of the normal problems while Newton iterates (inexact steps, from warm starts: a few CG iterations
   // each); a solution found so is confirmed by an evaluation at the model's tolerance, and Newton goes on from it
   // if the residuals moved out of tolerance, so the forces reported are those evaluate_contact gives at the pose.
@@ -96,8 +101,8 @@ struct WheelResult {
   WheelContact wheel;        // the side's contact
 };
 // `start`: a height to start from (e.g. the previous time step's); otherwise the touching height pressed in by
-// initial_approach. The normal problems are solved to options.normal_tolerance. A load that needs an approach
-// beyond 3 mm (no elastic wheel-rail contact) is an error.
+// initial_approach. The normal problems are solved to options.normal_tolerance. A load that the wheel does not carry
+// at an approach of options.max_penetration is out of reach: not converged, with the reason.
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
                         ContactWorkspace& ws, const EquilibriumOptions& options = {},
                         std::optional<double> start = std::nullopt);
@@ -144,6 +149,10 @@ struct SweepOptions {
   EquilibriumOptions equilibrium;
   // Called from worker threads (serialised) after each case: done, total, failed so far.
   std::function<void(int, int, int)> progress;
+  // Why the sweep must run on the calling thread alone ("": it need not), e.g. a strategy bound to one Lua state.
+  std::string single_thread;
+  // Called once (on the calling thread) when fewer threads run than `threads` asked for, with the reason.
+  std::function<void(const std::string&)> notice;
 };
 struct SweepResult {
   std::vector<SweepCase> cases;             // in the order given (yaw major, then y as given)
@@ -151,17 +160,18 @@ struct SweepResult {
   std::vector<std::optional<RigidResult>> rigid;
   std::vector<std::string> errors;          // per case: exception text if the case threw, else empty
   double seconds = 0;
-  int threads = 1;
+  int threads = 1;            // worker threads used
+  std::string threads_note;   // why fewer than SweepOptions::threads (when given) ran; "" otherwise
 };
 SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
                       const SweepOptions& options,
                       const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
 
 // Options as Lua and the C API give them: force_tolerance, moment_tolerance, max_iterations, max_evaluations,
-// trace (true: print the Newton iterates to stderr).
+// max_penetration, trace (true: print the Newton iterates to stderr).
 EquilibriumOptions read_equilibrium_options(OptionReader& options);
 // A sweep's options: Q (required), threads (0: all cores), rigid, grids, progress (default: stderr is a
-// terminal), and the equilibrium options above.
+// terminal), and the equilibrium options above. A capped thread count is noted once on stderr.
 SweepOptions read_sweep_options(OptionReader& options);
 // Why a solve did not converge, with its last iterate (the error of a Lua call that does not return failures).
 std::string failure_message(const EquilibriumResult& result);

@@ -42,9 +42,16 @@ struct ContactOptions {
   double merge_tolerance = 0.01;  // relative force error of solving two areas apart that triggers a merge
   double merge_angle = 0.26;      // rad (15 deg): areas whose normals differ more are never merged
   bool dense = false;             // the dense reference solver instead of the fast one (tests)
-  int max_elements = 1 << 20;     // a larger potential contact area is an error (a pose far too deep)
+  // Largest potential contact area (elements, ~kBytesPerElement each): a larger one is an error naming the grid as too
+  // fine for the cap, or the pose as far too deep. 2^22: the paper's poses (S1002/60E1, Q = 200 kN, y = -8 .. 8 mm,
+  // yaw 0 and 1 deg) need up to ~2.0e6 elements at grid = 0.02 mm.
+  int max_elements = 1 << 22;
   contact::NormalOptions normal;  // tolerance etc. of the normal solver
 };
+
+// Memory of the normal solve per element of a potential contact area (bytes; measured with the fast solver,
+// S1002/60E1 at 0.02 .. 0.04 mm: 350-600): for the messages about max_elements.
+inline constexpr double kBytesPerElement = 400;
 
 // Rows of a force/moment sensitivity: (Fx, Fy, Fz, Mx, My, Mz); columns: (z, roll) of the pose.
 using Sensitivity = Eigen::Matrix<double, 6, 2>;
@@ -157,6 +164,10 @@ struct ContactRequest {
 // or a potential contact area beyond options.max_elements.
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& workspace,
                                const ContactRequest& request = {});
+
+// The largest potential contact area (elements) that evaluate_contact would grid for the inter-penetration areas of
+// `location` (each area alone, before any merging): the estimate of a grid's cost.
+long long largest_potential_area(const ContactModel& model, const LocationState& location);
 
 // Fills the sensitivities of a result evaluated without them (its grids must have been kept).
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& workspace);
