@@ -90,23 +90,40 @@ struct Worker {
 
 }  // namespace
 
-std::vector<Pose> strategy_check_poses(const GeometryModel& g, const StrategyCheckOptions& o) {
+namespace {
+
+// A pose as drawn: its height follows from the geometry (touch_height), computed by the worker that checks it.
+struct Draw {
+  double y, yaw, roll, depth;
+};
+
+std::vector<Draw> draw_poses(const StrategyCheckOptions& o) {
   check_range(o.y, "y", -0.1, 0.1);
   check_range(o.yaw, "yaw", -0.3, 0.3);
   check_range(o.roll, "roll", -0.1, 0.1);
   check_range(o.depth, "depth", 1e-9, 0.01);
-  if (o.depth[0] <= 0) fail("check_strategy: depth must be positive");
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> U(0.0, 1.0);
-  auto draw = [&](const std::array<double, 2>& r) { return r[0] + (r[1] - r[0]) * U(rng); };
-  std::vector<Pose> poses(static_cast<std::size_t>(std::max(0, o.poses)));
-  for (Pose& p : poses) {
-    p.y = draw(o.y);
-    p.yaw = draw(o.yaw);
-    p.roll = draw(o.roll);
-    const double depth = std::exp(draw({std::log(o.depth[0]), std::log(o.depth[1])}));
-    p.z = touch_height(g, p.y, p.roll, p.yaw) - depth;
+  auto draw = [&](double lo, double hi) { return lo + (hi - lo) * U(rng); };
+  std::vector<Draw> d(static_cast<std::size_t>(std::max(0, o.poses)));
+  for (Draw& p : d) {
+    p.y = draw(o.y[0], o.y[1]);
+    p.yaw = draw(o.yaw[0], o.yaw[1]);
+    p.roll = draw(o.roll[0], o.roll[1]);
+    p.depth = std::exp(draw(std::log(o.depth[0]), std::log(o.depth[1])));
   }
+  return d;
+}
+
+Pose pose_of(const GeometryModel& g, const Draw& d) {
+  return {d.y, touch_height(g, d.y, d.roll, d.yaw) - d.depth, d.roll, d.yaw};
+}
+
+}  // namespace
+
+std::vector<Pose> strategy_check_poses(const GeometryModel& g, const StrategyCheckOptions& o) {
+  std::vector<Pose> poses;
+  for (const Draw& d : draw_poses(o)) poses.push_back(pose_of(g, d));
   return poses;
 }
 
@@ -114,8 +131,8 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
                                    const std::function<std::unique_ptr<PoseSearch>()>& make_search) {
   if (o.poses < 0) fail("check_strategy: poses must be >= 0, got {}", o.poses);
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<Pose> poses = strategy_check_poses(g, o);
-  const int n = static_cast<int>(poses.size());
+  const std::vector<Draw> draws = draw_poses(o);
+  const int n = static_cast<int>(draws.size());
   int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::max(1, std::min(threads, n));
   std::vector<Worker> workers(static_cast<std::size_t>(threads));
@@ -132,7 +149,7 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   };
   auto run = [&](Worker& w) {
     for (int i; (i = next.fetch_add(1)) < n && i < first_bad;) {
-      const Pose& p = poses[static_cast<std::size_t>(i)];
+      const Pose p = pose_of(g, draws[static_cast<std::size_t>(i)]);
       try {
         locate_contact(g, p, w.mine, *w.search);
       } catch (const Error& e) {
@@ -161,7 +178,7 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   if (first_bad < n)
     fail("check_strategy: the strategy '{}' differs from brute force on the same discretisation at pose {} of {} "
          "(seed {}): {}: {}", g.strategy.name, first_bad + 1, n, o.seed,
-         pose_text(poses[static_cast<std::size_t>(first_bad.load())]), bad_message);
+         pose_text(pose_of(g, draws[static_cast<std::size_t>(first_bad.load())])), bad_message);
   StrategyCheckResult r;
   r.poses = n;
   r.threads = threads;
