@@ -55,8 +55,18 @@ check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, strategy = path,
 
 -- An inline (non-portable) strategy with the same error is checked in this Lua state.
 local inline_bad = wrc.wheelset{wheel = wheel, rail = rail, strategy = {
-  locate = function(ctx, side) ctx:walk(side, 2, #ctx:lines(side).y - 1) end}}
-check.fails(function() inline_bad:check_strategy{poses = 20} end, "differs from brute force", "an inline strategy")
+  locate = function(ctx, side)
+    ctx:coarse(side)
+    for _, w in ipairs(ctx:windows(side)) do
+      if w[2] - 1 >= w[1] + 1 then ctx:walk(side, w[1] + 1, w[2] - 1, w[3], w[4]) end
+    end
+  end,
+  discretise = function(d)
+    d.coarse = {every = 4, wheel = wrc.geometry.offset_outward(d.wheel, wrc.geometry.cell_dilation(d.rail, 4), 2e-3)}
+    return d
+  end}}
+err = check.fails(function() inline_bad:check_strategy{poses = 20} end, "differs from brute force", "an inline strategy")
+check.ok(err:find("misses rail line", 1, true), "the inline strategy misses a line: " .. err)
 
 -- Correct strategies pass; every pose is in contact (1 um .. 1 mm below first touch).
 local r = good:check_strategy{poses = 40, y = {-8e-3, 8e-3}, yaw = {0, 0.0175}}
