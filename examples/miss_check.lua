@@ -3,7 +3,7 @@
 -- that differs. The default is the full check of the default strategy on the paper's S1002 / 60E1 track:
 --
 --   wrc run examples/miss_check.lua [poses=100000] [strategy=accurate] [threads=0] [seed=1]
---                                   [y_mm=10] [yaw_mrad=30] [roll_mrad=10]
+--                                   [y_mm=10] [yaw_mrad=30] [roll_mrad=10] [progress=true]
 --
 -- Poses: |y| <= y_mm, |yaw| <= yaw_mrad, |roll| <= roll_mrad, uniform; 1 um .. 1 mm below the height of first
 -- touch, log-uniform. Brute force costs ~50 ms per pose at the paper's 0.1 mm: 10^5 poses are ~1.4 h of CPU.
@@ -16,7 +16,8 @@ local rail = wrc.profile.load("profiles/60e1.lua", {step = 0.1e-3})
 local ws = wrc.wheelset{wheel = wheel, rail = rail, strategy = arg.strategy or wrc.defaults.wheelset.strategy}
 
 local r = ws:check_strategy{poses = poses, y = {-y, y}, yaw = {-yaw, yaw}, roll = {-roll, roll},
-                            seed = math.tointeger(tonumber(arg.seed or 1)), threads = math.tointeger(tonumber(arg.threads or 0))}
+                            seed = math.tointeger(tonumber(arg.seed or 1)), threads = math.tointeger(tonumber(arg.threads or 0)),
+                            progress = arg.progress and tostring(arg.progress) == "true" or nil}
 print(string.format("miss check of strategy '%s' against brute force: %d poses (%d with contact, %d areas), no "
                     .. "difference; %.1f s on %d threads; %.0f closed-form tests per pose (brute force %.0f)",
                     ws.strategy.name, r.poses, r.contact_poses, r.patches, r.seconds, r.threads, r.tests / r.poses,

@@ -10,10 +10,13 @@
 #include <chrono>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <mutex>
 #include <random>
 #include <thread>
+
+#include <unistd.h>
 
 namespace wrc {
 namespace {
@@ -137,7 +140,7 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   threads = std::max(1, std::min(threads, n));
   std::vector<Worker> workers(static_cast<std::size_t>(threads));
   for (Worker& w : workers) w.search = make_search();  // on the calling thread: a strategy may need it
-  std::atomic<int> next{0}, first_bad{INT_MAX};
+  std::atomic<int> next{0}, first_bad{INT_MAX}, done{0};
   std::mutex m;
   std::string bad_message;
   auto record = [&](int i, const std::string& what) {
@@ -166,6 +169,10 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
       }
       if (!w.ref.patches(kLeft).empty() || !w.ref.patches(kRight).empty()) ++w.counts.contact_poses;
       if (!what.empty()) record(i, what);
+      if (const int d = ++done; o.progress && (d % std::max(1, n / 100) == 0 || d == n)) {
+        std::lock_guard<std::mutex> lock(m);
+        o.progress(d, n);
+      }
     }
   };
   if (threads == 1) {
@@ -207,6 +214,15 @@ StrategyCheckOptions read_strategy_check_options(OptionReader& r) {
   range("depth", o.depth);
   o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT_MAX).value_or(1));
   o.threads = r.integer("threads", 0, 256).value_or(0);
+  if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    o.progress = [t0](int done, int total) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::fprintf(stderr, "\rwrc check_strategy: %d / %d poses, %.0f s", done, total, s);
+      if (done == total) std::fputc('\n', stderr);
+      std::fflush(stderr);
+    };
+  }
   return o;
 }
 
