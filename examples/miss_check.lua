@@ -15,9 +15,9 @@ local wheel = wrc.profile.load("profiles/s1002.lua", {step = 0.1e-3})
 local rail = wrc.profile.load("profiles/60e1.lua", {step = 0.1e-3})
 local ws = wrc.wheelset{wheel = wheel, rail = rail, strategy = arg.strategy or wrc.defaults.wheelset.strategy}
 
-local r = ws:check_strategy{poses = poses, y = {-y, y}, yaw = {-yaw, yaw}, roll = {-roll, roll},
-                            seed = math.tointeger(tonumber(arg.seed or 1)), threads = math.tointeger(tonumber(arg.threads or 0)),
-                            progress = arg.progress and tostring(arg.progress) == "true" or nil}
+local seed, threads = math.tointeger(tonumber(arg.seed or 1)), math.tointeger(tonumber(arg.threads or 0))
+local r = ws:check_strategy{poses = poses, y = {-y, y}, yaw = {-yaw, yaw}, roll = {-roll, roll}, seed = seed,
+                            threads = threads, progress = arg.progress and tostring(arg.progress) == "true" or nil}
 print(string.format("miss check of strategy '%s' against brute force: %d poses (%d with contact, %d areas), no "
                     .. "difference; %.1f s on %d threads; %.0f closed-form tests per pose (brute force %.0f)",
                     ws.strategy.name, r.poses, r.contact_poses, r.patches, r.seconds, r.threads, r.tests / r.poses,
