@@ -198,7 +198,7 @@ double deepest(const ContactResult& c, int side = -1) {
 
 std::string unreachable(const char* what, double load, double carried, const Pose& p, double depth, double limit) {
   return fmt::format("the load is out of reach: {} = {:.4g} N, but at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad "
-                     "the contacts are {:.3f} mm deep (more than max_penetration = {:.3g} mm) and carry only {:.4g} N; "
+                     "the contacts are {:.3f} mm deep (max_penetration = {:.3g} mm) and still carry only {:.4g} N; "
                      "expected a load the wheels carry within max_penetration (wheel-rail contacts at realistic loads "
                      "are 0.05-0.3 mm deep; beyond ~1 mm the half-space model no longer holds)",
                      what, load, p.y * 1e3, p.z * 1e3, p.roll * 1e3, depth * 1e3, limit * 1e3, carried);
