@@ -172,3 +172,45 @@ TEST_CASE("one wheelset from several threads at once gives the results of sequen
   for (auto& t : threads) t.join();
   for (std::size_t i = 0; i < ys.size(); ++i) CHECK(par[i] == seq[i]);
 }
+
+TEST_CASE("rolling contact through the C API: creep forces, grids and the options' errors") {
+  Fixture f;
+  wrc_result* c = nullptr;
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "V=27.78 mu=0.3 omega=61.6 method=exact", &c) == WRC_OK, last());
+  const double fx = number(c, "left.patches.1.Fx"), fy = number(c, "left.patches.1.Fy");
+  // Braking (omega below V / r0 = 61.73 rad/s): positive longitudinal creepage, the rail pulls the wheel back.
+  CHECK(number(c, "left.patches.1.creepage.xi") > 0);
+  CHECK(fx < 0);
+  CHECK(number(c, "left.patches.1.creep_force.x") == doctest::Approx(fx * number(c, "left.patches.1.frame.t1.x") +
+                                                                      fy * number(c, "left.patches.1.frame.t2.x")));
+  CHECK(number(c, "left.creep_force.x") + number(c, "right.creep_force.x") == doctest::Approx(number(c, "creep_force.x")));
+  CHECK(number(c, "power") > 0);
+  size_t n = 0, nx = static_cast<size_t>(number(c, "left.patches.1.grid.nx"));
+  REQUIRE(wrc_result_count(c, "left.patches.1.adhesion_map", &n) == WRC_OK);
+  CHECK(n == nx * static_cast<size_t>(number(c, "left.patches.1.grid.ny")));
+  std::vector<double> px(n);
+  REQUIRE(wrc_result_numbers(c, "left.patches.1.px", px.data(), px.size(), &n) == WRC_OK);
+  double sum = 0;
+  for (double v : px) sum += v;
+  CHECK(sum * std::pow(number(c, "left.patches.1.grid.dx"), 2) == doctest::Approx(fx));
+  wrc_result_free(c);
+  // Prescribed creepages, FASTSIM, and one wheel with its vertical force.
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage.xi=1e-3 mu=0.3 method=fastsim", &c) == WRC_OK, last());
+  CHECK(number(c, "left.patches.1.creepage.xi") == 1e-3);
+  CHECK(number(c, "right.patches.1.Fx") < 0);
+  wrc_result_free(c);
+  REQUIRE_MESSAGE(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 80e3, "V=27.78 mu=0.3 yaw_rate=0.05", &c) == WRC_OK, last());
+  CHECK(number(c, "force.z") == doctest::Approx(80e3).epsilon(1e-6));
+  CHECK(number(c, "creep_force.y") != 0);
+  wrc_result_free(c);
+  // Bad input: a status and a message.
+  for (const char* bad : {"V=27.78 mu=0", "V=0 mu=0.3", "V=27.78", "mu=0.3", "creepage.xi=1e-3 vy=1 mu=0.3",
+                          "V=27.78 mu=0.3 method=polach", "V=27.78 mu_static=0.2 mu_kinetic=0.3"}) {
+    CAPTURE(bad);
+    c = nullptr;
+    CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, bad, &c) == WRC_ERROR);
+    CHECK(c == nullptr);
+    CHECK(last().find("wrc_contact") != std::string::npos);
+  }
+  CHECK(last().find("mu_kinetic") != std::string::npos);
+}

@@ -93,11 +93,16 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 
 /* ---- solves; each makes a result the caller owns (*out), also when it returns WRC_NOT_CONVERGED ---- */
 
-/* Contact at a prescribed pose (m, rad). Options: grids (keep pressure and h grids, default true), sensitivity. */
+/* Contact at a prescribed pose (m, rad). Options: grids (keep pressure and h grids, default true), sensitivity; with
+ * friction (rolling contact, README "Rolling contact"): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
+ * vy (m/s), yaw_rate (rad/s), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
+ * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
+ * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
 /* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N) prescribed at y, yaw, roll. Options:
- * force_tolerance, max_iterations, max_evaluations. */
+ * force_tolerance, max_iterations, max_evaluations, and the rolling options of wrc_contact (Fz then includes the
+ * vertical part of the creep forces). */
 wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz,
                      const char* options, wrc_result** out);
 /* The static equilibrium under the vertical load Q (N) at the centre: z and roll solved at y, yaw. Options: grids

@@ -331,6 +331,7 @@ wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, 
     wrc::ContactRequest req;
     req.keep_grids = r.boolean("grids").value_or(true);
     req.sensitivity = r.boolean("sensitivity").value_or(false);
+    req.rolling = wrc::read_rolling_request(r);
     r.finish();
     Lease ws(*w);
     const wrc::ContactResult c = evaluate_contact(w->model->contact_model(), {y, z, roll, yaw}, *ws, req);
@@ -348,9 +349,10 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
     const wrc::OptionTable t = options_of(options, "wrc_wheel: options");
     wrc::OptionReader r(t, "wrc_wheel");
     const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
+    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
     r.finish();
     Lease ws(*w);
-    const wrc::WheelResult res = solve_wheel(w->model->contact_model(), side, y, yaw, roll, Fz, *ws, opt);
+    const wrc::WheelResult res = solve_wheel(w->model->contact_model(), side, y, yaw, roll, Fz, *ws, opt, rolling);
     return make_result(out, res.converged, res.converged ? "" : "wrc_wheel: " + failure_message(res), res);
   });
 }

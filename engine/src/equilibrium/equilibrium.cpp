@@ -510,8 +510,10 @@ void finish_result(const ContactModel& model, ContactWorkspace& ws, const Contac
 
 EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
                                     const EquilibriumOptions& opt, const std::vector<Start>& starts,
-                                    const ContactRequest& request) {
+                                    const ContactRequest& frictional) {
   check_case(y, yaw, Q, "equilibrium");
+  ContactRequest request = frictional;
+  request.rolling.reset();  // the equilibrium is frictionless (add_rolling evaluates creep forces at its pose)
   if (opt.max_iterations < 1 || opt.max_evaluations < 1)
     fail("equilibrium: max_iterations and max_evaluations must be >= 1");
   EquilibriumResult res;
@@ -544,7 +546,8 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
 }
 
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
-                        ContactWorkspace& ws, const EquilibriumOptions& opt) {
+                        ContactWorkspace& ws, const EquilibriumOptions& opt,
+                        const std::optional<RollingRequest>& rolling) {
   check_case(y, yaw, std::max(Fz, 1.0), "wheel");
   if (!std::isfinite(roll) || std::abs(roll) > 0.3) fail("wheel: roll = {} rad must be finite and within +-0.3", roll);
   if (!std::isfinite(Fz) || !(Fz > 0)) fail("wheel: Fz = {} N must be a positive number", Fz);
@@ -561,36 +564,45 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   req.sensitivity = true;
   req.only_side = side;
   auto fz = [&](const ContactResult& c) { return c.wheel[side].force.z(); };
-  ContactResult cur = evaluate_contact(model, {y, z, roll, yaw}, ws, req);
-  for (int it = 0;; ++it) {
-    res.iterations = it;
-    res.residual = fz(cur) - Fz;
-    if (std::abs(res.residual) <= opt.force_tolerance * Fz) {
-      res.converged = true;
-      break;
-    }
-    if (it >= opt.max_iterations) {
-      res.message = fmt::format("no convergence in {} iterations (residual {:.3g} N)", opt.max_iterations, res.residual);
-      break;
-    }
-    const double k = cur.wheel[side].sensitivity(2, 0);  // dFz/dz (< 0: pressing down raises the force)
-    double dz = k < 0 ? -res.residual / k : -opt.max_step_z;
-    dz = std::clamp(dz, -opt.max_step_z, opt.max_step_z);
-    double t = 1;
-    bool accepted = false;
-    for (int kk = 0; kk < 12; ++kk, t *= 0.5) {
-      ContactResult trial = evaluate_contact(model, {y, z + t * dz, roll, yaw}, ws, req);
-      if (std::abs(fz(trial) - Fz) < (1 - 1e-4 * t) * std::abs(res.residual)) {
-        z += t * dz;
-        cur = std::move(trial);
-        accepted = true;
-        break;
+  // Newton on z with the normal problem's stiffness dFz/dz, the step backtracked on |Fz - Fz given|.
+  const auto newton = [&](ContactResult& cur, int& it) {
+    for (;; ++it) {
+      res.iterations = it;
+      res.residual = fz(cur) - Fz;
+      if (std::abs(res.residual) <= opt.force_tolerance * Fz) return true;
+      if (it >= opt.max_iterations) {
+        res.message = fmt::format("no convergence in {} iterations (residual {:.3g} N)", opt.max_iterations, res.residual);
+        return false;
+      }
+      const double k = cur.wheel[side].sensitivity(2, 0);  // dFz/dz (< 0: pressing down raises the force)
+      double dz = k < 0 ? -res.residual / k : -opt.max_step_z;
+      dz = std::clamp(dz, -opt.max_step_z, opt.max_step_z);
+      double t = 1;
+      bool accepted = false;
+      for (int kk = 0; kk < 12; ++kk, t *= 0.5) {
+        ContactResult trial = evaluate_contact(model, {y, z + t * dz, roll, yaw}, ws, req);
+        if (std::abs(fz(trial) - Fz) < (1 - 1e-4 * t) * std::abs(res.residual)) {
+          z += t * dz;
+          cur = std::move(trial);
+          accepted = true;
+          break;
+        }
+      }
+      if (!accepted) {
+        res.message = fmt::format("no descent (residual {:.3g} N)", res.residual);
+        return false;
       }
     }
-    if (!accepted) {
-      res.message = fmt::format("no descent (residual {:.3g} N)", res.residual);
-      break;
-    }
+  };
+  ContactResult cur = evaluate_contact(model, {y, z, roll, yaw}, ws, req);
+  int it = 0;
+  res.converged = newton(cur, it);
+  // With friction the creep forces' vertical part joins Fz (a tilted contact plane turns lateral creep forces
+  // partly vertical): the frictionless height starts the same iteration with the tangential problems solved.
+  if (res.converged && rolling) {
+    req.rolling = rolling;
+    cur = evaluate_contact(model, {y, z, roll, yaw}, ws, req);
+    res.converged = newton(cur, it);
   }
   res.z = z;
   res.wheel = std::move(cur.wheel[side]);
@@ -656,6 +668,7 @@ void describe(const EquilibriumResult& e, FieldSink& out) {
   out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
   out.vec3("force", e.contact.force);
   out.vec3("moment", e.contact.moment);
+  describe(e.contact.creep, out);
 }
 
 void describe(const WheelResult& w, FieldSink& out) {

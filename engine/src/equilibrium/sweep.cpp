@@ -95,9 +95,13 @@ class SweepRun {
     bool ok = false;
     try {
       ContactRequest req;
-      req.keep_grids = opt_.keep_grids;
+      req.keep_grids = opt_.keep_grids || opt_.rolling.has_value();  // the tangential step needs the pressure
       e = solve_equilibrium(model_, sc.y, sc.yaw, opt_.Q, ws, opt_.equilibrium, starts, req);
       ok = e.converged;
+      if (ok && opt_.rolling) {  // creep forces at the (frictionless) equilibrium's pose
+        add_rolling(model_, e.contact, *opt_.rolling, ws);
+        if (!opt_.keep_grids) drop_grids(e.contact);
+      }
       if (opt_.rigid) out_.rigid[static_cast<std::size_t>(c)] = solve_rigid(model_.geometry(), sc.y, sc.yaw, opt_.Q);
     } catch (const std::exception& ex) {
       out_.errors[static_cast<std::size_t>(c)] = ex.what();
@@ -188,6 +192,7 @@ SweepOptions read_sweep_options(OptionReader& r) {
   o.rigid = r.boolean("rigid").value_or(false);
   o.keep_grids = r.boolean("grids").value_or(false);
   o.equilibrium = read_equilibrium_options(r);
+  o.rolling = read_rolling_request(r);
   if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
     const auto t0 = std::chrono::steady_clock::now();
     o.progress = [t0](int done, int total, int failed) {

@@ -68,7 +68,8 @@ int wheelset_locate(lua_State* L) {
   return 1;
 }
 
-// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, search = "strategy" | "brute"}
+// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, search = "strategy" | "brute", and the rolling
+// keys: V=, omega=, vy=, yaw_rate= or creepage = {xi=, eta=, phi=}, mu= (or mu_static=, mu_kinetic=), method=}
 int wheelset_contact(lua_State* L) {
   const char* ctx = "wheelset:contact";
   LuaWheelset& w = self(L, ctx);
@@ -77,6 +78,7 @@ int wheelset_contact(lua_State* L) {
   ContactRequest req;
   req.keep_grids = a.reader.boolean("grids").value_or(true);
   req.sensitivity = a.reader.boolean("sensitivity").value_or(false);
+  req.rolling = read_rolling_request(a.reader);
   const bool brute = a.reader.choice("search", {"strategy", "brute"}).value_or("strategy") == "brute";
   a.reader.finish();
   const ContactModel& m = w.model->contact_model();
@@ -113,7 +115,8 @@ int wheelset_equilibrium(lua_State* L) {
   return 1;
 }
 
-// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, tolerances}: one wheel-rail pair, vertical force prescribed.
+// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, tolerances, rolling keys}: one wheel-rail pair, vertical force
+// prescribed.
 int wheelset_wheel(lua_State* L) {
   const char* ctx = "wheelset:wheel";
   LuaWheelset& w = self(L, ctx);
@@ -122,9 +125,10 @@ int wheelset_wheel(lua_State* L) {
   const double y = a.reader.number("y", 0.0), yaw = a.reader.number("yaw", 0.0);
   const double roll = a.reader.number("roll", 0.0), Fz = a.reader.need_number("Fz");
   const EquilibriumOptions opt = read_equilibrium_options(a.reader);
+  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
   const bool ret = returns_failures(a.reader);
   a.reader.finish();
-  const WheelResult r = solve_wheel(w.model->contact_model(), side, y, yaw, roll, Fz, workspace(L, w), opt);
+  const WheelResult r = solve_wheel(w.model->contact_model(), side, y, yaw, roll, Fz, workspace(L, w), opt, rolling);
   if (!r.converged && !ret) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;

@@ -1,6 +1,8 @@
 // Patches -> potential contact areas -> normal problems -> forces (wheelset_contact.hpp).
 #include "wrc/wheelset/contact.hpp"
 
+#include "rolling_step.hpp"
+
 #include "wrc/contact/interaction.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
@@ -18,7 +20,7 @@ namespace wrc {
 
 ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
                            const ContactOptions& options)
-    : geometry_(std::move(geometry)), options_(options), solver_(material) {
+    : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
   if (!geometry_) fail("contact model: no geometry");
   contact::validate(material, "contact model");
   if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
@@ -451,6 +453,8 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   std::vector<ContactWorkspace::Previous> next_previous;
   for (const auto& group : area_groups(model, infos, planes)) {
     PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
+    if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws);
+    add_creep(wc.creep, pc);
     wc.force += pc.force;
     wc.moment += pc.moment;
     wc.sensitivity += pc.sensitivity;
@@ -482,9 +486,33 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
     res.force += wc.force;
     res.moment += wc.moment;
     res.sensitivity += wc.sensitivity;
+    add_creep(res.creep, wc.creep);
   }
   if (!request.keep_grids) drop_grids(res);
   return res;
+}
+
+void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
+                 ContactWorkspace& ws) {
+  result.force.setZero();
+  result.moment.setZero();
+  result.creep = {};
+  for (WheelContact& wc : result.wheel) {
+    wc.force.setZero();
+    wc.moment.setZero();
+    wc.creep = {};
+    for (PatchContact& pc : wc.patches) {
+      solve_area_rolling(model, result.pose, pc, request, ws);
+      add_creep(wc.creep, pc);
+      wc.force += pc.force;
+      wc.moment += pc.moment;
+    }
+    const int side = &wc == &result.wheel[kLeft] ? kLeft : kRight;
+    wc.angle = wc.patches.empty() ? 0.0 : contact_angle(side, wc.force);
+    result.force += wc.force;
+    result.moment += wc.moment;
+    add_creep(result.creep, wc.creep);
+  }
 }
 
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& ws) {
@@ -505,6 +533,7 @@ void drop_grids(ContactResult& result) {
       pc.h = {};
       pc.solution.pressure = {};
       pc.solution.gap = {};
+      if (pc.rolling) drop_grids(*pc.rolling);
     }
 }
 
@@ -552,6 +581,7 @@ void describe(const PatchContact& pc, FieldSink& out) {
   out.end();
   if (!s.pressure.empty()) out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny);
   if (!pc.h.empty()) out.grid("h", pc.h.data(), s.grid.nx, s.grid.ny);
+  if (pc.rolling) describe(*pc.rolling, out);
 }
 
 void describe(const WheelContact& wc, FieldSink& out) {
@@ -560,6 +590,7 @@ void describe(const WheelContact& wc, FieldSink& out) {
   out.vec3("moment", wc.moment);
   out.number("angle", wc.angle);
   out.number("rolling_radius", wc.rolling_radius);
+  describe(wc.creep, out);
   out.begin_list("patches", wc.patches.size());
   for (const PatchContact& pc : wc.patches) {
     out.item();
@@ -596,6 +627,7 @@ void describe(const ContactResult& c, FieldSink& out, bool sensitivity) {
   }
   out.vec3("force", c.force);
   out.vec3("moment", c.moment);
+  describe(c.creep, out);
   describe(c.pose, out);
 }
 

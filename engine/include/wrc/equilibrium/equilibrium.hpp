@@ -63,7 +63,8 @@ struct Start {
   std::optional<Eigen::Matrix2d> jacobian;
 };
 
-// Solves the elastic equilibrium. Tries Newton from each of `starts` in order (neighbouring solutions of a
+// Solves the elastic equilibrium (frictionless: request.rolling is ignored; add_rolling gives the creep forces at the
+// solution's pose). Tries Newton from each of `starts` in order (neighbouring solutions of a
 // sweep), then from the rigid position pressed in by initial_approach, then by continuation in y from the
 // centred wheelset, then by nested bracketing. Never throws for lack of convergence: `converged` is false and
 // `message` says why each attempt stopped, with the last iterate in z, roll and contact. Throws wrc::Error on
@@ -73,7 +74,9 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
                                     const ContactRequest& request = {});
 
 // One wheel-rail pair with its vertical force prescribed (CONTACT / multibody style): the wheelset height z
-// that makes that wheel's vertical contact force equal Fz at the given y, yaw and roll.
+// that makes that wheel's vertical contact force equal Fz at the given y, yaw and roll. With `rolling`, the
+// tangential problems are solved too and Fz includes the creep forces' vertical part (the frictionless height
+// starts the iteration).
 struct WheelResult {
   bool converged = false;
   std::string message;
@@ -85,7 +88,8 @@ struct WheelResult {
   WheelContact wheel;        // the side's contact
 };
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
-                        ContactWorkspace& ws, const EquilibriumOptions& options = {});
+                        ContactWorkspace& ws, const EquilibriumOptions& options = {},
+                        const std::optional<RollingRequest>& rolling = std::nullopt);
 
 // Rigid (kinematic) contact of one wheel: the deepest rail line, its point and the wheel normal there.
 struct RigidWheel {
@@ -127,6 +131,9 @@ struct SweepOptions {
   bool keep_grids = false;     // keep pressure/h grids of every case (memory)
   bool rigid = false;          // also solve the rigid reference of each case
   EquilibriumOptions equilibrium;
+  // With kinematics or creepages: the tangential problems of every converged case at its equilibrium pose (the
+  // equilibrium itself stays frictionless); the creep forces join the wheels' forces, Y, My, Mz do not.
+  std::optional<RollingRequest> rolling;
   // Called from worker threads (serialised) after each case: done, total, failed so far.
   std::function<void(int, int, int)> progress;
 };
@@ -146,7 +153,7 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
 // trace (true: print the Newton iterates to stderr).
 EquilibriumOptions read_equilibrium_options(OptionReader& options);
 // A sweep's options: Q (required), threads (0: all cores), rigid, grids, progress (default: stderr is a
-// terminal), and the equilibrium options above.
+// terminal), the equilibrium options above, and the rolling keys (read_rolling_request).
 SweepOptions read_sweep_options(OptionReader& options);
 // Why a solve did not converge, with its last iterate (the error of a Lua call that does not return failures).
 std::string failure_message(const EquilibriumResult& result);

@@ -24,8 +24,10 @@
 #pragma once
 
 #include "wrc/contact/normal.hpp"
+#include "wrc/contact/rolling.hpp"
 #include "wrc/core/fields.hpp"
 #include "wrc/geometry/location.hpp"
+#include "wrc/wheelset/rolling.hpp"
 
 #include <Eigen/Core>
 
@@ -62,25 +64,35 @@ struct PatchContact {
   contact::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
   std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
   double normal_force = 0;             // N
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame): normal + creep force
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // centre of pressure (track frame, m)
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // of `force` about the wheelset centre (N m)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // of the area's tractions about the wheelset centre (N m)
   double angle = 0;                    // contact angle (rad): normal vs z, > 0 tilted toward the track centre
   double rolling_radius = 0;           // wheel radius at the centre of pressure (m)
   double penetration = 0;              // max h (m)
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
                                        // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
                                        // inter-penetration area holds
-  Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll), when asked for
+  Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll) of the normal problem, when asked for
+  std::optional<PatchRolling> rolling;  // the tangential solution, when the call gave kinematics or creepages
+};
+
+// Totals of the tangential solutions (when solved): creep forces, their moments, frictional power.
+struct CreepTotals {
+  bool solved = false;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, track frame
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, about the wheelset centre
+  double power = 0;                                  // W
 };
 
 struct WheelContact {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame), creep forces included
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // about the wheelset centre (N m)
   std::vector<PatchContact> patches;
   double angle = 0;           // contact angle of the resultant force (rad)
   double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); 0 without contact
   Sensitivity sensitivity = Sensitivity::Zero();
+  CreepTotals creep;
 };
 
 struct ContactResult {
@@ -89,6 +101,7 @@ struct ContactResult {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // both wheels (N)
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // both wheels, about the wheelset centre (N m)
   Sensitivity sensitivity = Sensitivity::Zero();     // both wheels
+  CreepTotals creep;                                 // both wheels
 };
 
 // The immutable contact model: discretised geometry, material, normal solver (with its FFT caches) and options.
@@ -101,11 +114,13 @@ class ContactModel {
   const contact::Material& material() const { return solver_.material(); }
   const ContactOptions& options() const { return options_; }
   const contact::NormalSolver& solver() const { return solver_; }
+  const contact::RollingSolver& rolling_solver() const { return rolling_; }
 
  private:
   std::shared_ptr<const GeometryModel> geometry_;
   ContactOptions options_;
   contact::NormalSolver solver_;
+  contact::RollingSolver rolling_;
 };
 
 // Per-thread state: the locator (the model's strategy bound to this thread), the solver's buffers and the
@@ -117,6 +132,7 @@ class ContactWorkspace {
   ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search);
   Locator locator;
   contact::NormalWorkspace normal;
+  contact::RollingWorkspace rolling;
   struct Previous {
     Eigen::Vector3d origin, t1, t2, normal;
     contact::Grid grid;
@@ -134,6 +150,7 @@ struct ContactRequest {
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
   double tolerance = 0;      // > 0: the normal solver's tolerance for this evaluation (inexact Newton steps)
+  std::optional<RollingRequest> rolling;  // also solve the tangential problem of every area (wheelset/rolling.hpp)
 };
 
 // Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input
@@ -143,18 +160,25 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
 
 // Fills the sensitivities of a result evaluated without them (its grids must have been kept).
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& workspace);
+// Solves the tangential problem of every area of a result evaluated without it (its grids must have been kept) and
+// adds the creep forces to the areas', wheels' and total forces and moments (replacing an earlier solution).
+void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
+                 ContactWorkspace& workspace);
 // Releases the pressure, gap and h grids of a result.
 void drop_grids(ContactResult& result);
 
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, force, moment, angle,
 // rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
-// iterations, complementarity, frame, grid, and the pressure and h grids when kept.
+// iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
+// also its fields (wheelset/rolling.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
 void describe(const PatchContact& area, FieldSink& out);
 void describe(const WheelContact& wheel, FieldSink& out);
 // With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.
 void describe(const ContactResult& result, FieldSink& out, bool sensitivity = false);
 void describe_sensitivity(const Sensitivity& s, FieldSink& out);
+// Creep totals as fields (nothing when no area was solved): creep_force, creep_moment, power.
+void describe(const CreepTotals& totals, FieldSink& out);
 void describe(const Pose& pose, FieldSink& out);  // pose = {y, z, roll, yaw}
 // The fields of a located patch (side, nominal_point, nominal_normal, wheel_point, cone, eps, wheel_radius, depth,
 // first_line, last_line, longest; 1-based indices) without its segments, and one segment (line, y, z, x_t, x_l,

@@ -1,0 +1,196 @@
+-- Rolling contact with friction through the Lua API (README "Rolling contact"): S1002 on 60E1, 0.5 mm elements.
+--   - the kinematic creepages against the kinematics written out here: spin = omega . n / V, the lateral creepage's
+--     response to vy, the longitudinal one's to omega (the lever is the rolling radius);
+--   - the fields of an area recomputed from its grids: creep force = Fx t1 + Fy t2, power = sum of the density,
+--     adhesion fraction from the map, |traction| <= mu p;
+--   - braking gives Fx < 0 on both wheels; the mirror symmetry of the centred wheelset; full sliding |F| = mu N;
+--   - ws:wheel with friction carries Fz including the creep forces' vertical part; a sweep with kinematics gives
+--     the creep forces of ws:contact at its poses;
+--   - bad input: clear errors (mu <= 0 or NaN, V = 0, creepage NaN, conflicting or unknown keys).
+local check = require "wrc.check"
+
+local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
+local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
+local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3}
+local r0 = ws.params.radius
+local V = 100 / 3.6
+
+local e0 = ws:equilibrium{y = 0, yaw = 0, Q = 200e3}
+local e3 = ws:equilibrium{y = 3e-3, yaw = 0, Q = 200e3}
+local function pose(e, extra)
+  local t = {y = e.y, z = e.z, roll = e.roll, yaw = e.yaw}
+  for k, v in pairs(extra) do t[k] = v end
+  return t
+end
+
+-- Kinematic creepages.
+do
+  local c = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02}))
+  for _, side in ipairs{"left", "right"} do
+    for i, p in ipairs(c[side].patches) do
+      local name = side .. " area " .. i
+      -- Omega = (V / r0) a + yaw_rate z with a the axle (roll 0.16 mrad: a = (0, cos roll, sin roll))
+      local a = {x = 0, y = math.cos(e3.roll), z = math.sin(e3.roll)}
+      local om = {x = V / r0 * a.x, y = V / r0 * a.y, z = V / r0 * a.z + 0.02}
+      local n = p.normal
+      check.near(p.creepage.phi, (om.x * n.x + om.y * n.y + om.z * n.z) / V, 1e-12, name .. ": spin = Omega . n / V")
+      local c2 = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, vy = 0.1}))[side].patches[i]
+      local t2 = p.frame.t2
+      check.near(c2.creepage.eta - p.creepage.eta, 0.1 * t2.y / V, 1e-12, name .. ": d eta / d vy = t2 . y / V")
+      local c3 = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, omega = V / r0 * 1.001}))[side].patches[i]
+      local lever = -(c3.creepage.xi - p.creepage.xi) * V / (V / r0 * 0.001)
+      check.near(lever, p.rolling_radius, 0.2e-3, name .. ": d xi / d omega = -(rolling radius) / V")
+      -- pure rolling at r0, and the yaw rate moving the wheel's contact point at (y_ref - y) by -yaw_rate (y_ref - y)
+      check.near(p.creepage.xi, 1 - lever / r0 - 0.02 * (p.frame.origin.y - e3.y) / V, 1e-7,
+                 name .. ": xi = 1 - R / r0 - yaw_rate y_ref / V")
+    end
+  end
+end
+
+-- The rigid slip of every element of the wide, curved patch of the centred wheelset (zero yaw, roll ~ 0): the wheel's
+-- point at lateral position Y and longitudinal position u moves at V - omega d along the track, d its height below
+-- the axle: sqrt(R(Y)^2 - u^2) with R the wheel radius there (the placed profile, interpolated here), less half the
+-- overlap h along the normal's vertical part (the contact point lies midway between the surfaces); across the plane
+-- the spin gives V phi u. Not the linear field of the creepages: R varies quadratically over the 20 mm wide patch.
+do
+  local c = ws:contact(pose(e0, {V = V, mu = 0.3}))
+  local p = c.left.patches[1]
+  local wy, wz = ws.left_wheel.y, ws.left_wheel.z
+  local function radius(Y)
+    for k = 1, #wy - 1 do
+      if wy[k] <= Y and Y <= wy[k + 1] then
+        return -(wz[k] + (wz[k + 1] - wz[k]) * (Y - wy[k]) / (wy[k + 1] - wy[k]))
+      end
+    end
+    error("Y outside the wheel")
+  end
+  local o, t1, t2, n = p.frame.origin, p.frame.t1, p.frame.t2, p.normal
+  local worst, spread, lo, hi = 0, 0, math.huge, -math.huge
+  for j = 1, p.grid.ny do
+    for k = 1, p.grid.nx do
+      if p.pressure[j][k] > 0 then
+        local u, v = p.grid.x0 + (k - 1) * p.grid.dx, p.grid.y0 + (j - 1) * p.grid.dy
+        local Y = o.y + u * t1.y + v * t2.y - e0.y
+        local expected = 1 - (math.sqrt(radius(Y) ^ 2 - u * u) - 0.5 * p.h[j][k] * n.z) / r0
+        worst = math.max(worst, math.abs(p.rigid_slip_x[j][k] / V - expected))
+        lo, hi = math.min(lo, expected), math.max(hi, expected)
+        check.near(p.rigid_slip_y[j][k] / V, p.creepage.phi * u, 1e-9, "rigid slip y = phi u")
+      end
+    end
+  end
+  check.ok(hi - lo > 2e-4, "the longitudinal rigid slip varies across the patch (by " .. (hi - lo) .. ")")
+  check.ok(worst < 2e-6, "rigid slip x = 1 - R / r0 at every element (worst " .. worst .. ")")
+end
+
+-- The fields of an area against its grids.
+do
+  local c = ws:contact(pose(e3, {V = V, mu = 0.3}))
+  for _, side in ipairs{"left", "right"} do
+    local total = {x = 0, y = 0, z = 0}
+    for i, p in ipairs(c[side].patches) do
+      local name = side .. " area " .. i
+      local t1, t2 = p.frame.t1, p.frame.t2
+      for _, k in ipairs{"x", "y", "z"} do
+        check.near(p.creep_force[k], p.Fx * t1[k] + p.Fy * t2[k], 1e-9 * math.abs(p.Fx) + 1e-9, name .. ": creep force " .. k)
+        total[k] = total[k] + p.creep_force[k]
+      end
+      local dA = p.grid.dx * p.grid.dy
+      local power, fx, inside, adhere = 0, 0, 0, 0
+      for j = 1, p.grid.ny do
+        for k = 1, p.grid.nx do
+          local q = p.pressure[j][k]
+          power = power + p.power_density[j][k] * dA
+          fx = fx + p.px[j][k] * dA
+          if q > 0 then
+            inside = inside + 1
+            if p.adhesion_map[j][k] == 1 then adhere = adhere + 1 end
+            check.ok(math.sqrt(p.px[j][k] ^ 2 + p.py[j][k] ^ 2) <= 0.3 * q * (1 + 1e-9), name .. ": |p_t| <= mu p")
+            check.ok(p.power_density[j][k] >= 0, name .. ": power density >= 0")
+          else
+            check.ok(p.adhesion_map[j][k] == 0 and p.px[j][k] == 0, name .. ": no traction outside the contact")
+          end
+        end
+      end
+      check.rel(power, p.power, 1e-9, name .. ": power = sum of the density")
+      check.rel(fx, p.Fx, 1e-9, name .. ": Fx = sum of px")
+      check.near(p.adhesion, adhere / inside, 1e-12, name .. ": adhesion fraction")
+      check.ok(p.method == "exact" and p.mu.static == 0.3 and p.mu.kinetic == 0.3 and p.V == V, name .. ": the request")
+    end
+    for _, k in ipairs{"x", "y", "z"} do
+      check.near(c[side].creep_force[k], total[k], 1e-6, side .. ": wheel creep force " .. k)
+    end
+  end
+  -- Frictionless calls are unchanged: the wheel force is the normal one plus the creep force.
+  local n = ws:contact(pose(e3, {}))
+  check.ok(n.left.creep_force == nil and n.left.patches[1].Fx == nil, "frictionless: no creep fields")
+  for _, k in ipairs{"x", "y", "z"} do
+    check.near(c.left.force[k] - c.left.creep_force[k], n.left.force[k], 1e-6 * n.left.force.z, "normal force unchanged " .. k)
+  end
+end
+
+-- Braking: both wheels pulled back; the centred wheelset is mirror symmetric; full sliding.
+do
+  local c = ws:contact(pose(e0, {V = V, mu = 0.3, omega = 0.999 * V / r0}))
+  local l, r = c.left.patches[1], c.right.patches[1]
+  check.ok(l.creepage.xi > 0 and l.Fx < 0 and r.Fx < 0, "braking: xi > 0, Fx < 0 on both wheels")
+  check.rel(r.Fx, l.Fx, 1e-5, "mirror: Fx")
+  check.rel(r.Fy, -l.Fy, 1e-5, "mirror: Fy")
+  check.rel(r.Mz, -l.Mz, 1e-5, "mirror: Mz")
+  check.rel(r.creepage.phi, -l.creepage.phi, 1e-9, "mirror: spin")
+  for _, method in ipairs{"exact", "fastsim"} do
+    local s = ws:contact(pose(e0, {creepage = {xi = 0.05, eta = 0.03}, mu = 0.25, method = method}))
+    for _, side in ipairs{"left", "right"} do
+      local p = s[side].patches[1]
+      check.rel(math.sqrt(p.Fx ^ 2 + p.Fy ^ 2), 0.25 * p.normal_force, 0.02, method .. " " .. side .. ": full sliding |F| = mu N")
+      check.near((p.Fx * 0.05 + p.Fy * 0.03) / math.sqrt(p.Fx ^ 2 + p.Fy ^ 2) / math.sqrt(0.05 ^ 2 + 0.03 ^ 2), -1, 1e-3,
+                 method .. " " .. side .. ": opposite to the creepage")
+    end
+  end
+end
+
+-- ws:wheel with friction: Fz includes the creep forces' vertical part.
+do
+  local w = ws:wheel{side = "left", y = 6.4e-3, roll = 0.69e-3, Fz = 120e3, V = V, mu = 0.3, yaw_rate = 0.05}
+  check.ok(w.converged, "wheel with friction converged")
+  check.near(w.force.z, 120e3, 1e-6 * 120e3, "wheel: total vertical force")
+  check.ok(math.abs(w.creep_force.z) > 100, "wheel: the creep forces have a vertical part on the flange root")
+  local n = 0
+  for _, p in ipairs(w.patches) do n = n + p.force.z - p.creep_force.z end
+  check.ok(math.abs(n - 120e3) > 50, "wheel: the normal forces alone do not carry Fz")
+end
+
+-- A sweep with kinematics: the creep forces of ws:contact at each equilibrium's pose.
+do
+  local s = ws:sweep{y = {0, 3e-3}, Q = 200e3, V = V, mu = 0.3, threads = 1, progress = false}
+  for _, r in ipairs(s) do
+    check.ok(r.converged and r.creep_force ~= nil, "sweep case solved with creep forces")
+    local c = ws:contact{y = r.y, z = r.z, roll = r.roll, yaw = r.yaw, V = V, mu = 0.3, grids = false}
+    for _, side in ipairs{"left", "right"} do
+      check.rel(r[side].creep_force.x, c[side].creep_force.x, 1e-4, "sweep creep force x, " .. side)
+      check.rel(r[side].creep_force.y, c[side].creep_force.y, 1e-4, "sweep creep force y, " .. side)
+    end
+  end
+  local ok = pcall(function() return ws:equilibrium{y = 0, Q = 200e3, V = V, mu = 0.3} end)
+  check.ok(not ok, "the equilibrium is frictionless: kinematics keys are refused")
+end
+
+-- Bad input.
+do
+  local p = pose(e0, {})
+  local function with(extra) local t = pose(e0, extra); return function() return ws:contact(t) end end
+  check.fails(with{V = V, mu = 0}, "must be > 0", "mu = 0")
+  check.fails(with{V = V, mu = -0.1}, "must be > 0", "mu < 0")
+  check.fails(with{V = V, mu = 0 / 0}, "'mu' must be finite", "mu NaN")
+  check.fails(with{V = 0, mu = 0.3}, "V = 0", "V = 0 with kinematics")
+  check.fails(with{V = V}, "'mu'", "no mu")
+  check.fails(with{mu = 0.3}, "neither V", "mu without kinematics")
+  check.fails(with{omega = 60, mu = 0.3}, "forward speed V", "omega without V")
+  check.fails(with{creepage = {xi = 0 / 0}, mu = 0.3}, "'xi' must be finite", "creepage NaN")
+  check.fails(with{creepage = {xi = 1e-3, zeta = 1}, mu = 0.3}, "unknown key 'zeta'", "creepage: unknown key")
+  check.fails(with{creepage = {xi = 1e-3}, vy = 0.1, mu = 0.3}, "cannot be given with it", "creepage with kinematics")
+  check.fails(with{V = V, mu_static = 0.2, mu_kinetic = 0.3}, "exceeds mu_static", "kinetic above static")
+  check.fails(with{V = V, mu = 0.3, method = "polach"}, "method", "unknown method")
+  check.fails(with{V = V, mu = 0.3, rolling_tolerance = 0}, "rolling_tolerance", "tolerance")
+  check.ok(p ~= nil, "bad input refused")
+end
+print("rolling contact: ok")
