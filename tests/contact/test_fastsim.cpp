@@ -94,6 +94,25 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
   CHECK(fd + solve_fastsim(kSteel, pb).fx == doctest::Approx(s.fx).epsilon(1e-12));
 }
 
+TEST_CASE("FASTSIM in partial slip: every slipping element's traction opposes its slip and sits on the bound") {
+  // The layer's slip s = L (p - p_pred) / dx and the projection's optimality L (p - p_pred) = -lambda p make p and s
+  // antiparallel: Coulomb's law for the layer, whatever the anisotropy of Kalker's flexibilities (a/b = 0.3, 3).
+  for (auto [a, b] : {std::pair{3e-3, 10e-3}, {9e-3, 3e-3}}) {
+    const wrc::test::HertzPatch h = hertz_patch(a, b, 1e9, 12);
+    const TangentialSolution s = solve_fastsim(kSteel, rolling_problem(h, {0.6e-3, -0.9e-3, 0.8}, 0.3));
+    int slipping = 0;
+    for (int k = 0; k < h.grid.size(); ++k) {
+      if (s.state[k] != kSlip) continue;
+      ++slipping;
+      const double p = std::hypot(s.px[k], s.py[k]), sl = std::hypot(s.sx[k], s.sy[k]);
+      CHECK(p == doctest::Approx(0.3 * h.pressure[k]).epsilon(1e-12));
+      CHECK((s.px[k] * s.sx[k] + s.py[k] * s.sy[k]) / (p * sl) == doctest::Approx(-1).epsilon(1e-9));
+    }
+    CHECK(slipping > 20);
+    CHECK(s.adhesion_fraction() > 0.1);
+  }
+}
+
 TEST_CASE("FASTSIM in full sliding: |F| = mu_k N opposite to the slip; power never negative") {
   const wrc::test::HertzPatch h = hertz_patch(5e-3, 3e-3, 1e9, 10);
   for (double angle : {0.0, 0.6, 1.9, -2.8}) {

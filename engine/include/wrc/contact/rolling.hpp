@@ -123,6 +123,8 @@ class RollingSolver {
 // so that the traction opposes the slip of that layer (for L1 = L2 Kalker's radial scaling) and full sliding gives
 // |F| = mu N opposite to the translational slip. Mz is not matched to C33 (a known limit of the simplified theory).
 TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& problem);
+// The same into `solution`, reusing its grids' storage (a dynamics code calling it at every step).
+void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
 
 // Throws wrc::Error naming `context` on a bad problem: grid, sizes, non-finite or negative pressure, non-finite
 // creepages or rigid slip, friction coefficients not finite and > 0 or kinetic > static, direction not +-1.
