@@ -120,7 +120,8 @@ function M.plot(o)
 end
 
 -- Colour map of a grid: o.x (nx), o.y (ny), o.value[j][i] at (x[i], y[j]); o.view3d = true for a
--- surface seen in 3-D; o.contour = level list for contour lines.
+-- surface seen in 3-D; o.contour = level list for contour lines; o.palette = a gnuplot palette definition (e.g.
+-- "defined (0 'white', 1 'blue', 2 'red')") instead of the default colours.
 function M.map(o)
   local s = header(o)
   local data = o.file:gsub("%.png$", "") .. ".dat"
@@ -132,7 +133,7 @@ function M.map(o)
     f:write("\n")
   end
   f:close()
-  s[#s + 1] = "set palette rgbformulae 33,13,10"
+  s[#s + 1] = "set palette " .. (o.palette or "rgbformulae 33,13,10")
   if o.view3d then
     s[#s + 1] = "set pm3d depthorder"
     s[#s + 1] = "set view " .. (o.view or "55,30")

@@ -39,6 +39,41 @@ M.sweep_columns = {
   "rolling_radius_difference_mm", "iterations", "residual_force_N", "residual_moment_Nm",
 }
 
+-- Columns of a sweep run with kinematics (ws:sweep{..., V =, mu =}): the creep forces of each wheel in the track
+-- frame and the frictional power at the equilibrium's pose, and their totals. sweep_row fills them when present.
+M.creep_columns = {
+  "left_creep_Fx_kN", "left_creep_Fy_kN", "left_creep_Fz_kN", "left_power_W",
+  "right_creep_Fx_kN", "right_creep_Fy_kN", "right_creep_Fz_kN", "right_power_W",
+  "creep_Fx_kN", "creep_Fy_kN", "creep_Mz_kNm", "power_W",
+}
+
+-- The columns of a sweep's table: sweep_columns, and creep_columns when the sweep solved the tangential problems.
+function M.columns(sweep)
+  for _, r in ipairs(sweep) do
+    if r.creep_force then
+      local c = {table.unpack(M.sweep_columns)}
+      for _, name in ipairs(M.creep_columns) do c[#c + 1] = name end
+      return c
+    end
+  end
+  return M.sweep_columns
+end
+
+local function creep_cells(row, r)
+  if not r.creep_force then return end
+  for _, side in ipairs{"left", "right"} do
+    local w = r[side]
+    if w.creep_force then
+      row[side .. "_creep_Fx_kN"] = w.creep_force.x / 1e3
+      row[side .. "_creep_Fy_kN"] = w.creep_force.y / 1e3
+      row[side .. "_creep_Fz_kN"] = w.creep_force.z / 1e3
+      row[side .. "_power_W"] = w.power
+    end
+  end
+  row.creep_Fx_kN, row.creep_Fy_kN = r.creep_force.x / 1e3, r.creep_force.y / 1e3
+  row.creep_Mz_kNm, row.power_W = r.creep_moment.z / 1e3, r.power
+end
+
 -- One row of sweep.csv from a sweep (or equilibrium) result.
 function M.sweep_row(r)
   local row = {yaw_deg = r.yaw * deg, y_mm = r.y * 1e3, converged = r.converged and 1 or 0}
@@ -60,6 +95,7 @@ function M.sweep_row(r)
   row.rolling_radius_difference_mm = r.rolling_radius_difference * 1e3
   row.iterations = r.iterations
   row.residual_force_N, row.residual_moment_Nm = r.residual.force, r.residual.moment
+  creep_cells(row, r)
   return row
 end
 
