@@ -124,16 +124,26 @@ f:write(table.concat(summary, "\n"), "\n")
 f:close()
 
 if plots then
-  local styles = {exact = "lines lw 2", fastsim = "lines dt 2 lw 2"}
+  -- Colour by position, full lines for the exact theory, dashes for FASTSIM; in the spin figure the curves without
+  -- spin are thin dotted lines (exact only).
+  local colours = {["0"] = "#1f6fb4", ["3"] = "#d62728", ["6"] = "#2a9a2a"}
   local function plot(name, curve_names, ylabel, title)
     local series = {}
     for _, y in ipairs(ys) do
+      local colour = colours[string.format("%g", y * 1e3)]
       for _, cn in ipairs(curve_names) do
         local cv = curves[y .. cn]
         for _, method in ipairs{"exact", "fastsim"} do
-          series[#series + 1] = {x = cv.c, y = cv[method], style = styles[method],
-                                 title = string.format("y = %g mm%s, %s", y * 1e3, cn == "eta_spin" and ", with spin" or "",
-                                                       method == "exact" and "exact" or "FASTSIM")}
+          local thin = #curve_names > 1 and cn ~= "eta_spin"
+          if not (thin and method == "fastsim") then
+            series[#series + 1] = {
+              x = cv.c, y = cv[method],
+              style = string.format("lines lw %d dt %d lc rgb '%s'", thin and 1 or 2,
+                                    thin and 3 or (method == "exact" and 1 or 2), colour),
+              title = string.format("y = %g mm%s, %s", y * 1e3,
+                                    #curve_names > 1 and (cn == "eta_spin" and ", with spin" or ", no spin") or "",
+                                    method == "exact" and "exact" or "FASTSIM")}
+          end
         end
       end
     end
