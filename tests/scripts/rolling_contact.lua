@@ -148,6 +148,21 @@ do
   end
 end
 
+-- Rolling backward (V < 0, pure rolling at r0 backward) is the mirror x -> -x of rolling forward: the creepages
+-- xi and phi flip (per |V|), and so do Fx and Mz, while Fy stays.
+do
+  local f = ws:contact(pose(e3, {V = V, mu = 0.3}))
+  local b = ws:contact(pose(e3, {V = -V, mu = 0.3}))
+  for _, side in ipairs{"left", "right"} do
+    local pf, pb = f[side].patches[1], b[side].patches[1]
+    check.rel(pb.creepage.xi, -pf.creepage.xi, 1e-9, side .. ": backward xi")
+    check.rel(pb.creepage.phi, -pf.creepage.phi, 1e-9, side .. ": backward phi")
+    check.rel(pb.Fx, -pf.Fx, 1e-4, side .. ": backward Fx")
+    check.rel(pb.Fy, pf.Fy, 1e-4, side .. ": backward Fy")
+    check.rel(pb.Mz, -pf.Mz, 1e-3, side .. ": backward Mz")
+  end
+end
+
 -- ws:wheel with friction: Fz includes the creep forces' vertical part.
 do
   local w = ws:wheel{side = "left", y = 6.4e-3, roll = 0.69e-3, Fz = 120e3, V = V, mu = 0.3, yaw_rate = 0.05}

@@ -283,6 +283,42 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, const Tange
   return solve(pb, ws, options);
 }
 
+namespace {
+
+// The element of the problem's grid that contact element k of the level is.
+std::size_t grid_index(const Level& L, const Grid& grid, int k) {
+  const int c = L.cell[static_cast<std::size_t>(k)];
+  return static_cast<std::size_t>(grid.index(c % L.field.grid.nx + L.i0, c / L.field.grid.nx + L.j0));
+}
+
+// Solves the level from the warm start (tractions on the problem's grid) or from the nested coarse solution.
+LevelState solve_top(const Level& L, const Grid& grid, const Material& material, const ShearCache& cache,
+                     RollingWorkspace& ws, const TangentialOptions& opt) {
+  bool converged = true;
+  LevelState st;
+  if (!opt.initial_x.empty()) {
+    std::vector<double> ix(static_cast<std::size_t>(L.field.grid.size()), 0.0), iy(ix.size());
+    for (int k = 0; k < L.size(); ++k) {
+      const auto c = static_cast<std::size_t>(L.cell[static_cast<std::size_t>(k)]);
+      ix[c] = opt.initial_x[grid_index(L, grid, k)];
+      iy[c] = opt.initial_y[grid_index(L, grid, k)];
+    }
+    st = detail::start_from(L, ix, iy);
+    const auto linear = cache.get(L.field.grid, ShearSpectrum::Kind::linear);
+    const auto periodic = cache.get(L.field.grid, ShearSpectrum::Kind::periodic);
+    converged = detail::newton(L, material, *linear, *periodic, ws, opt, st);
+  } else {
+    st = solve_level(L, material, cache, ws, opt, converged);
+  }
+  if (!converged)
+    fail("RollingSolver::solve: no convergence in {} Newton iterations on {} contact elements (residual {:.3g} of "
+         "the rigid slip, tolerance {:.3g}): the adhesion / slip split keeps changing",
+         opt.max_iterations, L.size(), st.residual, opt.tolerance);
+  return st;
+}
+
+}  // namespace
+
 TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWorkspace& ws,
                                         const TangentialOptions& opt) const {
   validate(pb, "RollingSolver::solve");
@@ -296,39 +332,15 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
   rigid_slip(pb, top.wx, top.wy);
   const Level L = detail::make_level(top, pb.friction, pb.direction);
-  TangentialSolution out = detail::empty_solution(pb.grid);
+  const bool slipping = L.size() > 0 && L.scale > 0;  // without rigid slip: no traction, all in adhesion
   LevelState st;
-  bool converged = true;
-  if (L.size() > 0 && L.scale > 0) {
-    if (!opt.initial_x.empty()) {
-      std::vector<double> ix(static_cast<std::size_t>(L.field.grid.size()), 0.0), iy(ix.size());
-      for (int k = 0; k < L.size(); ++k) {
-        const int c = L.cell[static_cast<std::size_t>(k)], i = c % L.field.grid.nx + L.i0, j = c / L.field.grid.nx + L.j0;
-        ix[static_cast<std::size_t>(c)] = opt.initial_x[static_cast<std::size_t>(pb.grid.index(i, j))];
-        iy[static_cast<std::size_t>(c)] = opt.initial_y[static_cast<std::size_t>(pb.grid.index(i, j))];
-      }
-      st = detail::start_from(L, ix, iy);
-      const auto linear = cache_.get(L.field.grid, ShearSpectrum::Kind::linear);
-      const auto periodic = cache_.get(L.field.grid, ShearSpectrum::Kind::periodic);
-      converged = detail::newton(L, material(), *linear, *periodic, ws, opt, st);
-    } else {
-      st = solve_level(L, material(), cache_, ws, opt, converged);
-    }
-    if (!converged)
-      fail("RollingSolver::solve: no convergence in {} Newton iterations on {} contact elements (residual {:.3g} of "
-           "the rigid slip, tolerance {:.3g}): the adhesion / slip split keeps changing",
-           opt.max_iterations, L.size(), st.residual, opt.tolerance);
-  } else if (L.size() > 0) {  // no rigid slip: no traction, all in adhesion
-    st.px.assign(L.cell.size(), 0.0);
-    st.py.assign(L.cell.size(), 0.0);
-    st.state.assign(L.cell.size(), kAdhesion);
-  }
+  if (slipping) st = solve_top(L, pb.grid, material(), cache_, ws, opt);
+  else st.px.assign(L.cell.size(), 0.0), st.py.assign(L.cell.size(), 0.0), st.state.assign(L.cell.size(), kAdhesion);
   std::vector<double> sx(L.cell.size(), 0.0), sy(L.cell.size(), 0.0);
-  if (L.size() > 0 && L.scale > 0) detail::slip_of(L, *cache_.get(L.field.grid, ShearSpectrum::Kind::linear), ws, st, sx, sy);
+  if (slipping) detail::slip_of(L, *cache_.get(L.field.grid, ShearSpectrum::Kind::linear), ws, st, sx, sy);
+  TangentialSolution out = detail::empty_solution(pb.grid);
   for (int k = 0; k < L.size(); ++k) {
-    const int c = L.cell[static_cast<std::size_t>(k)];
-    const auto q = static_cast<std::size_t>(k);
-    const auto f = static_cast<std::size_t>(pb.grid.index(c % L.field.grid.nx + L.i0, c / L.field.grid.nx + L.j0));
+    const auto q = static_cast<std::size_t>(k), f = grid_index(L, pb.grid, k);
     out.px[f] = st.px[q];
     out.py[f] = st.py[q];
     out.state[f] = st.state[q];

@@ -221,18 +221,10 @@ void describe(const CreepTotals& c, FieldSink& out) {
   out.number("power", c.power);
 }
 
-std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
-  const char* kinematic[] = {"V", "omega", "vy", "yaw_rate"};
-  bool any = r.has("creepage");
-  for (const char* key : kinematic) any |= r.has(key);
-  for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance"}) {
-    if (!r.has(key)) continue;
-    if (!any)
-      fail("{}: '{}' is given but neither V (the wheelset's kinematics) nor creepage: friction needs one of them",
-           r.context(), key);
-  }
-  if (!any) return std::nullopt;
-  RollingRequest q;
+namespace {
+
+// The creepages prescribed, or the kinematics; sets q.V.
+void read_slip(OptionReader& r, RollingRequest& q) {
   if (auto t = r.table("creepage")) {
     for (const char* key : {"omega", "vy", "yaw_rate"})
       if (r.has(key)) fail("{}: 'creepage' prescribes the creepages; '{}' (kinematics) cannot be given with it", r.context(), key);
@@ -251,16 +243,35 @@ std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   }
   if (q.V == 0)
     fail("{}: V = 0: the creepages are slip velocities divided by the rolling speed V, undefined at V = 0", r.context());
+}
+
+contact::Friction read_friction(OptionReader& r) {
   const auto mu = r.number("mu");
   const auto mus = r.number("mu_static"), muk = r.number("mu_kinetic");
   if (!mu && !mus) fail("{}: the friction coefficient 'mu' (or 'mu_static' and 'mu_kinetic') is required", r.context());
-  q.friction.static_coefficient = mus.value_or(mu.value_or(0));
-  q.friction.kinetic_coefficient = muk.value_or(mu.value_or(q.friction.static_coefficient));
-  for (auto [name, v] : {std::pair{"mu_static", q.friction.static_coefficient}, {"mu_kinetic", q.friction.kinetic_coefficient}})
+  contact::Friction f;
+  f.static_coefficient = mus.value_or(mu.value_or(0));
+  f.kinetic_coefficient = muk.value_or(mu.value_or(f.static_coefficient));
+  for (auto [name, v] : {std::pair{"mu_static", f.static_coefficient}, {"mu_kinetic", f.kinetic_coefficient}})
     if (!(v > 0)) fail("{}: the friction coefficient ({} = {}) must be > 0", r.context(), mu && !mus ? "mu" : name, v);
-  if (q.friction.kinetic_coefficient > q.friction.static_coefficient)
-    fail("{}: mu_kinetic = {} exceeds mu_static = {}", r.context(), q.friction.kinetic_coefficient,
-         q.friction.static_coefficient);
+  if (f.kinetic_coefficient > f.static_coefficient)
+    fail("{}: mu_kinetic = {} exceeds mu_static = {}", r.context(), f.kinetic_coefficient, f.static_coefficient);
+  return f;
+}
+
+}  // namespace
+
+std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
+  bool any = r.has("creepage");
+  for (const char* key : {"V", "omega", "vy", "yaw_rate"}) any |= r.has(key);
+  for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance"})
+    if (r.has(key) && !any)
+      fail("{}: '{}' is given but neither V (the wheelset's kinematics) nor creepage: friction needs one of them",
+           r.context(), key);
+  if (!any) return std::nullopt;
+  RollingRequest q;
+  read_slip(r, q);
+  q.friction = read_friction(r);
   q.method = r.choice("method", {"exact", "fastsim"}).value_or("exact") == "fastsim" ? RollingMethod::fastsim
                                                                                       : RollingMethod::exact;
   q.tolerance = r.number("rolling_tolerance", q.tolerance);
