@@ -113,7 +113,7 @@ TEST_CASE("FASTSIM in partial slip: every slipping element's traction opposes it
   }
 }
 
-TEST_CASE("FASTSIM in full sliding: |F| = mu_k N opposite to the slip; power never negative") {
+TEST_CASE("FASTSIM in full sliding: |F| = mu_k N opposite to the slip, power never negative") {
   const wrc::test::HertzPatch h = hertz_patch(5e-3, 3e-3, 1e9, 10);
   for (double angle : {0.0, 0.6, 1.9, -2.8}) {
     TangentialProblem pb = rolling_problem(h, {0.1 * std::cos(angle), 0.1 * std::sin(angle), 0}, 0.25);

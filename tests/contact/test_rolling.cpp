@@ -221,7 +221,7 @@ TEST_CASE("Kalker's linear theory: C11, C22, C23, C33 from the exact solver with
   }
 }
 
-TEST_CASE("full sliding: |F| = mu_k N opposite to the slip; the power is mu_k N |slip| V") {
+TEST_CASE("full sliding: |F| = mu_k N opposite to the slip, the power is mu_k N |slip| V") {
   const wrc::test::HertzPatch h = hertz_patch(5e-3, 3e-3, 1e9, 8);
   const RollingSolver solver(kSteel);
   for (double angle : {0.0, 0.7, 2.0, -2.5}) {
@@ -319,7 +319,7 @@ TEST_CASE("symmetries: odd in the creepages, mirror in y, reversed rolling direc
   }
 }
 
-TEST_CASE("no rigid slip: no traction; warm start: the same solution; threads share one solver") {
+TEST_CASE("no rigid slip gives no traction, a warm start the same solution, threads share one solver") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 4e-3, 1e9, 10);
   const RollingSolver solver(kSteel);
   const TangentialSolution zero = solver.solve(rolling_problem(h, {}, 0.3));

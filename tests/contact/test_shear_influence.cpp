@@ -159,7 +159,7 @@ void direct(const ShearInfluenceTable& t, const Grid& g, const std::vector<doubl
 
 }  // namespace
 
-TEST_CASE("shear FFT product equals the direct product; the periodic inverse undoes the periodic product") {
+TEST_CASE("shear FFT product equals the direct product, the periodic inverse undoes the periodic product") {
   const Material m{2.1e11, 0.3};
   ShearCache cache(m);
   ShearWorkspace ws;  // one workspace across shapes
