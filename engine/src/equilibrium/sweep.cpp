@@ -124,11 +124,12 @@ class SweepRun {
     struct Point {
       double y, z, roll;
       std::optional<Eigen::Matrix2d> jacobian;
+      bool lifted;
     };
     ws.forget();
     std::vector<Point> path;
     const EquilibriumResult& centre = out_.elastic[static_cast<std::size_t>(ch.centre)];
-    if (centre.converged) path.push_back({centre.y, centre.z, centre.roll, centre.jacobian});
+    if (centre.converged) path.push_back({centre.y, centre.z, centre.roll, centre.jacobian, centre.jacobian_lifted});
     for (int c : ch.cases) {
       std::vector<Start> starts;
       const double yc = out_.cases[static_cast<std::size_t>(c)].y;
@@ -136,12 +137,12 @@ class SweepRun {
         const Point& a = path[path.size() - 2];
         const Point& b = path.back();
         const double s = (b.y != a.y) ? (yc - b.y) / (b.y - a.y) : 0.0;
-        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll), b.jacobian});
+        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll), b.jacobian, b.lifted});
       }
-      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt});
+      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt, false});
       if (solve_case(ws, c, starts)) {
         const EquilibriumResult& e = out_.elastic[static_cast<std::size_t>(c)];
-        path.push_back({yc, e.z, e.roll, e.jacobian});
+        path.push_back({yc, e.z, e.roll, e.jacobian, e.jacobian_lifted});
       }
     }
   }

@@ -10,6 +10,8 @@
 
 #include <Eigen/Geometry>
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -40,6 +42,29 @@ ContactWorkspace::ContactWorkspace(const ContactModel& model, std::unique_ptr<Po
     : locator(model.geometry_ptr(), std::move(search)) {}
 
 namespace {
+
+double thread_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Adds the thread CPU time of its scope to a field of the workspace's times (when timing is on).
+class PhaseTimer {
+ public:
+  PhaseTimer(const ContactWorkspace& ws, double& slot) : slot_(ws.timing ? &slot : nullptr) {
+    if (slot_) t0_ = thread_seconds();
+  }
+  ~PhaseTimer() {
+    if (slot_) *slot_ += thread_seconds() - t0_;
+  }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double* slot_;
+  double t0_ = 0;
+};
 
 // What the plane and h need of one segment.
 struct SegmentInfo {
@@ -238,8 +263,8 @@ int contact_regions(const contact::NormalSolution& sol) {
 
 // Start pressures for an area from the last evaluation's area of the same side in (nearly) the same plane:
 // the old pressure at each new element centre (bilinear). False when there is none.
-bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start) {
+// The last evaluation's area of the same side in (nearly) the same plane, or none.
+const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl) {
   const ContactWorkspace::Previous* best = nullptr;
   double best_d = 5e-3;  // m: farther origins belong to another area
   for (const auto& p : previous) {
@@ -250,6 +275,11 @@ bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const P
       best = &p;
     }
   }
+  return best;
+}
+
+bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
+                std::vector<double>& start) {
   if (!best) return false;
   const contact::Grid& g = best->grid;
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
@@ -261,6 +291,9 @@ bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const P
       if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) continue;
       const double a = fu - iu, b = fv - iv;
       auto P = [&](int di, int dj) { return best->pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
+      // Only where the nearest old element was in contact: interpolation alone smears the contact edge outward,
+      // and each element started in contact that is not costs the CG a clipping step (as prolong does).
+      if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) continue;
       start[static_cast<std::size_t>(grid.index(i, j))] =
           (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
     }
@@ -389,29 +422,44 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
   const Patch& first = st.patches(side)[static_cast<std::size_t>(group.front())];
   const Plane pl = plane_of(all, first);
+  const ContactWorkspace::Previous* prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
 
   PatchContact pc;
   pc.side = side;
-  copy_located(st, side, group, pc);
-  pc.origin = pl.O;
-  pc.normal = pl.n;
-  pc.t1 = pl.t1;
-  pc.t2 = pl.t2;
-  pc.nominal = first.point;
-  pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
-
-  const contact::Grid grid = area_grid(opt, all, pl, side, st.pose());
-  pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
-
-  contact::NormalOptions nopt = opt.normal;
-  if (request.tolerance > 0) nopt.tolerance = request.tolerance;
-  std::vector<double> start;
-  if (ws.warm_start && warm_start(ws.previous[side], pl, grid, start)) nopt.initial_pressure = start;
-  const contact::NormalLoad load = contact::NormalLoad::penetration();
-  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
-                          : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
-  area_results(g.side[side].wheel, st.frame(), pc);
-  if (request.sensitivity) area_sensitivity(model, st.pose(), pc, ws);
+  contact::Grid grid;
+  {
+    PhaseTimer t(ws, ws.times.geometry);
+    pc.origin = pl.O;
+    pc.normal = pl.n;
+    pc.t1 = pl.t1;
+    pc.t2 = pl.t2;
+    pc.nominal = first.point;
+    pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
+    grid = area_grid(opt, all, pl, side, st.pose());
+    pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
+  }
+  {
+    PhaseTimer t(ws, ws.times.solve);
+    contact::NormalOptions nopt = opt.normal;
+    if (request.tolerance > 0) nopt.tolerance = request.tolerance;
+    std::vector<double> start;
+    if (warm_start(prev, pl, grid, start)) nopt.initial_pressure = start;
+    const contact::NormalLoad load = contact::NormalLoad::penetration();
+    pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
+                            : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
+  }
+  {
+    PhaseTimer t(ws, ws.times.results);
+    copy_located(st, side, group, pc);
+    area_results(g.side[side].wheel, st.frame(), pc);
+    ++ws.times.areas;
+    ws.times.elements += grid.size();
+    ws.times.iterations += pc.solution.iterations + pc.solution.coarse_iterations;
+  }
+  if (request.sensitivity) {
+    PhaseTimer t(ws, ws.times.sensitivity);
+    area_sensitivity(model, st.pose(), pc, ws);
+  }
   next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure});
   return pc;
 }
@@ -444,14 +492,19 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   const std::size_t np = patches.size();
   std::vector<std::vector<SegmentInfo>> infos(np);
   std::vector<Plane> planes;
-  for (std::size_t p = 0; p < np; ++p) {
-    collect_segments(model.geometry(), st, side, patches[p], infos[p]);
-    planes.push_back(plane_of(infos[p], patches[p]));
+  std::vector<std::vector<int>> groups;
+  {
+    PhaseTimer t(ws, ws.times.geometry);
+    for (std::size_t p = 0; p < np; ++p) {
+      collect_segments(model.geometry(), st, side, patches[p], infos[p]);
+      planes.push_back(plane_of(infos[p], patches[p]));
+    }
+    groups = area_groups(model, infos, planes);
   }
   WheelContact wc;
   double rr = 0, N = 0;
   std::vector<ContactWorkspace::Previous> next_previous;
-  for (const auto& group : area_groups(model, infos, planes)) {
+  for (const auto& group : groups) {
     PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
     if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws);
     add_creep(wc.creep, pc);
@@ -476,7 +529,11 @@ void ContactWorkspace::forget() {
 
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,
                                const ContactRequest& request) {
-  const LocationState& st = ws.locator.locate(pose);
+  const LocationState& st = [&]() -> const LocationState& {
+    PhaseTimer t(ws, ws.times.locate);
+    return ws.locator.locate(pose);
+  }();
+  ++ws.times.evaluations;
   ContactResult res;
   res.pose = pose;
   for (int side : {kLeft, kRight}) {
@@ -520,6 +577,7 @@ void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWo
   for (WheelContact& wc : result.wheel) {
     wc.sensitivity.setZero();
     for (PatchContact& pc : wc.patches) {
+      PhaseTimer t(ws, ws.times.sensitivity);
       area_sensitivity(model, result.pose, pc, ws);
       wc.sensitivity += pc.sensitivity;
     }

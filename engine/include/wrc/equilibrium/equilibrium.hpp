@@ -33,10 +33,13 @@ struct EquilibriumOptions {
   double max_step_z = 0.5e-3;      // largest Newton step in z (m)
   double max_step_roll = 2e-3;     // largest Newton step in roll (rad)
   double initial_approach = 0.05e-3;  // cold start: the rigid position pressed in by this much (m)
-  // Tolerance of the normal problems inside the Newton iterations. At 1e-6 the forces of the S1002/60E1 study
-  // differ from a 1e-12 solve by <= 4e-3 N, 50 times below the default residual tolerance of 0.2 N at 200 kN,
-  // for ~20 % fewer CG iterations than the solver's default 1e-8.
+  // Tolerance of the normal problems while Newton iterates (inexact steps, from warm starts: a few CG iterations
+  // each); a solution found so is confirmed by an evaluation at the model's tolerance, and Newton goes on from it
+  // if the residuals moved out of tolerance, so the forces reported are those evaluate_contact gives at the pose.
   double normal_tolerance = 1e-6;
+  // solve_wheel: evaluate the solved pose once more at the model's own tolerance (the forces ws:contact gives
+  // there); a trajectory, content with normal_tolerance, turns it off.
+  bool final_at_model_tolerance = true;
   // Called at every iterate (iteration, z, roll, contact), e.g. to print the Newton history.
   std::function<void(int, double, double, const ContactResult&)> trace;
 };
@@ -52,15 +55,20 @@ struct EquilibriumResult {
   int iterations = 0;            // Newton iterations
   int evaluations = 0;           // contact evaluations (including line-search trials)
   int jacobians = 0;             // Jacobians computed (the others were reused)
-  std::optional<Eigen::Matrix2d> jacobian;  // the last difference Jacobian (a wheel lifted), for a neighbour
+  // The last Jacobian d(sum Fz - Q, sum Mx)/d(z, roll) (Broyden-updated), and whether it belongs to a wheel lifted:
+  // a start for a neighbouring case (a sweep hands it on).
+  std::optional<Eigen::Matrix2d> jacobian;
+  bool jacobian_lifted = false;
   ContactResult contact;         // at the solution
 };
 
 // A start (z, roll), e.g. the previous point of a sweep.
 struct Start {
   double z = 0, roll = 0;
-  // d(sum Fz, sum Mx)/d(z, roll) by differences near the start, with a wheel lifted (reused while it serves)
+  // d(sum Fz, sum Mx)/d(z, roll) near the start (e.g. the previous case's), used while the start has a wheel
+  // lifted or not as it had (jacobian_lifted), and while it serves.
   std::optional<Eigen::Matrix2d> jacobian;
+  bool jacobian_lifted = false;
 };
 
 // Solves the elastic equilibrium (frictionless: request.rolling is ignored; add_rolling gives the creep forces at the
@@ -84,11 +92,15 @@ struct WheelResult {
   double Fz = 0;             // the prescribed vertical force (N)
   double z = 0;              // solved height of the wheelset centre (m)
   double residual = 0;       // Fz(side) - Fz (N)
-  int iterations = 0;
+  int iterations = 0;        // contact evaluations
   WheelContact wheel;        // the side's contact
 };
+// `start`: a height to start from (e.g. the previous time step's); otherwise the touching height pressed in by
+// initial_approach. The normal problems are solved to options.normal_tolerance. A load that needs an approach
+// beyond 3 mm (no elastic wheel-rail contact) is an error.
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
                         ContactWorkspace& ws, const EquilibriumOptions& options = {},
+                        std::optional<double> start = std::nullopt,
                         const std::optional<RollingRequest>& rolling = std::nullopt);
 
 // Rigid (kinematic) contact of one wheel: the deepest rail line, its point and the wheel normal there.
