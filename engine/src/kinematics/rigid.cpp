@@ -158,7 +158,7 @@ class RigidSolver {
   bool newton(double& z, double& roll) const {
     Depths d = depths(z, roll);
     for (int it = 0; it < 30; ++it) {
-      if (!d.P.allFinite()) return false;
+      if (!d.P.allFinite() || !(std::abs(z) <= 0.02 && std::abs(roll) <= 0.02)) return false;  // the brackets' range
       if (d.P.cwiseAbs().maxCoeff() <= kTouch) return true;
       Eigen::Vector2d dx = -d.J.fullPivLu().solve(d.P);
       if (!dx.allFinite()) return false;
@@ -189,6 +189,7 @@ class RigidSolver {
       const double slope = overlap_gradient(g_.side[side].wheel, f, b.point)(0);
       if (!(slope < -0.1)) break;
       z -= b.overlap / slope;
+      if (!(std::abs(z) <= 0.02)) break;  // the bracket's range: farther, no rail under the wheel
     }
     auto f = [&](double zz) { return overlap(side, zz, roll); };
     const double a = -0.02, b = 0.02, fa = f(a), fb = f(b);
@@ -357,7 +358,10 @@ void solve_free(const GeometryModel& g, double y, double yaw, const RigidOptions
     z = roll = 0;
     ok = solver.newton(z, roll);
   }
-  if (!ok) solver.nested(z, roll);
+  if (!ok) {
+    for (int s : {kLeft, kRight}) solver.touch_z(s, 0.0, 0.0);  // throws, naming the wheel, when one cannot touch
+    solver.nested(z, roll);
+  }
   res.z = z;
   res.roll = roll;
   for (int s : {kLeft, kRight}) {

@@ -285,7 +285,7 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
     std::string line;
     for (double x : v) {
       if (!std::isfinite(x)) fail("geometry table: a value is not finite at y = {} m", r.y);
-      line += fmt::format("{: .9e} ", x);
+      line += fmt::format("{: .12e} ", x);
     }
     h += line + fmt::format("{} {}\n", r.wheel[kLeft].contacts.size(), r.wheel[kRight].contacts.size());
   }
