@@ -498,7 +498,9 @@ void describe(const EquilibriumResult& e, FieldSink& out) {
     describe(e.contact.wheel[s], out);
     out.end();
   }
-  out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
+  // Only with both wheels loaded: a lifted wheel has no rolling radius (Δr would be a wheel radius).
+  if (e.contact.wheel[kLeft].force.z() > 0 && e.contact.wheel[kRight].force.z() > 0)
+    out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
   out.vec3("force", e.contact.force);
   out.vec3("moment", e.contact.moment);
 }

@@ -129,7 +129,8 @@ std::string failure_message(const WheelResult& result);
 
 // The results as fields (Lua tables, C API paths; docs in README "Equilibrium"). An equilibrium: converged,
 // error, y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations, evaluations, residual = {force, moment}, left, right (as
-// wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right), force, moment. A wheel:
+// wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right; only when both wheels carry
+// load), force, moment. A wheel:
 // the side's wheel fields, converged, error, z, residual, iterations. (A rigid case: kinematics/rigid.hpp.)
 void describe(const EquilibriumResult& result, FieldSink& out);
 void describe(const WheelResult& result, FieldSink& out);
