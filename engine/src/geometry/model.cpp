@@ -239,10 +239,12 @@ RailLines place_rail(const Profile& p, const SidePlacement& pl, int side) {
     r.y[j] = q.x();
     r.z[j] = q.y();
   }
-  for (std::size_t i = 1; i < n; ++i)
+  for (std::size_t i = 1; i < n; ++i) {
+    if (r.y[i] < r.y[i - 1] && r.y[i] > r.y[i - 1] - kVerticalRounding) r.y[i] = r.y[i - 1];  // a vertical face
     if (r.y[i] < r.y[i - 1])
       fail("wrc.wheelset: the {} rail ({}) is not monotone in y once canted (near point {})", side_name(side), p.source,
            i + 1);
+  }
   return r;
 }
 

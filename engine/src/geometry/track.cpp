@@ -102,8 +102,12 @@ Track assemble_track(const std::array<Profile, 2>& wheels, const std::array<Prof
       cy[i] = q.x();
       cz[i] = q.y();
     }
+    // A face that the cant turns vertical (60E1's 1:20 gauge-side flank at cant 1:20) rounds to either side.
+    for (std::size_t i = 1; i < cy.size(); ++i)
+      if (cy[i] < cy[i - 1] && cy[i] > cy[i - 1] - kVerticalRounding) cy[i] = cy[i - 1];
     if (!std::is_sorted(cy.begin(), cy.end()))
-      fail("wrc.wheelset: rail profile {} is not monotone in y after the cant rotation", r.source);
+      fail("wrc.wheelset: rail profile {} is not monotone in y after the cant rotation (a face leans over once canted "
+           "by {:.4g} rad)", r.source, angle);
     pl.rail_dy = 0.5 * params.gauge - gauge_point_y(cy, cz, params.gauge_depth, params.gauge_rule, r.source);
     pl.rail_dz = -params.radius;  // provisional: crown near the wheel's lowest point
     pl.sign = s == kLeft ? 1.0 : -1.0;

@@ -56,6 +56,9 @@ struct Track {
   std::array<double, 2> rail_top;              // z of each placed rail's highest point (m)
 };
 
+// A canted rail face that comes out vertical may lean back by rounding: up to this much (m) it is taken as vertical.
+inline constexpr double kVerticalRounding = 1e-9;
+
 // Assembles the track. Throws wrc::Error when a profile has the wrong kind, the rail does not reach
 // gauge_depth below its top on the gauge side, a parameter is out of range, or wheel and rail do not
 // overlap laterally.
