@@ -26,3 +26,8 @@ local c, d = wrc.wheelset{wheel = wheel, rail = rail}, wrc.wheelset{wheel = whee
 check.near(top_y(c), top_y(d), 1e-15, "60E1: both rules give the same gauge point")
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge_point = "lowest"} end, "'gauge_point' must be one of",
             "an unknown rule")
+
+-- At cant 1:20 the 60E1's 1:20 gauge-side flank turns vertical: it is accepted (a rounding lean is no overhang).
+local steep = wrc.wheelset{wheel = wheel, rail = rail, cant = 1 / 20}
+check.near(steep.gauge_points.left.y, 0.7175, 1e-15, "60E1 at 1:20")
+check.ok(steep:rigid{y = 0}.converged, "60E1 at 1:20: a rigid contact")

@@ -80,7 +80,7 @@ wrc_status wrc_profile_free(wrc_profile* profile);
 /* ---- wheelsets ---- */
 
 /* A wheelset from one wheel and one rail profile (the right side their mirror image), or from four. The profiles are
- * copied. Options: those of wrc.wheelset (radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E, nu, grid,
+ * copied. Options: those of wrc.wheelset (radius, back_to_back, tape_offset, gauge, gauge_depth, gauge_point, cant, E, nu, grid,
  * margin, max_elements, tolerance, merge_tolerance, merge_angle, solver, strategy) where strategy is one of the
  * built-in strategies (accurate, fast, uniform, topology, coarse, constant_slope, brute or a composition
  * "uniform+coarse+topology") and strategy_options.<key> its options. The caller owns *out. */
