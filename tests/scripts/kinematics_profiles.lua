@@ -44,6 +44,9 @@ check.fails(function() rail:curvature(0.1) end, "outside the profile", "curvatur
 -- smooth: on a definition, the spline kept and used to resample.
 local sw = wrc.profile.load("profiles/s1002.lua", {smooth = 0})
 check.ok(sw.smooth == 0 and wheel.smooth == nil, "p.smooth: the spline's smoothing length, nil for a polyline")
+local rs = rail:transform{smooth = 0.2e-3}
+check.ok(rs.smooth == 0.2e-3 and #rs == #rail, "p:transform{smooth = ...} fits a smoothing spline")
+check.rel(radius(rs, 0.018), 0.080, 1e-3, "a lightly smoothed 60E1 keeps its R80")
 check.ok(sw.transforms[#sw.transforms]:find("interpolating cubic spline", 1, true), "smoothing is recorded in transforms")
 local fine = wrc.profile.load("profiles/s1002.lua", {step = 0.01e-3})  -- the analytic S1002, close to exact
 local fy, fz = fine:points()
