@@ -7,9 +7,10 @@
 //   3. Kalker's table: C11, C22, C23, C33 from the exact solver at every tabulated a/b and nu, errors at 20 and 40
 //      elements on the smaller semi-axis (each the mean over four placements of the ellipse's centre in an element)
 //      and of their Richardson extrapolation (quick: 6 and 12);
-//   4. FASTSIM against the exact solver along the saturation curves of xi, eta and spin on Hertzian patches.
+//   4. FASTSIM against the exact solver along the saturation curves of xi, eta and spin on Hertzian patches;
+//   5. the tolerance against the forces' error (the 0.2 mm area of 1.).
 //
-//   bench_rolling [reps=7] [quick]
+//   bench_rolling [reps=7] [quick] [only=1..5]   (only: that section)
 //
 // Times are CPU time of the calling thread (one core), the median of `reps` runs (the machine is shared).
 #include "contact/rolling_cases.hpp"
@@ -136,6 +137,36 @@ void paper_patch(const std::shared_ptr<const wrc::GeometryModel>& geometry, cons
              paper_area(geometry, m, 0.4e-3).problem.creepages.xi, paper_area(geometry, m, 0.4e-3).problem.creepages.phi);
 }
 
+// The solver's tolerance against the forces' accuracy: the paper's area at 0.2 mm, pure rolling and braking, solved
+// to 1e-10 as the reference.
+void tolerance_study(const std::shared_ptr<const wrc::GeometryModel>& geometry, const Material& m, int reps) {
+  fmt::print("\n== 5. The tolerance: the 0.2 mm area (pure rolling, then braking), forces against a solve to 1e-10 "
+             "(CPU ms, median of {}) ==\n", reps);
+  const RollingSolver exact(m);
+  const Area a = paper_area(geometry, m, 0.2e-3);
+  TangentialProblem braking = a.problem;
+  braking.creepages.xi += 2e-3;
+  for (const TangentialProblem* pb : std::vector<const TangentialProblem*>{&a.problem, &braking}) {
+    TangentialOptions ro;
+    ro.tolerance = 1e-10;
+    RollingWorkspace rw0;
+    const TangentialSolution ref = exact.solve(*pb, rw0, ro);
+    double N = 0;
+    for (double p : pb->pressure) N += p * pb->grid.element_area();
+    for (double tol : {1e-4, 3e-5, 1e-5, 3e-6, 1e-6}) {
+      TangentialOptions o;
+      o.tolerance = tol;
+      RollingWorkspace rw;
+      TangentialSolution s;
+      const double t = median_ms(reps, [&] { s = exact.solve(*pb, rw, o); });
+      fmt::print("tolerance {:.0e}: {:6.2f} ms, Newton {}, GMRES {} + {} coarse, products {}; error of Fx {:+.1e}, Fy {:+.1e} "
+                 "mu N, Mz {:+.1e} mu N (5 mm)\n",
+                 tol, t, s.iterations, s.linear_iterations, s.coarse_iterations, s.products, (s.fx - ref.fx) / (0.3 * N),
+                 (s.fy - ref.fy) / (0.3 * N), (s.mz - ref.mz) / (0.3 * N * 0.005));
+    }
+  }
+}
+
 void hertz_times(const Material& m, int reps, bool quick) {
   fmt::print("\n== 2. Hertzian circle, xi = 0.5 xi_s and phi: exact and FASTSIM vs elements (CPU ms, median of {}) ==\n",
              reps);
@@ -247,8 +278,10 @@ void saturation(const Material& m, bool quick) {
 int main(int argc, char** argv) {
   int reps = 7;
   bool quick = false;
+  int only = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "reps=", 5) == 0) reps = std::max(1, std::atoi(argv[i] + 5));
+    if (std::strncmp(argv[i], "only=", 5) == 0) only = std::atoi(argv[i] + 5);
     if (std::strcmp(argv[i], "quick") == 0) quick = true;
   }
   lua_State* L = wrc::lua::new_state();
@@ -258,10 +291,11 @@ int main(int argc, char** argv) {
   const auto lws = wrc::lua::check_wheelset(L, -1, "bench");
   const Material material = lws->contact_model().material();
   fmt::print("bench_rolling: E = {} Pa, nu = {}, mu = 0.3\n", material.E, material.nu);
-  paper_patch(lws->geometry_ptr(), material, reps, quick);
-  hertz_times(material, reps, quick);
-  kalker_table(quick ? 6 : 20);
-  saturation(material, quick);
+  if (only == 0 || only == 1) paper_patch(lws->geometry_ptr(), material, reps, quick);
+  if (only == 0 || only == 2) hertz_times(material, reps, quick);
+  if (only == 0 || only == 3) kalker_table(quick ? 6 : 20);
+  if (only == 0 || only == 4) saturation(material, quick);
+  if (only == 0 || only == 5) tolerance_study(lws->geometry_ptr(), material, reps);
   lua_close(L);
   return 0;
 }

@@ -57,17 +57,18 @@ class SlipOperator {
       s[2 * k + 1] += L_.wy[static_cast<std::size_t>(k)];
     }
   }
-  // The cropped grid's arrays qx, qy -> C^-1 (qx, qy) in place (the periodic circulant of B, inverted).
+  // The preconditioner's grid arrays (px, py) -> C^-1 (px, py) in place (the periodic circulant of B, inverted).
+  // They share the products' output buffers, which no product needs between two calls.
   void deconvolve_in_place() {
-    shear_deconvolve(periodic_, L_.field.grid, ws_.qx.data(), ws_.qy.data(), ws_.qx.data(), ws_.qy.data(), ws_.fft);
+    shear_deconvolve(periodic_, L_.field.grid, ws_.ux.data(), ws_.uy.data(), ws_.ux.data(), ws_.uy.data(),
+                     ws_.fft_periodic);
   }
-  std::vector<double>& qx() { return ws_.qx; }
-  std::vector<double>& qy() { return ws_.qy; }
+  std::vector<double>& px() { return ws_.ux; }
+  std::vector<double>& py() { return ws_.uy; }
 
  private:
+  // The product's input: zero outside the contact elements since construction, so only they are written.
   void scatter(const double* v) {
-    std::fill(ws_.qx.begin(), ws_.qx.end(), 0.0);
-    std::fill(ws_.qy.begin(), ws_.qy.end(), 0.0);
     for (int k = 0; k < L_.size(); ++k) {
       const auto c = static_cast<std::size_t>(L_.cell[static_cast<std::size_t>(k)]);
       ws_.qx[c] = v[2 * k];
@@ -94,11 +95,15 @@ class Linearisation {
  public:
   Linearisation(const Level& level, SlipOperator& op, const LocalBlocks& K, const LevelState& st,
                 const std::vector<double>& s)
-      : L_(level), op_(op), K_(K), st_(st), c_(static_cast<std::size_t>(level.size()), 0.0) {
+      : L_(level), op_(op), K_(K), st_(st), c_(static_cast<std::size_t>(level.size()), 0.0),
+        ex_(c_.size(), 0.0), ey_(c_.size(), 0.0), mag_(c_.size(), 0.0) {
     for (int k = 0; k < L_.size(); ++k) {
-      if (st_.state[static_cast<std::size_t>(k)] != kSlip) continue;
-      const double ex = dir_x(k), ey = dir_y(k);
-      c_[static_cast<std::size_t>(k)] = std::max(0.0, -(ex * s[2 * k] + ey * s[2 * k + 1])) / magnitude(k);
+      const auto q = static_cast<std::size_t>(k);
+      if (st_.state[q] != kSlip) continue;
+      mag_[q] = std::sqrt(st_.px[q] * st_.px[q] + st_.py[q] * st_.py[q]);
+      ex_[q] = st_.px[q] / mag_[q];
+      ey_[q] = st_.py[q] / mag_[q];
+      c_[q] = std::max(0.0, -(ex_[q] * s[2 * k] + ey_[q] * s[2 * k + 1])) / mag_[q];
     }
   }
   // The right-hand side -F of the step (a slip traction off the bound is brought back to it).
@@ -107,7 +112,7 @@ class Linearisation {
       const auto q = static_cast<std::size_t>(k);
       if (st_.state[q] == kSlip) {
         b[2 * k] = -(-dir_y(k) * s[2 * k] + dir_x(k) * s[2 * k + 1]);
-        b[2 * k + 1] = kappa() * (L_.gk[q] - std::hypot(st_.px[q], st_.py[q]));
+        b[2 * k + 1] = kappa() * (L_.gk[q] - mag_[q]);
       } else {
         b[2 * k] = -s[2 * k];
         b[2 * k + 1] = -s[2 * k + 1];
@@ -146,15 +151,15 @@ class Linearisation {
   // The bound equation e . dp = g - |p| is in Pa, the others in slip per |V|: scaled by the typical slip per
   // traction (M's diagonal), so that GMRES's residual norm weighs them alike.
   double kappa() const { return 0.5 * (K_.kx + K_.ky); }
-  double magnitude(int k) const { return std::hypot(st_.px[static_cast<std::size_t>(k)], st_.py[static_cast<std::size_t>(k)]); }
-  double dir_x(int k) const { return st_.px[static_cast<std::size_t>(k)] / magnitude(k); }
-  double dir_y(int k) const { return st_.py[static_cast<std::size_t>(k)] / magnitude(k); }
+  // The slip direction e_k of the traction at the linearisation point (slip elements).
+  double dir_x(int k) const { return ex_[static_cast<std::size_t>(k)]; }
+  double dir_y(int k) const { return ey_[static_cast<std::size_t>(k)]; }
 
   // B dp = dx * (sum of r along the adhesion run from its upstream end): the exact inverse of the upwind difference,
   // then B inverted by its periodic circulant.
   void adhesion_part(const double* r, double* z) {
-    auto& qx = op_.qx();
-    auto& qy = op_.qy();
+    auto& qx = op_.px();
+    auto& qy = op_.py();
     std::fill(qx.begin(), qx.end(), 0.0);
     std::fill(qy.begin(), qy.end(), 0.0);
     const double dx = L_.field.grid.dx;
@@ -182,13 +187,24 @@ class Linearisation {
   SlipOperator& op_;
   LocalBlocks K_;
   const LevelState& st_;
-  std::vector<double> c_;
+  std::vector<double> c_, ex_, ey_, mag_;
 };
 
-double dot(const double* a, const double* b, std::size_t n) {
-  double s = 0;
-  for (std::size_t i = 0; i < n; ++i) s += a[i] * b[i];
-  return s;
+double dot(const double* __restrict a, const double* __restrict b, std::size_t n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;  // four partial sums: the loop vectorises without -ffast-math
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    s0 += a[i] * b[i];
+    s1 += a[i + 1] * b[i + 1];
+    s2 += a[i + 2] * b[i + 2];
+    s3 += a[i + 3] * b[i + 3];
+  }
+  for (; i < n; ++i) s0 += a[i] * b[i];
+  return (s0 + s1) + (s2 + s3);
+}
+// y -= a x
+void axpy_minus(double a, const double* __restrict x, double* __restrict y, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) y[i] -= a * x[i];
 }
 
 // Restarted GMRES with right preconditioning for J x = b from x = 0, to |b - J x| <= rtol |b|. Returns iterations.
@@ -219,7 +235,7 @@ int gmres(Linearisation& lin, const std::vector<double>& b, std::vector<double>&
       lin.jacobian(Z + j * n, w.data());
       for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         H[i][j] = dot(w.data(), V + i * n, n);
-        for (std::size_t q = 0; q < n; ++q) w[q] -= H[i][j] * V[i * n + q];
+        axpy_minus(H[i][j], V + i * n, w.data(), n);
       }
       H[j + 1][j] = std::sqrt(dot(w.data(), w.data(), n));
       if (H[j + 1][j] > 0)
@@ -260,10 +276,11 @@ double residual_of(const Level& L, const LevelState& st, const std::vector<doubl
   for (int k = 0; k < L.size(); ++k) {
     const double sx = s[2 * k], sy = s[2 * k + 1];
     if (st.state[static_cast<std::size_t>(k)] == kSlip) {
-      const double g = std::hypot(st.px[static_cast<std::size_t>(k)], st.py[static_cast<std::size_t>(k)]);
+      const double g = std::sqrt(st.px[static_cast<std::size_t>(k)] * st.px[static_cast<std::size_t>(k)] +
+                                 st.py[static_cast<std::size_t>(k)] * st.py[static_cast<std::size_t>(k)]);
       err = std::max(err, std::abs(-st.py[static_cast<std::size_t>(k)] / g * sx + st.px[static_cast<std::size_t>(k)] / g * sy));
     } else {
-      err = std::max(err, std::hypot(sx, sy));
+      err = std::max(err, std::sqrt(sx * sx + sy * sy));
     }
   }
   return err / L.scale;
@@ -276,7 +293,7 @@ bool update_split(const Level& L, LevelState& st, const std::vector<double>& s) 
     const auto q = static_cast<std::size_t>(k);
     double& px = st.px[q];
     double& py = st.py[q];
-    const double mag = std::hypot(px, py);
+    const double mag = std::sqrt(px * px + py * py);
     if (st.state[q] == kSlip) {
       if (px * s[2 * k] + py * s[2 * k + 1] > 0) {  // slipping along the traction: it adheres
         st.state[q] = kAdhesion;
@@ -295,7 +312,7 @@ void renormalise(const Level& L, LevelState& st) {
   for (int k = 0; k < L.size(); ++k) {
     const auto q = static_cast<std::size_t>(k);
     if (st.state[q] != kSlip) continue;
-    const double mag = std::hypot(st.px[q], st.py[q]);
+    const double mag = std::sqrt(st.px[q] * st.px[q] + st.py[q] * st.py[q]);
     if (mag > 0) {
       st.px[q] *= L.gk[q] / mag;
       st.py[q] *= L.gk[q] / mag;

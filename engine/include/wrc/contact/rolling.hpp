@@ -88,7 +88,9 @@ struct TangentialSolution {
 // Buffers of one thread for RollingSolver (not shareable; reused across solves).
 class RollingWorkspace {
  public:
-  ShearWorkspace fft;
+  // FFT buffers of the products with B and of the preconditioner's circulant inverse: apart, because a buffer
+  // changing shape is cleared (the padded one is four times the periodic one).
+  ShearWorkspace fft, fft_periodic;
   std::vector<double> qx, qy, ux, uy;  // grid vectors of the cropped grid
   std::vector<double> basis, precond;  // GMRES: Krylov vectors and their preconditioned images
 };
