@@ -33,7 +33,8 @@ struct WheelsetParams {
 };
 
 // Reads wrc.wheelset{}'s keys over the defaults: radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E,
-// nu, grid, margin, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), strategy (a name). Range
+// nu, grid, margin, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), surface ("planar" |
+// "conformal"), strategy (a name). Range
 // checks happen when the wheelset is built. Does not finish() the reader (the caller may read more keys).
 WheelsetParams read_wheelset_params(OptionReader& options);
 // The parameters as fields (wrc.defaults, ws.params).
