@@ -23,7 +23,8 @@ namespace {
 struct SurfaceLine {
   double S = 0;          // arc length along the rail profile from the side's first line (m)
   double y = 0, z = 0;   // the line (track frame, m)
-  Eigen::Vector2d n;     // (n_y, n_z): wheel's inward normal at the line's deepest point, unit, x component dropped
+  Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the line's deepest
+                         // point, x component dropped): the normal of the surface midway between them
   LineProfile h;         // depth along the wheel's normal as a function of track x (v, u0 unused)
 };
 
@@ -95,9 +96,23 @@ Eigen::Vector2d lateral_normal(const Eigen::Vector3d& n) {
   return v.norm() > 0 ? Eigen::Vector2d(v.normalized()) : Eigen::Vector2d(0, 1);
 }
 
+// The rail's outward normal (n_y, n_z) at line r: perpendicular to the chord between its neighbours (one-sided at
+// the ends); the lines are ordered by increasing y, so (-dz, dy) points out of the rail.
+Eigen::Vector2d rail_normal(const RailLines& rail, int r) {
+  const int a = std::max(0, r - 1), b = std::min(rail.count() - 1, r + 1);
+  const Eigen::Vector2d n(-(rail.z[b] - rail.z[a]), rail.y[b] - rail.y[a]);
+  return n.norm() > 0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d(0, 1);
+}
+
+// The normal of the surface midway between wheel and rail: the bisector of their normals.
+Eigen::Vector2d mid_normal(const Eigen::Vector2d& wheel, const Eigen::Vector2d& rail) {
+  const Eigen::Vector2d n = wheel + rail;
+  return n.norm() > 0 ? Eigen::Vector2d(n.normalized()) : rail;
+}
+
 // The rail lines from the last one at or before the grid's first row to the first one at or after its last row
 // (as far as the rail goes), each with its arc length, normal and h(x): the arcs of its segments (the deepest one
-// gives the normal), or the arc through its deepest point.
+// gives the wheel's normal), or the arc through its deepest point.
 std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationState& st, int side,
                                        const std::vector<SegmentInfo>& all, double s_first, double s_last) {
   const WheelCones& wheel = g.side[side].wheel;
@@ -136,6 +151,10 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
     l.h.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
     l.h.x_apex = a.x;
     l.n = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z}));
+  }
+  for (int r = rlo; r <= rhi; ++r) {
+    SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
+    l.n = mid_normal(l.n, rail_normal(rail, r));
   }
   return lines;
 }

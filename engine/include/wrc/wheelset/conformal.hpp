@@ -14,14 +14,16 @@
 //    solver and its half-space influence coefficients are those of the planar path, applied on the unrolled surface
 //    (the standard approximation of the conformal mode; a kernel corrected for the surface's turning would enter
 //    there).
-//  - Local frame per grid row (one s): t1 = e_x, n = the wheel's inward normal at the deepest point of the rail
-//    lines bracketing the row (linear in s between them, normalised; at a line's deepest point the wheel surface is
-//    parallel to the line, so n has no x component), t2 = n x t1 (across the track, toward increasing s).
+//  - Local frame per grid row (one s): t1 = e_x; n = the normal of the surface midway between wheel and rail, where
+//    two bodies of one material meet when pressed together (each deforms by half the overlap): at each rail line
+//    the bisector of the rail's normal (across its neighbouring lines) and the wheel's inward normal at the line's
+//    deepest point (where the wheel's surface is parallel to the line, so it has no x component), linear in s
+//    between lines and normalised; t2 = n x t1 (across the track, toward increasing s).
 //  - Undeformed distance h(x, s): along each rail line the depth of the line inside the wheel measured along the
 //    wheel's normal -- the arcs of the planar path (the segment's sagitta, radius r / (cos(conicity) cos^2(yaw))
 //    along x; the exact normal gap at the deepest point of a line without a segment) -- linear in s between lines.
-//    Measured along the wheel's normal rather than the row's: the two differ by 1 / cos of the angle between the
-//    undeformed surfaces, i.e. the slope of the gap, a few degrees at most where there is pressure.
+//    Along the row's normal the depth is longer by 1 / cos of half the angle between the undeformed surfaces, i.e.
+//    of half the gap's slope: a few degrees at most where there is pressure, a relative 1e-3.
 //  - Forces: element (i, j) carries p dA along n_j (dA = dx ds); the area's force and moment about the wheelset
 //    centre are the sums over the elements at their points (x_i, y(s_j), z(s_j)) on the rail surface. Since every
 //    n_j is perpendicular to x, a frictionless area has no longitudinal force: a straight rail cannot push along
