@@ -21,7 +21,7 @@
 //    Persson's semi-angle within 6 % and the pressure across within 8 % of its peak up to 45 deg -- which checks the
 //    conformal geometry itself (surface, h along the normals, rows, forces), apart from the coefficients.
 #include "contact/persson_reference.hpp"
-#include "wrc/contact/convolution.hpp"
+#include "wheelset/angle_corrected.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 
 #include <doctest/doctest.h>
@@ -71,71 +71,6 @@ std::shared_ptr<const Wheelset> pin_in_seat(double element, ContactSurface surfa
   p.contact.surface = surface;
   p.strategy = "brute";  // the profiles as given: lines and cones every 5 um
   return build_wheelset(pr, p);
-}
-
-// The same conformal area solved with coefficients corrected by n_k . n_l: K p = f (ny o I (ny o p) + nz o I (nz o p)),
-// f = 1/(pi E*), on an active set (drop negative pressures, add penetrated elements) with preconditioned CG inside
-// (the preconditioner: the grid's periodic circulant inverse of I, as the engine's solver).
-std::vector<double> angle_corrected(const ContactModel& model, const PatchContact& pc) {
-  const contact::Grid& g = pc.solution.grid;
-  const ConformalSurface& surf = *pc.conformal;
-  const int n = g.size();
-  const double f = model.material().pair_compliance();
-  const auto linear = model.solver().cache().get(g);
-  const auto periodic = model.solver().cache().get(g, contact::InfluenceSpectrum::Kind::periodic);
-  contact::ConvolutionWorkspace ws;
-  std::vector<double> ny(n), nz(n), a(n), b(n);
-  for (int k = 0; k < n; ++k) ny[k] = surf.normal_y[k / g.nx], nz[k] = surf.normal_z[k / g.nx];
-  auto K = [&](const std::vector<double>& x, std::vector<double>& y) {
-    for (int k = 0; k < n; ++k) a[k] = ny[k] * x[k], b[k] = nz[k] * x[k];
-    contact::convolve(*linear, g, a.data(), a.data(), ws, f);
-    contact::convolve(*linear, g, b.data(), b.data(), ws, f);
-    y.resize(n);
-    for (int k = 0; k < n; ++k) y[k] = ny[k] * a[k] + nz[k] * b[k];
-  };
-  const double hmax = *std::max_element(pc.h.begin(), pc.h.end()), tol = 1e-9 * hmax;
-  std::vector<double> p = pc.solution.pressure, Kp, r(n), z(n), d(n), q;
-  std::vector<char> active(n);
-  for (int k = 0; k < n; ++k) active[k] = p[k] > 0;
-  for (int round = 0; round < 100; ++round) {
-    K(p, Kp);
-    for (int k = 0; k < n; ++k) r[k] = active[k] ? pc.h[k] - Kp[k] : 0.0;
-    auto precondition = [&] {
-      contact::deconvolve(*periodic, g, r.data(), z.data(), ws, 1 / f);
-      for (int k = 0; k < n; ++k) z[k] = active[k] ? z[k] : 0.0;
-    };
-    precondition();
-    d = z;
-    double rz = 0;
-    for (int k = 0; k < n; ++k) rz += r[k] * z[k];
-    for (int it = 0; it < 1000; ++it) {
-      double rmax = 0;
-      for (int k = 0; k < n; ++k) rmax = std::max(rmax, std::abs(r[k]));
-      if (rmax < tol) break;
-      K(d, q);
-      double dq = 0;
-      for (int k = 0; k < n; ++k) dq += active[k] ? d[k] * q[k] : 0.0;
-      const double alpha = rz / dq;
-      for (int k = 0; k < n; ++k)
-        if (active[k]) p[k] += alpha * d[k], r[k] -= alpha * q[k];
-      precondition();
-      double rz_new = 0;
-      for (int k = 0; k < n; ++k) rz_new += r[k] * z[k];
-      for (int k = 0; k < n; ++k) d[k] = z[k] + rz_new / rz * d[k];
-      rz = rz_new;
-    }
-    bool changed = false;
-    for (int k = 0; k < n; ++k)
-      if (active[k] && p[k] < 0) active[k] = 0, p[k] = 0, changed = true;
-    if (!changed) {
-      K(p, Kp);
-      for (int k = 0; k < n; ++k)
-        if (!active[k] && Kp[k] - pc.h[k] < -1e-6 * hmax) active[k] = 1, changed = true;
-    }
-    if (!changed) return p;
-  }
-  FAIL("the angle-corrected active set did not settle");
-  return p;
 }
 
 // The strip x = 0 of a conformal area's pressure: load per unit length (N/m), semi-angle (rad, the mean of both
@@ -220,7 +155,7 @@ TEST_CASE("conformal contact against Persson's pin in a hole (semi-angle and pre
     REQUIRE(r.wheel[kLeft].patches.size() == 1);
     REQUIRE(rp.wheel[kLeft].patches.size() == 1);
     const PatchContact& pc = r.wheel[kLeft].patches.front();
-    const Strip st = strip(pc, pc.solution.pressure), cor = strip(pc, angle_corrected(model, pc));
+    const Strip st = strip(pc, pc.solution.pressure), cor = strip(pc, test::angle_corrected(model, pc));
     const Strip pl = strip(rp.wheel[kLeft].patches.front(), rp.wheel[kLeft].patches.front().solution.pressure);
     REQUIRE(std::isfinite(st.alpha));
     REQUIRE(std::isfinite(cor.alpha));

@@ -244,7 +244,6 @@ void conformal_results(const WheelCones& wheel, const PoseFrame& f, PatchContact
   std::vector<double> P, Q;
   row_sums(sol.grid, sol.pressure, surf.x0, P, Q);
   row_wrench(surf, P, Q, c, pc.force, pc.moment);
-  surf.pressure_integral = sol.force;
   pc.normal_force = pc.force.norm();
   const int j0 = std::clamp(static_cast<int>(std::lround(-sol.grid.y0 / sol.grid.dy)), 0, sol.grid.ny - 1);
   pc.normal = pc.normal_force > 0 ? Eigen::Vector3d(pc.force / pc.normal_force) : surf.normal(j0);
@@ -369,12 +368,11 @@ void conformal_sensitivity(const ContactModel& model, const Pose& pose, PatchCon
   }
 }
 
-// The conformal fields of an area: pressure_integral, the rows (s, y, z, normal_y, normal_z, angle per grid row: the
-// normals of its elements) and, with the grids, the contact angle of every element.
+// The conformal fields of an area: the rows (s, y, z, normal_y, normal_z, angle per grid row: the normals of its
+// elements) and, with the grids, the contact angle of every element.
 void describe_conformal(const PatchContact& pc, FieldSink& out) {
   const ConformalSurface& surf = *pc.conformal;
   const contact::Grid& grid = pc.solution.grid;
-  out.number("pressure_integral", surf.pressure_integral);
   std::vector<double> s(static_cast<std::size_t>(surf.rows())), angle(s.size());
   for (int j = 0; j < surf.rows(); ++j) {
     s[static_cast<std::size_t>(j)] = surf.s0 + grid.y(j);

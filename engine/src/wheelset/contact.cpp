@@ -547,6 +547,7 @@ void describe(const PatchContact& pc, FieldSink& out) {
   const contact::NormalSolution& s = pc.solution;
   out.integer("merged", static_cast<long long>(pc.located.size()));
   out.number("normal_force", pc.normal_force);
+  out.number("pressure_integral", s.force);  // sum p dA: the normal force, or more where the normals turn
   out.vec3("force", pc.force);
   out.vec3("moment", pc.moment);
   out.vec3("point", pc.point);

@@ -51,7 +51,6 @@ struct ConformalSurface {
   double s0 = 0;                          // arc length of grid y = 0 along the rail profile, from its first line (m)
   std::vector<double> y, z;               // per row: the reference point (track frame, m)
   std::vector<double> normal_y, normal_z; // per row: unit normal from the rail into the wheel (x component 0)
-  double pressure_integral = 0;           // N: sum p dA, >= the resultant's magnitude
   int rows() const { return static_cast<int>(y.size()); }
   Eigen::Vector3d normal(int j) const { return {0.0, normal_y[j], normal_z[j]}; }
   Eigen::Vector3d t2(int j) const { return {0.0, normal_z[j], -normal_y[j]}; }  // normal(j) x e_x

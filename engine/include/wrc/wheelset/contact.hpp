@@ -45,9 +45,11 @@ struct ContactOptions {
   bool dense = false;             // the dense reference solver instead of the fast one (tests)
   int max_elements = 1 << 20;     // a larger potential contact area is an error (a pose far too deep)
   contact::NormalOptions normal;  // tolerance etc. of the normal solver
-  // The potential contact area: one plane per area (the paper's, CONTACT's planar mode) or the curved surface
-  // along the rail's profile (CONTACT's conformal mode; wheelset/conformal.hpp).
-  ContactSurface surface = ContactSurface::planar;
+  // The potential contact area: the curved surface along the rail's profile (CONTACT's conformal mode;
+  // wheelset/conformal.hpp) or one plane per area (the paper's, CONTACT's planar mode). Conformal by default: it
+  // agrees with the plane where the patch is flat and satisfies virtual work where the plane does not (README,
+  // "Conformal contact").
+  ContactSurface surface = ContactSurface::conformal;
 };
 
 // Rows of a force/moment sensitivity: (Fx, Fy, Fz, Mx, My, Mz); columns: (z, roll) of the pose.

@@ -25,7 +25,7 @@ struct WheelsetParams {
                                 // gauge_depth 0.014 m, cant 1/40 (track.hpp)
   contact::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (contact/material.hpp)
   ContactOptions contact;       // grid 0.2 mm, margin 2 elements, tolerance 1e-8, merge_tolerance 0.01,
-                                // merge_angle 0.26 rad, the fast solver (wheelset/contact.hpp)
+                                // merge_angle 0.26 rad, the fast solver, the conformal surface (wheelset/contact.hpp)
   // The location strategy: "accurate" (the profiles every 0.1 mm along the arc, coarse pre-search, topology walk).
   // The constant-slope wheel of "fast" stripes the pressure of near-conformal contacts (S1002/60E1 at y = 0), and
   // the search is a small part of an evaluation beside the normal problems.
