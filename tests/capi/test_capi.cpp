@@ -173,3 +173,84 @@ TEST_CASE("one wheelset from several threads at once gives the results of sequen
   for (auto& t : threads) t.join();
   for (std::size_t i = 0; i < ys.size(); ++i) CHECK(par[i] == seq[i]);
 }
+
+TEST_CASE("a trajectory follows a motion warm-started, with the forces of cold evaluations at its poses") {
+  Fixture f;
+  wrc_trajectory* tr = nullptr;
+  REQUIRE_MESSAGE(wrc_trajectory_new(f.ws, "tolerance=1e-6", &tr) == WRC_OK, last());
+  for (int k = 0; k < 10; ++k) {
+    const double y = 3e-3 * std::sin(0.3 * k), z = -0.03e-3;
+    wrc_result *a = nullptr, *b = nullptr;
+    REQUIRE_MESSAGE(wrc_trajectory_contact(tr, y, z, 0.0, 0.0, &a) == WRC_OK, last());
+    REQUIRE(wrc_contact(f.ws, y, z, 0.0, 0.0, "grids=false", &b) == WRC_OK);
+    for (const char* path : {"left.force.y", "left.force.z", "right.force.y", "right.force.z"})
+      CHECK(std::abs(number(a, path) - number(b, path)) <= 1e-5 * std::max(1.0, std::abs(number(b, "left.force.z"))));
+    wrc_result_free(a);
+    wrc_result_free(b);
+  }
+  wrc_result* w = nullptr;
+  REQUIRE(wrc_trajectory_wheel(tr, WRC_LEFT, 1e-3, 0, 0, 80e3, &w) == WRC_OK);
+  CHECK(std::abs(number(w, "force.z") - 80e3) <= 1e-6 * 80e3);
+  wrc_result_free(w);
+  CHECK(wrc_trajectory_reset(tr) == WRC_OK);
+  CHECK(wrc_trajectory_wheel(tr, 3, 0, 0, 0, 80e3, &w) == WRC_INVALID_ARGUMENT);
+  wrc_trajectory* bad = tr;
+  CHECK(wrc_trajectory_new(f.ws, "tolerence=1e-6", &bad) == WRC_ERROR);
+  CHECK(last().find("did you mean 'tolerance'") != std::string::npos);
+  CHECK(bad == nullptr);  // *out is reset on failure
+  CHECK(wrc_trajectory_free(tr) == WRC_OK);
+  CHECK(wrc_trajectory_free(tr) == WRC_INVALID_ARGUMENT);
+}
+
+TEST_CASE("rigid contact geometry, tables, conicity and flange measures through the C API") {
+  Fixture f;
+  // The rigid contact, roll fixed: Δr from the touching points' radii.
+  wrc_result* g = nullptr;
+  REQUIRE_MESSAGE(wrc_rigid_contact(f.ws, 3e-3, 0.0, "roll=fixed", &g) == WRC_OK, last());
+  CHECK(number(g, "roll") == 0);
+  CHECK(number(g, "rolling_radius_difference") ==
+        doctest::Approx(number(g, "left.contacts.1.rolling_radius") - number(g, "right.contacts.1.rolling_radius")).epsilon(1e-15));
+  CHECK(number(g, "left.lifted") == 0);
+  wrc_result_free(g);
+  CHECK(wrc_rigid_contact(f.ws, 0.0, 0.0, "roll=sideways", &g) == WRC_ERROR);
+  CHECK(last().find("'roll' must be") != std::string::npos);
+  // A table with its jumps.
+  wrc_result* t = nullptr;
+  REQUIRE_MESSAGE(wrc_geometry_table(f.ws, "y.from=-8e-3 y.to=8e-3 y.step=0.1e-3 progress=false", &t) == WRC_OK, last());
+  size_t rows = 0, jumps = 0;
+  REQUIRE(wrc_result_count(t, "rows", &rows) == WRC_OK);
+  REQUIRE(wrc_result_count(t, "jumps", &jumps) == WRC_OK);
+  CHECK(rows == 161);
+  CHECK(jumps >= 2);
+  CHECK(number(t, "rows.81.y") == doctest::Approx(0).scale(1e-3));
+  wrc_result_free(t);
+  // The wheelset's conicity is the conicity of its own Δr table.
+  wrc_result* c = nullptr;
+  REQUIRE_MESSAGE(wrc_wheelset_conicity(f.ws, "yhat=0.002,0.003", &c) == WRC_OK, last());
+  size_t n = 0;
+  REQUIRE(wrc_result_count(c, "dr.y", &n) == WRC_OK);
+  std::vector<double> y(n), dr(n), tg(2);
+  REQUIRE(wrc_result_numbers(c, "dr.y", y.data(), n, &n) == WRC_OK);
+  REQUIRE(wrc_result_numbers(c, "dr.dr", dr.data(), n, &n) == WRC_OK);
+  REQUIRE(wrc_result_numbers(c, "tan_gamma", tg.data(), 2, &n) == WRC_OK);
+  wrc_result* d = nullptr;
+  REQUIRE_MESSAGE(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=0.002,0.003", &d) == WRC_OK, last());
+  std::vector<double> tg2(2);
+  REQUIRE(wrc_result_numbers(d, "tan_gamma", tg2.data(), 2, &n) == WRC_OK);
+  CHECK(tg2[0] == tg[0]);
+  CHECK(tg2[1] == tg[1]);
+  wrc_result_free(c);
+  wrc_result_free(d);
+  // Bad tables: an error naming it.
+  std::swap(y[3], y[4]);
+  CHECK(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=0.002", &d) == WRC_ERROR);
+  CHECK(last().find("y must increase strictly") != std::string::npos);
+  CHECK(wrc_conicity(nullptr, dr.data(), 3, "yhat=0.002", &d) == WRC_INVALID_ARGUMENT);
+  // Flange measures of the sampled S1002 (every 0.5 mm).
+  wrc_result* m = nullptr;
+  REQUIRE_MESSAGE(wrc_profile_flange_measures(f.wheel, nullptr, &m) == WRC_OK, last());
+  CHECK(number(m, "Sh") == doctest::Approx(0.028).epsilon(1e-4));
+  CHECK(number(m, "Sd") == doctest::Approx(0.0325).epsilon(1e-4));
+  wrc_result_free(m);
+  CHECK(wrc_profile_flange_measures(f.rail, nullptr, &m) == WRC_ERROR);
+}

@@ -289,13 +289,9 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     const std::vector<double> arc = rail_arc(rail, rmin, rmax);
     std::vector<double> S(all.size());
     for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line - rmin)];
-    Eigen::Vector2d o = surface_origin(all, S);
+    const Eigen::Vector2d o = surface_origin(all, S);
     pl = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
     prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
-    if (prev && ws.follow_lattice) {
-      snap_to_lattice(*prev, opt.element, pl);
-      o = pl.O.head<2>();
-    }
     grid = surface_grid(opt, all, S, o, side, st.pose());
     const auto lines = surface_lines(g, st, side, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
     lay_rows(lines, grid, o, surf, pc.h);

@@ -224,15 +224,6 @@ const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspa
   return best;
 }
 
-// Moves the plane's origin within the plane onto the lattice of the previous area's element centres (a tangential
-// shift of less than half an element: the same plane, another sampling), so that a slowly moving contact keeps its
-// grid and the previous pressures start the solve element for element (ContactWorkspace::follow_lattice).
-void snap_to_lattice(const ContactWorkspace::Previous& prev, double element, Plane& pl) {
-  const Eigen::Vector3d d = pl.O - (prev.origin + prev.grid.x0 * prev.t1 + prev.grid.y0 * prev.t2);
-  const double du = d.dot(pl.t1), dv = d.dot(pl.t2);
-  pl.O -= (du - std::round(du / element) * element) * pl.t1 + (dv - std::round(dv / element) * element) * pl.t2;
-}
-
 bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
                 std::vector<double>& start) {
   if (!best) return false;
@@ -382,9 +373,8 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     copy_located(st, side, group, pc);
     return pc;
   }
-  Plane pl = plane_of(all, first);
+  const Plane pl = plane_of(all, first);
   const ContactWorkspace::Previous* prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
-  if (prev && ws.follow_lattice) snap_to_lattice(*prev, opt.element, pl);
 
   PatchContact pc;
   pc.side = side;

@@ -75,11 +75,9 @@ struct LineProfile {
 
 // Separate contact regions of a solution (8-connected, each >= 0.1 % of the force).
 int contact_regions(const contact::NormalSolution& sol);
-// Warm starts (contact.cpp): the last evaluation's area nearest to the plane, the plane's origin moved onto its
-// lattice, the start pressures interpolated from it. A conformal area passes its unrolled coordinates as the plane
-// (origin (x, s, 0), axes e_x, e_y, normal e_z).
+// Warm starts (contact.cpp): the last evaluation's area nearest to the plane, the start pressures interpolated from
+// it. A conformal area passes its unrolled coordinates as the plane (origin (x, s, 0), axes e_x, e_y, normal e_z).
 const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl);
-void snap_to_lattice(const ContactWorkspace::Previous& prev, double element, Plane& pl);
 bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
                 std::vector<double>& start);
 // The located patches of a group and their segments, copied into the result.

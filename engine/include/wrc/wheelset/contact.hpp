@@ -137,10 +137,6 @@ class ContactWorkspace {
   };
   std::array<std::vector<Previous>, 2> previous;  // per side, the areas of the last evaluation
   bool warm_start = true;                         // use them (off to measure what it gains)
-  // Keep each area's grid on the lattice of the previous evaluation's (its plane's origin moved within the plane
-  // by less than half an element), so that a contact moving little between evaluations starts from its previous
-  // pressures element for element. The sampling then depends on the evaluations before: for trajectories.
-  bool follow_lattice = false;
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();
