@@ -227,7 +227,7 @@ void row_wrench(const ConformalSurface& surf, const std::vector<double>& P, cons
 // The surface point at arc coordinate s (grid y) between the rows.
 Eigen::Vector3d surface_point(const ConformalSurface& surf, const contact::Grid& grid, double x, double s) {
   const double f = std::clamp((s - grid.y0) / grid.dy, 0.0, static_cast<double>(grid.ny - 1));
-  const int j = std::min(static_cast<int>(f), grid.ny - 2 < 0 ? 0 : grid.ny - 2);
+  const int j = std::min(static_cast<int>(f), std::max(0, grid.ny - 2));
   const int k = std::min(j + 1, grid.ny - 1);
   const double t = f - j;
   const auto a = static_cast<std::size_t>(j), b = static_cast<std::size_t>(k);

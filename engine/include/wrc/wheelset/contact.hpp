@@ -21,6 +21,10 @@
 // Areas of one wheel are solved together when contact::patches_interact says the separate solutions differ
 // by more than `merge_tolerance` and their normals differ by less than `merge_angle` (one plane must serve
 // both); otherwise each alone.
+//
+// That is the planar path (ContactOptions::surface = planar). The default, conformal, lays each area on the curved
+// surface along the rail's profile instead, with h along the normals and each row's pressure along its own normal
+// (wheelset/conformal.hpp); location, merging, solvers and results are shared.
 #pragma once
 
 #include "wrc/contact/normal.hpp"
