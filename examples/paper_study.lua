@@ -4,6 +4,10 @@
 -- solved (Newton), Y, My and Mz reported; the rigid-contact reference for the same sweep.
 --
 --   wrc run examples/paper_study.lua [out=results] [step_mm=0.1] [threads=N] [grid_mm=0.2] [plots=true]
+--                                    [surface=planar]
+--
+-- surface: the contact areas on one plane each, as the paper ("planar", the default here), or on the curved
+-- surface along the rail's profile ("conformal"); examples/surfaces_study.lua runs both side by side.
 --
 -- Writes into `out`: sweep.csv (elastic), rigid.csv (rigid reference), the figures of the paper as PNG
 -- (fig4_z_roll, fig5_YQ_Mz, fig6_pressure_*, fig7_h_*, fig8_rail_*, rigid_vs_elastic) with their data, and
@@ -23,7 +27,7 @@ local rail = wrc.profile.load("profiles/60e1.lua", {step = 0.1e-3})
 local ws = wrc.wheelset{
   wheel = wheel, rail = rail,
   radius = 0.45, back_to_back = 1.360, gauge = 1.435, gauge_depth = 0.014, cant = 1 / 40,
-  E = 2.1e11, nu = 0.3, grid = grid,
+  E = 2.1e11, nu = 0.3, grid = grid, surface = arg.surface or "planar",
 }
 local Q = 200e3
 

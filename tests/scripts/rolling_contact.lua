@@ -1,8 +1,11 @@
 -- Rolling contact with friction through the Lua API (README "Rolling contact"): S1002 on 60E1, 0.5 mm elements.
---   - the kinematic creepages against the kinematics written out here: spin = omega . n / V, the lateral creepage's
---     response to vy, the longitudinal one's to omega (the lever is the rolling radius);
---   - the fields of an area recomputed from its grids: creep force = Fx t1 + Fy t2, power = sum of the density,
---     adhesion fraction from the map, |traction| <= mu p;
+--   - the kinematic creepages against the kinematics written out here, on planar and on conformal areas (the
+--     default): spin = omega . n / V (n = t1 x t2, the reference point's normal), the lateral creepage's response
+--     to vy, the longitudinal one's to omega (the lever is the rolling radius);
+--   - the rigid slip of every element of the wide, curved patch at y = 0: 1 - R / r0 along the track (R varying
+--     across the patch), the spin of the element's own normal across it on a conformal area;
+--   - the fields of an area recomputed from its grids: creep force = Fx t1 + Fy t2 (planar) or the rows' sums along
+--     their own t2 (conformal), power = sum of the density, adhesion fraction from the map, |traction| <= mu p;
 --   - braking gives Fx < 0 on both wheels; the mirror symmetry of the centred wheelset; full sliding |F| = mu N;
 --   - ws:wheel with friction carries Fz including the creep forces' vertical part; a sweep with kinematics gives
 --     the creep forces of ws:contact at its poses;
@@ -11,7 +14,8 @@ local check = require "wrc.check"
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
-local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3}
+local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3}  -- conformal areas (the default)
+local wp = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3, surface = "planar"}
 local r0 = ws.params.radius
 local V = 100 / 3.6
 
@@ -22,22 +26,29 @@ local function pose(e, extra)
   for k, v in pairs(extra) do t[k] = v end
   return t
 end
+local function cross(a, b)
+  return {x = a.y * b.z - a.z * b.y, y = a.z * b.x - a.x * b.z, z = a.x * b.y - a.y * b.x}
+end
 
--- Kinematic creepages.
-do
-  local c = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02}))
+-- Kinematic creepages, on both surfaces.
+for surface, w in pairs{conformal = ws, planar = wp} do
+  local c = w:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02}))
   for _, side in ipairs{"left", "right"} do
     for i, p in ipairs(c[side].patches) do
-      local name = side .. " area " .. i
+      local name = surface .. " " .. side .. " area " .. i
+      check.ok((p.rows ~= nil) == (surface == "conformal"), name .. ": the surface")
       -- Omega = (V / r0) a + yaw_rate z with a the axle (roll 0.16 mrad: a = (0, cos roll, sin roll))
       local a = {x = 0, y = math.cos(e3.roll), z = math.sin(e3.roll)}
       local om = {x = V / r0 * a.x, y = V / r0 * a.y, z = V / r0 * a.z + 0.02}
-      local n = p.normal
+      local n = cross(p.frame.t1, p.frame.t2)
       check.near(p.creepage.phi, (om.x * n.x + om.y * n.y + om.z * n.z) / V, 1e-12, name .. ": spin = Omega . n / V")
-      local c2 = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, vy = 0.1}))[side].patches[i]
+      if surface == "planar" then
+        check.near(n.x * p.normal.x + n.y * p.normal.y + n.z * p.normal.z, 1, 1e-12, name .. ": t1 x t2 = n")
+      end
+      local c2 = w:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, vy = 0.1}))[side].patches[i]
       local t2 = p.frame.t2
       check.near(c2.creepage.eta - p.creepage.eta, 0.1 * t2.y / V, 1e-12, name .. ": d eta / d vy = t2 . y / V")
-      local c3 = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, omega = V / r0 * 1.001}))[side].patches[i]
+      local c3 = w:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, omega = V / r0 * 1.001}))[side].patches[i]
       local lever = -(c3.creepage.xi - p.creepage.xi) * V / (V / r0 * 0.001)
       check.near(lever, p.rolling_radius, 0.2e-3, name .. ": d xi / d omega = -(rolling radius) / V")
       -- pure rolling at r0, and the yaw rate moving the wheel's contact point at (y_ref - y) by -yaw_rate (y_ref - y)
@@ -48,38 +59,54 @@ do
 end
 
 -- The rigid slip of every element of the wide, curved patch of the centred wheelset (zero yaw, roll ~ 0): the wheel's
--- point at lateral position Y and longitudinal position u moves at V - omega d along the track, d its height below
--- the axle: sqrt(R(Y)^2 - u^2) with R the wheel radius there (the placed profile, interpolated here), less half the
--- overlap h along the normal's vertical part (the contact point lies midway between the surfaces); across the plane
--- the spin gives V phi u. Not the linear field of the creepages: R varies quadratically over the 20 mm wide patch.
-do
-  local c = ws:contact(pose(e0, {V = V, mu = 0.3}))
-  local p = c.left.patches[1]
-  local wy, wz = ws.left_wheel.y, ws.left_wheel.z
-  local function radius(Y)
-    for k = 1, #wy - 1 do
-      if wy[k] <= Y and Y <= wy[k + 1] then
-        return -(wz[k] + (wz[k + 1] - wz[k]) * (Y - wy[k]) / (wy[k + 1] - wy[k]))
-      end
+-- point at lateral position Y and track x moves at V - omega d along the track, d its height below the axle:
+-- sqrt(R(Y)^2 - x^2) with R the wheel radius there (the placed profile, interpolated here), less half the overlap h
+-- along the normal's vertical part (the contact point lies midway between the surfaces). Across the track the spin
+-- gives V phi x, with phi = omega (n . axle) / V of the element's own normal: the plane's n, or the row's on a
+-- conformal area, where it varies across the patch. Not the linear field of the creepages: R varies quadratically
+-- over the 20 mm wide patch.
+local function radius(w, Y)
+  local wy, wz = w.left_wheel.y, w.left_wheel.z
+  for k = 1, #wy - 1 do
+    if wy[k] <= Y and Y <= wy[k + 1] then
+      return -(wz[k] + (wz[k + 1] - wz[k]) * (Y - wy[k]) / (wy[k + 1] - wy[k]))
     end
-    error("Y outside the wheel")
   end
-  local o, t1, t2, n = p.frame.origin, p.frame.t1, p.frame.t2, p.normal
-  local worst, spread, lo, hi = 0, 0, math.huge, -math.huge
+  error("Y outside the wheel")
+end
+for surface, w in pairs{conformal = ws, planar = wp} do
+  local c = w:contact(pose(e0, {V = V, mu = 0.3}))
+  local p = c.left.patches[1]
+  local o, t1, t2 = p.frame.origin, p.frame.t1, p.frame.t2
+  local axle = {y = math.cos(e0.roll), z = math.sin(e0.roll)}
+  local worst, worst_y, spread, lo, hi, spin_lo, spin_hi = 0, 0, 0, math.huge, -math.huge, math.huge, -math.huge
   for j = 1, p.grid.ny do
     for k = 1, p.grid.nx do
       if p.pressure[j][k] > 0 then
         local u, v = p.grid.x0 + (k - 1) * p.grid.dx, p.grid.y0 + (j - 1) * p.grid.dy
-        local Y = o.y + u * t1.y + v * t2.y - e0.y
-        local expected = 1 - (math.sqrt(radius(Y) ^ 2 - u * u) - 0.5 * p.h[j][k] * n.z) / r0
+        local x, Y, n  -- track x, lateral position on the wheel (from the wheelset centre), normal
+        if surface == "planar" then
+          n = p.normal
+          x, Y = o.x + u * t1.x + v * t2.x, o.y + u * t1.y + v * t2.y - e0.y
+        else
+          n = {x = 0, y = p.rows.normal_y[j], z = p.rows.normal_z[j]}
+          x, Y = o.x + u, p.rows.y[j] - p.h[j][k] * n.y - e0.y
+        end
+        local expected = 1 - (math.sqrt(radius(w, Y) ^ 2 - x * x) - 0.5 * p.h[j][k] * n.z) / r0
         worst = math.max(worst, math.abs(p.rigid_slip_x[j][k] / V - expected))
         lo, hi = math.min(lo, expected), math.max(hi, expected)
-        check.near(p.rigid_slip_y[j][k] / V, p.creepage.phi * u, 1e-9, "rigid slip y = phi u")
+        local phi = (n.y * axle.y + n.z * axle.z) / r0
+        spin_lo, spin_hi = math.min(spin_lo, phi), math.max(spin_hi, phi)
+        worst_y = math.max(worst_y, math.abs(p.rigid_slip_y[j][k] / V - phi * x))
       end
     end
   end
-  check.ok(hi - lo > 2e-4, "the longitudinal rigid slip varies across the patch (by " .. (hi - lo) .. ")")
-  check.ok(worst < 2e-6, "rigid slip x = 1 - R / r0 at every element (worst " .. worst .. ")")
+  check.ok(hi - lo > 2e-4, surface .. ": the longitudinal rigid slip varies across the patch (by " .. (hi - lo) .. ")")
+  check.ok(worst < 2e-6, surface .. ": rigid slip x = 1 - R / r0 at every element (worst " .. worst .. ")")
+  check.ok(worst_y < 1e-9, surface .. ": rigid slip y = phi x at every element (worst " .. worst_y .. ")")
+  if surface == "conformal" then
+    check.ok(spin_hi - spin_lo > 0.05, "conformal: the spin varies across the patch (" .. spin_lo .. " .. " .. spin_hi .. " 1/m)")
+  end
 end
 
 -- The fields of an area against its grids.
@@ -89,12 +116,24 @@ do
     local total = {x = 0, y = 0, z = 0}
     for i, p in ipairs(c[side].patches) do
       local name = side .. " area " .. i
-      local t1, t2 = p.frame.t1, p.frame.t2
+      -- the creep force: each row's traction along e_x and its own t2 = n x e_x = (0, n_z, -n_y)
+      local dA = p.grid.dx * p.grid.dy
+      -- at its point (x, y_j, z_j) on the rail's surface, for the moment about the wheelset centre
+      local F, M = {x = 0, y = 0, z = 0}, {x = 0, y = 0, z = 0}
+      for j = 1, p.grid.ny do
+        local t2 = {x = 0, y = p.rows.normal_z[j], z = -p.rows.normal_y[j]}
+        for k = 1, p.grid.nx do
+          local f = {x = p.px[j][k] * dA, y = p.py[j][k] * dA * t2.y, z = p.py[j][k] * dA * t2.z}
+          local m = cross({x = p.frame.origin.x + p.grid.x0 + (k - 1) * p.grid.dx, y = p.rows.y[j] - e3.y,
+                           z = p.rows.z[j] - e3.z}, f)
+          for _, q in ipairs{"x", "y", "z"} do F[q], M[q] = F[q] + f[q], M[q] + m[q] end
+        end
+      end
       for _, k in ipairs{"x", "y", "z"} do
-        check.near(p.creep_force[k], p.Fx * t1[k] + p.Fy * t2[k], 1e-9 * math.abs(p.Fx) + 1e-9, name .. ": creep force " .. k)
+        check.near(p.creep_force[k], F[k], 1e-9 * math.abs(p.Fx) + 1e-9, name .. ": creep force " .. k)
+        check.near(p.creep_moment[k], M[k], 1e-9 * math.abs(p.Fx) + 1e-9, name .. ": creep moment " .. k)
         total[k] = total[k] + p.creep_force[k]
       end
-      local dA = p.grid.dx * p.grid.dy
       local power, fx, inside, adhere = 0, 0, 0, 0
       for j = 1, p.grid.ny do
         for k = 1, p.grid.nx do
@@ -125,6 +164,26 @@ do
   check.ok(n.left.creep_force == nil and n.left.patches[1].Fx == nil, "frictionless: no creep fields")
   for _, k in ipairs{"x", "y", "z"} do
     check.near(c.left.force[k] - c.left.creep_force[k], n.left.force[k], 1e-6 * n.left.force.z, "normal force unchanged " .. k)
+  end
+end
+
+-- On a plane, the creep force is Fx t1 + Fy t2 and its moment about the wheelset centre that of the force at the
+-- plane's origin plus Mz n.
+do
+  local c = wp:contact(pose(e3, {V = V, mu = 0.3}))
+  for _, side in ipairs{"left", "right"} do
+    for i, p in ipairs(c[side].patches) do
+      local t1, t2, n, o = p.frame.t1, p.frame.t2, p.normal, p.frame.origin
+      local F = {}
+      for _, k in ipairs{"x", "y", "z"} do F[k] = p.Fx * t1[k] + p.Fy * t2[k] end
+      local r = {x = o.x, y = o.y - e3.y, z = o.z - e3.z}
+      local M = cross(r, F)
+      for _, k in ipairs{"x", "y", "z"} do
+        check.near(p.creep_force[k], F[k], 1e-9 * math.abs(p.Fx) + 1e-9, "planar " .. side .. " area " .. i .. ": creep force " .. k)
+        check.near(p.creep_moment[k], M[k] + p.Mz * n[k], 1e-9 * math.abs(p.Fx) + 1e-9,
+                   "planar " .. side .. " area " .. i .. ": creep moment " .. k)
+      end
+    end
   end
 end
 

@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace wrc {
@@ -57,6 +58,41 @@ struct AreaSlip {
   double V = 1;
 };
 
+// Where an element of the area is and its tangent frame: on a plane, the plane's frame everywhere and the point in
+// the plane; on a conformal area (wheelset/conformal.hpp), row j's frame (e_x, t2(j), n(j)) and the point on the
+// rail's surface. `contact_point` moves the point to midway between the undeformed surfaces (h: their overlap).
+struct ElementFrame {
+  Eigen::Vector3d t1, t2, n;
+};
+
+class AreaGeometry {
+ public:
+  AreaGeometry(const ContactModel& model, const Pose& pose, const PatchContact& pc)
+      : pc_(pc), wheel_(model.geometry().side[pc.side].wheel), frame_(pose) {}
+  ElementFrame frame(int j) const {
+    if (!pc_.conformal) return {pc_.t1, pc_.t2, pc_.normal};
+    return {Eigen::Vector3d::UnitX(), pc_.conformal->t2(j), pc_.conformal->normal(j)};
+  }
+  Eigen::Vector3d contact_point(int i, int j, double h) const {
+    const contact::Grid& g = pc_.solution.grid;
+    if (pc_.conformal) {  // on the rail's surface: the wheel's is h below it along the row's normal
+      const ConformalSurface& s = *pc_.conformal;
+      const int r = std::clamp(j, 0, s.rows() - 1);  // (the reference point is on the grid; kept on it regardless)
+      return s.point(r, s.x0 + g.x(i)) - 0.5 * h * s.normal(r);
+    }
+    Eigen::Vector3d X = pc_.origin;
+    X += g.x(i) * pc_.t1;
+    X += g.y(j) * pc_.t2;
+    X += (wheel_offset(wheel_, frame_, X, pc_.normal) + 0.5 * h) * pc_.normal;
+    return X;
+  }
+
+ private:
+  const PatchContact& pc_;
+  const WheelCones& wheel_;
+  PoseFrame frame_;
+};
+
 AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq) {
   AreaSlip a;
   if (rq.creepage) {
@@ -66,35 +102,61 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   }
   const Kinematics& k = *rq.kinematics;
   a.V = k.V;
-  const WheelCones& wheel = model.geometry().side[pc.side].wheel;
-  const PoseFrame frame(pose);
+  const AreaGeometry geo(model, pose, pc);
   const VelocityField field = velocity_field(k, model.geometry().track->params.radius, pose);
   const contact::Grid& g = pc.solution.grid;
-  const auto contact_point = [&](double u, double v, double h) -> Eigen::Vector3d {
-    Eigen::Vector3d X = pc.origin;
-    X += u * pc.t1;
-    X += v * pc.t2;
-    X += (wheel_offset(wheel, frame, X, pc.normal) + 0.5 * h) * pc.normal;  // midway between the surfaces
-    return X;
-  };
   const double speed = std::abs(k.V);
-  // The reference point: the plane's origin, with h of the element there (the grid is aligned with it).
+  // The reference point: the grid's origin (the plane's origin; on a conformal area the origin on the surface, at a
+  // row), with h of the element there (the grid is aligned with it).
   const int i0 = static_cast<int>(std::lround(-g.x0 / g.dx)), j0 = static_cast<int>(std::lround(-g.y0 / g.dy));
   const bool inside = i0 >= 0 && j0 >= 0 && i0 < g.nx && j0 < g.ny;
   const double h0 = inside ? pc.h[static_cast<std::size_t>(g.index(i0, j0))] : 0.0;
-  const Eigen::Vector3d v0 = field.at(contact_point(0, 0, h0));
-  a.creepages = {v0.dot(pc.t1) / speed, v0.dot(pc.t2) / speed, field.omega.dot(pc.normal) / speed};
+  const ElementFrame f0 = geo.frame(std::clamp(j0, 0, g.ny - 1));
+  const Eigen::Vector3d v0 = field.at(geo.contact_point(i0, j0, h0));
+  a.creepages = {v0.dot(f0.t1) / speed, v0.dot(f0.t2) / speed, field.omega.dot(f0.n) / speed};
   a.extra_x.assign(static_cast<std::size_t>(g.size()), 0.0);
   a.extra_y.assign(a.extra_x.size(), 0.0);
-  for (int j = 0; j < g.ny; ++j)
+  for (int j = 0; j < g.ny; ++j) {
+    const ElementFrame f = geo.frame(j);
     for (int i = 0; i < g.nx; ++i) {
       const auto q = static_cast<std::size_t>(g.index(i, j));
       if (!(pc.solution.pressure[q] > 0)) continue;  // the slip matters on the contact only
-      const Eigen::Vector3d v = field.at(contact_point(g.x(i), g.y(j), pc.h[q]));
-      a.extra_x[q] = v.dot(pc.t1) / speed - (a.creepages.xi - a.creepages.phi * g.y(j));
-      a.extra_y[q] = v.dot(pc.t2) / speed - (a.creepages.eta + a.creepages.phi * g.x(i));
+      const Eigen::Vector3d v = field.at(geo.contact_point(i, j, pc.h[q]));
+      a.extra_x[q] = v.dot(f.t1) / speed - (a.creepages.xi - a.creepages.phi * g.y(j));
+      a.extra_y[q] = v.dot(f.t2) / speed - (a.creepages.eta + a.creepages.phi * g.x(i));
     }
+  }
   return a;
+}
+
+// The creep force (track frame) and its moment about c of the tangential tractions: on a plane fx t1 + fy t2 at the
+// origin plus mz n; on a conformal area each element's traction px e_x + py t2(j) at its point on the rail's surface
+// (as the pressure acts there along n(j)), summed per row.
+void creep_wrench(const PatchContact& pc, const contact::TangentialSolution& s, const Eigen::Vector3d& c,
+                  Eigen::Vector3d& force, Eigen::Vector3d& moment) {
+  if (!pc.conformal) {
+    force = s.fx * pc.t1 + s.fy * pc.t2;
+    moment = (pc.origin - c).cross(force) + s.mz * pc.normal;
+    return;
+  }
+  const ConformalSurface& surf = *pc.conformal;
+  const contact::Grid& g = s.grid;
+  const double dA = g.element_area();
+  force.setZero();
+  moment.setZero();
+  for (int j = 0; j < g.ny; ++j) {
+    double fx = 0, fy = 0, qy = 0;  // row sums: sum px dA, sum py dA, sum py x dA (x: track x)
+    for (int i = 0; i < g.nx; ++i) {
+      const auto k = static_cast<std::size_t>(g.index(i, j));
+      fx += s.px[k] * dA;
+      fy += s.py[k] * dA;
+      qy += s.py[k] * (surf.x0 + g.x(i)) * dA;
+    }
+    if (fx == 0 && fy == 0) continue;
+    const Eigen::Vector3d t2 = surf.t2(j), F = fx * Eigen::Vector3d::UnitX() + fy * t2;
+    force += F;
+    moment += (surf.point(j, 0.0) - c).cross(F) + Eigen::Vector3d::UnitX().cross(t2) * qy;
+  }
 }
 
 }  // namespace
@@ -136,8 +198,7 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   r.fx = s.fx;
   r.fy = s.fy;
   r.mz = s.mz;
-  r.force = s.fx * pc.t1 + s.fy * pc.t2;
-  r.moment = (pc.origin - Eigen::Vector3d(0, pose.y, pose.z)).cross(r.force) + s.mz * pc.normal;
+  creep_wrench(pc, s, Eigen::Vector3d(0, pose.y, pose.z), r.force, r.moment);
   r.adhesion = s.adhesion_fraction();
   r.power = std::abs(slip.V) * s.power_per_speed;
   pc.force += r.force;

@@ -12,6 +12,12 @@
 // phi) are this slip at the plane's origin (the reference point) and the spin omega . n / |V|. Materials roll through
 // the contact toward -t1 when V > 0 (rolling direction +1), toward +t1 when V < 0.
 //
+// On a conformal area (wheelset/conformal.hpp) every element has its row's frame (e_x, t2(j), n(j)) and its contact
+// point is its point on the rail's surface moved along -n(j) by h / 2; the reference point is the grid's origin (at
+// a row, j0), its frame (e_x, t2(j0), n(j0)); the slip and traction components are along e_x and each row's t2, on
+// the unrolled grid (x, s), with the flat half-space's coefficients as for the normal problem (docs/design.md
+// section 2).
+//
 // Or the creepages are prescribed (`creepage`), the same at every area's reference point, with the linear field
 // w = (xi - phi y, eta + phi x) over the area; V then only scales the slip velocities and the power (1 m/s when not
 // given).
@@ -59,10 +65,11 @@ struct PatchRolling {
   RollingMethod method = RollingMethod::exact;
   contact::Friction friction;
   double V = 0;                        // m/s, the speed that scales slip velocities and power
-  contact::Creepages creepage;         // at the reference point (the plane's origin): -, -, 1/m
-  double fx = 0, fy = 0;               // N, contact frame (t1, t2), on the wheel
-  double mz = 0;                       // N m, about the reference point along n
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, track frame: fx t1 + fy t2
+  contact::Creepages creepage;         // at the reference point (the grid's origin): -, -, 1/m
+  double fx = 0, fy = 0;               // N, contact frame (t1, t2), on the wheel (conformal: sums along e_x and
+                                       // along each row's t2)
+  double mz = 0;                       // N m, about the reference point along n (conformal: in the unrolled (x, s))
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, track frame: fx t1 + fy t2 (conformal: sum over the rows)
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, of the tangential tractions about the wheelset centre
   double adhesion = 0;                 // fraction of the contact area in adhesion
   double power = 0;                    // W: frictional power, |V| sum -(p . s) dA >= 0
