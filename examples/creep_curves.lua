@@ -10,7 +10,8 @@
 --   wrc run examples/creep_curves.lua [out=results/creep] [grid_mm=0.2] [points=20] [plots=true]
 --
 -- Writes into `out`: creep_curves.csv (every point of the curves: y_mm, curve, creepage, F / (mu N) exact and
--- FASTSIM), curves_xi.png, curves_eta.png, curves_spin.png, traction.csv (the area's grids), traction_*.png and
+-- FASTSIM), curves_xi.png, curves_eta.png, curves_spin.png, traction.csv (the area's grids: x_mm, y_mm are the grid's
+-- coordinates, on the default conformal area x along the track and s along the rail's profile), traction_*.png and
 -- summary.txt (the numbers of README "Rolling contact").
 local out = require "wrc.output"
 
@@ -98,6 +99,10 @@ note("traction picture: y = 3 mm, V = 100 km/h, pure rolling at r0: xi = %.3e, e
      .. "Fx = %.2f kN, Fy = %.2f kN, Mz = %.1f N m, |F| / (mu N) = %.3f, adhesion %.2f, power %.0f W",
      p.creepage.xi, p.creepage.eta, p.creepage.phi, p.Fx / 1e3, p.Fy / 1e3, p.Mz,
      math.sqrt(p.Fx ^ 2 + p.Fy ^ 2) / (mu * p.normal_force), p.adhesion, p.power)
+-- The area's grid: on a conformal area (the default) x along the track and s, the arc length along the rail's profile,
+-- from the reference point; on a plane x along t1, y along t2.
+local xlab = p.rows and "x along the track (mm)" or "x along t1 (mm)"
+local ylab = p.rows and "s along the rail's profile (mm)" or "y along t2 (mm)"
 local gx, gy = {}, {}
 for i = 1, p.grid.nx do gx[i] = (p.grid.x0 + (i - 1) * p.grid.dx) * 1e3 end
 for j = 1, p.grid.ny do gy[j] = (p.grid.y0 + (j - 1) * p.grid.dy) * 1e3 end
@@ -154,12 +159,12 @@ if plots then
   plot("curves_xi", {"xi"}, "-Fx / (mu N)", "S1002 / 60E1, 100 km/h, mu = 0.3: longitudinal creep force")
   plot("curves_eta", {"eta"}, "-Fy / (mu N)", "lateral creep force, no spin")
   plot("curves_spin", {"eta", "eta_spin"}, "-Fy / (mu N)", "lateral creep force, with the spin of the area at 100 km/h")
-  out.map{file = dir .. "/traction_magnitude.png", x = gx, y = gy, value = tmag, xlabel = "x along t1 (mm)",
-          ylabel = "y along t2 (mm)", cblabel = "|p_t| (MPa)", title = "y = 3 mm, left area: tangential traction"}
-  out.map{file = dir .. "/traction_utilisation.png", x = gx, y = gy, value = ratio, xlabel = "x along t1 (mm)",
-          ylabel = "y along t2 (mm)", cblabel = "|p_t| / (mu p)", title = "traction / bound (1 = slip)"}
-  out.map{file = dir .. "/adhesion_slip.png", x = gx, y = gy, value = p.adhesion_map, xlabel = "x along t1 (mm)",
-          ylabel = "y along t2 (mm)", cblabel = "0 outside, 1 adhesion, 2 slip",
+  out.map{file = dir .. "/traction_magnitude.png", x = gx, y = gy, value = tmag, xlabel = xlab,
+          ylabel = ylab, cblabel = "|p_t| (MPa)", title = "y = 3 mm, left area: tangential traction"}
+  out.map{file = dir .. "/traction_utilisation.png", x = gx, y = gy, value = ratio, xlabel = xlab,
+          ylabel = ylab, cblabel = "|p_t| / (mu p)", title = "traction / bound (1 = slip)"}
+  out.map{file = dir .. "/adhesion_slip.png", x = gx, y = gy, value = p.adhesion_map, xlabel = xlab,
+          ylabel = ylab, cblabel = "0 outside, 1 adhesion, 2 slip",
           title = "y = 3 mm, left area: adhesion (blue) and slip (red); rolling toward +x",
           palette = "defined (0 'white', 1 '#3060c0', 2 '#d03020')", extra = {"set cbrange [0:2]"}}
   local density = {}
@@ -167,7 +172,7 @@ if plots then
     density[j] = {}
     for i = 1, p.grid.nx do density[j][i] = p.power_density[j][i] * 1e-6 end
   end
-  out.map{file = dir .. "/power_density.png", x = gx, y = gy, value = density, xlabel = "x along t1 (mm)",
-          ylabel = "y along t2 (mm)", cblabel = "W/mm^2", title = "frictional power density"}
+  out.map{file = dir .. "/power_density.png", x = gx, y = gy, value = density, xlabel = xlab,
+          ylabel = ylab, cblabel = "W/mm^2", title = "frictional power density"}
 end
 print("written to " .. dir)

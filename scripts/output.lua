@@ -8,7 +8,13 @@
 --   out.map{file = "results/p.png", x = xs, y = ys, value = grid, ...}   -- grid[j][i] at (x[i], y[j])
 local M = {}
 
-local function quote(s) return "'" .. tostring(s):gsub("'", "'\\''") .. "'" end
+local function quote(s) return "'" .. tostring(s):gsub("'", "'\\''") .. "'" end  -- for the shell
+-- for gnuplot: '...' takes any text but a quote; with one, "..." with \\ and \" escaped
+local function gp(s)
+  s = tostring(s)
+  if not s:find("'", 1, true) then return "'" .. s .. "'" end
+  return '"' .. s:gsub('\\', '\\\\'):gsub('"', '\\"') .. '"'
+end
 
 -- mkdir -p
 function M.mkdir(path)
@@ -82,12 +88,12 @@ end
 local function header(o)
   local s = {}
   s[#s + 1] = string.format("set terminal pngcairo size %d,%d enhanced font 'Sans,10'", o.width or 900, o.height or 600)
-  s[#s + 1] = "set output " .. quote(o.file)
-  if o.title then s[#s + 1] = "set title " .. quote(o.title) .. " noenhanced" end
-  if o.xlabel then s[#s + 1] = "set xlabel " .. quote(o.xlabel) end
-  if o.ylabel then s[#s + 1] = "set ylabel " .. quote(o.ylabel) end
-  if o.zlabel then s[#s + 1] = "set zlabel " .. quote(o.zlabel) end
-  if o.cblabel then s[#s + 1] = "set cblabel " .. quote(o.cblabel) end
+  s[#s + 1] = "set output " .. gp(o.file)
+  if o.title then s[#s + 1] = "set title " .. gp(o.title) .. " noenhanced" end
+  if o.xlabel then s[#s + 1] = "set xlabel " .. gp(o.xlabel) end
+  if o.ylabel then s[#s + 1] = "set ylabel " .. gp(o.ylabel) end
+  if o.zlabel then s[#s + 1] = "set zlabel " .. gp(o.zlabel) end
+  if o.cblabel then s[#s + 1] = "set cblabel " .. gp(o.cblabel) end
   s[#s + 1] = "set grid"
   for _, line in ipairs(o.extra or {}) do s[#s + 1] = line end
   return s
@@ -111,8 +117,8 @@ function M.plot(o)
       end
     end
     f:write("\n\n")
-    parts[#parts + 1] = string.format("%s index %d using 1:2 with %s title %s", quote(data), k - 1,
-                                      se.style or "lines", quote(se.title or ""))
+    parts[#parts + 1] = string.format("%s index %d using 1:2 with %s title %s", gp(data), k - 1,
+                                      se.style or "lines", gp(se.title or ""))
   end
   f:close()
   s[#s + 1] = "plot " .. table.concat(parts, ", \\\n     ")
@@ -137,11 +143,11 @@ function M.map(o)
   if o.view3d then
     s[#s + 1] = "set pm3d depthorder"
     s[#s + 1] = "set view " .. (o.view or "55,30")
-    s[#s + 1] = "splot " .. quote(data) .. " using 1:2:3 with pm3d notitle"
+    s[#s + 1] = "splot " .. gp(data) .. " using 1:2:3 with pm3d notitle"
   else
     s[#s + 1] = "set view map"
     s[#s + 1] = "set size ratio -1"
-    s[#s + 1] = "splot " .. quote(data) .. " using 1:2:3 with pm3d notitle"
+    s[#s + 1] = "splot " .. gp(data) .. " using 1:2:3 with pm3d notitle"
   end
   gnuplot(o.file:gsub("%.png$", "") .. ".gp", table.concat(s, "\n") .. "\n")
 end

@@ -26,4 +26,8 @@ local png = assert(io.open(dir .. "/p.png", "rb")):read("a")
 check.ok(#png > 1000 and png:sub(2, 4) == "PNG", "a PNG was written")
 out.map{file = dir .. "/m.png", x = {0, 1}, y = {0, 1, 2}, value = {{0, 1}, {1, 2}, {2, 3}}}
 check.ok(assert(io.open(dir .. "/m.png", "rb")):read("a"):sub(2, 4) == "PNG", "a map PNG was written")
+-- Labels with quotes (gnuplot doubles a quote inside '...', the shell's escape is not its own).
+out.map{file = dir .. "/q.png", x = {0, 1}, y = {0, 1}, value = {{0, 1}, {1, 2}}, title = "the rail's profile",
+        xlabel = "it's x", ylabel = "s along the rail's profile (mm)", cblabel = "'quoted'"}
+check.ok(assert(io.open(dir .. "/q.png", "rb")):read("a"):sub(2, 4) == "PNG", "labels with quotes")
 print("output ok")
