@@ -695,6 +695,7 @@ void describe(const RigidResult& r, FieldSink& out) {
 }
 
 void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out) {
+  out.integer("case", sweep.index[i] + 1);
   describe(sweep.elastic[i], out);
   if (sweep.rigid[i]) {
     out.begin("rigid");
