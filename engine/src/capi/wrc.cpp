@@ -365,7 +365,7 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
     const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
     std::vector<wrc::Start> starts;
     if (auto s = r.table("start")) {
-      starts.push_back(wrc::Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt});
+      starts.push_back(wrc::Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
       s->finish();
     }
     wrc::ContactRequest req;

@@ -243,16 +243,34 @@ void deconvolve(const InfluenceSpectrum& s, const Grid& grid, const double* r, d
 std::shared_ptr<const InfluenceSpectrum> InfluenceCache::get(const Grid& grid, InfluenceSpectrum::Kind kind) const {
   validate(grid, "InfluenceCache");
   const bool linear = kind == InfluenceSpectrum::Kind::linear;
-  const auto key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy,
-                                   linear ? padded_size(grid.nx) : fft_size(grid.nx),
-                                   linear ? padded_size(grid.ny) : fft_size(grid.ny));
+  const Key key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy,
+                                  linear ? padded_size(grid.nx) : fft_size(grid.nx),
+                                  linear ? padded_size(grid.ny) : fft_size(grid.ny));
   std::lock_guard lock(mutex_);
-  if (auto it = entries_.find(key); it != entries_.end()) return it->second;
-  if (entries_.size() >= max_entries_) entries_.clear();  // spectra in use stay alive through their owners
+  if (auto it = entries_.find(key); it != entries_.end()) {
+    uses_.splice(uses_.begin(), uses_, it->second.use);
+    return it->second.spectrum;
+  }
   auto spectrum = std::make_shared<const InfluenceSpectrum>(kind, grid.dx, grid.dy, std::get<3>(key),
                                                             std::get<4>(key), planning_);
-  entries_.emplace(key, spectrum);
+  const std::size_t bytes = sizeof(double) * (2 * static_cast<std::size_t>(spectrum->complex_size()) +
+                                              static_cast<std::size_t>(spectrum->table().mx()) * spectrum->table().my());
+  while (!uses_.empty() && bytes_ + bytes > max_bytes_) {  // evict the least recently used
+    const auto old = entries_.find(uses_.back());
+    bytes_ -= old->second.bytes;
+    entries_.erase(old);
+    uses_.pop_back();
+  }
+  uses_.push_front(key);
+  entries_.emplace(key, Entry{spectrum, bytes, uses_.begin()});
+  bytes_ += bytes;
+  ++built_;
   return spectrum;
+}
+
+std::size_t InfluenceCache::built() const {
+  std::lock_guard lock(mutex_);
+  return built_;
 }
 
 std::size_t InfluenceCache::size() const {

@@ -216,18 +216,17 @@ class EquilibriumSolver {
   // miss where a conformal flange-root contact turns and moves with the pose (they are 10-20 % off there, which
   // made plain Newton converge linearly). A fresh Jacobian is computed when a step finds no descent or the
   // regime (a wheel lifted or not) changes. Leaves the last iterate in `cur`; false with a reason in `why`.
-  bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, Iterate& cur,
-              std::string& why) {
+  bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, bool J0_lifted,
+              Iterate& cur, std::string& why) {
     cur = evaluate(y, z, roll);
     std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
-    if (J0 && cur.lifted) J = J0;
-    bool J_difference = J.has_value();  // J comes from differences (worth handing on)
+    if (J0 && J0_lifted == cur.lifted) J = J0;
     for (int k = 0;; ++k) {
       if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
       res_.iterations = k;
       if (converged(cur)) {
-        if (J && J_lifted && J_difference) res_.jacobian = J;
+        if (J) res_.jacobian = J, res_.jacobian_lifted = J_lifted;  // for a neighbouring case (a sweep)
         return true;
       }
       if (k >= opt_.max_iterations) {
@@ -247,7 +246,6 @@ class EquilibriumSolver {
       if (!J || J_lifted != cur.lifted) {
         J = jacobian(y, cur);
         J_lifted = cur.lifted;
-        J_difference = cur.lifted;
         fresh = true;
       }
       Eigen::Vector2d dx = -J->fullPivLu().solve(cur.R);
@@ -341,7 +339,7 @@ class EquilibriumSolver {
         // Polish with Newton from the bracketed point.
         std::string w;
         Iterate p;
-        if (newton(y, cur.z, cur.roll, std::nullopt, p, w)) cur = std::move(p);
+        if (newton(y, cur.z, cur.roll, std::nullopt, false, p, w)) cur = std::move(p);
       }
       if (!converged(cur)) why = "nested solve: residuals above tolerance";
       return converged(cur);
@@ -360,7 +358,7 @@ class EquilibriumSolver {
       return false;
     }
     std::string w;
-    if (newton(y, rigid->z - opt_.initial_approach, rigid->roll, std::nullopt, cur, w)) return true;
+    if (newton(y, rigid->z - opt_.initial_approach, rigid->roll, std::nullopt, false, cur, w)) return true;
     why.push_back("from the rigid position: " + w);
     return false;
   }
@@ -376,7 +374,7 @@ class EquilibriumSolver {
     }
     Iterate path;
     std::string w;
-    if (!newton(0.0, r0.z - opt_.initial_approach, r0.roll, std::nullopt, path, w)) {
+    if (!newton(0.0, r0.z - opt_.initial_approach, r0.roll, std::nullopt, false, path, w)) {
       why.push_back("continuation: no equilibrium at y = 0: " + w);
       return false;
     }
@@ -387,8 +385,8 @@ class EquilibriumSolver {
       // Linear predictor through the last two points of the path.
       const double s = y_at != y_prev ? (y_next - y_at) / (y_at - y_prev) : 0.0;
       Iterate next;
-      if (newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), std::nullopt, next, w) ||
-          newton(y_next, path.z, path.roll, std::nullopt, next, w)) {
+      if (newton(y_next, path.z + s * (path.z - z_prev), path.roll + s * (path.roll - roll_prev), std::nullopt, false, next, w) ||
+          newton(y_next, path.z, path.roll, std::nullopt, false, next, w)) {
         y_prev = y_at;
         z_prev = path.z;
         roll_prev = path.roll;
@@ -526,7 +524,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     // 1. The given starts (neighbouring solutions, predictions), in order.
     for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
       std::string w;
-      ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, cur, w);
+      ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, starts[k].jacobian_lifted, cur, w);
       if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
     }
     // 2. Near the centre, the rigid position pressed in a little; farther out, continuation first.
@@ -543,56 +541,93 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
   return res;
 }
 
+namespace {
+
+// The height at which one wheel just touches its rail (radial overlap 0) at y, yaw and roll. The overlap of the
+// deepest line falls almost one for one as z rises: Illinois steps on a wide bracket take a few evaluations.
+double touch_height(const GeometryModel& g, int side, double y, double yaw, double roll) {
+  auto pen = [&](double z) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
+  const double fa = pen(-0.02), fb = pen(0.02);
+  if (!(fa > 0 && fb < 0)) fail("wheel: the {} wheel does not touch its rail within z = +-20 mm", side_name(side));
+  bool ok = false;
+  return bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-12, 200, ok);
+}
+
+// An approach beyond this (m) is no elastic contact of wheel and rail: a load that needs it is hopeless.
+constexpr double kMaxApproach = 3e-3;
+
+
+}  // namespace
+
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
-                        ContactWorkspace& ws, const EquilibriumOptions& opt) {
+                        ContactWorkspace& ws, const EquilibriumOptions& opt, std::optional<double> start) {
   check_case(y, yaw, std::max(Fz, 1.0), "wheel");
   if (!std::isfinite(roll) || std::abs(roll) > 0.3) fail("wheel: roll = {} rad must be finite and within +-0.3", roll);
   if (!std::isfinite(Fz) || !(Fz > 0)) fail("wheel: Fz = {} N must be a positive number", Fz);
   WheelResult res;
   res.side = side;
   res.Fz = Fz;
-  // Start: the height at which this wheel touches, pressed in a little.
-  auto pen = [&](double z) { return deepest_point(model.geometry(), side, {y, z, roll, yaw}).overlap; };
-  double fa = pen(-0.02), fb = pen(0.02);
-  if (!(fa > 0 && fb < 0)) fail("wheel: the {} wheel does not touch its rail within z = +-20 mm", side_name(side));
-  bool ok = false;
-  double z = bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-13, 200, ok) - opt.initial_approach;
+  const double z_touch = touch_height(model.geometry(), side, y, yaw, roll);
   ContactRequest req;
-  req.sensitivity = true;
   req.only_side = side;
-  auto fz = [&](const ContactResult& c) { return c.wheel[side].force.z(); };
-  ContactResult cur = evaluate_contact(model, {y, z, roll, yaw}, ws, req);
-  for (int it = 0;; ++it) {
-    res.iterations = it;
-    res.residual = fz(cur) - Fz;
-    if (std::abs(res.residual) <= opt.force_tolerance * Fz) {
-      res.converged = true;
-      break;
-    }
-    if (it >= opt.max_iterations) {
-      res.message = fmt::format("no convergence in {} iterations (residual {:.3g} N)", opt.max_iterations, res.residual);
-      break;
-    }
-    const double k = cur.wheel[side].sensitivity(2, 0);  // dFz/dz (< 0: pressing down raises the force)
-    double dz = k < 0 ? -res.residual / k : -opt.max_step_z;
-    dz = std::clamp(dz, -opt.max_step_z, opt.max_step_z);
-    double t = 1;
-    bool accepted = false;
-    for (int kk = 0; kk < 12; ++kk, t *= 0.5) {
-      ContactResult trial = evaluate_contact(model, {y, z + t * dz, roll, yaw}, ws, req);
-      if (std::abs(fz(trial) - Fz) < (1 - 1e-4 * t) * std::abs(res.residual)) {
-        z += t * dz;
-        cur = std::move(trial);
-        accepted = true;
+  req.tolerance = std::max(opt.normal_tolerance, model.options().normal.tolerance);
+  // phi(a) = Fz(a)^(2/3) - Fz^(2/3) of the approach a = z_touch - z is close to linear and passes through
+  // (0, -Fz^(2/3)): a Hertz contact has F ~ a^1.5 (a conformal one grows a little faster or slower). Secant steps
+  // on it, kept inside the bracket once the load is passed, converge in a few evaluations without sensitivities.
+  // Far from the load (> 5 %) the normal problems are solved to 1e-3 only (inexact steps); an evaluation that
+  // lands within 10x that of the load is repeated at normal_tolerance before it may count or bracket.
+  ContactResult cur;
+  const double target = std::cbrt(Fz * Fz);
+  const double tight = std::max(opt.normal_tolerance, model.options().normal.tolerance), loose = std::max(tight, 1e-3);
+  int evaluations = 0;
+  auto evaluate = [&](double a, double tolerance) {
+    if (evaluations++ >= opt.max_evaluations)
+      throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", opt.max_evaluations));
+    if (a > kMaxApproach)
+      throw Error(fmt::format("Fz = {:.6g} N needs an approach beyond {} mm (the force is {:.6g} N at {:.3f} mm): no "
+                              "elastic contact carries it", Fz, kMaxApproach * 1e3, cur.wheel[side].force.z(), a * 1e3));
+    ContactRequest req;
+    req.only_side = side;
+    req.tolerance = tolerance;
+    cur = evaluate_contact(model, {y, z_touch - a, roll, yaw}, ws, req);
+    res.z = z_touch - a;
+    return (cur.wheel[side].force.z() - Fz) / Fz;  // the relative force error
+  };
+  auto phi = [&](double a, double tolerance) {
+    double e = evaluate(a, tolerance);
+    if (tolerance > tight && std::abs(e) < 10 * tolerance) evaluate(a, tight);
+    return std::cbrt(std::pow(std::max(cur.wheel[side].force.z(), 0.0), 2)) - target;
+  };
+  const double ftol = (2.0 / 3.0) * opt.force_tolerance * target;  // |F - Fz| <= tol Fz, in phi's units
+  double a0 = 0, f0 = -target;                                       // the exact point of no contact
+  double a1 = start && z_touch - *start > 0 ? z_touch - *start : opt.initial_approach;
+  double lo = 0, hi = INFINITY;
+  try {
+    double f1 = phi(a1, start ? tight : loose);
+    for (int it = 0; std::abs(f1) > ftol; ++it) {
+      if (it >= opt.max_iterations) {
+        res.message = fmt::format("no convergence in {} iterations", opt.max_iterations);
         break;
       }
+      (f1 < 0 ? lo : hi) = a1;
+      double a = f1 != f0 ? a1 - f1 * (a1 - a0) / (f1 - f0) : 2 * a1;
+      if (!std::isfinite(hi)) a = std::clamp(a, lo, 4 * a1);
+      if (std::isfinite(hi) && !(a > lo && a < hi)) a = 0.5 * (lo + hi);
+      const double error = std::abs(cur.wheel[side].force.z() - Fz) / Fz;
+      a0 = a1, f0 = f1, a1 = a;
+      f1 = phi(a1, error > 0.05 ? loose : tight);
     }
-    if (!accepted) {
-      res.message = fmt::format("no descent (residual {:.3g} N)", res.residual);
-      break;
-    }
+    res.converged = std::abs(f1) <= ftol;
+    // The result at the model's own tolerance when the steps used a looser one: the forces are those
+    // evaluate_contact gives at the solved pose (from the converged pressures, a few CG iterations).
+    const double model_tolerance = model.options().normal.tolerance;
+    if (res.converged && opt.final_at_model_tolerance && tight > model_tolerance) evaluate(a1, model_tolerance);
+  } catch (const EvaluationBudget& e) {
+    res.message = e.what();
   }
-  res.z = z;
+  res.iterations = evaluations;
+  res.residual = cur.wheel[side].force.z() - Fz;
+  res.converged = res.converged && std::abs(res.residual) <= opt.force_tolerance * Fz;
   res.wheel = std::move(cur.wheel[side]);
   return res;
 }

@@ -81,6 +81,7 @@ class SweepRun {
     struct Point {
       double y, z, roll;
       std::optional<Eigen::Matrix2d> jacobian;
+      bool lifted;
     };
     std::vector<Point> path;
     const bool has_lead = chunk.solve.size() > chunk.report.size();
@@ -93,14 +94,14 @@ class SweepRun {
         const Point& a = path[path.size() - 2];
         const Point& b = path.back();
         const double s = (b.y != a.y) ? (yc - b.y) / (b.y - a.y) : 0.0;
-        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll), b.jacobian});
+        starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll), b.jacobian, b.lifted});
       }
-      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt});
+      if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt, false});
       if (k <= 1) ws.forget();
       const bool reported = !(k == 0 && has_lead);
       const int slot = reported ? slot_[static_cast<std::size_t>(c)] : -1;
       EquilibriumResult& e = reported ? out_.elastic[static_cast<std::size_t>(slot)] : lead;
-      if (solve_case(ws, c, slot, e, starts, reported)) path.push_back({yc, e.z, e.roll, e.jacobian});
+      if (solve_case(ws, c, slot, e, starts, reported)) path.push_back({yc, e.z, e.roll, e.jacobian, e.jacobian_lifted});
     }
   }
 

@@ -86,7 +86,9 @@ class NativeStrategy final : public LocationStrategy {
   const StrategyInfo& info() const override { return info_; }
 
   SideDiscretisation discretise(int, const Profile& wheel, const Profile& rail) const override {
-    SideDiscretisation d{wheel, rail};
+    SideDiscretisation d;
+    d.wheel = wheel;
+    d.rail = rail;
     for (const Component* c : comps_) {
       if (c->name == "uniform") {
         d.wheel = resample_arc(d.wheel, option("step"));

@@ -1,5 +1,7 @@
 #include "lua/results_binding.hpp"
 
+#include <new>
+
 namespace wrc::lua {
 
 LuaSink::LuaSink(lua_State* L) : L_(L) {
@@ -51,16 +53,62 @@ void LuaSink::integers(std::string_view key, const long long* v, std::size_t n) 
   set(key);
 }
 
-void LuaSink::grid(std::string_view key, const double* v, int nx, int ny) {
-  lua_createtable(L_, ny, 0);
-  for (int j = 0; j < ny; ++j) {
-    lua_createtable(L_, nx, 0);
-    for (int i = 0; i < nx; ++i) {
-      lua_pushnumber(L_, v[static_cast<std::size_t>(nx) * j + i]);
-      lua_rawseti(L_, -2, i + 1);
-    }
-    lua_rawseti(L_, -2, j + 1);
+namespace {
+
+// A grid of a result as userdata, its rows built as Lua tables only when read (g[j][i], #g = ny, g.nx, g.ny):
+// most results' grids are never read, and building them cost more than the evaluation's own result.
+const char* const kGridType = "wrc.Grid";
+
+struct LuaGrid {
+  std::vector<double> values;  // v[i + nx j]
+  int nx = 0, ny = 0;
+};
+
+int grid_index(lua_State* L) {
+  auto* g = static_cast<LuaGrid*>(luaL_checkudata(L, 1, kGridType));  // longjmp-safe: no C++ objects alive
+  if (lua_type(L, 2) == LUA_TSTRING) {
+    const std::string_view key = lua_tostring(L, 2);
+    if (key == "nx" || key == "ny") return lua_pushinteger(L, key == "nx" ? g->nx : g->ny), 1;
+    return lua_pushnil(L), 1;
   }
+  const lua_Integer j = lua_isinteger(L, 2) ? lua_tointeger(L, 2) : 0;
+  if (j < 1 || j > g->ny) return lua_pushnil(L), 1;
+  lua_getiuservalue(L, 1, 1);  // the rows built so far
+  if (lua_rawgeti(L, -1, j) != LUA_TNIL) return 1;
+  lua_pop(L, 1);
+  lua_createtable(L, g->nx, 0);
+  const double* row = g->values.data() + static_cast<std::size_t>(g->nx) * (j - 1);
+  for (int i = 0; i < g->nx; ++i) {
+    lua_pushnumber(L, row[i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+  lua_pushvalue(L, -1);
+  lua_rawseti(L, -3, j);
+  return 1;
+}
+
+int grid_len(lua_State* L) {
+  lua_pushinteger(L, static_cast<LuaGrid*>(luaL_checkudata(L, 1, kGridType))->ny);  // longjmp-safe: no C++ objects
+  return 1;
+}
+
+int grid_gc(lua_State* L) {
+  static_cast<LuaGrid*>(lua_touserdata(L, 1))->~LuaGrid();
+  return 0;
+}
+
+}  // namespace
+
+void LuaSink::grid(std::string_view key, const double* v, int nx, int ny) {
+  auto* g = static_cast<LuaGrid*>(lua_newuserdatauv(L_, sizeof(LuaGrid), 1));
+  new (g) LuaGrid{std::vector<double>(v, v + static_cast<std::size_t>(nx) * ny), nx, ny};
+  if (luaL_newmetatable(L_, kGridType)) {
+    const luaL_Reg meta[] = {{"__index", grid_index}, {"__len", grid_len}, {"__gc", grid_gc}, {nullptr, nullptr}};
+    luaL_setfuncs(L_, meta, 0);
+  }
+  lua_setmetatable(L_, -2);
+  lua_createtable(L_, ny, 0);
+  lua_setiuservalue(L_, -2, 1);
   set(key);
 }
 

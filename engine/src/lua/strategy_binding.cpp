@@ -328,7 +328,7 @@ SideDiscretisation LuaStrategy::discretise(int side, const Profile& wheel, const
     auto p = std::static_pointer_cast<const Profile>(rd.object(key, kProfileType));
     return p ? std::optional<Profile>(*p) : std::nullopt;
   };
-  SideDiscretisation out{wheel, rail};
+  SideDiscretisation out;
   auto w = profile(r, "wheel");
   auto rl = profile(r, "rail");
   if (!w || !rl) fail("{}: must return a table {{wheel =, rail =, coarse =}} with both profiles", ctx);

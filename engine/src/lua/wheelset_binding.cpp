@@ -103,7 +103,7 @@ int wheelset_equilibrium(lua_State* L) {
   const EquilibriumOptions opt = read_equilibrium_options(a.reader);
   std::vector<Start> starts;
   if (auto s = a.reader.table("start")) {
-    starts.push_back(Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt});
+    starts.push_back(Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
     s->finish();
   }
   const bool ret = returns_failures(a.reader);

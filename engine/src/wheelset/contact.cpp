@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -38,6 +40,29 @@ ContactWorkspace::ContactWorkspace(const ContactModel& model, std::unique_ptr<Po
     : locator(model.geometry_ptr(), std::move(search)) {}
 
 namespace {
+
+double thread_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Adds the thread CPU time of its scope to a field of the workspace's times (when timing is on).
+class PhaseTimer {
+ public:
+  PhaseTimer(const ContactWorkspace& ws, double& slot) : slot_(ws.timing ? &slot : nullptr) {
+    if (slot_) t0_ = thread_seconds();
+  }
+  ~PhaseTimer() {
+    if (slot_) *slot_ += thread_seconds() - t0_;
+  }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double* slot_;
+  double t0_ = 0;
+};
 
 // What the plane and h need of one segment.
 struct SegmentInfo {
@@ -390,26 +415,40 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
 
   PatchContact pc;
   pc.side = side;
-  copy_located(st, side, group, pc);
-  pc.origin = pl.O;
-  pc.normal = pl.n;
-  pc.t1 = pl.t1;
-  pc.t2 = pl.t2;
-  pc.nominal = first.point;
-  pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
-
-  const contact::Grid grid = area_grid(opt, all, pl, side, st.pose());
-  pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
-
-  contact::NormalOptions nopt = opt.normal;
-  if (request.tolerance > 0) nopt.tolerance = request.tolerance;
-  std::vector<double> start;
-  if (ws.warm_start && warm_start(ws.previous[side], pl, grid, start)) nopt.initial_pressure = start;
-  const contact::NormalLoad load = contact::NormalLoad::penetration();
-  pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
-                          : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
-  area_results(g.side[side].wheel, st.frame(), pc);
-  if (request.sensitivity) area_sensitivity(model, st.pose(), pc, ws);
+  contact::Grid grid;
+  {
+    PhaseTimer t(ws, ws.times.geometry);
+    pc.origin = pl.O;
+    pc.normal = pl.n;
+    pc.t1 = pl.t1;
+    pc.t2 = pl.t2;
+    pc.nominal = first.point;
+    pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
+    grid = area_grid(opt, all, pl, side, st.pose());
+    pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
+  }
+  {
+    PhaseTimer t(ws, ws.times.solve);
+    contact::NormalOptions nopt = opt.normal;
+    if (request.tolerance > 0) nopt.tolerance = request.tolerance;
+    std::vector<double> start;
+    if (ws.warm_start && warm_start(ws.previous[side], pl, grid, start)) nopt.initial_pressure = start;
+    const contact::NormalLoad load = contact::NormalLoad::penetration();
+    pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
+                            : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
+  }
+  {
+    PhaseTimer t(ws, ws.times.results);
+    copy_located(st, side, group, pc);
+    area_results(g.side[side].wheel, st.frame(), pc);
+    ++ws.times.areas;
+    ws.times.elements += grid.size();
+    ws.times.iterations += pc.solution.iterations + pc.solution.coarse_iterations;
+  }
+  if (request.sensitivity) {
+    PhaseTimer t(ws, ws.times.sensitivity);
+    area_sensitivity(model, st.pose(), pc, ws);
+  }
   next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure});
   return pc;
 }
@@ -442,14 +481,19 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   const std::size_t np = patches.size();
   std::vector<std::vector<SegmentInfo>> infos(np);
   std::vector<Plane> planes;
-  for (std::size_t p = 0; p < np; ++p) {
-    collect_segments(model.geometry(), st, side, patches[p], infos[p]);
-    planes.push_back(plane_of(infos[p], patches[p]));
+  std::vector<std::vector<int>> groups;
+  {
+    PhaseTimer t(ws, ws.times.geometry);
+    for (std::size_t p = 0; p < np; ++p) {
+      collect_segments(model.geometry(), st, side, patches[p], infos[p]);
+      planes.push_back(plane_of(infos[p], patches[p]));
+    }
+    groups = area_groups(model, infos, planes);
   }
   WheelContact wc;
   double rr = 0, N = 0;
   std::vector<ContactWorkspace::Previous> next_previous;
-  for (const auto& group : area_groups(model, infos, planes)) {
+  for (const auto& group : groups) {
     PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
     wc.force += pc.force;
     wc.moment += pc.moment;
@@ -472,7 +516,11 @@ void ContactWorkspace::forget() {
 
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,
                                const ContactRequest& request) {
-  const LocationState& st = ws.locator.locate(pose);
+  const LocationState& st = [&]() -> const LocationState& {
+    PhaseTimer t(ws, ws.times.locate);
+    return ws.locator.locate(pose);
+  }();
+  ++ws.times.evaluations;
   ContactResult res;
   res.pose = pose;
   for (int side : {kLeft, kRight}) {
@@ -492,6 +540,7 @@ void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWo
   for (WheelContact& wc : result.wheel) {
     wc.sensitivity.setZero();
     for (PatchContact& pc : wc.patches) {
+      PhaseTimer t(ws, ws.times.sensitivity);
       area_sensitivity(model, result.pose, pc, ws);
       wc.sensitivity += pc.sensitivity;
     }

@@ -13,6 +13,7 @@
 #include "wrc/contact/influence.hpp"
 
 #include <cstddef>
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -117,23 +118,33 @@ void deconvolve(const InfluenceSpectrum& spectrum, const Grid& grid, const doubl
                 ConvolutionWorkspace& workspace, double scale = 1.0);
 
 // Thread-safe store of spectra keyed by (kind, dx, dy, Mx, My), built on first use. Logically part of
-// an immutable model: get() is const. Holds at most max_entries (then starts afresh; spectra in use stay
-// alive through their shared owners).
+// an immutable model: get() is const. Keeps the most recently used spectra up to max_bytes of their memory
+// (least recently used evicted first; spectra in use stay alive through their shared owners): a sweep meets a few
+// hundred shapes (grids and their windows, both kinds, the coarse levels), each built once (a few ms) if it stays.
 class InfluenceCache {
  public:
-  explicit InfluenceCache(FftPlanning planning = FftPlanning::estimate, std::size_t max_entries = 128)
-      : planning_(planning), max_entries_(max_entries) {}
+  explicit InfluenceCache(FftPlanning planning = FftPlanning::estimate, std::size_t max_bytes = std::size_t{256} << 20)
+      : planning_(planning), max_bytes_(max_bytes) {}
   // The spectrum of the given kind for the grid's element size and shape (validates the grid).
   std::shared_ptr<const InfluenceSpectrum> get(const Grid& grid,
                                                InfluenceSpectrum::Kind kind = InfluenceSpectrum::Kind::linear) const;
   std::size_t size() const;
+  std::size_t built() const;  // spectra built so far (one evicted and needed again counts again)
   FftPlanning planning() const { return planning_; }
 
  private:
+  using Key = std::tuple<int, double, double, int, int>;
+  struct Entry {
+    std::shared_ptr<const InfluenceSpectrum> spectrum;
+    std::size_t bytes = 0;
+    std::list<Key>::iterator use;  // position in uses_ (front: most recent)
+  };
   FftPlanning planning_;
-  std::size_t max_entries_;
+  std::size_t max_bytes_;
   mutable std::mutex mutex_;
-  mutable std::map<std::tuple<int, double, double, int, int>, std::shared_ptr<const InfluenceSpectrum>> entries_;
+  mutable std::map<Key, Entry> entries_;
+  mutable std::list<Key> uses_;
+  mutable std::size_t bytes_ = 0, built_ = 0;
 };
 
 }  // namespace wrc::contact

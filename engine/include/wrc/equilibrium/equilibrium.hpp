@@ -37,6 +37,9 @@ struct EquilibriumOptions {
   // differ from a 1e-12 solve by <= 4e-3 N, 50 times below the default residual tolerance of 0.2 N at 200 kN,
   // for ~20 % fewer CG iterations than the solver's default 1e-8.
   double normal_tolerance = 1e-6;
+  // solve_wheel: evaluate the solved pose once more at the model's own tolerance (the forces ws:contact gives
+  // there); a trajectory, content with normal_tolerance, turns it off.
+  bool final_at_model_tolerance = true;
   // Called at every iterate (iteration, z, roll, contact), e.g. to print the Newton history.
   std::function<void(int, double, double, const ContactResult&)> trace;
 };
@@ -52,15 +55,20 @@ struct EquilibriumResult {
   int iterations = 0;            // Newton iterations
   int evaluations = 0;           // contact evaluations (including line-search trials)
   int jacobians = 0;             // Jacobians computed (the others were reused)
-  std::optional<Eigen::Matrix2d> jacobian;  // the last difference Jacobian (a wheel lifted), for a neighbour
+  // The last Jacobian d(sum Fz - Q, sum Mx)/d(z, roll) (Broyden-updated), and whether it belongs to a wheel lifted:
+  // a start for a neighbouring case (a sweep hands it on).
+  std::optional<Eigen::Matrix2d> jacobian;
+  bool jacobian_lifted = false;
   ContactResult contact;         // at the solution
 };
 
 // A start (z, roll), e.g. the previous point of a sweep.
 struct Start {
   double z = 0, roll = 0;
-  // d(sum Fz, sum Mx)/d(z, roll) by differences near the start, with a wheel lifted (reused while it serves)
+  // d(sum Fz, sum Mx)/d(z, roll) near the start (e.g. the previous case's), used while the start has a wheel
+  // lifted or not as it had (jacobian_lifted), and while it serves.
   std::optional<Eigen::Matrix2d> jacobian;
+  bool jacobian_lifted = false;
 };
 
 // Solves the elastic equilibrium. Tries Newton from each of `starts` in order (neighbouring solutions of a
@@ -81,11 +89,15 @@ struct WheelResult {
   double Fz = 0;             // the prescribed vertical force (N)
   double z = 0;              // solved height of the wheelset centre (m)
   double residual = 0;       // Fz(side) - Fz (N)
-  int iterations = 0;
+  int iterations = 0;        // contact evaluations
   WheelContact wheel;        // the side's contact
 };
+// `start`: a height to start from (e.g. the previous time step's); otherwise the touching height pressed in by
+// initial_approach. The normal problems are solved to options.normal_tolerance. A load that needs an approach
+// beyond 3 mm (no elastic wheel-rail contact) is an error.
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
-                        ContactWorkspace& ws, const EquilibriumOptions& options = {});
+                        ContactWorkspace& ws, const EquilibriumOptions& options = {},
+                        std::optional<double> start = std::nullopt);
 
 // Rigid (kinematic) contact of one wheel: the deepest rail line, its point and the wheel normal there.
 struct RigidWheel {

@@ -127,6 +127,18 @@ class ContactWorkspace {
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();
+  // Where the evaluations' time goes (thread CPU seconds, accumulated while `timing` is on; benchmarks).
+  struct Times {
+    double locate = 0;       // contact location (line-cone crossings, segments, patches)
+    double geometry = 0;     // planes, merging, potential areas, undeformed distance h
+    double solve = 0;        // normal problems (including spectra and FFT plans made on first use)
+    double sensitivity = 0;  // linearised responses
+    double results = 0;      // forces, regions, copies into the result
+    int evaluations = 0, areas = 0;
+    long long elements = 0, iterations = 0;  // potential elements and CG iterations (fine + coarse) summed
+  };
+  bool timing = false;
+  Times times;
 };
 
 struct ContactRequest {

@@ -1,0 +1,41 @@
+// A wheelset followed along a trajectory, for callers that evaluate the contact at every time step (a multibody
+// code): the state keeps the last solution of each contact area and starts the next evaluation from it, instead
+// of starting cold as the top-level calls do. Results then depend on the steps before (to the solver tolerance);
+// reset() starts afresh.
+#pragma once
+
+#include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/wheelset/wheelset.hpp"
+
+#include <memory>
+
+namespace wrc {
+
+struct TrajectoryOptions {
+  // Tolerance of the normal problems (relative gap, as NormalOptions::tolerance): at 1e-6 (the equilibrium's
+  // inner tolerance) forces are within ~1e-6 of a 1e-12 solve, and a warm start from the previous step needs a few
+  // CG iterations.
+  double tolerance = 1e-6;
+  bool keep_grids = false;  // pressure and h grids in the results
+};
+
+class Trajectory {
+ public:
+  // The wheelset must outlive the trajectory.
+  explicit Trajectory(const Wheelset& wheelset, const TrajectoryOptions& options = {});
+  // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step.
+  ContactResult contact(const Pose& pose);
+  // One wheel with its vertical force Fz (N) prescribed (as solve_wheel), from the previous step's height.
+  WheelResult wheel(int side, double y, double yaw, double roll, double Fz);
+  // Forget the previous steps.
+  void reset();
+  const TrajectoryOptions& options() const { return options_; }
+
+ private:
+  const Wheelset& wheelset_;
+  TrajectoryOptions options_;
+  std::unique_ptr<ContactWorkspace> workspace_;
+  std::optional<double> last_z_[2];  // the previous wheel solve's height per side
+};
+
+}  // namespace wrc

@@ -1,0 +1,250 @@
+// Benchmark of the costs that matter to online callers (a multibody code calling wrc at every time step) and to
+// large studies, on the paper's case (S1002/60E1 at 0.1 mm, 1:40, gauge 1435 mm, r0 = 450 mm, E = 210 GPa,
+// nu = 0.3, the default grid 0.2 mm and strategy "accurate"). Prints:
+//   1. one contact evaluation of the wheelset at y = 3 mm (at its equilibrium) and in the flange root (y = 6 mm):
+//      thread CPU time, cold (as every top-level call starts) and warm (the previous evaluation's pressures), and
+//      where the time goes (location, geometry: planes, grids and h, the normal solves, results, sensitivities);
+//      the first evaluation of a new wheelset (its influence spectra and FFT plans); the Lua overhead of ws:contact
+//      with and without the grids;
+//   2. one equilibrium from scratch at y = 3 and 6 mm (as ws:equilibrium): evaluations and the same breakdown;
+//   3. one wheel with its vertical force given (ws:wheel) over the tread-to-flange poses y = 0 .. 7 mm: median;
+//   4. the paper's sweep (161 y x 2 yaws, with the rigid reference) on 2 threads: wall and CPU;
+//   5. a trajectory (hunting-like: y = 5 mm sin, yaw following) at 1 kHz steps with the warm-started trajectory
+//      state, per wheel and step, at 0.5 and 0.2 mm.
+// The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
+//
+//   bench_online [quick] [reps=20]
+#include "lua/lua.hpp"
+#include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/lua/host.hpp"
+#include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/wheelset/wheelset.hpp"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace {
+
+double thread_cpu() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+double process_cpu() {
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+double wall() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+std::shared_ptr<const wrc::Wheelset> paper_wheelset(double grid) {
+  wrc::WheelsetProfiles p;
+  const auto w = wrc::lua::load_profile("profiles/s1002.lua", {});
+  const auto r = wrc::lua::load_profile("profiles/60e1.lua", {});
+  p.wheel = {*w, *w};
+  p.rail = {*r, *r};
+  wrc::WheelsetParams params;
+  params.contact.element = grid;
+  return wrc::build_wheelset(p, params);
+}
+
+void print_times(const char* what, const wrc::ContactWorkspace::Times& t, int n) {
+  const double total = t.locate + t.geometry + t.solve + t.sensitivity + t.results;
+  fmt::print("  {:<44}: {:7.2f} ms = location {:.2f} + geometry {:.2f} + normal solves {:.2f} + results {:.2f} + "
+             "sensitivities {:.2f}; {:.1f} areas, {:.0f} potential elements, {:.1f} CG iterations per evaluation\n",
+             what, 1e3 * total / n, 1e3 * t.locate / n, 1e3 * t.geometry / n, 1e3 * t.solve / n, 1e3 * t.results / n,
+             1e3 * t.sensitivity / n, double(t.areas) / t.evaluations, double(t.elements) / t.evaluations,
+             double(t.iterations) / t.evaluations);
+}
+
+// Evaluations at a pose: `reps` times, cold or warm, with or without sensitivities; the breakdown per evaluation.
+void evaluations(const wrc::Wheelset& ws, const wrc::Pose& pose, int reps, bool warm, bool sensitivity, const char* what) {
+  auto work = ws.make_workspace();
+  wrc::ContactRequest req;
+  req.keep_grids = sensitivity;
+  req.sensitivity = sensitivity;
+  evaluate_contact(ws.contact_model(), pose, *work, req);  // spectra and plans exist from here on
+  work->timing = true;
+  work->times = {};
+  for (int i = 0; i < reps; ++i) {
+    if (!warm) work->forget();
+    evaluate_contact(ws.contact_model(), pose, *work, req);
+  }
+  print_times(what, work->times, reps);
+}
+
+double lua_ms(wrc::lua::Session& s, const std::string& call, int reps) {
+  const std::string code = fmt::format("local t0 = os.clock(); for i = 1, {} do {} end; bench_t = (os.clock() - t0) / {}",
+                                       reps, call, reps);
+  if (auto err = s.run(code)) {
+    fmt::print(stderr, "{}\n", *err);
+    std::exit(1);
+  }
+  auto* L = static_cast<lua_State*>(s.state());
+  lua_getglobal(L, "bench_t");
+  const double t = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  return 1e3 * t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  int reps = 20;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "quick") == 0) quick = true, reps = 5;
+    if (std::strncmp(argv[i], "reps=", 5) == 0) reps = std::max(1, std::atoi(argv[i] + 5));
+  }
+  double loads[3] = {0, 0, 0};
+  if (getloadavg(loads, 3) < 0) loads[0] = -1;
+  fmt::print("bench_online: S1002/60E1, grid 0.2 mm, strategy accurate; load average {:.2f}\n", loads[0]);
+  const double t0 = thread_cpu();
+  const auto ws = paper_wheelset(0.2e-3);
+  fmt::print("building the wheelset: {:.1f} ms\n", 1e3 * (thread_cpu() - t0));
+  const wrc::ContactModel& m = ws->contact_model();
+
+  // Equilibrium poses (also section 2).
+  auto work = ws->make_workspace();
+  work->timing = true;
+  fmt::print("\n== 2. one equilibrium from scratch (as ws:equilibrium: a cold workspace) ==\n");
+  std::vector<wrc::Pose> poses;
+  for (double y : {3e-3, 6e-3}) {
+    work->forget();
+    work->times = {};
+    const double c0 = thread_cpu();
+    const wrc::EquilibriumResult e = solve_equilibrium(m, y, 0.0, 200e3, *work);
+    const double c = thread_cpu() - c0;
+    fmt::print("y = {:.0f} mm: {:.1f} ms, {} evaluations ({} Newton iterations), converged {}\n", y * 1e3, 1e3 * c,
+               e.evaluations, e.iterations, e.converged);
+    print_times("per evaluation", work->times, work->times.evaluations);
+    poses.push_back({y, e.z, e.roll, 0.0});
+  }
+
+  fmt::print("\n== 1. one contact evaluation at the equilibrium pose (thread CPU, mean of {}) ==\n", reps);
+  {
+    const double c0 = thread_cpu();
+    const auto fresh = paper_wheelset(0.2e-3);
+    const double build = thread_cpu() - c0;
+    auto w = fresh->make_workspace();
+    const double c1 = thread_cpu();
+    evaluate_contact(fresh->contact_model(), poses[0], *w);
+    const double first = thread_cpu() - c1;
+    w->forget();
+    const double c2 = thread_cpu();
+    evaluate_contact(fresh->contact_model(), poses[0], *w);
+    const double second = thread_cpu() - c2;
+    fmt::print("a new wheelset (build {:.0f} ms): first evaluation {:.2f} ms, the second {:.2f} ms: influence spectra "
+               "and FFT plans {:.2f} ms\n", 1e3 * build, 1e3 * first, 1e3 * second, 1e3 * (first - second));
+  }
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    fmt::print("y = {:.0f} mm:\n", poses[k].y * 1e3);
+    evaluations(*ws, poses[k], reps, false, false, "cold");
+    evaluations(*ws, poses[k], reps, true, false, "warm (same pose)");
+    evaluations(*ws, poses[k], reps, false, true, "cold, with sensitivities");
+  }
+  {
+    wrc::lua::Session s;
+    if (auto err = s.run("ws = wrc.wheelset{wheel = wrc.profile.load('profiles/s1002.lua'), "
+                         "rail = wrc.profile.load('profiles/60e1.lua')}")) {
+      fmt::print(stderr, "{}\n", *err);
+      return 1;
+    }
+    const std::string pose = fmt::format("y = {}, z = {}, roll = {}", poses[0].y, poses[0].z, poses[0].roll);
+    auto engine = ws->make_workspace();
+    const double c0 = thread_cpu();
+    for (int i = 0; i < reps; ++i) {
+      engine->forget();
+      evaluate_contact(m, poses[0], *engine);
+    }
+    const double e_ms = 1e3 * (thread_cpu() - c0) / reps;
+    const double with = lua_ms(s, "ws:contact{" + pose + "}", reps);
+    const double without = lua_ms(s, "ws:contact{" + pose + ", grids = false}", reps);
+    fmt::print("Lua ws:contact at y = 3 mm: {:.2f} ms with the grids, {:.2f} ms without; the engine alone {:.2f} ms: "
+               "Lua overhead {:.2f} / {:.2f} ms\n", with, without, e_ms, with - e_ms, without - e_ms);
+  }
+
+  fmt::print("\n== 3. one wheel with Fz = 100 kN given (as ws:wheel), y = 0 .. 7 mm ==\n");
+  {
+    std::vector<double> t;
+    int evaluations = 0;
+    work->times = {};
+    for (double y = 0; y <= 7e-3 + 1e-12; y += 0.5e-3) {
+      work->forget();
+      const double c0 = thread_cpu();
+      const wrc::WheelResult r = solve_wheel(m, wrc::kLeft, y, 0.0, 0.0, 100e3, *work);
+      t.push_back(thread_cpu() - c0);
+      evaluations += r.iterations;
+      if (!r.converged) fmt::print("  y = {:.1f} mm did not converge: {}\n", y * 1e3, r.message);
+    }
+    fmt::print("median {:.2f} ms, max {:.2f} ms over {} poses; {:.1f} evaluations per solve\n", 1e3 * median(t),
+               1e3 * *std::max_element(t.begin(), t.end()), t.size(), double(evaluations) / t.size());
+    print_times("per evaluation", work->times, work->times.evaluations);
+    fmt::print("influence spectra built so far: {} (the cache holds {})\n", m.solver().cache().built(),
+               m.solver().cache().size());
+  }
+
+  fmt::print("\n== 4. the paper's sweep (y = -8 .. 8 mm every 0.1 mm, yaw 0 and 1 deg, rigid reference), 2 threads ==\n");
+  {
+    std::vector<double> ys;
+    for (int i = 0; i <= 160; ++i) ys.push_back((-8.0 + 0.1 * i) * 1e-3);
+    if (quick) ys = {-6e-3, -3e-3, 0.0, 3e-3, 5e-3, 6e-3};
+    wrc::SweepOptions so;
+    so.threads = 2;
+    so.rigid = true;
+    const double w0 = wall(), c0 = process_cpu();
+    const wrc::SweepResult r = run_sweep(m, ys, {0.0, std::numbers::pi / 180}, so, [&] { return ws->make_workspace(); });
+    const double wl = wall() - w0, cpu = process_cpu() - c0;
+    int failed = 0, evals = 0;
+    for (const auto& e : r.elastic) failed += !e.converged, evals += e.evaluations;
+    fmt::print("{} cases: wall {:.2f} s, CPU {:.2f} s ({:.1f} ms per case), {:.2f} evaluations per case, {} failed\n",
+               r.cases.size(), wl, cpu, 1e3 * cpu / r.cases.size(), double(evals) / r.cases.size(), failed);
+  }
+
+  fmt::print("\n== 5. trajectory: hunting y = 5 mm sin(2 pi 1.5 Hz t), yaw following, 1 kHz, z and roll at the "
+             "equilibrium of each y (prescribed poses, as a multibody code gives them) ==\n");
+  for (double grid : {0.5e-3, 0.2e-3}) {
+    const auto wsg = paper_wheelset(grid);
+    // The prescribed poses: the equilibrium z and roll of y, from a coarse table (interpolated), yaw = -dy/dx.
+    std::vector<double> ty, tz, troll;
+    {
+      wrc::SweepOptions so;
+      so.threads = 2;
+      for (double y = -5.5e-3; y <= 5.5e-3 + 1e-12; y += 0.5e-3) ty.push_back(y);
+      const wrc::SweepResult r = run_sweep(wsg->contact_model(), ty, {0.0}, so, [&] { return wsg->make_workspace(); });
+      for (const auto& e : r.elastic) tz.push_back(e.z), troll.push_back(e.roll);
+    }
+    const int steps = quick ? 200 : 1000;
+    wrc::Trajectory traj(*wsg);
+    std::vector<double> per_step;
+    const double V = 100 / 3.6, f = 1.5;
+    for (int k = 0; k < steps; ++k) {
+      const double t = k * 1e-3, y = 5e-3 * std::sin(2 * std::numbers::pi * f * t);
+      const double yaw = -5e-3 * 2 * std::numbers::pi * f / V * std::cos(2 * std::numbers::pi * f * t);
+      const double z = wrc::interpolate(ty, tz, y), roll = wrc::interpolate(ty, troll, y);
+      const double c0 = thread_cpu();
+      traj.contact({y, z, roll, yaw});
+      per_step.push_back(thread_cpu() - c0);
+    }
+    fmt::print("grid {:.1f} mm: {:.3f} ms per wheel and step (median {:.3f} ms per step for both wheels, {} steps)\n",
+               grid * 1e3, 1e3 * median(per_step) / 2, 1e3 * median(per_step), steps);
+  }
+  return 0;
+}
