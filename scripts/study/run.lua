@@ -618,6 +618,10 @@ local function merge(c, m_old)
   if not set then
     refuse(1, "cannot merge into '%s': %s. Run the missing shards (a shard run again resumes), then merge again.", c.dir, why)
   end
+  -- The temporary files a killed merge left (the merge is the one writer of the folder; shards write in parts/).
+  for _, name in ipairs(fs.list(c.dir)) do
+    if fs.is_temporary(name) then fs.remove(c.dir .. "/" .. name) end
+  end
   local known = {}
   for name in pairs(m_old and m_old.known or {}) do known[#known + 1] = name end
   table.sort(known)

@@ -3,15 +3,17 @@
 # with SIGKILL and resumed, failed cases recorded while the others complete, declared options, the output folder's
 # checks (writable, unknown files refused, stale files of an earlier run removed, an interrupted run marked).
 source "$(dirname "$0")/common.sh"
+# Coarser still than the other tests (it runs the study ten times): y every 2 mm, 18 cases from tread to flange.
+COARSE=(step_mm=2 grid_mm=0.4 plots=false)
 
 echo "== 1, 2 and 8 threads, and 4 shards merged: the same bytes"
-# Continuation chains cut into pieces of 3 cases (12 chunks), so that 2 and 8 threads share the work.
-"$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=1 out=t1 2>/dev/null >/dev/null
-"$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=2 out=t2 2>/dev/null >/dev/null
-"$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=8 out=t8 2>/dev/null >/dev/null
+# Continuation chains cut into pieces of 2 cases (10 chunks), so that 2 and 8 threads share the work.
+"$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=1 out=t1 2>/dev/null >/dev/null
+"$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=2 out=t2 2>/dev/null >/dev/null
+"$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=8 out=t8 2>/dev/null >/dev/null
 same_outputs t1 t2 sweep.csv rigid.csv summary.txt
 same_outputs t1 t8 sweep.csv rigid.csv summary.txt
-[ "$(wc -l < t1/sweep.csv)" -eq 35 ] || fail "t1/sweep.csv has $(wc -l < t1/sweep.csv) lines, expected 35"
+[ "$(wc -l < t1/sweep.csv)" -eq 19 ] || fail "t1/sweep.csv has $(wc -l < t1/sweep.csv) lines, expected 19"
 # The whole chains of the paper (4 chunks), one shard each, run at once, merged by `wrc merge`.
 "$WRC" run "$PAPER" "${COARSE[@]}" threads=1 out=one 2>/dev/null >/dev/null
 for k in 1 2 3 4; do "$WRC" run "$PAPER" "${COARSE[@]}" threads=1 out=four --shard $k/4 2>"shard$k.err" >/dev/null & done
@@ -23,7 +25,7 @@ grep -q "^status complete" four/manifest.txt || fail "four/manifest.txt is not c
 grep -q "^shards 4" four/manifest.txt || fail "four/manifest.txt does not say 4 shards"
 
 echo "== killed with SIGKILL in the middle, run again: it resumes and gives the same bytes"
-"$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=1 out=killed >/dev/null 2>killed.err &
+"$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=1 out=killed >/dev/null 2>killed.err &
 pid=$!
 for _ in $(seq 1 600); do
   n=$(ls killed/parts/shard-1-of-1 2>/dev/null | grep -c '^chunks-' || true)
@@ -35,19 +37,19 @@ wait $pid 2>/dev/null || true
 [ ! -e killed/sweep.csv ] || fail "a killed run left killed/sweep.csv"
 grep -q "^status incomplete" killed/manifest.txt || fail "the killed run is not marked incomplete"
 # A changed study does not resume into the parts of an unfinished run.
-expect_status 1 "$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=1 out=killed ymax_mm=4
+expect_status 1 "$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=1 out=killed ymax_mm=4
 expect_err "parts of an unfinished run with other inputs (option ymax_mm: 8 -> 4"
-expect_status 0 "$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=1 out=killed
+expect_status 0 "$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=1 out=killed
 expect_err "resuming:"
 same_outputs t1 killed sweep.csv rigid.csv summary.txt
 
 echo "== a changed study replaces the parts of a finished run, and --fresh starts over"
-expect_status 0 "$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=1 out=killed ymax_mm=4
+expect_status 0 "$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=1 out=killed ymax_mm=4
 expect_err "was complete and had other inputs (option ymax_mm: 8 -> 4"
-[ "$(wc -l < killed/sweep.csv)" -eq 19 ] || fail "the changed run has $(wc -l < killed/sweep.csv) lines"
-expect_status 0 "$WRC" run "$PAPER" "${COARSE[@]}" chain=3 threads=1 out=killed ymax_mm=4 --fresh
+[ "$(wc -l < killed/sweep.csv)" -eq 11 ] || fail "the changed run has $(wc -l < killed/sweep.csv) lines"
+expect_status 0 "$WRC" run "$PAPER" "${COARSE[@]}" chain=2 threads=1 out=killed ymax_mm=4 --fresh
 grep -q "resuming" last.err && fail "--fresh resumed"
-[ "$(wc -l < killed/sweep.csv)" -eq 19 ] || fail "the fresh run has $(wc -l < killed/sweep.csv) lines"
+[ "$(wc -l < killed/sweep.csv)" -eq 11 ] || fail "the fresh run has $(wc -l < killed/sweep.csv) lines"
 
 echo "== failed cases are recorded, the others complete, the exit status says so; shards agree"
 expect_status 3 "$WRC" run "$CASES" cases=40 fail=3,17 out=failing
@@ -88,16 +90,18 @@ expect_status 0 "$WRC" run "$CASES" cases=6 plots=false out=stale
 expect_err "removed 3 files of the previous run"
 [ ! -e stale/z.png ] && [ ! -e stale/z.dat ] && [ ! -e stale/z.gp ] || fail "stale figures left in stale/"
 grep -q "z.png" stale/manifest.txt && fail "the manifest lists a removed file"
-"$WRC" run "$CASES" cases=6 finish_pause=60 out=stale >/dev/null 2>stale.err &
+# Killed in its finish (after summary.txt, before the figure): marked incomplete; the next run completes and cleans.
+"$WRC" run "$CASES" cases=7 finish_pause=60 out=stale >/dev/null 2>stale.err &
 pid=$!
-for _ in $(seq 1 600); do
-  grep -q "^previous summary.txt" stale/manifest.txt 2>/dev/null && grep -q "^status incomplete (merging" stale/manifest.txt && break
+for _ in $(seq 1 1200); do
+  grep -q "^cases: 7," stale/summary.txt 2>/dev/null && break
   sleep 0.1
 done
+grep -q "^cases: 7," stale/summary.txt || fail "the run did not reach its finish: $(cat stale.err)"
 kill -9 $pid 2>/dev/null || fail "the run ended before it could be killed"
 wait $pid 2>/dev/null || true
-grep -q "^status incomplete" stale/manifest.txt || fail "a run killed while making its figures is not marked incomplete"
-expect_status 0 "$WRC" run "$CASES" cases=6 out=stale
+grep -q "^status incomplete (merging" stale/manifest.txt || fail "a run killed while making its figures is not marked incomplete"
+expect_status 0 "$WRC" run "$CASES" cases=7 out=stale
 grep -q "^status complete" stale/manifest.txt || fail "the run after the kill is not complete"
 for f in $(ls -A stale); do
   case $f in manifest.txt|parts) ;; *) grep -q "^file $f " stale/manifest.txt || fail "stale/$f is not in the manifest";; esac
