@@ -172,3 +172,31 @@ TEST_CASE("one wheelset from several threads at once gives the results of sequen
   for (auto& t : threads) t.join();
   for (std::size_t i = 0; i < ys.size(); ++i) CHECK(par[i] == seq[i]);
 }
+
+TEST_CASE("a trajectory follows a motion warm-started, with the forces of cold evaluations at its poses") {
+  Fixture f;
+  wrc_trajectory* tr = nullptr;
+  REQUIRE_MESSAGE(wrc_trajectory_new(f.ws, "tolerance=1e-6", &tr) == WRC_OK, last());
+  for (int k = 0; k < 10; ++k) {
+    const double y = 3e-3 * std::sin(0.3 * k), z = -0.03e-3;
+    wrc_result *a = nullptr, *b = nullptr;
+    REQUIRE_MESSAGE(wrc_trajectory_contact(tr, y, z, 0.0, 0.0, &a) == WRC_OK, last());
+    REQUIRE(wrc_contact(f.ws, y, z, 0.0, 0.0, "grids=false", &b) == WRC_OK);
+    for (const char* path : {"left.force.y", "left.force.z", "right.force.y", "right.force.z"})
+      CHECK(std::abs(number(a, path) - number(b, path)) <= 1e-5 * std::max(1.0, std::abs(number(b, "left.force.z"))));
+    wrc_result_free(a);
+    wrc_result_free(b);
+  }
+  wrc_result* w = nullptr;
+  REQUIRE(wrc_trajectory_wheel(tr, WRC_LEFT, 1e-3, 0, 0, 80e3, &w) == WRC_OK);
+  CHECK(std::abs(number(w, "force.z") - 80e3) <= 1e-6 * 80e3);
+  wrc_result_free(w);
+  CHECK(wrc_trajectory_reset(tr) == WRC_OK);
+  CHECK(wrc_trajectory_wheel(tr, 3, 0, 0, 0, 80e3, &w) == WRC_INVALID_ARGUMENT);
+  wrc_trajectory* bad = tr;
+  CHECK(wrc_trajectory_new(f.ws, "tolerence=1e-6", &bad) == WRC_ERROR);
+  CHECK(last().find("did you mean 'tolerance'") != std::string::npos);
+  CHECK(bad == nullptr);  // *out is reset on failure
+  CHECK(wrc_trajectory_free(tr) == WRC_OK);
+  CHECK(wrc_trajectory_free(tr) == WRC_INVALID_ARGUMENT);
+}

@@ -39,6 +39,7 @@ extern "C" {
 typedef struct wrc_profile wrc_profile;
 typedef struct wrc_wheelset wrc_wheelset;
 typedef struct wrc_result wrc_result;
+typedef struct wrc_trajectory wrc_trajectory;
 
 typedef enum wrc_status {
   WRC_OK = 0,
@@ -106,6 +107,24 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
                            wrc_result** out);
 /* The rigid (kinematic) reference at y, yaw with load Q. */
 wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc_result** out);
+
+/* ---- trajectories: a wheelset followed along time steps (a multibody code's calls); each step starts from the
+ * previous step's solution (warm), so its result depends on the steps before to the solver's tolerance. A trajectory
+ * is used by one thread at a time (concurrent calls on one trajectory are serialised); it keeps its wheelset alive. */
+
+/* Options: tolerance (relative gap of the normal problems, default 1e-6), grids (default false). The caller owns
+ * *out. */
+wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_trajectory** out);
+/* Contact at a prescribed pose (m, rad), as wrc_contact. */
+wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
+                                  wrc_result** out);
+/* One wheel with its vertical force Fz (N) given, as wrc_wheel, from the previous step's height. */
+wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
+                                wrc_result** out);
+/* Forgets the previous steps. */
+wrc_status wrc_trajectory_reset(wrc_trajectory* trajectory);
+/* Releases a trajectory (NULL: nothing to do). */
+wrc_status wrc_trajectory_free(wrc_trajectory* trajectory);
 
 /* ---- results: fields by path, as the Lua tables have them ("Y", "z", "left.force.z", "left.patches.1.pmax",
  * "left.patches.1.pressure"; lists are 1-based). Booleans and integers read as numbers. ---- */

@@ -6,6 +6,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/options.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/lua/host.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 
@@ -28,6 +29,11 @@ struct wrc_wheelset {
   std::shared_ptr<const wrc::Wheelset> model;
   std::mutex pool_mutex;
   std::vector<std::unique_ptr<wrc::ContactWorkspace>> pool;  // idle workspaces, one taken per call
+};
+
+struct wrc_trajectory {
+  std::unique_ptr<wrc::Trajectory> trajectory;
+  std::mutex mutex;  // one step at a time
 };
 
 struct wrc_result {
@@ -384,6 +390,61 @@ wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"Q", Q}}) finite(name, v);
     const wrc::RigidResult r = solve_rigid(w->model->geometry(), y, yaw, Q);
     return make_result(out, r.converged, r.converged ? "" : "wrc_rigid: " + r.message, r);
+  });
+}
+
+wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_trajectory** out) {
+  return guard("wrc_trajectory_new", [&] {
+    set_out(out, "trajectory");
+    const auto w = registry().get(wheelset, "wheelset");
+    const wrc::OptionTable t = options_of(options, "wrc_trajectory_new: options");
+    wrc::OptionReader r(t, "wrc_trajectory_new");
+    const wrc::TrajectoryOptions o = wrc::read_trajectory_options(r);
+    r.finish();
+    auto tr = std::make_shared<wrc_trajectory>();
+    tr->trajectory = std::make_unique<wrc::Trajectory>(w->model, o);
+    *out = registry().add(std::move(tr));
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
+                                  wrc_result** out) {
+  return guard("wrc_trajectory_contact", [&] {
+    set_out(out, "result");
+    const auto t = registry().get(trajectory, "trajectory");
+    for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
+    std::lock_guard lock(t->mutex);
+    return make_result(out, true, "", t->trajectory->contact({y, z, roll, yaw}));
+  });
+}
+
+wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
+                                wrc_result** out) {
+  return guard("wrc_trajectory_wheel", [&] {
+    set_out(out, "result");
+    const auto t = registry().get(trajectory, "trajectory");
+    if (side != WRC_LEFT && side != WRC_RIGHT) invalid(fmt::format("side = {} must be WRC_LEFT (0) or WRC_RIGHT (1)", side));
+    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
+    std::lock_guard lock(t->mutex);
+    const wrc::WheelResult res = t->trajectory->wheel(side, y, yaw, roll, Fz);
+    return make_result(out, res.converged, res.converged ? "" : "wrc_trajectory_wheel: " + failure_message(res), res);
+  });
+}
+
+wrc_status wrc_trajectory_reset(wrc_trajectory* trajectory) {
+  return guard("wrc_trajectory_reset", [&] {
+    const auto t = registry().get(trajectory, "trajectory");
+    std::lock_guard lock(t->mutex);
+    t->trajectory->reset();
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_trajectory_free(wrc_trajectory* trajectory) {
+  return guard("wrc_trajectory_free", [&] {
+    if (trajectory) registry().remove(trajectory, "trajectory");
+    return WRC_OK;
   });
 }
 

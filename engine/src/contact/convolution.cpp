@@ -246,13 +246,19 @@ std::shared_ptr<const InfluenceSpectrum> InfluenceCache::get(const Grid& grid, I
   const Key key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy,
                                   linear ? padded_size(grid.nx) : fft_size(grid.nx),
                                   linear ? padded_size(grid.ny) : fft_size(grid.ny));
-  std::lock_guard lock(mutex_);
-  if (auto it = entries_.find(key); it != entries_.end()) {
-    uses_.splice(uses_.begin(), uses_, it->second.use);
-    return it->second.spectrum;
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = entries_.find(key); it != entries_.end()) {
+      uses_.splice(uses_.begin(), uses_, it->second.use);
+      return it->second.spectrum;
+    }
   }
+  // Built outside the lock (a few ms: other threads go on with the spectra they need); a thread that built the
+  // same one meanwhile wins.
   auto spectrum = std::make_shared<const InfluenceSpectrum>(kind, grid.dx, grid.dy, std::get<3>(key),
                                                             std::get<4>(key), planning_);
+  std::lock_guard lock(mutex_);
+  if (auto it = entries_.find(key); it != entries_.end()) return it->second.spectrum;
   const std::size_t bytes = sizeof(double) * (2 * static_cast<std::size_t>(spectrum->complex_size()) +
                                               static_cast<std::size_t>(spectrum->table().mx()) * spectrum->table().my());
   while (!uses_.empty() && bytes_ + bytes > max_bytes_) {  // evict the least recently used

@@ -33,6 +33,7 @@ struct FftOperator {
   const Grid& grid;
   double factor;
   ConvolutionWorkspace& ws;
+  ConvolutionWorkspace& ws_periodic;
   int products = 0;
 
   void apply(const std::vector<double>& x, std::vector<double>& y) {
@@ -40,7 +41,7 @@ struct FftOperator {
     ++products;
   }
   void invert(const std::vector<double>& r, std::vector<double>& z) {
-    deconvolve(periodic, grid, r.data(), z.data(), ws, 1.0 / factor);
+    deconvolve(periodic, grid, r.data(), z.data(), ws_periodic, 1.0 / factor);
     ++products;
   }
   // y += K e_at * amount: a direct sum over the grid, cheaper than a product for a few elements.
@@ -66,7 +67,14 @@ struct FftOperator {
 
 }  // namespace
 
-NormalSolver::NormalSolver(const Material& material, FftPlanning planning) : material_(material), cache_(planning) {
+std::shared_ptr<const InfluenceCache> shared_cache(FftPlanning planning) {
+  static const auto estimate = std::make_shared<const InfluenceCache>(FftPlanning::estimate);
+  static const auto measure = std::make_shared<const InfluenceCache>(FftPlanning::measure);
+  return planning == FftPlanning::measure ? measure : estimate;
+}
+
+NormalSolver::NormalSolver(const Material& material, FftPlanning planning)
+    : material_(material), cache_(shared_cache(planning)) {
   validate(material, "NormalSolver");
 }
 
@@ -425,7 +433,7 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
                           double hmax) {
   const auto spectrum = cache.get(grid);
   const auto periodic = cache.get(grid, InfluenceSpectrum::Kind::periodic);
-  FftOperator K{*spectrum, *periodic, grid, factor, ws.fft};
+  FftOperator K{*spectrum, *periodic, grid, factor, ws.fft, ws.fft_periodic};
   ProjectedCg cg(K, grid, h, load, ws);
   cg.start(start.pressure);
   cg.run(options, hmax);
@@ -503,12 +511,12 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
   std::vector<int> penetrating;
   std::vector<double> found;
   for (int attempt = 0; attempt < 3 && w.size() > 0 && w.size() <= (1 - kWindowGain) * grid.size(); ++attempt) {
-    if (auto s = solve_window(cache_, factor, grid, h, load, ws, options, w, start, hmax, found, penetrating)) return *s;
+    if (auto s = solve_window(*cache_, factor, grid, h, load, ws, options, w, start, hmax, found, penetrating)) return *s;
     for (int k : penetrating) w.extend(k % grid.nx, k / grid.nx);
     w.dilate(grid, kWindowMargin);
     start.pressure = found;
   }
-  return solve_grid(cache_, factor, grid, h, load, ws, options, start, hmax);
+  return solve_grid(*cache_, factor, grid, h, load, ws, options, start, hmax);
 }
 
 NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<const double> dh,
@@ -529,9 +537,9 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
     detail::finish_response(out, grid);
     return out;
   }
-  const auto spectrum = cache_.get(grid);
-  const auto periodic = cache_.get(grid, InfluenceSpectrum::Kind::periodic);
-  FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft};
+  const auto spectrum = cache_->get(grid);
+  const auto periodic = cache_->get(grid, InfluenceSpectrum::Kind::periodic);
+  FftOperator K{*spectrum, *periodic, grid, material_.pair_compliance(), ws.fft, ws.fft_periodic};
   auto& x = out.pressure;
   auto& r = ws.r;
   auto& z = ws.z;

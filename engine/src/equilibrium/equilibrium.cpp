@@ -190,6 +190,7 @@ struct Iterate {
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // d R / d(z, roll)
   double merit = 0;
   bool lifted = false;  // a wheel carries no load
+  double tolerance = 0;  // of the normal solves it was evaluated with
 };
 
 // The equilibrium solver's methods for one call (a lateral position may change along a continuation).
@@ -201,7 +202,11 @@ class EquilibriumSolver {
     req_ = request;
     req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
     req_.keep_grids = true;
-    req_.tolerance = std::max(opt.normal_tolerance, model.options().normal.tolerance);
+    // Inexact solves a tenth of the residual tolerance asked for (their force error is of the order of their
+    // tolerance), so that the confirmation at the model's tolerance (confirm) rarely moves a solution out.
+    inexact_ = std::max(std::min({opt.normal_tolerance, 0.1 * opt.force_tolerance, 0.1 * opt.moment_tolerance}),
+                        model.options().normal.tolerance);
+    req_.tolerance = inexact_;
     ftol_ = opt.force_tolerance * Q;
     mtol_ = opt.moment_tolerance * Q * 1.0;  // the moment scale Q x 1 m
   }
@@ -218,6 +223,7 @@ class EquilibriumSolver {
   // regime (a wheel lifted or not) changes. Leaves the last iterate in `cur`; false with a reason in `why`.
   bool newton(double y, double z, double roll, const std::optional<Eigen::Matrix2d>& J0, bool J0_lifted,
               Iterate& cur, std::string& why) {
+    req_.tolerance = inexact_;
     cur = evaluate(y, z, roll);
     std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
@@ -260,6 +266,9 @@ class EquilibriumSolver {
       double t = 1;
       // Backtracking; an updated Jacobian gets one trial, then a fresh one is computed instead.
       for (int b = 0; b < (fresh ? 10 : 1) && !accepted; ++b, t *= 0.5) {
+        // Within 100 tolerances the step should converge: evaluate it at the model's tolerance, so that the
+        // solution needs no confirmation (confirm).
+        if (std::abs(R0(0)) < 100 * ftol_ && std::abs(R0(1)) < 100 * mtol_) req_.tolerance = model_.options().normal.tolerance;
         Iterate trial = evaluate(y, cur.z + t * dx(0), cur.roll + t * dx(1));
         if (trial.merit < (1 - 1e-4 * t) * merit0) {
           cur = std::move(trial);
@@ -418,6 +427,24 @@ class EquilibriumSolver {
 
   std::optional<RigidResult> rigid;  // the rigid solution at y, once from_rigid has run
 
+  // A solution found with inexact normal solves, evaluated again at the model's tolerance (the forces
+  // evaluate_contact gives at the pose; from the converged pressures, a few CG iterations); if that moved the
+  // residuals out of tolerance, Newton goes on from there with solves at the model's tolerance.
+  bool confirm(double y, Iterate& cur, std::string& why) {
+    const double tight = model_.options().normal.tolerance;
+    if (cur.tolerance <= tight) return true;
+    req_.tolerance = tight;
+    cur = evaluate(y, cur.z, cur.roll);
+    if (converged(cur)) return true;
+    const double saved = inexact_;
+    inexact_ = tight;  // go on at the model's tolerance
+    Iterate next;
+    const bool ok = newton(y, cur.z, cur.roll, res_.jacobian, res_.jacobian_lifted, next, why);
+    inexact_ = saved;
+    if (ok) cur = std::move(next);
+    return ok;
+  }
+
   // One evaluation past the budget, for the last iterate of a failed solve.
   Iterate evaluate_unbudgeted(double y, double z, double roll) {
     unbudgeted_ = true;
@@ -431,6 +458,7 @@ class EquilibriumSolver {
     it.z = z;
     it.roll = roll;
     it.contact = contact_at(y, z, roll);
+    it.tolerance = req_.tolerance;
     const ContactResult& c = it.contact;
     it.R = {c.force.z() - Q_, c.moment.x()};
     it.lifted = !(c.wheel[kLeft].force.z() > 0) || !(c.wheel[kRight].force.z() > 0);
@@ -475,6 +503,7 @@ class EquilibriumSolver {
   const EquilibriumOptions& opt_;
   EquilibriumResult& res_;
   ContactRequest req_;
+  double inexact_ = 0;  // the normal solves' tolerance while far from a solution
   double ftol_ = 0, mtol_ = 0;
   bool unbudgeted_ = false;
 };
@@ -533,6 +562,11 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     if (!ok) ok = near_centre ? (std::abs(y) > 0.5e-3 && solver.continuation(y, cur, why)) : solver.from_rigid(y, cur, why);
     // 3. Nested bracketing.
     if (!ok) ok = solver.bracketing(y, cur, why);
+    if (ok) {
+      std::string w;
+      ok = solver.confirm(y, cur, w);
+      if (!ok) why.push_back("confirming at the model's tolerance: " + w);
+    }
   } catch (const EvaluationBudget& e) {
     why.push_back(e.what());
     if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);

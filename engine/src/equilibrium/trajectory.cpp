@@ -3,8 +3,17 @@
 
 namespace wrc {
 
-Trajectory::Trajectory(const Wheelset& wheelset, const TrajectoryOptions& options)
-    : wheelset_(wheelset), options_(options), workspace_(wheelset.make_workspace()) {
+TrajectoryOptions read_trajectory_options(OptionReader& r) {
+  TrajectoryOptions o;
+  o.tolerance = r.number("tolerance", o.tolerance);
+  o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
+  return o;
+}
+
+Trajectory::Trajectory(std::shared_ptr<const Wheelset> wheelset, const TrajectoryOptions& options)
+    : wheelset_(std::move(wheelset)), options_(options) {
+  if (!wheelset_) fail("trajectory: no wheelset");
+  workspace_ = wheelset_->make_workspace();
   if (!(options.tolerance >= 1e-14 && options.tolerance < 1e-2))
     fail("trajectory: tolerance must be in [1e-14, 1e-2[, got {}", options.tolerance);
 }
@@ -13,14 +22,14 @@ ContactResult Trajectory::contact(const Pose& pose) {
   ContactRequest req;
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
-  return evaluate_contact(wheelset_.contact_model(), pose, *workspace_, req);
+  return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
 }
 
 WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, double Fz) {
   EquilibriumOptions opt;
   opt.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
-  WheelResult r = solve_wheel(wheelset_.contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, last_z_[side]);
+  WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, last_z_[side]);
   if (r.converged) last_z_[side] = r.z;
   return r;
 }

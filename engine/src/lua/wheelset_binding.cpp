@@ -7,6 +7,7 @@
 #include "lua/guard.hpp"
 #include "lua/results_binding.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/equilibrium/trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -214,6 +215,82 @@ int wheelset_sweep_plan(lua_State* L) {
   return 1;
 }
 
+// ---- ws:trajectory{tolerance =, grids =}: a wrc.Trajectory with tr:contact{...}, tr:wheel{...}, tr:reset() ----
+
+const char* const kTrajectoryType = "wrc.Trajectory";
+
+struct LuaTrajectory {
+  std::unique_ptr<Trajectory> trajectory;
+  std::shared_ptr<LuaStrategy> strategy;  // binds the building state's search to the calling coroutine
+};
+
+int wheelset_trajectory(lua_State* L) {
+  const char* ctx = "wheelset:trajectory";
+  LuaWheelset& w = self(L, ctx);
+  const OptionTable t = to_options(L, 2, ctx);
+  OptionReader r(t, ctx);
+  const TrajectoryOptions o = read_trajectory_options(r);
+  r.finish();
+  w.strategy->main_search(L);
+  auto lt = std::make_shared<LuaTrajectory>();
+  lt->trajectory = std::make_unique<Trajectory>(w.model, o);
+  lt->strategy = w.strategy;
+  push_shared(L, std::move(lt), kTrajectoryType);
+  return 1;
+}
+
+LuaTrajectory& trajectory_self(lua_State* L, const char* ctx) {
+  LuaTrajectory& t = *check_shared<LuaTrajectory>(L, 1, kTrajectoryType, ctx);
+  t.strategy->main_search(L);
+  return t;
+}
+
+// tr:contact{y=, z=, roll=, yaw=}: the contact at a prescribed pose, from the previous step's pressures.
+int trajectory_contact(lua_State* L) {
+  const char* ctx = "trajectory:contact";
+  LuaTrajectory& t = trajectory_self(L, ctx);
+  Args a(L, ctx);
+  const Pose pose = read_pose(a.reader);
+  a.reader.finish();
+  push_result(L, t.trajectory->contact(pose));
+  return 1;
+}
+
+// tr:wheel{side=, y=, yaw=, roll=, Fz=}: one wheel with Fz given, from the previous step's height.
+int trajectory_wheel(lua_State* L) {
+  const char* ctx = "trajectory:wheel";
+  LuaTrajectory& t = trajectory_self(L, ctx);
+  Args a(L, ctx);
+  const int side = parse_side(a.reader.string("side").value_or(""), ctx);
+  const double y = a.reader.number("y", 0.0), yaw = a.reader.number("yaw", 0.0);
+  const double roll = a.reader.number("roll", 0.0), Fz = a.reader.need_number("Fz");
+  a.reader.finish();
+  const WheelResult r = t.trajectory->wheel(side, y, yaw, roll, Fz);
+  if (!r.converged) fail("{}: {}", ctx, failure_message(r));
+  push_result(L, r);
+  return 1;
+}
+
+int trajectory_reset(lua_State* L) {
+  trajectory_self(L, "trajectory:reset").trajectory->reset();
+  return 0;
+}
+
+void open_trajectory(lua_State* L) {
+  if (luaL_newmetatable(L, kTrajectoryType)) {
+    lua_pushcfunction(L, gc_shared<LuaTrajectory>);
+    lua_setfield(L, -2, "__gc");
+    lua_newtable(L);
+    const luaL_Reg methods[] = {{"contact", guarded<trajectory_contact>},
+                                {"wheel", guarded<trajectory_wheel>},
+                                {"reset", guarded<trajectory_reset>},
+                                {nullptr, nullptr}};
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
+  }
+  lua_pop(L, 1);
+}
+
 void push_placed(lua_State* L, const std::vector<double>& y, const std::vector<double>& z, const char* kind,
                  const char* frame) {
   lua_createtable(L, 0, 4);
@@ -358,7 +435,8 @@ void open_wheelset(lua_State* L) {
                                 {"rigid", guarded<wheelset_rigid>},     {"sweep", guarded<wheelset_sweep>},
                                 {"sweep_plan", guarded<wheelset_sweep_plan>},
                                 {"cones", guarded<wheelset_cones>},     {"lines", guarded<wheelset_lines>},
-                                {"coarse", guarded<wheelset_coarse>},   {nullptr, nullptr}};
+                                {"coarse", guarded<wheelset_coarse>},   {"trajectory", guarded<wheelset_trajectory>},
+                                {nullptr, nullptr}};
     luaL_setfuncs(L, methods, 0);
     lua_setfield(L, -2, "methods");
   }
@@ -367,6 +445,7 @@ void open_wheelset(lua_State* L) {
   lua_setfield(L, -2, "wheelset");
   push_defaults(L);
   lua_setfield(L, -2, "defaults");
+  open_trajectory(L);
   open_geometry(L);  // wrc.geometry: the strategies' helpers
 }
 

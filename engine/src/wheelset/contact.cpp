@@ -261,8 +261,8 @@ int contact_regions(const contact::NormalSolution& sol) {
 
 // Start pressures for an area from the last evaluation's area of the same side in (nearly) the same plane:
 // the old pressure at each new element centre (bilinear). False when there is none.
-bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start) {
+// The last evaluation's area of the same side in (nearly) the same plane, or none.
+const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl) {
   const ContactWorkspace::Previous* best = nullptr;
   double best_d = 5e-3;  // m: farther origins belong to another area
   for (const auto& p : previous) {
@@ -273,6 +273,11 @@ bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const P
       best = &p;
     }
   }
+  return best;
+}
+
+bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
+                std::vector<double>& start) {
   if (!best) return false;
   const contact::Grid& g = best->grid;
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
@@ -284,6 +289,9 @@ bool warm_start(const std::vector<ContactWorkspace::Previous>& previous, const P
       if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) continue;
       const double a = fu - iu, b = fv - iv;
       auto P = [&](int di, int dj) { return best->pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
+      // Only where the nearest old element was in contact: interpolation alone smears the contact edge outward,
+      // and each element started in contact that is not costs the CG a clipping step (as prolong does).
+      if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) continue;
       start[static_cast<std::size_t>(grid.index(i, j))] =
           (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
     }
@@ -412,6 +420,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
   const Patch& first = st.patches(side)[static_cast<std::size_t>(group.front())];
   const Plane pl = plane_of(all, first);
+  const ContactWorkspace::Previous* prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
 
   PatchContact pc;
   pc.side = side;
@@ -432,7 +441,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     contact::NormalOptions nopt = opt.normal;
     if (request.tolerance > 0) nopt.tolerance = request.tolerance;
     std::vector<double> start;
-    if (ws.warm_start && warm_start(ws.previous[side], pl, grid, start)) nopt.initial_pressure = start;
+    if (warm_start(prev, pl, grid, start)) nopt.initial_pressure = start;
     const contact::NormalLoad load = contact::NormalLoad::penetration();
     pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
                             : model.solver().solve(grid, pc.h, load, ws.normal, nopt);

@@ -104,10 +104,16 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
 class NormalWorkspace {
  public:
   NormalWorkspace() = default;
-  ConvolutionWorkspace fft;
+  ConvolutionWorkspace fft;           // products with D (zero-padded grids)
+  ConvolutionWorkspace fft_periodic;  // the preconditioner (periodic grids): its own buffers, so that alternating
+                                      // the two does not re-zero a padded buffer at every product
   std::vector<double> p, u, r, z, d, q;
   std::vector<unsigned char> active, previous_active;
 };
+
+// The process-wide store of influence spectra for a planning mode: spectra depend only on the element size and the
+// FFT shape, so every solver (every wheelset of a fleet study) shares them.
+std::shared_ptr<const InfluenceCache> shared_cache(FftPlanning planning);
 
 // The fast solver: conjugate gradients on the active set (a projected CG in the manner of Polonsky and
 // Keer, Wear 231, 1999) preconditioned with the inverse of the grid's periodic circulant (an FFT
@@ -122,7 +128,7 @@ class NormalSolver {
   explicit NormalSolver(const Material& material, FftPlanning planning = FftPlanning::estimate);
 
   const Material& material() const { return material_; }
-  const InfluenceCache& cache() const { return cache_; }
+  const InfluenceCache& cache() const { return *cache_; }
 
   NormalSolution solve(const Grid& grid, std::span<const double> h, const NormalLoad& load,
                        NormalWorkspace& workspace, const NormalOptions& options = {}) const;
@@ -138,7 +144,7 @@ class NormalSolver {
   NormalSolution solve_checked(const Grid& grid, std::span<const double> h, const NormalLoad& load,
                                NormalWorkspace& workspace, const NormalOptions& options) const;
   Material material_;
-  InfluenceCache cache_;
+  std::shared_ptr<const InfluenceCache> cache_;  // the process-wide one of the planning mode (shared_cache)
 };
 
 // Helpers shared by the solvers and useful to callers.

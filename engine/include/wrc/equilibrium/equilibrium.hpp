@@ -33,9 +33,9 @@ struct EquilibriumOptions {
   double max_step_z = 0.5e-3;      // largest Newton step in z (m)
   double max_step_roll = 2e-3;     // largest Newton step in roll (rad)
   double initial_approach = 0.05e-3;  // cold start: the rigid position pressed in by this much (m)
-  // Tolerance of the normal problems inside the Newton iterations. At 1e-6 the forces of the S1002/60E1 study
-  // differ from a 1e-12 solve by <= 4e-3 N, 50 times below the default residual tolerance of 0.2 N at 200 kN,
-  // for ~20 % fewer CG iterations than the solver's default 1e-8.
+  // Tolerance of the normal problems while Newton iterates (inexact steps, from warm starts: a few CG iterations
+  // each); a solution found so is confirmed by an evaluation at the model's tolerance, and Newton goes on from it
+  // if the residuals moved out of tolerance, so the forces reported are those evaluate_contact gives at the pose.
   double normal_tolerance = 1e-6;
   // solve_wheel: evaluate the solved pose once more at the model's own tolerance (the forces ws:contact gives
   // there); a trajectory, content with normal_tolerance, turns it off.

@@ -19,10 +19,12 @@ struct TrajectoryOptions {
   bool keep_grids = false;  // pressure and h grids in the results
 };
 
+// Reads {tolerance =, grids =} (the keys of ws:trajectory{} and wrc_trajectory_new).
+TrajectoryOptions read_trajectory_options(OptionReader& options);
+
 class Trajectory {
  public:
-  // The wheelset must outlive the trajectory.
-  explicit Trajectory(const Wheelset& wheelset, const TrajectoryOptions& options = {});
+  explicit Trajectory(std::shared_ptr<const Wheelset> wheelset, const TrajectoryOptions& options = {});
   // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step.
   ContactResult contact(const Pose& pose);
   // One wheel with its vertical force Fz (N) prescribed (as solve_wheel), from the previous step's height.
@@ -30,9 +32,12 @@ class Trajectory {
   // Forget the previous steps.
   void reset();
   const TrajectoryOptions& options() const { return options_; }
+  // The workspace (set its timing on to measure; benchmarks).
+  ContactWorkspace& workspace() { return *workspace_; }
+  const Wheelset& wheelset() const { return *wheelset_; }
 
  private:
-  const Wheelset& wheelset_;
+  std::shared_ptr<const Wheelset> wheelset_;
   TrajectoryOptions options_;
   std::unique_ptr<ContactWorkspace> workspace_;
   std::optional<double> last_z_[2];  // the previous wheel solve's height per side
