@@ -581,6 +581,7 @@ local function merge_tables(c, set)
   for t, tab in ipairs(c.tables) do writers[t] = out.csv_writer(c.dir .. "/" .. tab.file, tab.columns) end
   local failures, failed = nil, 0
   local expect = 1
+  c.compute_cpu = 0
   for k = 1, set.n do
     local p = set.shards[k]
     local _, hi = shard_range(k, set.n, c.nchunks)
@@ -597,7 +598,10 @@ local function merge_tables(c, set)
             if failed == 0 then failures:write(table.concat(c.failure_columns, ","), "\n") end
             failures:write(line:sub(3), "\n")
             failed = failed + 1
-          elseif tag ~= 35 then  -- not "# comment"
+          elseif tag == 35 then  -- "# time wall <s> s, cpu <s> s" of a block
+            local cpu = line:match("cpu ([%d.]+) s")
+            c.compute_cpu = c.compute_cpu + (tonumber(cpu) or 0)
+          else
             local t, rest = line:match("^(%d+) (.*)$")
             local w = writers[tonumber(t or "")]
             if not w then error(("merge: %s/%s: a line of no table: %s"):format(p.folder, b[3], line:sub(1, 40))) end
@@ -672,7 +676,8 @@ local function merge(c, m_old)
         #stale > 1 and "s" or "", c.dir, table.concat(shown, ", "), #stale > #shown and ", ..." or "")
   end
   table.sort(written)
-  write_manifest(c, "complete", written, {}, {"shards " .. set.n, "failed " .. c.failed})
+  write_manifest(c, "complete", written, {},
+                 {"shards " .. set.n, "failed " .. c.failed, ("compute_cpu %.2f s"):format(c.compute_cpu)})
 end
 
 ----------------------------------------------------------------------------------------------------------------
