@@ -162,6 +162,7 @@ Study.__index = Study
 -- options from the command line; with --help, prints them and ends the run.
 function M.new(spec)
   local cmd = command()
+  cmd.study = true  -- the host's flags apply (a plain script ignores them; the host says so)
   local s = setmetatable({spec = spec, name = spec.name}, Study)
   s.declared, s.byname = declare(spec)
   if cmd.help then

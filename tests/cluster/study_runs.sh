@@ -75,6 +75,11 @@ expect_status 0 "$WRC" run "$PAPER" --help
 for o in step_mm=0.1 ymax_mm=8 grid_mm=0.2 chain=0 threads=0 plots=true out=results; do
   grep -qF -- "$o" last.out || fail "--help does not list $o"
 done
+echo 'print("a plain script")' > plain.lua  # no study: a shard of it would silently be the whole
+expect_status 2 "$WRC" run plain.lua --shard 1/2
+expect_err "declares no study (wrc.study.new)"
+expect_status 2 "$WRC" run "$PAPER" --shard 1/2 --merge
+expect_err "takes no --shard"
 
 echo "== the output folder: writable before computing, unknown files refused, stale files removed, a kill marked"
 expect_status 1 "$WRC" run "$CASES" cases=5 out=/proc/self
