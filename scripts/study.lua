@@ -61,7 +61,7 @@ function M.sweep_row(r)
   local a, an = max_angle(r.left), max_angle(r.left, "nominal_angle")
   row.left_max_patch_angle_deg = a and a * deg
   row.left_max_nominal_angle_deg = an and an * deg
-  row.rolling_radius_difference_mm = r.rolling_radius_difference * 1e3
+  row.rolling_radius_difference_mm = r.rolling_radius_difference and r.rolling_radius_difference * 1e3  -- nil: a wheel lifted
   row.iterations = r.iterations
   row.residual_force_N, row.residual_moment_Nm = r.residual.force, r.residual.moment
   return row

@@ -200,3 +200,56 @@ TEST_CASE("a trajectory follows a motion warm-started, with the forces of cold e
   CHECK(wrc_trajectory_free(tr) == WRC_OK);
   CHECK(wrc_trajectory_free(tr) == WRC_INVALID_ARGUMENT);
 }
+
+TEST_CASE("rigid contact geometry, tables, conicity and flange measures through the C API") {
+  Fixture f;
+  // The rigid contact, roll fixed: Δr from the touching points' radii.
+  wrc_result* g = nullptr;
+  REQUIRE_MESSAGE(wrc_rigid_contact(f.ws, 3e-3, 0.0, "roll=fixed", &g) == WRC_OK, last());
+  CHECK(number(g, "roll") == 0);
+  CHECK(number(g, "rolling_radius_difference") ==
+        doctest::Approx(number(g, "left.contacts.1.rolling_radius") - number(g, "right.contacts.1.rolling_radius")).epsilon(1e-15));
+  CHECK(number(g, "left.lifted") == 0);
+  wrc_result_free(g);
+  CHECK(wrc_rigid_contact(f.ws, 0.0, 0.0, "roll=sideways", &g) == WRC_ERROR);
+  CHECK(last().find("'roll' must be") != std::string::npos);
+  // A table with its jumps.
+  wrc_result* t = nullptr;
+  REQUIRE_MESSAGE(wrc_geometry_table(f.ws, "y.from=-8e-3 y.to=8e-3 y.step=0.1e-3 progress=false", &t) == WRC_OK, last());
+  size_t rows = 0, jumps = 0;
+  REQUIRE(wrc_result_count(t, "rows", &rows) == WRC_OK);
+  REQUIRE(wrc_result_count(t, "jumps", &jumps) == WRC_OK);
+  CHECK(rows == 161);
+  CHECK(jumps >= 2);
+  CHECK(number(t, "rows.81.y") == doctest::Approx(0).scale(1e-3));
+  wrc_result_free(t);
+  // The wheelset's conicity is the conicity of its own Δr table.
+  wrc_result* c = nullptr;
+  REQUIRE_MESSAGE(wrc_wheelset_conicity(f.ws, "yhat=0.002,0.003", &c) == WRC_OK, last());
+  size_t n = 0;
+  REQUIRE(wrc_result_count(c, "dr.y", &n) == WRC_OK);
+  std::vector<double> y(n), dr(n), tg(2);
+  REQUIRE(wrc_result_numbers(c, "dr.y", y.data(), n, &n) == WRC_OK);
+  REQUIRE(wrc_result_numbers(c, "dr.dr", dr.data(), n, &n) == WRC_OK);
+  REQUIRE(wrc_result_numbers(c, "tan_gamma", tg.data(), 2, &n) == WRC_OK);
+  wrc_result* d = nullptr;
+  REQUIRE_MESSAGE(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=0.002,0.003", &d) == WRC_OK, last());
+  std::vector<double> tg2(2);
+  REQUIRE(wrc_result_numbers(d, "tan_gamma", tg2.data(), 2, &n) == WRC_OK);
+  CHECK(tg2[0] == tg[0]);
+  CHECK(tg2[1] == tg[1]);
+  wrc_result_free(c);
+  wrc_result_free(d);
+  // Bad tables: an error naming it.
+  std::swap(y[3], y[4]);
+  CHECK(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=0.002", &d) == WRC_ERROR);
+  CHECK(last().find("y must increase strictly") != std::string::npos);
+  CHECK(wrc_conicity(nullptr, dr.data(), 3, "yhat=0.002", &d) == WRC_INVALID_ARGUMENT);
+  // Flange measures of the sampled S1002 (every 0.5 mm).
+  wrc_result* m = nullptr;
+  REQUIRE_MESSAGE(wrc_profile_flange_measures(f.wheel, nullptr, &m) == WRC_OK, last());
+  CHECK(number(m, "Sh") == doctest::Approx(0.028).epsilon(1e-4));
+  CHECK(number(m, "Sd") == doctest::Approx(0.0325).epsilon(1e-4));
+  wrc_result_free(m);
+  CHECK(wrc_profile_flange_measures(f.rail, nullptr, &m) == WRC_ERROR);
+}

@@ -29,6 +29,7 @@ int luaopen_wrc(lua_State* L) {
   open_fs(L);
   open_profile(L);
   open_wheelset(L);
+  open_kinematics(L);
   return 1;
 }
 

@@ -8,6 +8,7 @@
 #include "lua/results_binding.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/kinematics/table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -134,15 +135,40 @@ int wheelset_wheel(lua_State* L) {
   return 1;
 }
 
-// ws:rigid{y=, yaw=, Q=}: the rigid (kinematic) contact reference.
+// ws:rigid{y=, yaw=, roll = "free" | "fixed" | number, Q=, two_point_tolerance=, start=}: the rigid contact.
 int wheelset_rigid(lua_State* L) {
   const char* ctx = "wheelset:rigid";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const double y = a.reader.need_number("y"), yaw = a.reader.number("yaw", 0.0), Q = a.reader.number("Q", 200e3);
+  const double y = a.reader.need_number("y"), yaw = a.reader.number("yaw", 0.0);
+  const RigidOptions o = read_rigid_options(a.reader);
   a.reader.finish();
-  push_result(L, solve_rigid(w.model->geometry(), y, yaw, Q));
+  push_result(L, solve_rigid(w.model->geometry(), y, yaw, o));
   return 1;
+}
+
+// ws:geometry_table{y = {from=, to=, step=}, yaw=, roll=, threads=, csv=, file=, progress=, ...}
+int wheelset_geometry_table(lua_State* L) {
+  const char* ctx = "wheelset:geometry_table";
+  LuaWheelset& w = self(L, ctx);
+  Args a(L, ctx);
+  const GeometryTableOptions o = read_geometry_table_options(a.reader);
+  a.reader.finish();
+  push_result(L, run_geometry_table(w.model->geometry(), o));
+  return 1;
+}
+
+// ws:conicity{yhat=, roll = "fixed" | "free", method=, ...} -> {tan gamma_e per amplitude}, details
+int wheelset_conicity(lua_State* L) {
+  const char* ctx = "wheelset:conicity";
+  LuaWheelset& w = self(L, ctx);
+  Args a(L, ctx);
+  const WheelsetConicityOptions o = read_wheelset_conicity_options(a.reader);
+  a.reader.finish();
+  const WheelsetConicity c = wheelset_conicity(w.model->geometry(), o);
+  push_array(L, c.conicity.tan_gamma);
+  push_result(L, c);
+  return 2;
 }
 
 // The sweep's cases from ws:sweep{...} and ws:sweep_plan{...}: y, yaw, chain.
@@ -291,29 +317,35 @@ void open_trajectory(lua_State* L) {
   lua_pop(L, 1);
 }
 
+// Placed points are ordered by increasing track y on both sides: the profile's own order on the left, the reverse
+// on the right (its field side first); `reversed` says which.
 void push_placed(lua_State* L, const std::vector<double>& y, const std::vector<double>& z, const char* kind,
-                 const char* frame) {
-  lua_createtable(L, 0, 4);
+                 const char* frame, int side = -1) {
+  lua_createtable(L, 0, 6);
   push_array(L, y);
   lua_setfield(L, -2, "y");
   push_array(L, z);
   lua_setfield(L, -2, "z");
   set_string(L, "kind", kind);
   set_string(L, "frame", frame);
+  set_string(L, "order", "increasing y");
+  if (side >= 0) set_bool(L, "reversed", side == kRight);
 }
 
 // ws:cones(side) -> {y, z, count}: the discretised wheel's generatrix points (wheelset frame; the first and last on
 // the axle). ws:lines(side) -> {y, z, count}: the rail lines (track frame).
 int wheelset_cones(lua_State* L) {
-  const WheelCones& c = self(L, "wheelset:cones").model->geometry().side[parse_side(check_string(L, 2, "wheelset:cones"), "wheelset:cones")].wheel;
-  push_placed(L, c.y, c.z, "wheel", "wheelset");
+  const int side = parse_side(check_string(L, 2, "wheelset:cones"), "wheelset:cones");
+  const WheelCones& c = self(L, "wheelset:cones").model->geometry().side[side].wheel;
+  push_placed(L, c.y, c.z, "wheel", "wheelset", side);
   set_integer(L, "count", c.cone_count());
   return 1;
 }
 
 int wheelset_lines(lua_State* L) {
-  const RailLines& r = self(L, "wheelset:lines").model->geometry().side[parse_side(check_string(L, 2, "wheelset:lines"), "wheelset:lines")].rail;
-  push_placed(L, r.y, r.z, "rail", "track");
+  const int side = parse_side(check_string(L, 2, "wheelset:lines"), "wheelset:lines");
+  const RailLines& r = self(L, "wheelset:lines").model->geometry().side[side].rail;
+  push_placed(L, r.y, r.z, "rail", "track", side);
   set_integer(L, "count", r.count());
   return 1;
 }
@@ -369,8 +401,8 @@ int wheelset_index(lua_State* L) {
   const std::string_view key = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "";
   for (int s : {kLeft, kRight}) {
     const std::string side = side_name(s);
-    if (key == side + "_wheel") return push_placed(L, t.wheel_y[s], t.wheel_z[s], "wheel", "wheelset"), 1;
-    if (key == side + "_rail") return push_placed(L, t.rail_y[s], t.rail_z[s], "rail", "track"), 1;
+    if (key == side + "_wheel") return push_placed(L, t.wheel_y[s], t.wheel_z[s], "wheel", "wheelset", s), 1;
+    if (key == side + "_rail") return push_placed(L, t.rail_y[s], t.rail_z[s], "rail", "track", s), 1;
   }
   if (key == "gauge_points" || key == "tape_points") {
     const auto& pts = key == "gauge_points" ? t.gauge_point : t.tape_point;
@@ -434,6 +466,8 @@ void open_wheelset(lua_State* L) {
                                 {"equilibrium", guarded<wheelset_equilibrium>}, {"wheel", guarded<wheelset_wheel>},
                                 {"rigid", guarded<wheelset_rigid>},     {"sweep", guarded<wheelset_sweep>},
                                 {"sweep_plan", guarded<wheelset_sweep_plan>},
+                                {"geometry_table", guarded<wheelset_geometry_table>},
+                                {"conicity", guarded<wheelset_conicity>},
                                 {"cones", guarded<wheelset_cones>},     {"lines", guarded<wheelset_lines>},
                                 {"coarse", guarded<wheelset_coarse>},   {"trajectory", guarded<wheelset_trajectory>},
                                 {nullptr, nullptr}};

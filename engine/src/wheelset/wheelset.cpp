@@ -13,6 +13,8 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   t.tape_offset = r.number("tape_offset", t.tape_offset);
   t.gauge = r.number("gauge", t.gauge);
   t.gauge_depth = r.number("gauge_depth", t.gauge_depth);
+  if (auto g = r.choice("gauge_point", {"first", "innermost"}))
+    t.gauge_rule = *g == "first" ? TrackParams::GaugeRule::first : TrackParams::GaugeRule::innermost;
   t.cant = r.number("cant", t.cant);
   p.material.E = r.number("E", p.material.E);
   p.material.nu = r.number("nu", p.material.nu);
@@ -56,6 +58,7 @@ void describe(const WheelsetParams& p, FieldSink& out) {
   out.number("tape_offset", p.track.tape_offset);
   out.number("gauge", p.track.gauge);
   out.number("gauge_depth", p.track.gauge_depth);
+  out.string("gauge_point", p.track.gauge_rule == TrackParams::GaugeRule::first ? "first" : "innermost");
   out.number("cant", p.track.cant);
   out.number("E", p.material.E);
   out.number("nu", p.material.nu);

@@ -12,10 +12,12 @@
 // residual norm (|R_F|/Q)^2 + (|R_M|/(Q 1 m))^2.
 //
 // Rigid reference: the same (y, yaw) with undeformable bodies: z and roll such that both wheels just touch
-// (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q.
+// (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q
+// (solve_rigid, wrc/kinematics/rigid.hpp).
 #pragma once
 
 #include "wrc/core/options.hpp"
+#include "wrc/kinematics/rigid.hpp"
 #include "wrc/wheelset/contact.hpp"
 
 #include <functional>
@@ -99,33 +101,6 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
                         ContactWorkspace& ws, const EquilibriumOptions& options = {},
                         std::optional<double> start = std::nullopt);
 
-// Rigid (kinematic) contact of one wheel: the deepest rail line, its point and the wheel normal there.
-struct RigidWheel {
-  double overlap = 0;                 // radial overlap at the deepest point (m; 0 at the solution)
-  int line = -1;                      // rail line index
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // contact point (track frame, m)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // into the wheel
-  double angle = 0;                   // contact angle (rad)
-  double rolling_radius = 0;          // m
-  double normal_force = 0;            // N, from the force balance
-};
-struct RigidResult {
-  bool converged = false;     // both wheels touch (the kinematic constraint holds)
-  std::string message;
-  double y = 0, yaw = 0, Q = 0;
-  double z = 0, roll = 0;
-  double Y = 0, My = 0, Mz = 0;
-  // A wheel would need a pulling normal force to balance Q with no roll moment (e.g. a flange contact steeper
-  // than ~57 deg, whose line of action passes below the centre): the kinematics hold, the forces are no
-  // equilibrium of a wheelset resting on its rails.
-  bool tension = false;
-  std::array<RigidWheel, 2> wheel;
-};
-RigidResult solve_rigid(const GeometryModel& geometry, double y, double yaw, double Q);
-
-// The deepest rail line of one side at a pose (radial overlap > 0 inside the wheel).
-RigidWheel deepest_point(const GeometryModel& geometry, int side, const Pose& pose);
-
 // A sweep of equilibria: for each yaw, y runs over `ys` with continuation, starting at the y closest to 0
 // and marching outward on both sides. The cases are cut into chunks (plan_sweep), each solved on its own from a
 // cold start, so that a case's result depends on the plan alone, never on which thread, process or machine ran
@@ -192,12 +167,11 @@ std::string failure_message(const WheelResult& result);
 
 // The results as fields (Lua tables, C API paths; docs in README "Equilibrium"). An equilibrium: converged,
 // error, y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations, evaluations, residual = {force, moment}, left, right (as
-// wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right), force, moment. A wheel:
-// the side's wheel fields, converged, error, z, residual, iterations. A rigid case: converged, tension, error, y,
-// yaw, Q, z, roll, Y, My, Mz, Y_Q, left/right = {point, normal, angle, rolling_radius, normal_force, overlap, line}.
+// wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right; only when both wheels carry
+// load), force, moment. A wheel:
+// the side's wheel fields, converged, error, z, residual, iterations. (A rigid case: kinematics/rigid.hpp.)
 void describe(const EquilibriumResult& result, FieldSink& out);
 void describe(const WheelResult& result, FieldSink& out);
-void describe(const RigidResult& result, FieldSink& out);
 // Entry i of a sweep: `case` (its 1-based index in the plan), its equilibrium, and `rigid` (a rigid case) when the
 // sweep solved it.
 void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out);
