@@ -162,7 +162,6 @@ Study.__index = Study
 -- options from the command line; with --help, prints them and ends the run.
 function M.new(spec)
   local cmd = command()
-  cmd.study = true  -- the host's flags apply (a plain script ignores them; the host says so)
   local s = setmetatable({spec = spec, name = spec.name}, Study)
   s.declared, s.byname = declare(spec)
   if cmd.help then
@@ -698,6 +697,7 @@ end
 -- }
 function Study:run(r)
   local cmd = command()
+  cmd.study = true  -- the host's flags applied (a script that never gets here ignores them; the host says so)
   assert(math.type(r.cases) == "integer" and r.cases >= 1, "study:run: cases must be a positive integer")
   assert(type(r.compute) == "function", "study:run: compute(batch) is required")
   local c = {study = self, cases = r.cases, tables = r.tables or {}, compute = r.compute, finish = r.finish, key = r.key,

@@ -77,7 +77,7 @@ for o in step_mm=0.1 ymax_mm=8 grid_mm=0.2 chain=0 threads=0 plots=true out=resu
 done
 echo 'print("a plain script")' > plain.lua  # no study: a shard of it would silently be the whole
 expect_status 2 "$WRC" run plain.lua --shard 1/2
-expect_err "declares no study (wrc.study.new)"
+expect_err "runs no study through wrc.study"
 expect_status 2 "$WRC" run "$PAPER" --shard 1/2 --merge
 expect_err "takes no --shard"
 

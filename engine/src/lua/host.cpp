@@ -170,7 +170,7 @@ int exit_code(lua_State* L, int status) {
   return code;
 }
 
-// True when the script declared a study (wrc.study.new sets wrc.command.study).
+// True when the script ran a study (wrc.study's s:run sets wrc.command.study).
 bool declared_study(lua_State* L) {
   lua_getglobal(L, "wrc");
   const bool study = lua_istable(L, -1) && lua_getfield(L, -1, "command") == LUA_TTABLE &&
@@ -201,8 +201,8 @@ int run_file(const std::string& path, const std::vector<std::string>& args, cons
   int code = exit_code(L, status);
   if (status == LUA_OK && (flags.shards > 1 || flags.merge || flags.fresh || flags.help) && !declared_study(L)) {
     // A plain script ignores the flags: it ran whole. For a shard or a merge that is an error of the command.
-    std::fprintf(stderr, "wrc: %s declares no study (wrc.study.new): the flags --shard, --merge, --fresh and --help "
-                 "do not apply to it, and it ran as a whole\n", path.c_str());
+    std::fprintf(stderr, "wrc: %s runs no study through wrc.study (study.new, s:run): the flags --shard, --merge, "
+                 "--fresh and --help do not apply to it, and it ran as a whole\n", path.c_str());
     if (flags.shards > 1 || flags.merge) code = 2;
   }
   lua_close(L);

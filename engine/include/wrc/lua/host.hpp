@@ -37,8 +37,9 @@ RunFlags take_run_flags(std::vector<std::string>& args, const std::function<cons
 // help), which the study library reads. Errors (missing file, syntax, runtime) are printed to stderr as
 // `file:line: message` with a traceback. Returns the process exit code: 0 on success, 1 on an error, or
 // what the script left in wrc.command.status (3: a study completed with failed cases); an error object
-// {exit = code} (the study library's --help) ends the script quietly with that code. A script that declares no
-// study (wrc.command.study unset) ran whole: with --shard or --merge that is exit code 2, with a message.
+// {exit = code} (the study library's --help) ends the script quietly with that code. A script that runs no
+// study through wrc.study (wrc.command.study unset) ran whole: with --shard or --merge that is exit code 2, with a
+// message.
 int run_file(const std::string& path, const std::vector<std::string>& args, const RunFlags& flags = {});
 
 // `wrc merge DIR [key=value ...]`: runs the study whose parts are in DIR/parts again in merge mode, with the
