@@ -392,10 +392,11 @@ end
 ----------------------------------------------------------------------------------------------------------------
 -- Computing a shard
 
--- The first line of an error (a Lua error may carry a traceback), without line breaks.
+-- The first line of an error (a Lua error may carry a traceback), with the folders of script paths left out
+-- ("fleet_conicity.lua:80: ..."): a case's error reads the same on every machine, wherever the study was checked out.
 local function first_line(e)
   local s = type(e) == "table" and (e.message or tostring(e)) or tostring(e)
-  return (s:match("^[^\n]*"))
+  return (s:match("^[^\n]*"):gsub("[^%s:]*/([^/%s:]+%.lua):(%d+):", "%1:%2:"))
 end
 
 -- The block lines of one chunk: "@k", then "<t> <csv>" per row of table t, "! <csv>" per failed case.
