@@ -37,7 +37,7 @@ local s = study.new{
     {"cant", "number", 1 / 40, "rail inclination (1/40 = 0.025)", min = 0, max = 0.1},
     {"gauge_mm", "number", 1435, "track gauge at 14 mm below the rail top (mm)", min = 1000, max = 1700},
     {"back_to_back_mm", "number", 1360, "distance between the flange backs (mm)", min = 1000, max = 1700},
-    {"radius_mm", "number", 460, "nominal wheel radius (mm): the wavelengths only", min = 200, max = 700},
+    {"radius_mm", "number", 460, "nominal wheel radius (mm)", min = 200, max = 700},
     {"amplitudes_mm", "string", "3", "amplitudes of tan(gamma_e) (mm), comma-separated; the first is the figures'"},
     {"table_step_mm", "number", 0.05, "step of the Δr tables (mm)", min = 0.001, max = 1},
     {"threads", "integer", 0, "worker threads of each wheel's Δr table (0: all cores)", min = 0, max = 256,
