@@ -6,6 +6,9 @@
 --   wrc run examples/paper_study.lua [out=results] [step_mm=0.1] [threads=N] ... [--shard K/N] [--merge]
 --   wrc run examples/paper_study.lua --help            (lists the options)
 --
+-- surface: the contact areas on one plane each, as the paper ("planar", the default here), or on the curved
+-- surface along the rail's profile ("conformal"); examples/surfaces_study.lua runs both side by side.
+--
 -- Writes into `out`: sweep.csv (elastic), rigid.csv (rigid reference), the figures of the paper as PNG
 -- (fig4_z_roll, fig5_YQ_Mz, fig6_pressure_*, fig7_h_*, fig8_rail_*, rigid_vs_elastic) with their data, and
 -- summary.txt (the numbers quoted in the README), all made from the two tables; manifest.txt lists them.
@@ -21,6 +24,8 @@ local s = study.new{
     {"grid_mm", "number", 0.2, "element size of the potential contact areas (mm)", min = 1e-3, max = 10},
     {"chain", "integer", 0, "cut the continuation chains into pieces of at most this many cases, each started cold " ..
                             "(0: whole chains, as the paper; more pieces spread over more shards)", min = 0},
+    {"surface", "string", "planar", "contact areas on one plane each (as the paper) or along the rail's profile",
+     choices = {"planar", "conformal"}},
     {"threads", "integer", 0, "worker threads (0: all cores of this process)", min = 0, max = 256, hash = false},
     {"plots", "boolean", true, "make the figures", hash = false},
   },
@@ -33,7 +38,7 @@ local rail = wrc.profile.load("profiles/60e1.lua", {step = 0.1e-3})
 local ws = wrc.wheelset{
   wheel = wheel, rail = rail,
   radius = 0.45, back_to_back = 1.360, gauge = 1.435, gauge_depth = 0.014, cant = 1 / 40,
-  E = 2.1e11, nu = 0.3, grid = grid,
+  E = 2.1e11, nu = 0.3, grid = grid, surface = opt.surface,
 }
 local Q = 200e3
 

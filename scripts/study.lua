@@ -268,6 +268,11 @@ local function scaled(grid, k, floor)
   return v
 end
 
+-- The grid's second axis: across the contact plane, or along the rail's profile (a conformal area).
+local function across(p)
+  return p.surface == "conformal" and "arc length along the rail profile (mm)" or "lateral, in the contact plane (mm)"
+end
+
 -- Figures 6 and 7: pressure and undeformed distance of every contact area of an equilibrium.
 function M.plot_patches(dir, tag, e)
   for _, side in ipairs{"left", "right"} do
@@ -278,10 +283,10 @@ function M.plot_patches(dir, tag, e)
         out.map{file = string.format("%s/fig6_pressure_%s.png", dir, name), x = xs, y = ys, value = scaled(p.pressure, 1e-6),
                 title = string.format("pressure (MPa), %s wheel, %s: N = %.1f kN, angle %.1f deg", side, tag,
                                       p.normal_force / 1e3, p.angle * deg),
-                xlabel = "x, rolling direction (mm)", ylabel = "lateral, in the contact plane (mm)", cblabel = "MPa"}
+                xlabel = "x, rolling direction (mm)", ylabel = across(p), cblabel = "MPa"}
         out.map{file = string.format("%s/fig7_h_%s.png", dir, name), x = xs, y = ys, value = scaled(p.h, 1e3, -0.05),
                 title = string.format("undeformed distance h (mm, > 0 inter-penetration), %s wheel, %s", side, tag),
-                xlabel = "x, rolling direction (mm)", ylabel = "lateral, in the contact plane (mm)", cblabel = "mm"}
+                xlabel = "x, rolling direction (mm)", ylabel = across(p), cblabel = "mm"}
       end
     end
   end
@@ -291,6 +296,12 @@ end
 -- the two rail lines (from the area's segments) that bracket it; x along the track from the plane.
 local function rail_surface_mapper(p)
   local o, t1, t2 = p.frame.origin, p.frame.t1, p.frame.t2
+  if p.rows then  -- a conformal area lies on the rail: its grid row j at (rows.y[j], rows.z[j]), x from its origin
+    return function(u, v)
+      local j = math.floor((v - p.grid.y0) / p.grid.dy + 0.5) + 1
+      return o.x + u, p.rows.y[j], p.rows.z[j]
+    end
+  end
   local lines, seen = {}, {}
   for _, s in ipairs(p.segments or {}) do
     if not seen[s.line] then

@@ -92,6 +92,21 @@ int wheelset_contact(lua_State* L) {
   return 1;
 }
 
+// {side =, y =, yaw =, roll =, Fz =} of a wheel with its vertical force given.
+struct WheelCase {
+  int side;
+  double y, yaw, roll, Fz;
+};
+WheelCase read_wheel_case(OptionReader& r, const char* ctx) {
+  WheelCase c;
+  c.side = parse_side(r.string("side").value_or(""), ctx);
+  c.y = r.number("y", 0.0);
+  c.yaw = r.number("yaw", 0.0);
+  c.roll = r.number("roll", 0.0);
+  c.Fz = r.need_number("Fz");
+  return c;
+}
+
 bool returns_failures(OptionReader& r) {
   return r.choice("on_failure", {"error", "return"}).value_or("error") == "return";
 }
@@ -123,13 +138,11 @@ int wheelset_wheel(lua_State* L) {
   const char* ctx = "wheelset:wheel";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const int side = parse_side(a.reader.string("side").value_or(""), ctx);
-  const double y = a.reader.number("y", 0.0), yaw = a.reader.number("yaw", 0.0);
-  const double roll = a.reader.number("roll", 0.0), Fz = a.reader.need_number("Fz");
+  const WheelCase c = read_wheel_case(a.reader, ctx);
   const EquilibriumOptions opt = read_equilibrium_options(a.reader);
   const bool ret = returns_failures(a.reader);
   a.reader.finish();
-  const WheelResult r = solve_wheel(w.model->contact_model(), side, y, yaw, roll, Fz, workspace(L, w), opt);
+  const WheelResult r = solve_wheel(w.model->contact_model(), c.side, c.y, c.yaw, c.roll, c.Fz, workspace(L, w), opt);
   if (!r.converged && !ret) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;
@@ -287,11 +300,9 @@ int trajectory_wheel(lua_State* L) {
   const char* ctx = "trajectory:wheel";
   LuaTrajectory& t = trajectory_self(L, ctx);
   Args a(L, ctx);
-  const int side = parse_side(a.reader.string("side").value_or(""), ctx);
-  const double y = a.reader.number("y", 0.0), yaw = a.reader.number("yaw", 0.0);
-  const double roll = a.reader.number("roll", 0.0), Fz = a.reader.need_number("Fz");
+  const WheelCase c = read_wheel_case(a.reader, ctx);
   a.reader.finish();
-  const WheelResult r = t.trajectory->wheel(side, y, yaw, roll, Fz);
+  const WheelResult r = t.trajectory->wheel(c.side, c.y, c.yaw, c.roll, c.Fz);
   if (!r.converged) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;

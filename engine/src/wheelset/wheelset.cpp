@@ -26,6 +26,9 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   c.merge_tolerance = r.number("merge_tolerance", c.merge_tolerance);
   c.merge_angle = r.number("merge_angle", c.merge_angle);
   c.dense = r.choice("solver", {"fast", "dense"}).value_or(c.dense ? "dense" : "fast") == "dense";
+  c.surface = r.choice("surface", {"planar", "conformal"}).value_or(surface_name(c.surface)) == "conformal"
+                  ? ContactSurface::conformal
+                  : ContactSurface::planar;
   p.strategy = r.string("strategy").value_or(p.strategy);
   return p;
 }
@@ -69,6 +72,7 @@ void describe(const WheelsetParams& p, FieldSink& out) {
   out.number("merge_tolerance", p.contact.merge_tolerance);
   out.number("merge_angle", p.contact.merge_angle);
   out.string("solver", p.contact.dense ? "dense" : "fast");
+  out.string("surface", surface_name(p.contact.surface));
   out.string("strategy", p.strategy);
 }
 

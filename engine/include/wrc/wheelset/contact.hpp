@@ -21,16 +21,22 @@
 // Areas of one wheel are solved together when contact::patches_interact says the separate solutions differ
 // by more than `merge_tolerance` and their normals differ by less than `merge_angle` (one plane must serve
 // both); otherwise each alone.
+//
+// That is the planar path (ContactOptions::surface = planar). The default, conformal, lays each area on the curved
+// surface along the rail's profile instead, with h along the normals and each row's pressure along its own normal
+// (wheelset/conformal.hpp); location, merging, solvers and results are shared.
 #pragma once
 
 #include "wrc/contact/normal.hpp"
 #include "wrc/core/fields.hpp"
 #include "wrc/geometry/location.hpp"
+#include "wrc/wheelset/conformal.hpp"
 
 #include <Eigen/Core>
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace wrc {
@@ -43,12 +49,21 @@ struct ContactOptions {
   bool dense = false;             // the dense reference solver instead of the fast one (tests)
   int max_elements = 1 << 20;     // a larger potential contact area is an error (a pose far too deep)
   contact::NormalOptions normal;  // tolerance etc. of the normal solver
+  // The potential contact area: the curved surface along the rail's profile (CONTACT's conformal mode;
+  // wheelset/conformal.hpp) or one plane per area (the paper's, CONTACT's planar mode). Conformal by default: it
+  // agrees with the plane where the patch is flat and satisfies virtual work where the plane does not (README,
+  // "Conformal contact").
+  ContactSurface surface = ContactSurface::conformal;
 };
 
 // Rows of a force/moment sensitivity: (Fx, Fy, Fz, Mx, My, Mz); columns: (z, roll) of the pose.
 using Sensitivity = Eigen::Matrix<double, 6, 2>;
 
 // One potential contact area (one or more merged inter-penetration patches of one wheel) and its solution.
+// A conformal area (`conformal` set, wheelset/conformal.hpp) has no plane: origin, t1, t2 are the local frame at its
+// grid's origin on the curved surface, `normal` is the direction of the resultant force (normal_force = |force|,
+// below the pressure's integral), `point` the centre of pressure on the surface and `moment` the sum of the
+// elements' moments.
 struct PatchContact {
   int side = kLeft;
   std::vector<Patch> located;          // the inter-penetration patches of the area (copied from the location;
@@ -61,11 +76,13 @@ struct PatchContact {
   double nominal_angle = 0;            // contact angle of the wheel's normal there (rad): the paper's plane
   contact::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
   std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
+  std::optional<ConformalSurface> conformal;  // the curved surface of a conformal area (rows, normals); none: planar
   double normal_force = 0;             // N
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // centre of pressure (track frame, m)
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // of `force` about the wheelset centre (N m)
   double angle = 0;                    // contact angle (rad): normal vs z, > 0 tilted toward the track centre
+  double angle_min = 0, angle_max = 0; // range of the directions the pressure acts in (rad; planar: = angle)
   double rolling_radius = 0;           // wheel radius at the centre of pressure (m)
   double penetration = 0;              // max h (m)
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with

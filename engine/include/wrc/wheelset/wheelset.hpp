@@ -25,7 +25,7 @@ struct WheelsetParams {
                                 // gauge_depth 0.014 m, cant 1/40 (track.hpp)
   contact::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (contact/material.hpp)
   ContactOptions contact;       // grid 0.2 mm, margin 2 elements, tolerance 1e-8, merge_tolerance 0.01,
-                                // merge_angle 0.26 rad, the fast solver (wheelset/contact.hpp)
+                                // merge_angle 0.26 rad, the fast solver, the conformal surface (wheelset/contact.hpp)
   // The location strategy: "accurate" (the profiles every 0.1 mm along the arc, coarse pre-search, topology walk).
   // The constant-slope wheel of "fast" stripes the pressure of near-conformal contacts (S1002/60E1 at y = 0), and
   // the search is a small part of an evaluation beside the normal problems.
@@ -33,7 +33,8 @@ struct WheelsetParams {
 };
 
 // Reads wrc.wheelset{}'s keys over the defaults: radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E,
-// nu, grid, margin, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), strategy (a name). Range
+// nu, grid, margin, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), surface ("planar" |
+// "conformal"), strategy (a name). Range
 // checks happen when the wheelset is built. Does not finish() the reader (the caller may read more keys).
 WheelsetParams read_wheelset_params(OptionReader& options);
 // The parameters as fields (wrc.defaults, ws.params).
