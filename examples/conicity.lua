@@ -3,7 +3,7 @@
 --   S1002 / 60E1 at 1:40, S1002 / 60E1 at 1:20, and a hollow-worn S1002 read from a MiniProf file
 --   (examples/data/s1002_hollow_worn.whl, made by examples/data/make_worn_wheel.lua) on 60E1 at 1:40.
 --
---   wrc run examples/conicity.lua [out=results/conicity] [plots=true]
+--   wrc run examples/conicity.lua [out=results/conicity] [plots=true]      (--help lists the options)
 --
 -- For each pair: the rigid contact geometry table y = -10 .. 10 mm every 0.05 mm with the roll free (CSV and the
 -- multibody text table), its contact-point jumps, the contact-point chart (PNG), and tan(gamma_e) against the
@@ -15,10 +15,14 @@
 --   summary.txt                            the jumps and tan(gamma_e) at 3 mm with and without roll
 local out = require "wrc.output"
 local geo = require "wrc.contact_geometry"
+local study = require "wrc.study"
 
-local dir = arg.out or "results/conicity"
-local plots = arg.plots ~= "false" and arg.plots ~= false
-out.mkdir(dir)
+local opt = study.new{
+  name = "conicity", out = "results/conicity",
+  help = "Rigid contact geometry and EN 15302 conicity of S1002/60E1 at 1:40 and 1:20 and a hollow-worn S1002.",
+  options = {{"plots", "boolean", true, "make the figures", hash = false}},
+}.options
+local dir, plots = opt.out, opt.plots
 
 local s1002 = wrc.profile.load("profiles/s1002.lua")
 local e60 = wrc.profile.load("profiles/60e1.lua")
@@ -70,11 +74,10 @@ if plots then
            xlabel = "amplitude of the lateral motion of the wheelset yhat (mm)", ylabel = "tan(gamma_e)", series = tan_series,
            extra = {"set key top right", "set yrange [0:*]"}}
   out.plot{file = dir .. "/dr.png", title = "rolling radius difference (roll free)", xlabel = "lateral displacement y (mm)",
-           ylabel = "r_{left} - r_{right} (mm)", series = dr_series, extra = {"set key top left", "set yrange [-12:12]"}}
+           ylabel = "r_{left} - r_{right} (mm)", series = dr_series, extra = {"set key top left", "set yrange [-12:12]"},
+           enhanced = true}
 end
 local text = table.concat(summary, "\n") .. "\n"
-local f = assert(io.open(dir .. "/summary.txt", "w"))
-f:write(text)
-f:close()
+out.text(dir .. "/summary.txt", text)
 io.write(text)
 print("results in " .. dir)

@@ -2,7 +2,7 @@
 -- both contact surfaces (issue 15): each contact area on one plane (the paper's, surface = "planar") and on the
 -- curved surface along the rail's profile (surface = "conformal", each element's pressure along its own normal).
 --
---   wrc run examples/surfaces_study.lua [out=results/surfaces] [step_mm=0.1] [threads=N] [grid_mm=0.2]
+--   wrc run examples/surfaces_study.lua [out=results/surfaces] [step_mm=0.1] [threads=N] [grid_mm=0.2]  (--help)
 --
 -- Writes into `out`: sweep_planar.csv and sweep_conformal.csv (the columns of the paper study's sweep.csv, plus
 -- left_min_row_angle_deg and left_max_row_angle_deg: the range of the directions the left wheel's pressure acts in),
@@ -13,10 +13,16 @@
 local out = require "wrc.output"
 local study = require "wrc.study"
 
-local dir = arg.out or "results/surfaces"
-local step = (arg.step_mm or 0.1) * 1e-3
-local grid = (arg.grid_mm or 0.2) * 1e-3
-out.mkdir(dir)
+local opt = study.new{
+  name = "surfaces_study", out = "results/surfaces",
+  help = "The paper's study with planar and with conformal contact areas, side by side.",
+  options = {
+    {"step_mm", "number", 0.1, "step of the lateral displacement y (mm)", min = 1e-3},
+    {"grid_mm", "number", 0.2, "element size of the potential contact areas (mm)", min = 1e-3, max = 10},
+    {"threads", "integer", 0, "worker threads (0: all cores of this process)", min = 0, max = 256, hash = false},
+  },
+}.options
+local dir, step, grid = opt.out, opt.step_mm * 1e-3, opt.grid_mm * 1e-3
 local deg = 180 / math.pi
 
 local wheel = wrc.profile.load("profiles/s1002.lua", {step = 0.1e-3})
@@ -84,7 +90,7 @@ columns[#columns + 1] = "left_min_row_angle_deg"
 columns[#columns + 1] = "left_max_row_angle_deg"
 for _, surface in ipairs{"planar", "conformal"} do
   local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = grid, surface = surface}
-  local sweep = ws:sweep{y = ys, yaw = yaws, Q = Q, threads = arg.threads}
+  local sweep = ws:sweep{y = ys, yaw = yaws, Q = Q, threads = opt.threads}
   sweeps[surface] = sweep
   local rows = {}
   for _, r in ipairs(sweep) do
@@ -123,9 +129,7 @@ if at then
                                     at.y * 1e3, at.yaw * deg)
 end
 local summary = table.concat(lines, "\n") .. "\n"
-local f = assert(io.open(dir .. "/summary.txt", "w"))
-f:write(summary)
-f:close()
+out.text(dir .. "/summary.txt", summary)
 io.write(summary)
 
 -- Figures.

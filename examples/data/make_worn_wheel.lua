@@ -8,7 +8,10 @@
 -- 0.2 mm and +-3 um of deterministic noise is added to the radial coordinate, as a measuring device would. The file
 -- has the layout of tests/data/profile/samples/s1002.whl (X from the flange back, Y toward the flange tip, rows from
 -- the field side) with Sh, Sd and qR measured on the worn profile. Rerun only to change the wear; commit the output.
-local out = arg.out or ((arg[0] or ""):match("^(.*)/[^/]*$") or ".")
+local out = require("wrc.study").new{
+  name = "make_worn_wheel", out = (arg[0] or ""):match("^(.*)/[^/]*$") or ".",
+  help = "Writes s1002_hollow_worn.whl: a hollow-worn S1002 in the MiniProf wheel layout (generated, not measured).",
+}.options.out
 local s1002 = wrc.profile.load("profiles/s1002.lua", {step = 0.2e-3})
 local y, z = s1002:points()
 local seed = 20240611
@@ -29,7 +32,5 @@ local L = {"MINIPROF", "Filename=s1002_hollow_worn.whl", "ProgramName=wrc exampl
            "Chars=Win", "ColumnDef=X,Y", ""}
 for i = #y, 1, -1 do L[#L + 1] = (" %.4f\t% .4f"):format((y[i] + 0.070) * 1e3, -z[i] * 1e3) end
 local path = out .. "/s1002_hollow_worn.whl"
-local f = assert(io.open(path, "w"))
-f:write(table.concat(L, "\r\n"), "\r\n")
-f:close()
+wrc.fs.write_file(path, table.concat(L, "\r\n") .. "\r\n")
 print(("wrote %s: %d points, Sh %.2f mm, Sd %.2f mm, qR %.2f mm"):format(path, #y, m.Sh * 1e3, m.Sd * 1e3, m.qR * 1e3))

@@ -615,6 +615,7 @@ void describe(const WheelResult& w, FieldSink& out) {
 }
 
 void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out) {
+  out.integer("case", sweep.index[i] + 1);
   describe(sweep.elastic[i], out);
   if (sweep.rigid[i]) {
     out.begin("rigid");

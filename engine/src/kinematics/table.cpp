@@ -1,6 +1,8 @@
 // Rigid contact geometry tables (table.hpp): rows with continuation on worker threads, jumps by bisection, files.
 #include "wrc/kinematics/table.hpp"
 
+#include "wrc/core/files.hpp"
+
 #include "wrc/core/error.hpp"
 
 #include <algorithm>
@@ -168,16 +170,6 @@ namespace {
 
 constexpr double kDeg = 180 / std::numbers::pi;
 
-struct File {
-  std::FILE* f;
-  explicit File(const std::string& path) : f(std::fopen(path.c_str(), "w")) {
-    if (!f) fail("geometry table: cannot write {}", path);
-  }
-  ~File() {
-    if (f) std::fclose(f);
-  }
-};
-
 // A CSV cell: a finite number, or empty.
 std::string cell(double v, bool present = true) {
   if (!present) return "";
@@ -232,8 +224,7 @@ void write_geometry_csv(const GeometryTable& t, const std::string& path) {
     }
     text += fmt::format("{}\n", fmt::join(row, ","));
   }
-  File f(path);
-  if (std::fputs(text.c_str(), f.f) < 0) fail("geometry table: cannot write {}", path);
+  write_file_atomic(path, text);  // whole or not at all (a killed run leaves no partial table)
 }
 
 void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const std::string& path) {
@@ -289,8 +280,7 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
     }
     h += line + fmt::format("{} {}\n", r.wheel[kLeft].contacts.size(), r.wheel[kRight].contacts.size());
   }
-  File f(path);
-  if (std::fputs(h.c_str(), f.f) < 0) fail("geometry table: cannot write {}", path);
+  write_file_atomic(path, h);
 }
 
 // ---- wheelset conicity ----

@@ -10,6 +10,9 @@
 #include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/kinematics/table.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace wrc::lua {
 
 const char* const kWheelsetType = "wrc.Wheelset";
@@ -186,19 +189,35 @@ int wheelset_conicity(lua_State* L) {
   return 2;
 }
 
-// ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, progress=, tolerances}
+// The sweep's cases from ws:sweep{...} and ws:sweep_plan{...}: y, yaw, chain.
+SweepPlan read_plan(OptionReader& r, const char* ctx) {
+  const auto ys = r.number_list("y");
+  if (!ys) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", ctx);
+  const std::vector<double> yaws = r.number_list("yaw").value_or(std::vector<double>{0.0});
+  return plan_sweep(*ys, yaws, r.integer("chain", 0, 100000000).value_or(0));
+}
+
+// ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, chain=, chunks=, progress=,
+// tolerances}: chunks = {k, ...} (1-based, as ws:sweep_plan lists them) runs those chunks alone.
 int wheelset_sweep(lua_State* L) {
   const char* ctx = "wheelset:sweep";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const auto ys = a.reader.number_list("y");
-  if (!ys) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", ctx);
-  const std::vector<double> yaws = a.reader.number_list("yaw").value_or(std::vector<double>{0.0});
+  const SweepPlan plan = read_plan(a.reader, ctx);
   SweepOptions so = read_sweep_options(a.reader);
+  std::vector<int> chunks;
+  if (const auto listed = a.reader.numbers("chunks")) {
+    for (double k : *listed) {
+      if (k != std::floor(k)) fail("{}: chunks must be whole numbers (1-based), got {}", ctx, k);
+      chunks.push_back(static_cast<int>(std::clamp(k, -1.0, 1e9)) - 1);
+    }
+  } else {
+    for (std::size_t k = 0; k < plan.chunks.size(); ++k) chunks.push_back(static_cast<int>(k));
+  }
   a.reader.finish();
   // An inline Lua strategy runs only in this state: one thread, this state's search.
   if (!w.model->strategy().info().portable) so.threads = 1;
-  const SweepResult r = run_sweep(w.model->contact_model(), *ys, yaws, so, [&]() -> std::unique_ptr<ContactWorkspace> {
+  const SweepResult r = run_sweep(w.model->contact_model(), plan, chunks, so, [&]() -> std::unique_ptr<ContactWorkspace> {
     if (so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
     return w.model->make_workspace();  // a worker's own Lua state
   });
@@ -213,6 +232,30 @@ int wheelset_sweep(lua_State* L) {
   set_number(L, "seconds", r.seconds);
   set_integer(L, "threads", r.threads);
   set_integer(L, "failed", failed);
+  return 1;
+}
+
+// ws:sweep_plan{y =, yaw =, chain =} -> {cases = n, chunks = {{first =, last =, count =, solves =}, ...}}: the
+// chunks ws:sweep cuts its cases into (1-based case indices; first .. last is a contiguous range when y is sorted).
+int wheelset_sweep_plan(lua_State* L) {
+  const char* ctx = "wheelset:sweep_plan";
+  self(L, ctx);
+  Args a(L, ctx);
+  const SweepPlan plan = read_plan(a.reader, ctx);
+  a.reader.finish();
+  lua_createtable(L, 0, 2);
+  set_integer(L, "cases", static_cast<long long>(plan.cases.size()));
+  lua_createtable(L, static_cast<int>(plan.chunks.size()), 0);
+  for (std::size_t k = 0; k < plan.chunks.size(); ++k) {
+    const SweepChunk& c = plan.chunks[k];
+    lua_createtable(L, 0, 4);
+    set_integer(L, "first", c.report.front() + 1);
+    set_integer(L, "last", c.report.back() + 1);
+    set_integer(L, "count", static_cast<long long>(c.report.size()));
+    set_integer(L, "solves", static_cast<long long>(c.solve.size()));
+    lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  lua_setfield(L, -2, "chunks");
   return 1;
 }
 
@@ -438,6 +481,7 @@ void open_wheelset(lua_State* L) {
     const luaL_Reg methods[] = {{"locate", guarded<wheelset_locate>},   {"contact", guarded<wheelset_contact>},
                                 {"equilibrium", guarded<wheelset_equilibrium>}, {"wheel", guarded<wheelset_wheel>},
                                 {"rigid", guarded<wheelset_rigid>},     {"sweep", guarded<wheelset_sweep>},
+                                {"sweep_plan", guarded<wheelset_sweep_plan>},
                                 {"geometry_table", guarded<wheelset_geometry_table>},
                                 {"conicity", guarded<wheelset_conicity>},
                                 {"cones", guarded<wheelset_cones>},     {"lines", guarded<wheelset_lines>},

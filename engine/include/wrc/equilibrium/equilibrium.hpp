@@ -106,17 +106,37 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
                         const std::optional<RollingRequest>& rolling = std::nullopt);
 
 // A sweep of equilibria: for each yaw, y runs over `ys` with continuation, starting at the y closest to 0
-// and marching outward on both sides. Series are split into such chains and run on `threads` worker
-// threads (each with its own ContactWorkspace, made by `make_workspace`). A failed case is recorded and
-// the chain goes on from the last converged point.
+// and marching outward on both sides. The cases are cut into chunks (plan_sweep), each solved on its own from a
+// cold start, so that a case's result depends on the plan alone, never on which thread, process or machine ran
+// which chunk: 1, 2 or 8 threads, or a study split into shards, give the same numbers bit for bit. Chunks run on
+// `threads` worker threads (each with its own ContactWorkspace, made by `make_workspace`). A failed case is
+// recorded and its chain goes on from the last converged point.
 struct SweepCase {
   double y = 0, yaw = 0;
 };
+// A chunk solves `solve` in order: solve[0] from a cold start (no neighbour, an empty workspace), each next case by
+// continuation from the previous converged ones. It reports `report` (sorted case indices); solve[0] may be the
+// centre of a series that another chunk reports (the chain below the centre starts from its solution).
+struct SweepChunk {
+  std::vector<int> solve;
+  std::vector<int> report;
+};
+// For each yaw (sorted by y): the case nearest y = 0 is the centre; the chain above it (centre included) and the
+// chain below it (started from the centre, which it does not report) are chunks, each cut into pieces of at most
+// `chain` reported cases (0: uncut), every piece after the first starting cold at its first case. Chunks are
+// ordered by their first reported case; with ys sorted, each reports a contiguous range of cases.
+struct SweepPlan {
+  std::vector<SweepCase> cases;  // yaw major, then y as given
+  std::vector<SweepChunk> chunks;
+};
+SweepPlan plan_sweep(const std::vector<double>& ys, const std::vector<double>& yaws, int chain = 0);
+
 struct SweepOptions {
-  int threads = 0;             // 0: the machine's cores
+  int threads = 0;             // 0: the cores this process may use (available_cores)
   double Q = 200e3;            // N
   bool keep_grids = false;     // keep pressure/h grids of every case (memory)
   bool rigid = false;          // also solve the rigid reference of each case
+  int chain = 0;               // reported cases per chunk at most (0: whole continuation chains); see SweepPlan
   EquilibriumOptions equilibrium;
   // With kinematics or creepages: the tangential problems of every converged case at its equilibrium pose (the
   // equilibrium itself stays frictionless); the creep forces join the wheels' forces, Y, My, Mz do not.
@@ -125,21 +145,27 @@ struct SweepOptions {
   std::function<void(int, int, int)> progress;
 };
 struct SweepResult {
-  std::vector<SweepCase> cases;             // in the order given (yaw major, then y as given)
+  std::vector<int> index;                   // the plan's case index of each entry (ascending)
+  std::vector<SweepCase> cases;             // in the order of the plan (yaw major, then y as given)
   std::vector<EquilibriumResult> elastic;   // one per case
   std::vector<std::optional<RigidResult>> rigid;
   std::vector<std::string> errors;          // per case: exception text if the case threw, else empty
   double seconds = 0;
   int threads = 1;
 };
+// All the cases of the plan_sweep(ys, yaws, options.chain).
 SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
+                      const SweepOptions& options,
+                      const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
+// The cases reported by the chunks `chunks` (indices into plan.chunks) alone: a part of a study.
+SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const std::vector<int>& chunks,
                       const SweepOptions& options,
                       const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
 
 // Options as Lua and the C API give them: force_tolerance, moment_tolerance, max_iterations, max_evaluations,
 // trace (true: print the Newton iterates to stderr).
 EquilibriumOptions read_equilibrium_options(OptionReader& options);
-// A sweep's options: Q (required), threads (0: all cores), rigid, grids, progress (default: stderr is a
+// A sweep's options: Q (required), threads (0: all cores), rigid, grids, chain, progress (default: stderr is a
 // terminal), the equilibrium options above, and the rolling keys (read_rolling_request).
 SweepOptions read_sweep_options(OptionReader& options);
 // Why a solve did not converge, with its last iterate (the error of a Lua call that does not return failures).
@@ -153,7 +179,8 @@ std::string failure_message(const WheelResult& result);
 // the side's wheel fields, converged, error, z, residual, iterations. (A rigid case: kinematics/rigid.hpp.)
 void describe(const EquilibriumResult& result, FieldSink& out);
 void describe(const WheelResult& result, FieldSink& out);
-// Case i of a sweep: its equilibrium, and `rigid` (a rigid case) when the sweep solved it.
+// Entry i of a sweep: `case` (its 1-based index in the plan), its equilibrium, and `rigid` (a rigid case) when the
+// sweep solved it.
 void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out);
 
 }  // namespace wrc
