@@ -57,7 +57,7 @@ TEST_CASE("an equilibrium through the C API carries Q with no roll moment, and i
   size_t n = 0;
   REQUIRE(wrc_result_count(e, "left.patches", &n) == WRC_OK);
   REQUIRE(n >= 1);
-  // The pressure grid integrates to the patch's normal force.
+  // The pressure grid integrates to the patch's pressure integral (its normal force on a plane).
   const double nx = number(e, "left.patches.1.grid.nx"), ny = number(e, "left.patches.1.grid.ny");
   const double dA = number(e, "left.patches.1.grid.dx") * number(e, "left.patches.1.grid.dy");
   size_t count = 0;
@@ -67,7 +67,8 @@ TEST_CASE("an equilibrium through the C API carries Q with no roll moment, and i
   REQUIRE(wrc_result_numbers(e, "left.patches.1.pressure", p.data(), p.size(), &count) == WRC_OK);
   double sum = 0;
   for (double v : p) sum += v * dA;
-  CHECK(sum == doctest::Approx(number(e, "left.patches.1.normal_force")).epsilon(1e-9));
+  CHECK(sum == doctest::Approx(number(e, "left.patches.1.pressure_integral")).epsilon(1e-9));
+  CHECK(number(e, "left.patches.1.normal_force") <= sum * (1 + 1e-12));  // the resultant of a turning surface
   // Enumeration lists the same paths.
   size_t fields = 0;
   REQUIRE(wrc_result_fields(e, &fields) == WRC_OK);
@@ -222,4 +223,99 @@ TEST_CASE("a trajectory follows a motion warm-started, with the forces of cold e
   CHECK(bad == nullptr);  // *out is reset on failure
   CHECK(wrc_trajectory_free(tr) == WRC_OK);
   CHECK(wrc_trajectory_free(tr) == WRC_INVALID_ARGUMENT);
+}
+
+TEST_CASE("rigid contact geometry, tables, conicity and flange measures through the C API") {
+  Fixture f;
+  // The rigid contact, roll fixed: Δr from the touching points' radii.
+  wrc_result* g = nullptr;
+  REQUIRE_MESSAGE(wrc_rigid_contact(f.ws, 3e-3, 0.0, "roll=fixed", &g) == WRC_OK, last());
+  CHECK(number(g, "roll") == 0);
+  CHECK(number(g, "rolling_radius_difference") ==
+        doctest::Approx(number(g, "left.contacts.1.rolling_radius") - number(g, "right.contacts.1.rolling_radius")).epsilon(1e-15));
+  CHECK(number(g, "left.lifted") == 0);
+  wrc_result_free(g);
+  CHECK(wrc_rigid_contact(f.ws, 0.0, 0.0, "roll=sideways", &g) == WRC_ERROR);
+  CHECK(last().find("'roll' must be") != std::string::npos);
+  // A table with its jumps.
+  wrc_result* t = nullptr;
+  REQUIRE_MESSAGE(wrc_geometry_table(f.ws, "y.from=-8e-3 y.to=8e-3 y.step=0.1e-3 progress=false", &t) == WRC_OK, last());
+  size_t rows = 0, jumps = 0;
+  REQUIRE(wrc_result_count(t, "rows", &rows) == WRC_OK);
+  REQUIRE(wrc_result_count(t, "jumps", &jumps) == WRC_OK);
+  CHECK(rows == 161);
+  CHECK(jumps >= 2);
+  CHECK(number(t, "rows.81.y") == doctest::Approx(0).scale(1e-3));
+  wrc_result_free(t);
+  // The wheelset's conicity is the conicity of its own Δr table.
+  wrc_result* c = nullptr;
+  REQUIRE_MESSAGE(wrc_wheelset_conicity(f.ws, "yhat=0.002,0.003", &c) == WRC_OK, last());
+  size_t n = 0;
+  REQUIRE(wrc_result_count(c, "dr.y", &n) == WRC_OK);
+  std::vector<double> y(n), dr(n), tg(2);
+  REQUIRE(wrc_result_numbers(c, "dr.y", y.data(), n, &n) == WRC_OK);
+  REQUIRE(wrc_result_numbers(c, "dr.dr", dr.data(), n, &n) == WRC_OK);
+  REQUIRE(wrc_result_numbers(c, "tan_gamma", tg.data(), 2, &n) == WRC_OK);
+  wrc_result* d = nullptr;
+  REQUIRE_MESSAGE(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=0.002,0.003", &d) == WRC_OK, last());
+  std::vector<double> tg2(2);
+  REQUIRE(wrc_result_numbers(d, "tan_gamma", tg2.data(), 2, &n) == WRC_OK);
+  CHECK(tg2[0] == tg[0]);
+  CHECK(tg2[1] == tg[1]);
+  wrc_result_free(c);
+  wrc_result_free(d);
+  // Bad tables: an error naming it.
+  std::swap(y[3], y[4]);
+  CHECK(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=0.002", &d) == WRC_ERROR);
+  CHECK(last().find("y must increase strictly") != std::string::npos);
+  CHECK(wrc_conicity(nullptr, dr.data(), 3, "yhat=0.002", &d) == WRC_INVALID_ARGUMENT);
+  // Flange measures of the sampled S1002 (every 0.5 mm).
+  wrc_result* m = nullptr;
+  REQUIRE_MESSAGE(wrc_profile_flange_measures(f.wheel, nullptr, &m) == WRC_OK, last());
+  CHECK(number(m, "Sh") == doctest::Approx(0.028).epsilon(1e-4));
+  CHECK(number(m, "Sd") == doctest::Approx(0.0325).epsilon(1e-4));
+  wrc_result_free(m);
+  CHECK(wrc_profile_flange_measures(f.rail, nullptr, &m) == WRC_ERROR);
+}
+
+TEST_CASE("rolling contact through the C API: creep forces, grids and the options' errors") {
+  Fixture f;
+  wrc_result* c = nullptr;
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "V=27.78 mu=0.3 omega=61.6 method=exact", &c) == WRC_OK, last());
+  const double fx = number(c, "left.patches.1.Fx"), fy = number(c, "left.patches.1.Fy");
+  // Braking (omega below V / r0 = 61.73 rad/s): positive longitudinal creepage, the rail pulls the wheel back.
+  CHECK(number(c, "left.patches.1.creepage.xi") > 0);
+  CHECK(fx < 0);
+  CHECK(number(c, "left.patches.1.creep_force.x") == doctest::Approx(fx * number(c, "left.patches.1.frame.t1.x") +
+                                                                      fy * number(c, "left.patches.1.frame.t2.x")));
+  CHECK(number(c, "left.creep_force.x") + number(c, "right.creep_force.x") == doctest::Approx(number(c, "creep_force.x")));
+  CHECK(number(c, "power") > 0);
+  size_t n = 0, nx = static_cast<size_t>(number(c, "left.patches.1.grid.nx"));
+  REQUIRE(wrc_result_count(c, "left.patches.1.adhesion_map", &n) == WRC_OK);
+  CHECK(n == nx * static_cast<size_t>(number(c, "left.patches.1.grid.ny")));
+  std::vector<double> px(n);
+  REQUIRE(wrc_result_numbers(c, "left.patches.1.px", px.data(), px.size(), &n) == WRC_OK);
+  double sum = 0;
+  for (double v : px) sum += v;
+  CHECK(sum * std::pow(number(c, "left.patches.1.grid.dx"), 2) == doctest::Approx(fx));
+  wrc_result_free(c);
+  // Prescribed creepages, FASTSIM, and one wheel with its vertical force.
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage.xi=1e-3 mu=0.3 method=fastsim", &c) == WRC_OK, last());
+  CHECK(number(c, "left.patches.1.creepage.xi") == 1e-3);
+  CHECK(number(c, "right.patches.1.Fx") < 0);
+  wrc_result_free(c);
+  REQUIRE_MESSAGE(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 80e3, "V=27.78 mu=0.3 yaw_rate=0.05", &c) == WRC_OK, last());
+  CHECK(number(c, "force.z") == doctest::Approx(80e3).epsilon(1e-6));
+  CHECK(number(c, "creep_force.y") != 0);
+  wrc_result_free(c);
+  // Bad input: a status and a message.
+  for (const char* bad : {"V=27.78 mu=0", "V=0 mu=0.3", "V=27.78", "mu=0.3", "creepage.xi=1e-3 vy=1 mu=0.3",
+                          "V=27.78 mu=0.3 method=polach", "V=27.78 mu_static=0.2 mu_kinetic=0.3"}) {
+    CAPTURE(bad);
+    c = nullptr;
+    CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, bad, &c) == WRC_ERROR);
+    CHECK(c == nullptr);
+    CHECK(last().find("wrc_contact") != std::string::npos);
+  }
+  CHECK(last().find("mu_kinetic") != std::string::npos);
 }

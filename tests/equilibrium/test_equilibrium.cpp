@@ -175,6 +175,80 @@ TEST_CASE("sweep: cases in the order given, 1 and 2 threads agree with single so
   }
 }
 
+// Bitwise equality of two solved cases (what a study's shards and threads must not change).
+static void check_same_bits(const EquilibriumResult& a, const EquilibriumResult& b) {
+  CHECK(a.converged == b.converged);
+  CHECK(a.z == b.z);
+  CHECK(a.roll == b.roll);
+  CHECK(a.Y == b.Y);
+  CHECK(a.My == b.My);
+  CHECK(a.Mz == b.Mz);
+  CHECK(a.residual_force == b.residual_force);
+  CHECK(a.residual_moment == b.residual_moment);
+  CHECK(a.iterations == b.iterations);
+}
+
+TEST_CASE("sweep: the plan cuts the cases into chunks that start cold; any split over calls or threads gives the same bits") {
+  const std::vector<double> ys{-4e-3, -3e-3, -2e-3, -1e-3, 0.0, 1e-3, 2e-3, 3e-3, 4e-3};
+  const std::vector<double> yaws{0.0, 0.01};
+  // Whole chains: per yaw, the chain below the centre (started from it, which it does not report) and the chain from
+  // the centre up; chunks ordered by their first case, each a contiguous range.
+  const SweepPlan whole = plan_sweep(ys, yaws, 0);
+  REQUIRE(whole.cases.size() == 18);
+  REQUIRE(whole.chunks.size() == 4);
+  CHECK(whole.chunks[0].report == std::vector<int>{0, 1, 2, 3});
+  CHECK(whole.chunks[0].solve == std::vector<int>{4, 3, 2, 1, 0});
+  CHECK(whole.chunks[1].report == std::vector<int>{4, 5, 6, 7, 8});
+  CHECK(whole.chunks[1].solve == std::vector<int>{4, 5, 6, 7, 8});
+  CHECK(whole.chunks[3].solve == std::vector<int>{13, 14, 15, 16, 17});
+  // Pieces of at most 3 reported cases; the pieces after the first start cold at their own first case.
+  const SweepPlan cut = plan_sweep(ys, yaws, 3);
+  REQUIRE(cut.chunks.size() == 8);
+  CHECK(cut.chunks[0].report == std::vector<int>{0});
+  CHECK(cut.chunks[0].solve == std::vector<int>{0});
+  CHECK(cut.chunks[1].solve == std::vector<int>{4, 3, 2, 1});
+  CHECK(cut.chunks[2].solve == std::vector<int>{4, 5, 6});
+  CHECK(cut.chunks[3].solve == std::vector<int>{7, 8});
+  for (const SweepPlan* plan : {&whole, &cut}) {
+    std::vector<int> seen;
+    for (const SweepChunk& c : plan->chunks) seen.insert(seen.end(), c.report.begin(), c.report.end());
+    CHECK(seen == std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17});
+  }
+  CHECK_THROWS_AS(plan_sweep(ys, yaws, -1), Error);
+
+  const ContactModel& model = synthetic_model();
+  auto make_workspace = [&] { return std::make_unique<ContactWorkspace>(model); };
+  SweepOptions o;
+  o.Q = kQ;
+  o.threads = 1;
+  std::vector<int> all(cut.chunks.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+  const SweepResult ref = run_sweep(model, cut, all, o, make_workspace);
+  REQUIRE(ref.index.size() == 18);
+  for (const EquilibriumResult& e : ref.elastic) REQUIRE(e.converged);
+  // 2 and 8 threads, and the chunks one call each in reverse order (as shards would run them): the same bits.
+  for (int threads : {2, 8}) {
+    o.threads = threads;
+    const SweepResult r = run_sweep(model, cut, all, o, make_workspace);
+    CHECK(r.threads == std::min(threads, 8));
+    for (std::size_t i = 0; i < r.elastic.size(); ++i) check_same_bits(r.elastic[i], ref.elastic[i]);
+  }
+  o.threads = 1;
+  for (int k = static_cast<int>(cut.chunks.size()) - 1; k >= 0; --k) {
+    const SweepResult r = run_sweep(model, cut, {k}, o, make_workspace);
+    REQUIRE(r.index == cut.chunks[static_cast<std::size_t>(k)].report);
+    for (std::size_t i = 0; i < r.index.size(); ++i)
+      check_same_bits(r.elastic[i], ref.elastic[static_cast<std::size_t>(r.index[i])]);
+  }
+  // A chunk's first case is a cold solve: the same bits as solve_equilibrium from nothing in a new workspace.
+  ContactWorkspace cold(model);
+  const SweepCase& first = cut.cases[static_cast<std::size_t>(cut.chunks[3].solve[0])];
+  check_same_bits(solve_equilibrium(model, first.y, first.yaw, kQ, cold, o.equilibrium),
+                  ref.elastic[static_cast<std::size_t>(cut.chunks[3].solve[0])]);
+  CHECK_THROWS_WITH_AS(run_sweep(model, cut, {8}, o, make_workspace), doctest::Contains("chunk 9 does not exist"), Error);
+  CHECK_THROWS_WITH_AS(run_sweep(model, cut, {1, 1}, o, make_workspace), doctest::Contains("listed twice"), Error);
+}
+
 TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on") {
   // A wheel without flange (the 1/40 tread from the tape circle outward): at y = 90 mm the left wheel has passed its
   // rail and only the right wheel's outer edge reaches the right rail's gauge corner, so no equilibrium exists (with a

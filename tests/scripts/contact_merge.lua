@@ -51,7 +51,8 @@ local function wheelset(d, drop, tolerance, solver)
   local yg = d / 2 + math.sqrt(Rc * Rc - (Rc - gauge_depth) ^ 2)  -- gauge point on the first crown's gauge side
   return wrc.wheelset{wheel = wheel, rail = two_crown_rail(d, drop), radius = r0, cant = 0, E = E, nu = nu,
                       gauge_depth = gauge_depth, gauge = 2 * (0.75 - yg), grid = element,
-                      strategy = {"coarse", "topology"}, merge_tolerance = tolerance, solver = solver}
+                      strategy = {"coarse", "topology"}, merge_tolerance = tolerance, solver = solver,
+                      surface = "planar"}  -- the merged area's plane is checked below
 end
 
 ---------------------------------------------------------------------------------------------------------------

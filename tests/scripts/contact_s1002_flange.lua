@@ -9,15 +9,16 @@
 --
 -- The default strategy ("accurate": wheel and rail every 0.1 mm) is used for the measures; the property is
 -- checked with the strategy "fast" too, whose constant-slope wheel (cones up to 1 mm, chord sagitta ~0.4 um on
--- the tread) prints a lateral ripple of some +-30 % into the pressure at 0.2 mm elements.
+-- the tread) prints a lateral ripple of some +-30 % into the pressure at 0.2 mm elements. The areas are planar
+-- (surface = "planar"): the property is one of the plane; conformal_contact.lua checks the conformal areas.
 local check = require "wrc.check"
 local here = arg[0]:match("(.*/)") or "./"
 local C = dofile(here .. "contact_helpers.lua")
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
-local accurate = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.2e-3}
-local fast = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.2e-3, strategy = "fast"}
+local accurate = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.2e-3, surface = "planar"}
+local fast = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.2e-3, strategy = "fast", surface = "planar"}
 check.ok(accurate.strategy.name == "accurate", "the default strategy")
 
 -- A map of the pressure (0..9, # = pmax; '.' inter-penetration without contact), every other row.

@@ -81,7 +81,7 @@ local r = coarse:sweep{y = {0, 1e-3, 2e-3}, Q = 200e3, threads = 8, progress = f
 check.ok(r.threads == 1 and r.threads_note and r.threads_note:find("threads = 8 asked for, 1 used", 1, true),
          "one chain: " .. tostring(r.threads_note))
 r = coarse:sweep{y = {-1e-3, 0, 1e-3}, yaw = {0, 0.01}, Q = 200e3, threads = 8, progress = false}
-check.ok(r.threads == 4 and r.threads_note:find("the sweep has 4 chains", 1, true), tostring(r.threads_note))
+check.ok(r.threads == 4 and r.threads_note:find("the sweep has 4 chunks", 1, true), tostring(r.threads_note))
 r = coarse:sweep{y = {-1e-3, 0, 1e-3}, Q = 200e3, threads = 2, progress = false}
 check.ok(r.threads == 2 and r.threads_note == nil, "as asked: no note")
 local inline = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3, strategy = {locate = function(ctx, side) ctx:walk(side) end}}

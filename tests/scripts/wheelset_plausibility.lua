@@ -21,6 +21,8 @@ check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.4255, grid = 2e-3}, 
 local err = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.35} end,
                         "flange thicknesses 32.5 and 32.5 mm", "gauge below the flange-back distance")
 check.ok(err:find("gauge 1.3500 m", 1, true), "the message names the gauge: " .. err)
+local unchecked = wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.4245, grid = 2e-3, check_setup = false}
+check.ok(unchecked.params.check_setup == false, "check_setup = false builds what the check refuses")
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, back_to_back = 1.38} end,
             "the flanges do not fit", "flange backs too far apart")
 

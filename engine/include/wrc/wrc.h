@@ -81,11 +81,12 @@ wrc_status wrc_profile_free(wrc_profile* profile);
 /* ---- wheelsets ---- */
 
 /* A wheelset from one wheel and one rail profile (the right side their mirror image), or from four. The profiles are
- * copied. Options: those of wrc.wheelset (radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E, nu, grid,
- * margin, max_elements, tolerance, merge_tolerance, merge_angle, solver, strategy, check_strategy) where strategy is
- * one of the built-in strategies (accurate, fast, uniform, topology, coarse, constant_slope, brute or a composition
- * "uniform+coarse+topology") and strategy_options.<key> its options; check_strategy=N checks the strategy against
- * brute force on N random poses first (an error names the first pose that differs). The caller owns *out. */
+ * copied. Options: those of wrc.wheelset (radius, back_to_back, tape_offset, gauge, gauge_depth, gauge_point, cant, E,
+ * nu, grid, margin, max_elements, tolerance, merge_tolerance, merge_angle, solver, surface, strategy, check_strategy,
+ * check_setup) where strategy is one of the built-in strategies (accurate, fast, uniform, topology, coarse,
+ * constant_slope, brute or a composition "uniform+coarse+topology") and strategy_options.<key> its options;
+ * check_strategy=N checks the strategy against brute force on N random poses first (an error names the first pose
+ * that differs); check_setup=false skips the set-up's plausibility checks. The caller owns *out. */
 wrc_status wrc_wheelset_new(const wrc_profile* wheel, const wrc_profile* rail, const char* options, wrc_wheelset** out);
 wrc_status wrc_wheelset_new4(const wrc_profile* left_wheel, const wrc_profile* right_wheel,
                              const wrc_profile* left_rail, const wrc_profile* right_rail, const char* options,
@@ -95,11 +96,16 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 
 /* ---- solves; each makes a result the caller owns (*out), also when it returns WRC_NOT_CONVERGED ---- */
 
-/* Contact at a prescribed pose (m, rad). Options: grids (keep pressure and h grids, default true), sensitivity. */
+/* Contact at a prescribed pose (m, rad). Options: grids (keep pressure and h grids, default true), sensitivity; with
+ * friction (rolling contact, README "Rolling contact"): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
+ * vy (m/s), yaw_rate (rad/s), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
+ * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
+ * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
 /* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N) prescribed at y, yaw, roll. Options:
- * force_tolerance, max_iterations, max_evaluations, max_penetration (m; deeper and still short of Fz: out of reach). */
+ * force_tolerance, max_iterations, max_evaluations, max_penetration (m; deeper and still short of Fz: out of reach),
+ * and the rolling options of wrc_contact (Fz then includes the vertical part of the creep forces). */
 wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz,
                      const char* options, wrc_result** out);
 /* The static equilibrium under the vertical load Q (N) at the centre: z and roll solved at y, yaw. Options: grids
@@ -127,6 +133,29 @@ wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, 
 wrc_status wrc_trajectory_reset(wrc_trajectory* trajectory);
 /* Releases a trajectory (NULL: nothing to do). */
 wrc_status wrc_trajectory_free(wrc_trajectory* trajectory);
+/* ---- rigid contact geometry, equivalent conicity, profile measures (README "Rigid contact geometry") ---- */
+
+/* The rigid contact at y, yaw (m, rad). Options: roll ("free": both wheels on their rails, the default; "fixed": held
+ * at 0 with each wheel on its own rail; or a number: held at that roll, rad), Q, two_point_tolerance, start.z,
+ * start.roll. Fields as ws:rigid has them: "z", "roll", "rolling_radius_difference" (absent when a wheel is lifted),
+ * "left.lifted", "left.contacts.1.rolling_radius", "left.contacts.1.wheel_profile.y", ... Returns WRC_NOT_CONVERGED
+ * (with the result) when there is no such pose. */
+wrc_status wrc_rigid_contact(wrc_wheelset* wheelset, double y, double yaw, const char* options, wrc_result** out);
+/* A rigid contact geometry table in one call, on worker threads. Options: y.from, y.to, y.step (m; or y=a,b,c), yaw,
+ * roll, Q, two_point_tolerance, threads, jump_threshold, csv=<path>, file=<path> (the multibody table), progress.
+ * Fields: "rows.<i>.<field of wrc_rigid_contact>", "jumps.<i>.side|y_before|y_after|wheel_jump|rail_jump", "seconds". */
+wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_result** out);
+/* Equivalent conicity (EN 15302) of a Δr table of n points: y (m, increasing) and dr = r_left - r_right (m). Options:
+ * yhat (amplitudes, m: "yhat=0.001,0.003"), method (integral, harmonic, regression, simple), r0, contact_distance.
+ * Fields: "tan_gamma" (an array, one per amplitude), "yhat", "y_min", "y_max", "wavelength", "centre", "method". */
+wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char* options, wrc_result** out);
+/* The equivalent conicity of a wheelset from its own rigid Δr table. Options as ws:conicity (yhat, method, roll --
+ * "fixed" by default --, y.from/to/step, yaw, threads, flange_angle, r0, contact_distance); fields as wrc_conicity
+ * plus "dr.y", "dr.dr", "dr.flange". */
+wrc_status wrc_wheelset_conicity(wrc_wheelset* wheelset, const char* options, wrc_result** out);
+/* EN 15313 flange measures of a wheel profile: fields "Sh", "Sd", "qR" (m), "tip.y", "sd_point.y", ... Options:
+ * tape_offset (m, the inner face at s = -tape_offset; default 0.070). */
+wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* options, wrc_result** out);
 
 /* ---- results: fields by path, as the Lua tables have them ("Y", "z", "left.force.z", "left.patches.1.pmax",
  * "left.patches.1.pressure"; lists are 1-based). Booleans and integers read as numbers. ---- */

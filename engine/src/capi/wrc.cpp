@@ -7,6 +7,8 @@
 #include "wrc/core/options.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/kinematics/table.hpp"
+#include "wrc/profile/measures.hpp"
 #include "wrc/lua/host.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 
@@ -337,6 +339,7 @@ wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, 
     wrc::ContactRequest req;
     req.keep_grids = r.boolean("grids").value_or(true);
     req.sensitivity = r.boolean("sensitivity").value_or(false);
+    req.rolling = wrc::read_rolling_request(r);
     r.finish();
     Lease ws(*w);
     const wrc::ContactResult c = evaluate_contact(w->model->contact_model(), {y, z, roll, yaw}, *ws, req);
@@ -354,9 +357,10 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
     const wrc::OptionTable t = options_of(options, "wrc_wheel: options");
     wrc::OptionReader r(t, "wrc_wheel");
     const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
+    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
     r.finish();
     Lease ws(*w);
-    const wrc::WheelResult res = solve_wheel(w->model->contact_model(), side, y, yaw, roll, Fz, *ws, opt);
+    const wrc::WheelResult res = solve_wheel(w->model->contact_model(), side, y, yaw, roll, Fz, *ws, opt, std::nullopt, rolling);
     return make_result(out, res.converged, res.converged ? "" : "wrc_wheel: " + failure_message(res), res);
   });
 }
@@ -445,6 +449,71 @@ wrc_status wrc_trajectory_free(wrc_trajectory* trajectory) {
   return guard("wrc_trajectory_free", [&] {
     if (trajectory) registry().remove(trajectory, "trajectory");
     return WRC_OK;
+  });
+}
+
+wrc_status wrc_rigid_contact(wrc_wheelset* wheelset, double y, double yaw, const char* options, wrc_result** out) {
+  return guard("wrc_rigid_contact", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}}) finite(name, v);
+    const wrc::OptionTable t = options_of(options, "wrc_rigid_contact: options");
+    wrc::OptionReader r(t, "wrc_rigid_contact");
+    const wrc::RigidOptions o = wrc::read_rigid_options(r);
+    r.finish();
+    const wrc::RigidResult res = solve_rigid(w->model->geometry(), y, yaw, o);
+    return make_result(out, res.converged, res.converged ? "" : "wrc_rigid_contact: " + res.message, res);
+  });
+}
+
+wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_result** out) {
+  return guard("wrc_geometry_table", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    const wrc::OptionTable t = options_of(options, "wrc_geometry_table: options");
+    wrc::OptionReader r(t, "wrc_geometry_table");
+    const wrc::GeometryTableOptions o = wrc::read_geometry_table_options(r);
+    r.finish();
+    return make_result(out, true, "", wrc::run_geometry_table(w->model->geometry(), o));
+  });
+}
+
+wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char* options, wrc_result** out) {
+  return guard("wrc_conicity", [&] {
+    set_out(out, "result");
+    if (n > 0 && (!y || !dr)) invalid("the y or dr array is NULL");
+    wrc::DeltaRFunction d;
+    d.y.assign(y, y + n);
+    d.dr.assign(dr, dr + n);
+    const wrc::OptionTable t = options_of(options, "wrc_conicity: options");
+    wrc::OptionReader r(t, "wrc_conicity");
+    const wrc::ConicityOptions o = wrc::read_conicity_options(r);
+    r.finish();
+    return make_result(out, true, "", wrc::equivalent_conicity(d, o));
+  });
+}
+
+wrc_status wrc_wheelset_conicity(wrc_wheelset* wheelset, const char* options, wrc_result** out) {
+  return guard("wrc_wheelset_conicity", [&] {
+    set_out(out, "result");
+    const auto w = registry().get(wheelset, "wheelset");
+    const wrc::OptionTable t = options_of(options, "wrc_wheelset_conicity: options");
+    wrc::OptionReader r(t, "wrc_wheelset_conicity");
+    const wrc::WheelsetConicityOptions o = wrc::read_wheelset_conicity_options(r);
+    r.finish();
+    return make_result(out, true, "", wrc::wheelset_conicity(w->model->geometry(), o));
+  });
+}
+
+wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* options, wrc_result** out) {
+  return guard("wrc_profile_flange_measures", [&] {
+    set_out(out, "result");
+    const auto p = registry().get(profile, "profile");
+    const wrc::OptionTable t = options_of(options, "wrc_profile_flange_measures: options");
+    wrc::OptionReader r(t, "wrc_profile_flange_measures");
+    const double tape = r.number("tape_offset", 0.070);
+    r.finish();
+    return make_result(out, true, "", wrc::flange_measures(*p->profile, tape));
   });
 }
 

@@ -11,16 +11,6 @@
 #include <cstring>
 
 namespace wrc::contact {
-namespace {
-
-// FFTW's planner (plan creation and destruction) keeps global state: one lock for all of wrc.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-}  // namespace
-
 int fft_size(int n) {
   if (n < 1) fail("fft_size: {} points, expected at least 1", n);
   for (long m = n; m <= 16; ++m) {
@@ -42,87 +32,53 @@ int padded_size(int n) {
   return fft_size(std::max(1, 2 * n - 2));  // M >= 2n - 2 gives floor(M/2) >= n - 1
 }
 
-InfluenceSpectrum::InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, int My, FftPlanning planning)
-    : kind_(kind), dx_(dx), dy_(dy), Mx_(Mx), My_(My), rows_(kind == Kind::linear ? My / 2 + 1 : My),
-      table_(dx, dy, std::max(1, Mx / 2 + 1), std::max(1, My / 2 + 1)) {
-  if (Mx < 1 || My < 1) fail("InfluenceSpectrum: periodic size {} x {} must be positive", Mx, My);
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+PrunedFft::PrunedFft(int Mx, int My, int rows, FftPlanning planning) : Mx_(Mx), My_(My), rows_(rows) {
+  if (Mx < 1 || My < 1 || rows < 1 || rows > My)
+    fail("PrunedFft: periodic size {} x {} with {} rows is not valid", Mx, My, rows);
   const int H = Mx / 2 + 1;  // complex values per row of the r2c transform
-  const InfluenceTable& table = table_;
   const std::size_t nreal = static_cast<std::size_t>(Mx) * My;
   const std::size_t ncomplex = static_cast<std::size_t>(My) * H;
   double* in = fftw_alloc_real(nreal);
   double* out = fftw_alloc_real(nreal);
   fftw_complex* spec = fftw_alloc_complex(ncomplex);
-  const auto free_buffers = [&] { fftw_free(in), fftw_free(out), fftw_free(spec); };
-  if (!in || !out || !spec) {
-    free_buffers();
-    fail("InfluenceSpectrum: cannot allocate FFT buffers for {} x {}", Mx, My);
-  }
-  fftw_plan full = nullptr;  // plain 2-D transform, for the kernel's spectrum only
-  {
+  bool planned = false;
+  if (in && out && spec) {
     // Row transforms (length Mx, contiguous) of the first rows_ rows, and column transforms (length My,
     // stride H) of all H columns, in place in the complex buffer.
-    std::lock_guard lock(planner_mutex());
+    std::lock_guard lock(fftw_planner_mutex());
     const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
     int nx = Mx, ny = My;
     plans_[0] = fftw_plan_many_dft_r2c(1, &nx, rows_, in, nullptr, 1, Mx, spec, nullptr, 1, H, flags);
     plans_[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
     plans_[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
     plans_[3] = fftw_plan_many_dft_c2r(1, &nx, rows_, spec, nullptr, 1, H, out, nullptr, 1, Mx, flags);
-    full = fftw_plan_dft_r2c_2d(My, Mx, in, spec, FFTW_ESTIMATE);
+    planned = plans_[0] && plans_[1] && plans_[2] && plans_[3];
   }
-  const auto destroy_full = [&] {
-    std::lock_guard lock(planner_mutex());
-    if (full) fftw_destroy_plan(full);
-  };
-  if (!full || !plans_[0] || !plans_[1] || !plans_[2] || !plans_[3]) {
-    destroy_full();
+  fftw_free(in);
+  fftw_free(out);
+  fftw_free(spec);
+  if (!planned) {
     {
-      std::lock_guard lock(planner_mutex());
-      for (void* plan : plans_)
-        if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+      std::lock_guard lock(fftw_planner_mutex());
+      for (void*& plan : plans_)
+        if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan)), plan = nullptr;
     }
-    free_buffers();
-    fail("InfluenceSpectrum: FFTW could not plan a {} x {} transform", Mx, My);
+    fail("PrunedFft: FFTW could not allocate or plan a {} x {} transform", Mx, My);
   }
-  for (int l = 0; l < My; ++l) {  // after planning: FFTW_MEASURE overwrites the buffers
-    const int n = std::min(l, My - l);
-    for (int k = 0; k < Mx; ++k) in[k + static_cast<std::size_t>(Mx) * l] = table(std::min(k, Mx - k), n);
-  }
-  fftw_execute(full);
-  destroy_full();
-  const double scale = 1.0 / static_cast<double>(nreal);
-  eigen_.resize(ncomplex);
-  inverse_.resize(ncomplex);
-  double largest = 0;
-  min_eigen_ = INFINITY;
-  for (std::size_t q = 0; q < ncomplex; ++q) {
-    largest = std::max(largest, spec[q][0]);
-    min_eigen_ = std::min(min_eigen_, spec[q][0]);
-  }
-  // The circulant of this positive, decreasing kernel is positive definite (checked in the tests); the
-  // clamp only guards the preconditioner against a tiny high-frequency eigenvalue.
-  const double floor = 1e-12 * largest;
-  for (std::size_t q = 0; q < ncomplex; ++q) {
-    eigen_[q] = spec[q][0] * scale;
-    inverse_[q] = scale / std::max(spec[q][0], floor);
-  }
-  free_buffers();
 }
 
-InfluenceSpectrum::~InfluenceSpectrum() {
-  std::lock_guard lock(planner_mutex());
+PrunedFft::~PrunedFft() {
+  std::lock_guard lock(fftw_planner_mutex());
   for (void* plan : plans_)
     if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
 }
 
-bool InfluenceSpectrum::serves(const Grid& grid) const {
-  if (grid.dx != dx_ || grid.dy != dy_) return false;
-  if (kind_ == Kind::linear) return grid.nx - 1 <= Mx_ / 2 && grid.ny - 1 <= My_ / 2;
-  return grid.nx <= Mx_ && grid.ny <= My_;
-}
-
-void InfluenceSpectrum::forward(double* in, void* spectrum) const {
+void PrunedFft::forward(double* in, void* spectrum) const {
   auto* spec = static_cast<fftw_complex*>(spectrum);
   fftw_execute_dft_r2c(static_cast<fftw_plan>(plans_[0]), in, spec);
   // Rows rows_..My-1 of the input are zero, so are their row transforms.
@@ -131,10 +87,79 @@ void InfluenceSpectrum::forward(double* in, void* spectrum) const {
   fftw_execute_dft(static_cast<fftw_plan>(plans_[1]), spec, spec);
 }
 
-void InfluenceSpectrum::backward(void* spectrum, double* out) const {
+void PrunedFft::backward(void* spectrum, double* out) const {
   auto* spec = static_cast<fftw_complex*>(spectrum);
   fftw_execute_dft(static_cast<fftw_plan>(plans_[2]), spec, spec);
   fftw_execute_dft_c2r(static_cast<fftw_plan>(plans_[3]), spec, out);  // rows >= rows_ are not needed
+}
+
+InfluenceSpectrum::InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, int My, FftPlanning planning)
+    : kind_(kind), dx_(dx), dy_(dy), Mx_(Mx), My_(My), fft_(Mx, My, kind == Kind::linear ? My / 2 + 1 : My, planning),
+      table_(dx, dy, std::max(1, Mx / 2 + 1), std::max(1, My / 2 + 1)) {
+  const int H = Mx / 2 + 1;
+  const InfluenceTable& table = table_;
+  const std::size_t nreal = static_cast<std::size_t>(Mx) * My;
+  const std::size_t ncomplex = static_cast<std::size_t>(My) * H;
+  std::vector<double> kernel(nreal);
+  for (int l = 0; l < My; ++l) {
+    const int n = std::min(l, My - l);
+    for (int k = 0; k < Mx; ++k) kernel[k + static_cast<std::size_t>(Mx) * l] = table(std::min(k, Mx - k), n);
+  }
+  const std::vector<double> spectrum = real_spectrum(kernel, Mx, My);
+  const double scale = 1.0 / static_cast<double>(nreal);
+  eigen_.resize(ncomplex);
+  inverse_.resize(ncomplex);
+  double largest = 0;
+  min_eigen_ = INFINITY;
+  for (double v : spectrum) {
+    largest = std::max(largest, v);
+    min_eigen_ = std::min(min_eigen_, v);
+  }
+  // The circulant of this positive, decreasing kernel is positive definite (checked in the tests); the
+  // clamp only guards the preconditioner against a tiny high-frequency eigenvalue.
+  const double floor = 1e-12 * largest;
+  for (std::size_t q = 0; q < ncomplex; ++q) {
+    eigen_[q] = spectrum[q] * scale;
+    inverse_[q] = scale / std::max(spectrum[q], floor);
+  }
+}
+
+InfluenceSpectrum::~InfluenceSpectrum() = default;
+
+bool InfluenceSpectrum::serves(const Grid& grid) const {
+  if (grid.dx != dx_ || grid.dy != dy_) return false;
+  if (kind_ == Kind::linear) return grid.nx - 1 <= Mx_ / 2 && grid.ny - 1 <= My_ / 2;
+  return grid.nx <= Mx_ && grid.ny <= My_;
+}
+
+std::vector<double> real_spectrum(const std::vector<double>& kernel, int Mx, int My) {
+  const int H = Mx / 2 + 1;
+  const std::size_t nreal = static_cast<std::size_t>(Mx) * My;
+  const std::size_t ncomplex = static_cast<std::size_t>(My) * H;
+  if (kernel.size() != nreal) fail("real_spectrum: {} values for a {} x {} grid", kernel.size(), Mx, My);
+  double* in = fftw_alloc_real(nreal);
+  fftw_complex* spec = fftw_alloc_complex(ncomplex);
+  fftw_plan full = nullptr;  // plain 2-D transform, once per kernel
+  if (in && spec) {
+    std::lock_guard lock(fftw_planner_mutex());
+    full = fftw_plan_dft_r2c_2d(My, Mx, in, spec, FFTW_ESTIMATE);
+  }
+  if (!full) {
+    fftw_free(in);
+    fftw_free(spec);
+    fail("real_spectrum: FFTW could not allocate or plan a {} x {} transform", Mx, My);
+  }
+  std::copy(kernel.begin(), kernel.end(), in);
+  fftw_execute(full);
+  std::vector<double> out(ncomplex);
+  for (std::size_t q = 0; q < ncomplex; ++q) out[q] = spec[q][0];
+  {
+    std::lock_guard lock(fftw_planner_mutex());
+    fftw_destroy_plan(full);
+  }
+  fftw_free(in);
+  fftw_free(spec);
+  return out;
 }
 
 ConvolutionWorkspace::~ConvolutionWorkspace() { release(); }
@@ -174,7 +199,7 @@ void ConvolutionWorkspace::release() {
   Mx_ = My_ = nx_ = ny_ = 0;
 }
 
-void ConvolutionWorkspace::prepare(const InfluenceSpectrum& s, const Grid& grid) {
+void ConvolutionWorkspace::prepare(const PrunedFft& s, const Grid& grid) {
   const std::size_t nreal = static_cast<std::size_t>(s.Mx()) * s.My();
   const std::size_t ncomplex = static_cast<std::size_t>(s.complex_size());
   if (nreal > real_capacity_ || ncomplex > complex_capacity_) {

@@ -1,8 +1,10 @@
-// Elastic equilibrium (Newton on z and roll), one wheel with its vertical force given, and the rigid reference.
+// Elastic equilibrium (Newton on z and roll) and one wheel with its vertical force given (the rigid reference they
+// start from: kinematics/rigid.cpp).
 #include "wrc/equilibrium/equilibrium.hpp"
 
 #include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/core/roots.hpp"
 
 #include <Eigen/Dense>
 
@@ -19,163 +21,6 @@ void check_case(double y, double yaw, double Q, const char* what) {
   if (!std::isfinite(yaw) || std::abs(yaw) > 0.3) fail("{}: yaw = {} rad must be finite and within +-0.3 rad", what, yaw);
   if (!std::isfinite(Q) || !(Q > 0)) fail("{}: Q = {} N must be a positive number", what, Q);
 }
-
-// Root of f on a bracket [a, b] (f(a), f(b) of opposite signs) by the Illinois variant of regula falsi:
-// superlinear on smooth functions, never leaves the bracket. Stops when |f| <= ftol; `ok` says whether it did.
-template <class F>
-double bracketed_root(F&& f, double a, double b, double fa, double fb, double ftol, int max_iter, bool& ok) {
-  ok = false;
-  int kept = 0;  // +1 / -1: which end was kept last (halve its value when kept twice)
-  for (int it = 0; it < max_iter; ++it) {
-    double x = b - fb * (b - a) / (fb - fa);
-    if (!(x > std::min(a, b) && x < std::max(a, b))) x = 0.5 * (a + b);
-    const double fx = f(x);
-    if (std::abs(fx) <= ftol) {
-      ok = true;
-      return x;
-    }
-    if ((fx < 0) == (fb < 0)) {  // x replaces b, a is kept
-      b = x;
-      fb = fx;
-      if (kept == 1) fa *= 0.5;
-      kept = 1;
-    } else {  // x replaces a... the bracket is now [b, x]
-      a = b;
-      fa = fb;
-      b = x;
-      fb = fx;
-      kept = -1;
-    }
-  }
-  return std::abs(fa) < std::abs(fb) ? a : b;
-}
-
-}  // namespace
-
-RigidWheel deepest_point(const GeometryModel& g, int side, const Pose& pose) {
-  const PoseFrame f(pose);
-  const RailLines& rail = g.side[side].rail;
-  const WheelCones& w = g.side[side].wheel;
-  RigidWheel best;
-  best.overlap = -std::numeric_limits<double>::infinity();
-  // The largest overlap at the lines' closest approaches is a floor for the deepest point: lines that provably
-  // stay below it are skipped (with yaw, each full line search visits the cones it passes under).
-  double floor = -std::numeric_limits<double>::infinity();
-  if (f.a12 != 0)  // with yaw (without, each line's search is the closed form at its closest approach)
-    for (int r = 0; r < rail.count(); ++r) floor = std::max(floor, line_overlap_at_closest(w, f, rail.y[r], rail.z[r]));
-  double x = 0;
-  for (int r = 0; r < rail.count(); ++r) {
-    const LineApproach a = line_approach(w, f, rail.y[r], rail.z[r], std::max(floor, best.overlap));
-    if (a.overlap > best.overlap) {
-      best.overlap = a.overlap;
-      best.line = r;
-      x = a.x;
-    }
-  }
-  if (best.line >= 0) {
-    best.point = {x, rail.y[best.line], rail.z[best.line]};
-    best.normal = wheel_inward_normal(w, f, best.point);
-    best.angle = contact_angle(side, best.normal);
-    best.rolling_radius = wheel_surface_at(w, f.to_wheelset(best.point).y()).radius;
-  }
-  return best;
-}
-
-RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) {
-  check_case(y, yaw, Q, "rigid contact");
-  RigidResult res;
-  res.y = y;
-  res.yaw = yaw;
-  res.Q = Q;
-  auto pen = [&](int side, double z, double roll) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
-  // Newton on (z, roll) for both overlaps = 0, with difference derivatives (the overlaps are piecewise smooth in
-  // the pose: a few iterations where the contact point does not jump)...
-  auto newton = [&](double z, double roll) {
-    Eigen::Vector2d P(pen(kLeft, z, roll), pen(kRight, z, roll));
-    const double h = 1e-8;
-    for (int it = 0; it < 30; ++it) {
-      if (P.cwiseAbs().maxCoeff() <= 1e-12) {
-        res.z = z;
-        res.roll = roll;
-        return true;
-      }
-      Eigen::Matrix2d J;
-      J.col(0) = (Eigen::Vector2d(pen(kLeft, z + h, roll), pen(kRight, z + h, roll)) - P) / h;
-      J.col(1) = (Eigen::Vector2d(pen(kLeft, z, roll + h), pen(kRight, z, roll + h)) - P) / h;
-      Eigen::Vector2d dx = -J.fullPivLu().solve(P);
-      if (!dx.allFinite()) return false;
-      dx /= std::max({1.0, std::abs(dx(0)) / 1e-3, std::abs(dx(1)) / 2e-3});
-      bool accepted = false;
-      for (double t = 1; t > 1e-3 && !accepted; t *= 0.5) {
-        const Eigen::Vector2d Pt(pen(kLeft, z + t * dx(0), roll + t * dx(1)), pen(kRight, z + t * dx(0), roll + t * dx(1)));
-        if (Pt.norm() < (1 - 1e-4 * t) * P.norm()) {
-          z += t * dx(0);
-          roll += t * dx(1);
-          P = Pt;
-          accepted = true;
-        }
-      }
-      if (!accepted) return false;
-    }
-    return false;
-  };
-  // ... and, where it stalls on a jump of the contact point, nested brackets: for a roll, the height at which
-  // the first wheel touches (max overlap over both sides = 0, decreasing in z); then the roll at which both do
-  // (the difference of the overlaps changes sign: the left rises with roll).
-  auto touch_z = [&](double roll) {
-    auto f = [&](double z) { return std::max(pen(kLeft, z, roll), pen(kRight, z, roll)); };
-    double a = -0.02, b = 0.02;
-    double fa = f(a), fb = f(b);
-    if (!(fa > 0 && fb < 0)) fail("rigid contact: no touching height within +-20 mm at y = {}, yaw = {}", y, yaw);
-    bool ok = false;
-    return bracketed_root(f, a, b, fa, fb, 1e-13, 200, ok);
-  };
-  auto diff = [&](double roll) {
-    const double z = touch_z(roll);
-    return pen(kLeft, z, roll) - pen(kRight, z, roll);
-  };
-  if (!newton(0.0, 0.0)) {
-    try {
-      double a = -0.02, b = 0.02;
-      double fa = diff(a), fb = diff(b);
-      if (!(fa > 0 && fb < 0)) fail("rigid contact: no roll within +-20 mrad puts both wheels on their rails");
-      bool ok = false;
-      res.roll = bracketed_root(diff, a, b, fa, fb, 1e-13, 200, ok);
-      if (!ok) fail("rigid contact: the roll that puts both wheels on their rails was not found to 1e-13 m");
-      res.z = touch_z(res.roll);
-    } catch (const Error& e) {
-      res.message = e.what();
-      return res;
-    }
-  }
-  const Pose pose{y, res.z, res.roll, yaw};
-  const Eigen::Vector3d c(0, y, res.z);
-  for (int s : {kLeft, kRight}) res.wheel[s] = deepest_point(g, s, pose);
-  // Normal forces from the vertical and roll balance: N_L n_L + N_R n_R carries Q with no moment about x.
-  Eigen::Matrix2d A;
-  Eigen::Vector2d rhs(Q, 0);
-  for (int s : {kLeft, kRight}) {
-    A(0, s) = res.wheel[s].normal.z();
-    A(1, s) = (res.wheel[s].point - c).cross(res.wheel[s].normal).x();
-  }
-  const Eigen::Vector2d N = A.fullPivLu().solve(rhs);
-  Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
-  for (int s : {kLeft, kRight}) {
-    res.wheel[s].normal_force = N(s);
-    const Eigen::Vector3d f = N(s) * res.wheel[s].normal;
-    F += f;
-    M += (res.wheel[s].point - c).cross(f);
-  }
-  res.Y = -F.y();
-  res.My = -M.y();
-  res.Mz = -M.z();
-  res.converged = std::isfinite(res.Y) && N.allFinite();
-  if (!res.converged) res.message = "rigid contact: the contact normals give a singular force balance";
-  res.tension = res.converged && (N(0) < 0 || N(1) < 0);
-  return res;
-}
-
-namespace {
 
 // Thrown when a solve has used its evaluation budget (EquilibriumOptions::max_evaluations).
 struct EvaluationBudget : Error {
@@ -574,8 +419,10 @@ void finish_result(const ContactModel& model, ContactWorkspace& ws, const Contac
 
 EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double yaw, double Q, ContactWorkspace& ws,
                                     const EquilibriumOptions& opt, const std::vector<Start>& starts,
-                                    const ContactRequest& request) {
+                                    const ContactRequest& frictional) {
   check_case(y, yaw, Q, "equilibrium");
+  ContactRequest request = frictional;
+  request.rolling.reset();  // the equilibrium is frictionless (add_rolling evaluates creep forces at its pose)
   if (opt.max_iterations < 1 || opt.max_evaluations < 1)
     fail("equilibrium: max_iterations and max_evaluations must be >= 1");
   EquilibriumResult res;
@@ -630,7 +477,8 @@ double touch_height(const GeometryModel& g, int side, double y, double yaw, doub
 }  // namespace
 
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
-                        ContactWorkspace& ws, const EquilibriumOptions& opt, std::optional<double> start) {
+                        ContactWorkspace& ws, const EquilibriumOptions& opt, std::optional<double> start,
+                        const std::optional<RollingRequest>& rolling) {
   check_case(y, yaw, std::max(Fz, 1.0), "wheel");
   if (!std::isfinite(roll) || std::abs(roll) > 0.3) fail("wheel: roll = {} rad must be finite and within +-0.3", roll);
   if (!std::isfinite(Fz) || !(Fz > 0)) fail("wheel: Fz = {} N must be a positive number", Fz);
@@ -669,6 +517,32 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   double a0 = 0, f0 = -target;                                       // the exact point of no contact
   double a1 = start && z_touch - *start > 0 ? z_touch - *start : opt.initial_approach;
   double lo = 0, hi = INFINITY;
+  // With friction the creep forces' vertical part joins Fz (a tilted contact plane turns lateral creep forces partly
+  // vertical): from the frictionless approach, secant steps on the total vertical force with the tangential problems
+  // solved (the first with the Hertz stiffness dFz/da = 1.5 Fz / a).
+  auto with_friction = [&](double a) {
+    ContactRequest fr;
+    fr.only_side = side;
+    fr.rolling = rolling;
+    auto error = [&](double at) {
+      if (evaluations++ >= opt.max_evaluations)
+        throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", opt.max_evaluations));
+      cur = evaluate_contact(model, {y, z_touch - at, roll, yaw}, ws, fr);
+      res.z = z_touch - at;
+      return cur.wheel[side].force.z() - Fz;
+    };
+    double e = error(a), k = 1.5 * Fz / a;
+    for (int it = 0; std::abs(e) > opt.force_tolerance * Fz; ++it) {
+      if (it >= opt.max_iterations) {
+        res.message = fmt::format("no convergence in {} iterations with the creep forces", opt.max_iterations);
+        return false;
+      }
+      const double next = a - e / k, en = error(next);
+      if (en != e) k = (en - e) / (next - a);
+      a = next, e = en;
+    }
+    return true;
+  };
   try {
     double f1 = phi(a1, start ? tight : loose);
     for (int it = 0; std::abs(f1) > ftol; ++it) {
@@ -692,6 +566,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     // evaluate_contact gives at the solved pose (from the converged pressures, a few CG iterations).
     const double model_tolerance = model.options().normal.tolerance;
     if (res.converged && opt.final_at_model_tolerance && tight > model_tolerance) evaluate(a1, model_tolerance);
+    if (res.converged && rolling) res.converged = with_friction(a1);
   } catch (const EvaluationBudget& e) {
     res.message = e.what();
   } catch (const UnreachableLoad& e) {
@@ -765,9 +640,12 @@ void describe(const EquilibriumResult& e, FieldSink& out) {
     describe(e.contact.wheel[s], out);
     out.end();
   }
-  out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
+  // Only with both wheels loaded: a lifted wheel has no rolling radius (Δr would be a wheel radius).
+  if (e.contact.wheel[kLeft].force.z() > 0 && e.contact.wheel[kRight].force.z() > 0)
+    out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
   out.vec3("force", e.contact.force);
   out.vec3("moment", e.contact.moment);
+  describe(e.contact.creep, out);
 }
 
 void describe(const WheelResult& w, FieldSink& out) {
@@ -779,34 +657,8 @@ void describe(const WheelResult& w, FieldSink& out) {
   out.integer("iterations", w.iterations);
 }
 
-void describe(const RigidResult& r, FieldSink& out) {
-  out.boolean("converged", r.converged);
-  out.boolean("tension", r.tension);
-  if (!r.message.empty()) out.string("error", r.message);
-  out.number("y", r.y);
-  out.number("yaw", r.yaw);
-  out.number("Q", r.Q);
-  out.number("z", r.z);
-  out.number("roll", r.roll);
-  out.number("Y", r.Y);
-  out.number("My", r.My);
-  out.number("Mz", r.Mz);
-  out.number("Y_Q", r.Y / r.Q);
-  for (int s : {kLeft, kRight}) {
-    const RigidWheel& w = r.wheel[s];
-    out.begin(side_name(s));
-    out.vec3("point", w.point);
-    out.vec3("normal", w.normal);
-    out.number("angle", w.angle);
-    out.number("rolling_radius", w.rolling_radius);
-    out.number("normal_force", w.normal_force);
-    out.number("overlap", w.overlap);
-    out.integer("line", w.line + 1);
-    out.end();
-  }
-}
-
 void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out) {
+  out.integer("case", sweep.index[i] + 1);
   describe(sweep.elastic[i], out);
   if (sweep.rigid[i]) {
     out.begin("rigid");

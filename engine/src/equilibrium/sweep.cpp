@@ -1,5 +1,6 @@
 // Sweeps of equilibria with continuation along y, on worker threads (equilibrium.hpp).
 #include "wrc/core/error.hpp"
+#include "wrc/core/files.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
 #include <algorithm>
@@ -15,46 +16,27 @@
 namespace wrc {
 namespace {
 
-// A chain of case indices solved in order, each starting from the previous converged point.
-struct Chain {
-  int centre = -1;  // the case whose solution starts the chain
-  std::vector<int> cases;
-};
-
-struct Plan {
-  std::vector<int> centres;  // per yaw, the case nearest y = 0 (solved first, cold)
-  std::vector<Chain> chains; // per yaw, the cases above and below it, marching outward
-};
-
-void check_input(const std::vector<double>& ys, const std::vector<double>& yaws, const SweepOptions& opt) {
+void check_input(const std::vector<double>& ys, const std::vector<double>& yaws) {
   if (ys.empty() || yaws.empty()) fail("sweep: needs at least one y and one yaw");
-  if (!(opt.Q > 0) || !std::isfinite(opt.Q)) fail("sweep: Q = {} N must be a positive number", opt.Q);
   for (double y : ys)
     if (!std::isfinite(y)) fail("sweep: y values must be finite");
   for (double a : yaws)
     if (!std::isfinite(a)) fail("sweep: yaw values must be finite");
 }
 
-// Cases are yaw-major (case a * ny + i is yaws[a], ys[i]).
-Plan make_plan(const std::vector<double>& ys, int yaw_count) {
-  const int ny = static_cast<int>(ys.size());
-  std::vector<int> order(static_cast<std::size_t>(ny));
-  for (int i = 0; i < ny; ++i) order[static_cast<std::size_t>(i)] = i;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return ys[a] < ys[b]; });
-  int mid = 0;
-  for (int k = 0; k < ny; ++k)
-    if (std::abs(ys[order[k]]) < std::abs(ys[order[mid]])) mid = k;
-  Plan plan;
-  for (int a = 0; a < yaw_count; ++a) {
-    const int base = a * ny;
-    plan.centres.push_back(base + order[mid]);
-    Chain up{base + order[mid], {}}, down{base + order[mid], {}};
-    for (int k = mid + 1; k < ny; ++k) up.cases.push_back(base + order[k]);
-    for (int k = mid - 1; k >= 0; --k) down.cases.push_back(base + order[k]);
-    if (!up.cases.empty()) plan.chains.push_back(std::move(up));
-    if (!down.cases.empty()) plan.chains.push_back(std::move(down));
+// Cuts the cases `report` (in the order they are solved) into pieces of at most `chain`; the first piece starts
+// from `lead` (solved first, not reported) when lead >= 0, the others cold at their own first case.
+void add_chain(std::vector<SweepChunk>& chunks, const std::vector<int>& report, int lead, int chain) {
+  const std::size_t n = report.size(), piece = chain > 0 ? static_cast<std::size_t>(chain) : std::max<std::size_t>(n, 1);
+  for (std::size_t k = 0; k < n; k += piece) {
+    SweepChunk c;
+    if (k == 0 && lead >= 0) c.solve.push_back(lead);
+    c.report.assign(report.begin() + static_cast<std::ptrdiff_t>(k),
+                    report.begin() + static_cast<std::ptrdiff_t>(std::min(n, k + piece)));
+    c.solve.insert(c.solve.end(), c.report.begin(), c.report.end());
+    std::sort(c.report.begin(), c.report.end());
+    chunks.push_back(std::move(c));
   }
-  return plan;
 }
 
 // Runs tasks 0..count-1 on the workers, each worker with its own workspace; with one worker, on the calling thread
@@ -85,50 +67,29 @@ void run_parallel(std::vector<std::unique_ptr<ContactWorkspace>>& workspaces, in
 
 class SweepRun {
  public:
-  SweepRun(const ContactModel& model, const SweepOptions& opt, SweepResult& out)
-      : model_(model), opt_(opt), out_(out), total_(static_cast<int>(out.cases.size())) {}
-
-  // Solves one case (recording a failure or an exception in the result); true when it converged.
-  bool solve_case(ContactWorkspace& ws, int c, const std::vector<Start>& starts) {
-    const SweepCase& sc = out_.cases[static_cast<std::size_t>(c)];
-    EquilibriumResult& e = out_.elastic[static_cast<std::size_t>(c)];
-    bool ok = false;
-    try {
-      ContactRequest req;
-      req.keep_grids = opt_.keep_grids;
-      e = solve_equilibrium(model_, sc.y, sc.yaw, opt_.Q, ws, opt_.equilibrium, starts, req);
-      ok = e.converged;
-      if (opt_.rigid) out_.rigid[static_cast<std::size_t>(c)] = solve_rigid(model_.geometry(), sc.y, sc.yaw, opt_.Q);
-    } catch (const std::exception& ex) {
-      out_.errors[static_cast<std::size_t>(c)] = ex.what();
-      e.y = sc.y;
-      e.yaw = sc.yaw;
-      e.Q = opt_.Q;
-      e.message = ex.what();
-    }
-    std::lock_guard<std::mutex> lock(progress_mutex_);
-    ++done_;
-    if (!ok) ++failed_;
-    if (opt_.progress) opt_.progress(done_, total_, failed_);
-    return ok;
+  SweepRun(const ContactModel& model, const SweepPlan& plan, const SweepOptions& opt, SweepResult& out)
+      : model_(model), plan_(plan), opt_(opt), out_(out), total_(static_cast<int>(out.index.size())) {
+    slot_.assign(plan.cases.size(), -1);
+    for (std::size_t k = 0; k < out.index.size(); ++k) slot_[static_cast<std::size_t>(out.index[k])] = static_cast<int>(k);
   }
 
-  // Continuation along a chain: each case starts from the straight line through the last two converged points
-  // (from the last one alone after the first step). The workspace starts cold, so that the chain's results do not
-  // depend on which worker ran it or what it ran before.
-  void run_chain(ContactWorkspace& ws, const Chain& ch) {
+  // Continuation along a chunk: its first case from a cold start, each next one from the straight line through
+  // the last two converged points (from the last one alone after the first step). The workspace is emptied before
+  // and after the first case, so that the chunk's results do not depend on which worker ran it or what it ran
+  // before.
+  void run_chunk(ContactWorkspace& ws, const SweepChunk& chunk) {
     struct Point {
       double y, z, roll;
       std::optional<Eigen::Matrix2d> jacobian;
       bool lifted;
     };
-    ws.forget();
     std::vector<Point> path;
-    const EquilibriumResult& centre = out_.elastic[static_cast<std::size_t>(ch.centre)];
-    if (centre.converged) path.push_back({centre.y, centre.z, centre.roll, centre.jacobian, centre.jacobian_lifted});
-    for (int c : ch.cases) {
+    const bool has_lead = chunk.solve.size() > chunk.report.size();
+    EquilibriumResult lead;  // the first case when the chunk does not report it (the centre of a series)
+    for (std::size_t k = 0; k < chunk.solve.size(); ++k) {
+      const int c = chunk.solve[k];
+      const double yc = plan_.cases[static_cast<std::size_t>(c)].y;
       std::vector<Start> starts;
-      const double yc = out_.cases[static_cast<std::size_t>(c)].y;
       if (path.size() >= 2) {
         const Point& a = path[path.size() - 2];
         const Point& b = path.back();
@@ -136,59 +97,134 @@ class SweepRun {
         starts.push_back(Start{b.z + s * (b.z - a.z), b.roll + s * (b.roll - a.roll), b.jacobian, b.lifted});
       }
       if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt, false});
-      if (solve_case(ws, c, starts)) {
-        const EquilibriumResult& e = out_.elastic[static_cast<std::size_t>(c)];
-        path.push_back({yc, e.z, e.roll, e.jacobian, e.jacobian_lifted});
-      }
+      if (k <= 1) ws.forget();
+      const bool reported = !(k == 0 && has_lead);
+      const int slot = reported ? slot_[static_cast<std::size_t>(c)] : -1;
+      EquilibriumResult& e = reported ? out_.elastic[static_cast<std::size_t>(slot)] : lead;
+      if (solve_case(ws, c, slot, e, starts, reported)) path.push_back({yc, e.z, e.roll, e.jacobian, e.jacobian_lifted});
     }
   }
 
  private:
+  // Solves one case into `e` (recording a failure or an exception); true when it converged. A reported case gets
+  // its rigid reference and counts for the progress.
+  bool solve_case(ContactWorkspace& ws, int c, int slot, EquilibriumResult& e, const std::vector<Start>& starts,
+                  bool reported) {
+    const SweepCase& sc = plan_.cases[static_cast<std::size_t>(c)];
+    bool ok = false;
+    try {
+      ContactRequest req;
+      const bool rolling = opt_.rolling.has_value() && reported;
+      req.keep_grids = (opt_.keep_grids || rolling) && reported;  // the tangential step needs the pressure
+      e = solve_equilibrium(model_, sc.y, sc.yaw, opt_.Q, ws, opt_.equilibrium, starts, req);
+      ok = e.converged;
+      if (ok && rolling) {  // creep forces at the (frictionless) equilibrium's pose
+        add_rolling(model_, e.contact, *opt_.rolling, ws);
+        if (!opt_.keep_grids) drop_grids(e.contact);
+      }
+      if (opt_.rigid && reported)
+        out_.rigid[static_cast<std::size_t>(slot)] = solve_rigid(model_.geometry(), sc.y, sc.yaw, opt_.Q);
+    } catch (const std::exception& ex) {
+      if (reported) out_.errors[static_cast<std::size_t>(slot)] = ex.what();
+      e.y = sc.y;
+      e.yaw = sc.yaw;
+      e.Q = opt_.Q;
+      e.message = ex.what();
+    }
+    if (!reported) return ok;
+    std::lock_guard<std::mutex> lock(progress_mutex_);
+    ++done_;
+    if (!ok) ++failed_;
+    if (opt_.progress) opt_.progress(done_, total_, failed_);
+    return ok;
+  }
+
   const ContactModel& model_;
+  const SweepPlan& plan_;
   const SweepOptions& opt_;
   SweepResult& out_;
+  std::vector<int> slot_;  // per case of the plan, its entry in out_ (-1: not in this run)
   std::mutex progress_mutex_;
   int done_ = 0, failed_ = 0, total_ = 0;
 };
 
 }  // namespace
 
-SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
+SweepPlan plan_sweep(const std::vector<double>& ys, const std::vector<double>& yaws, int chain) {
+  check_input(ys, yaws);
+  if (chain < 0) fail("sweep: chain = {} must be >= 0 (0: whole continuation chains)", chain);
+  const int ny = static_cast<int>(ys.size());
+  std::vector<int> order(static_cast<std::size_t>(ny));
+  for (int i = 0; i < ny; ++i) order[static_cast<std::size_t>(i)] = i;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return ys[a] < ys[b]; });
+  int mid = 0;
+  for (int k = 0; k < ny; ++k)
+    if (std::abs(ys[order[k]]) < std::abs(ys[order[mid]])) mid = k;
+  SweepPlan plan;
+  for (double yaw : yaws)
+    for (double y : ys) plan.cases.push_back({y, yaw});
+  for (int a = 0; a < static_cast<int>(yaws.size()); ++a) {
+    const int base = a * ny;
+    std::vector<int> up, down;
+    for (int k = mid; k < ny; ++k) up.push_back(base + order[k]);
+    for (int k = mid - 1; k >= 0; --k) down.push_back(base + order[k]);
+    add_chain(plan.chunks, down, base + order[mid], chain);
+    add_chain(plan.chunks, up, -1, chain);
+  }
+  std::stable_sort(plan.chunks.begin(), plan.chunks.end(),
+                   [](const SweepChunk& a, const SweepChunk& b) { return a.report.front() < b.report.front(); });
+  return plan;
+}
+
+SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const std::vector<int>& chunks,
                       const SweepOptions& opt, const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace) {
-  check_input(ys, yaws, opt);
+  if (!(opt.Q > 0) || !std::isfinite(opt.Q)) fail("sweep: Q = {} N must be a positive number", opt.Q);
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult out;
-  for (double yaw : yaws)
-    for (double y : ys) out.cases.push_back({y, yaw});
-  out.elastic.resize(out.cases.size());
-  out.rigid.resize(out.cases.size());
-  out.errors.resize(out.cases.size());
-  const Plan plan = make_plan(ys, static_cast<int>(yaws.size()));
+  std::vector<bool> taken(plan.chunks.size(), false);
+  for (int k : chunks) {
+    if (k < 0 || k >= static_cast<int>(plan.chunks.size()))
+      fail("sweep: chunk {} does not exist (the plan has {} chunks)", k + 1, plan.chunks.size());
+    if (taken[static_cast<std::size_t>(k)]) fail("sweep: chunk {} is listed twice", k + 1);
+    taken[static_cast<std::size_t>(k)] = true;
+    const auto& r = plan.chunks[static_cast<std::size_t>(k)].report;
+    out.index.insert(out.index.end(), r.begin(), r.end());
+  }
+  std::sort(out.index.begin(), out.index.end());
+  for (int c : out.index) out.cases.push_back(plan.cases[static_cast<std::size_t>(c)]);
+  out.elastic.resize(out.index.size());
+  out.rigid.resize(out.index.size());
+  out.errors.resize(out.index.size());
 
-  int threads = opt.threads > 0 ? opt.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int tasks = static_cast<int>(std::max(plan.centres.size(), plan.chains.size()));
-  threads = std::max(1, std::min(threads, opt.single_thread.empty() ? tasks : 1));
+  const int count = static_cast<int>(chunks.size());
+  int threads = opt.threads > 0 ? opt.threads : available_cores();
+  threads = std::max(1, std::min(threads, opt.single_thread.empty() ? count : 1));
   out.threads = threads;
   if (opt.threads > threads) {
     out.threads_note = fmt::format("threads = {} asked for, {} used: {}", opt.threads, threads,
                                    !opt.single_thread.empty() ? opt.single_thread
-                                   : fmt::format("the sweep has {} chain{} of continuation (per yaw, outward from the "
-                                                 "centre on each side), one per thread", tasks,
-                                                 tasks == 1 ? "" : "s"));
+                                   : fmt::format("the sweep has {} chunk{} (continuation chains: per yaw, outward "
+                                                 "from the centre on each side), one per thread", count,
+                                                 count == 1 ? "" : "s"));
     if (opt.notice) opt.notice(out.threads_note);
   }
   std::vector<std::unique_ptr<ContactWorkspace>> workspaces(static_cast<std::size_t>(threads));
   for (auto& w : workspaces) w = make_workspace();
 
-  SweepRun run(model, opt, out);
-  run_parallel(workspaces, static_cast<int>(plan.centres.size()), [&](ContactWorkspace& ws, int t) {
-    ws.forget();
-    run.solve_case(ws, plan.centres[static_cast<std::size_t>(t)], {});
+  SweepRun run(model, plan, opt, out);
+  run_parallel(workspaces, count, [&](ContactWorkspace& ws, int t) {
+    run.run_chunk(ws, plan.chunks[static_cast<std::size_t>(chunks[static_cast<std::size_t>(t)])]);
   });
-  run_parallel(workspaces, static_cast<int>(plan.chains.size()),
-               [&](ContactWorkspace& ws, int t) { run.run_chain(ws, plan.chains[static_cast<std::size_t>(t)]); });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
+                      const SweepOptions& opt, const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace) {
+  const SweepPlan plan = plan_sweep(ys, yaws, opt.chain);
+  std::vector<int> all(plan.chunks.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+  return run_sweep(model, plan, all, opt, make_workspace);
 }
 
 SweepOptions read_sweep_options(OptionReader& r) {
@@ -197,8 +233,10 @@ SweepOptions read_sweep_options(OptionReader& r) {
   o.threads = r.integer("threads", 0, 256).value_or(0);
   o.rigid = r.boolean("rigid").value_or(false);
   o.keep_grids = r.boolean("grids").value_or(false);
+  o.chain = r.integer("chain", 0, 100000000).value_or(0);
   o.equilibrium = read_equilibrium_options(r);
   o.notice = [](const std::string& note) { std::fprintf(stderr, "wrc: sweep: %s\n", note.c_str()); };
+  o.rolling = read_rolling_request(r);
   if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
     const auto t0 = std::chrono::steady_clock::now();
     o.progress = [t0](int done, int total, int failed) {

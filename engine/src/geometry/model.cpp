@@ -239,10 +239,12 @@ RailLines place_rail(const Profile& p, const SidePlacement& pl, int side) {
     r.y[j] = q.x();
     r.z[j] = q.y();
   }
-  for (std::size_t i = 1; i < n; ++i)
+  for (std::size_t i = 1; i < n; ++i) {
+    if (r.y[i] < r.y[i - 1] && r.y[i] > r.y[i - 1] - kVerticalRounding) r.y[i] = r.y[i - 1];  // a vertical face
     if (r.y[i] < r.y[i - 1])
       fail("wrc.wheelset: the {} rail ({}) is not monotone in y once canted (near point {})", side_name(side), p.source,
            i + 1);
+  }
   return r;
 }
 
@@ -377,6 +379,8 @@ GeometryModel build_geometry(std::shared_ptr<const Track> track, const std::arra
     g.wheel = place_wheel(d.wheel, pl, s, "wheel");
     g.rail = place_rail(d.rail, pl, s);
     g.wheel_r2_max = *std::max_element(g.wheel.r2.begin(), g.wheel.r2.end());
+    g.wheel_curve = profile_curve(track->wheel[s]);
+    g.rail_curve = profile_curve(track->rail[s]);
 
     if (d.coarse_every > 0) {
       if (d.coarse_every < 2) fail("wrc.wheelset: coarse 'every' must be >= 2 fine lines per cell, got {}", d.coarse_every);

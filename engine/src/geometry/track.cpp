@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace wrc {
 
@@ -28,17 +29,22 @@ void check_params(const TrackParams& p) {
   if (!(std::abs(p.cant) < 0.5) || !std::isfinite(p.cant)) fail("wrc.wheelset: 'cant' = {} is out of range (|cant| < 0.5)", p.cant);
 }
 
-// Lateral position (left-side frame) of the gauge point of a canted rail: the first crossing of the
-// level top - depth walking from the highest point toward the gauge side (decreasing y).
-double gauge_point_y(const std::vector<double>& y, const std::vector<double>& z, double depth, const std::string& source) {
+// Lateral position (left-side frame) of the gauge point of a canted rail, walking from the highest point toward the
+// gauge side (decreasing y): the first crossing of the level top - depth, or (innermost) the last point of the walk
+// still at or above it -- the innermost gauge-face point of the band, as the profile is monotone in y.
+double gauge_point_y(const std::vector<double>& y, const std::vector<double>& z, double depth,
+                     TrackParams::GaugeRule rule, const std::string& source) {
   const auto top = static_cast<std::size_t>(std::max_element(z.begin(), z.end()) - z.begin());
   const double level = z[top] - depth;
+  std::optional<double> found;
   for (std::size_t i = top; i > 0; --i) {
-    if (z[i - 1] <= level) {
+    if (z[i] > level && z[i - 1] <= level) {  // the walk leaves the band downward here
       const double a = (z[i] - level) / (z[i] - z[i - 1]);
-      return y[i] + a * (y[i - 1] - y[i]);
+      found = y[i] + a * (y[i - 1] - y[i]);
+      if (rule == TrackParams::GaugeRule::first) return *found;
     }
   }
+  if (found) return *found;
   fail("wrc.wheelset: rail profile {} does not reach {} mm below its top on the gauge side", source, depth * 1e3);
 }
 
@@ -96,9 +102,13 @@ Track assemble_track(const std::array<Profile, 2>& wheels, const std::array<Prof
       cy[i] = q.x();
       cz[i] = q.y();
     }
+    // A face that the cant turns vertical (60E1's 1:20 gauge-side flank at cant 1:20) rounds to either side.
+    for (std::size_t i = 1; i < cy.size(); ++i)
+      if (cy[i] < cy[i - 1] && cy[i] > cy[i - 1] - kVerticalRounding) cy[i] = cy[i - 1];
     if (!std::is_sorted(cy.begin(), cy.end()))
-      fail("wrc.wheelset: rail profile {} is not monotone in y after the cant rotation", r.source);
-    pl.rail_dy = 0.5 * params.gauge - gauge_point_y(cy, cz, params.gauge_depth, r.source);
+      fail("wrc.wheelset: rail profile {} is not monotone in y after the cant rotation (a face leans over once canted "
+           "by {:.4g} rad)", r.source, angle);
+    pl.rail_dy = 0.5 * params.gauge - gauge_point_y(cy, cz, params.gauge_depth, params.gauge_rule, r.source);
     pl.rail_dz = -params.radius;  // provisional: crown near the wheel's lowest point
     pl.sign = s == kLeft ? 1.0 : -1.0;
   }

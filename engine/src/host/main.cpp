@@ -3,6 +3,7 @@
 #include "wrc/lua/host.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -11,12 +12,20 @@ namespace {
 
 void usage(std::FILE* out) {
   std::fputs(
-      "usage: wrc run STUDY.lua [key=value ...]\n"
+      "usage: wrc run STUDY.lua [key=value ...] [--shard K/N] [--merge] [--fresh] [--help]\n"
+      "       wrc merge DIR [key=value ...]\n"
       "       wrc --help | --version\n"
       "\n"
       "Runs a wheel-rail contact study written in Lua. The `wrc` module is preloaded as the global\n"
       "`wrc`; key=value pairs are in the global table `arg` (arg.key, numbers converted), other words\n"
       "in arg[1], arg[2], ...; require \"wrc.x.y\" loads the engine's Lua library (scripts/x/y.lua).\n"
+      "\n"
+      "A study that declares its options (wrc.study.new) lists them with --help and runs in parts:\n"
+      "  --shard K/N   compute part K of N (inside a SLURM array job the part comes from\n"
+      "                SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT; --shard wins)\n"
+      "  --merge       assemble the parts of all N shards into the outputs (or: wrc merge DIR)\n"
+      "  --fresh       discard the parts of an earlier run and start over (a run resumes otherwise)\n"
+      "Exit status: 0 done, 1 error, 2 usage, 3 done with failed cases (listed in DIR/failures.csv).\n"
       "\n"
       "environment: WRC_HOME (folder with scripts/ and profiles/), WRC_PLUGIN_PATH (extra plugin\n"
       "folders, ':'-separated)\n",
@@ -39,13 +48,21 @@ int main(int argc, char** argv) {
     std::printf("wrc %s\n", WRC_VERSION);
     return 0;
   }
-  if (cmd == "run") {
+  if (cmd == "run" || cmd == "merge") {
     if (argc < 3) {
-      std::fputs("wrc run: missing the study script (wrc run STUDY.lua [key=value ...])\n", stderr);
+      std::fprintf(stderr, "wrc %s: missing the %s\n", cmd.c_str(),
+                   cmd == "run" ? "study script (wrc run STUDY.lua [key=value ...])" : "output folder (wrc merge DIR)");
       return 2;
     }
     std::vector<std::string> args(argv + 3, argv + argc);
-    return wrc::lua::run_file(argv[2], args);
+    if (cmd == "merge") return wrc::lua::merge_folder(argv[2], args);
+    try {
+      const wrc::lua::RunFlags flags = wrc::lua::take_run_flags(args, [](const char* name) { return std::getenv(name); });
+      return wrc::lua::run_file(argv[2], args, flags);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "wrc run: %s\n", e.what());
+      return 2;
+    }
   }
   std::fprintf(stderr, "wrc: unknown command '%s'\n", cmd.c_str());
   usage(stderr);

@@ -2,18 +2,31 @@
 #include "wrc/lua/host.hpp"
 
 #include "lua/bindings.hpp"
+#include "lua/convert.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 
 namespace wrc::lua {
 
+// True when the error object at idx is {exit = code}: a script ending on purpose (e.g. a study's --help).
+bool is_exit_request(lua_State* L, int idx) {
+  if (!lua_istable(L, idx)) return false;
+  const bool integer = lua_getfield(L, idx, "exit") == LUA_TNUMBER && lua_isinteger(L, -1);
+  lua_pop(L, 1);
+  return integer;
+}
+
 int traceback_handler(lua_State* L) {
+  if (is_exit_request(L, 1)) return 1;  // passed through untouched
   const char* msg = lua_tostring(L, 1);
   if (msg == nullptr) {  // error object is not a string: use its __tostring or its type
     if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
@@ -123,28 +136,183 @@ void push_args(lua_State* L, const std::string& script, const std::vector<std::s
   lua_setglobal(L, "arg");
 }
 
-}  // namespace
+// wrc.command = {script =, shard =, shards =, shard_from =, merge =, fresh =, help =}.
+void push_command(lua_State* L, const std::string& script, const RunFlags& flags) {
+  lua_getglobal(L, "wrc");
+  lua_createtable(L, 0, 8);
+  set_string(L, "script", script);
+  set_integer(L, "shard", flags.shard);
+  set_integer(L, "shards", flags.shards);
+  set_string(L, "shard_from", flags.shard_from);
+  set_bool(L, "merge", flags.merge);
+  set_bool(L, "fresh", flags.fresh);
+  set_bool(L, "help", flags.help);
+  lua_setfield(L, -2, "command");
+  lua_pop(L, 1);
+}
 
-int run_file(const std::string& path, const std::vector<std::string>& args) {
-  lua_State* L = nullptr;
-  try {
-    L = new_state();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "wrc: %s\n", e.what());
-    return 1;
-  }
-  push_args(L, path, args);
-  int status = luaL_loadfile(L, path.c_str());
-  if (status == LUA_OK) status = pcall_traceback(L, 0, 0);
-  int code = 0;
+// The exit code of a finished run: the error's message on stderr (1), {exit = code} quietly, or the
+// wrc.command.status a successful script left (0 by default).
+int exit_code(lua_State* L, int status) {
   if (status != LUA_OK) {
+    if (is_exit_request(L, -1)) {
+      lua_getfield(L, -1, "exit");
+      return static_cast<int>(lua_tointeger(L, -1));
+    }
     const char* msg = lua_tostring(L, -1);
     // luaL_loadfile says "cannot open <file>" for a missing file; syntax errors carry file:line.
     std::fprintf(stderr, "wrc: %s\n", msg ? msg : "error object is not a string");
-    code = 1;
+    return 1;
+  }
+  lua_getglobal(L, "wrc");
+  lua_getfield(L, -1, "command");
+  const int code = lua_istable(L, -1) && lua_getfield(L, -1, "status") == LUA_TNUMBER ? static_cast<int>(lua_tointeger(L, -1)) : 0;
+  return code;
+}
+
+// True when the script ran a study (wrc.study's s:run sets wrc.command.study).
+bool declared_study(lua_State* L) {
+  lua_getglobal(L, "wrc");
+  const bool study = lua_istable(L, -1) && lua_getfield(L, -1, "command") == LUA_TTABLE &&
+                     lua_getfield(L, -1, "study") == LUA_TBOOLEAN && lua_toboolean(L, -1);
+  lua_settop(L, 0);
+  return study;
+}
+
+lua_State* open_or_report() {
+  try {
+    return new_state();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "wrc: %s\n", e.what());
+    return nullptr;
+  }
+}
+
+}  // namespace
+
+int run_file(const std::string& path, const std::vector<std::string>& args, const RunFlags& flags) {
+  lua_State* L = open_or_report();
+  if (L == nullptr) return 1;
+  for (const std::string& note : flags.notes) std::fprintf(stderr, "wrc: %s\n", note.c_str());
+  push_args(L, path, args);
+  push_command(L, path, flags);
+  int status = luaL_loadfile(L, path.c_str());
+  if (status == LUA_OK) status = pcall_traceback(L, 0, 0);
+  int code = exit_code(L, status);
+  if (status == LUA_OK && (flags.shards > 1 || flags.merge || flags.fresh || flags.help) && !declared_study(L)) {
+    // A plain script ignores the flags: it ran whole. For a shard or a merge that is an error of the command.
+    std::fprintf(stderr, "wrc: %s runs no study through wrc.study (study.new, s:run): the flags --shard, --merge, "
+                 "--fresh and --help do not apply to it, and it ran as a whole\n", path.c_str());
+    if (flags.shards > 1 || flags.merge) code = 2;
   }
   lua_close(L);
   return code;
+}
+
+int merge_folder(const std::string& folder, const std::vector<std::string>& args) {
+  lua_State* L = open_or_report();
+  if (L == nullptr) return 1;
+  RunFlags flags;
+  flags.merge = true;
+  push_command(L, "", flags);
+  int status = luaL_loadstring(L, "local folder, args = ...\nreturn require('wrc.study.run').merge_folder(folder, args)");
+  if (status == LUA_OK) {
+    lua_pushstring(L, folder.c_str());
+    lua_createtable(L, static_cast<int>(args.size()), 0);
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      lua_pushstring(L, args[i].c_str());
+      lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
+    status = pcall_traceback(L, 2, 0);
+  }
+  const int code = exit_code(L, status);
+  lua_close(L);
+  return code;
+}
+
+namespace {
+
+// K/N with 1 <= K <= N.
+void parse_shard(const std::string& text, RunFlags& f) {
+  int k = 0, n = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%c", &k, &n, &tail) != 2 || n < 1 || k < 1 || k > n || n > 1000000)
+    fail("--shard {}: expected K/N with 1 <= K <= N (e.g. --shard 2/4)", text);
+  f.shard = k;
+  f.shards = n;
+}
+
+// An integer environment variable, nullopt when unset; an error when set to anything else.
+std::optional<long> env_integer(const std::function<const char*(const char*)>& env, const char* name) {
+  const char* v = env(name);
+  if (v == nullptr || *v == 0) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const long x = std::strtol(v, &end, 10);
+  if (errno != 0 || *end != 0) fail("{}={} is not a whole number", name, v);
+  return x;
+}
+
+// The shard of a SLURM array task: ids MIN, MIN + STEP, ..., MAX number the shards 1..N.
+void shard_from_slurm(const std::function<const char*(const char*)>& env, RunFlags& f) {
+  const long id = *env_integer(env, "SLURM_ARRAY_TASK_ID");
+  const auto count = env_integer(env, "SLURM_ARRAY_TASK_COUNT"), max = env_integer(env, "SLURM_ARRAY_TASK_MAX");
+  const long step = env_integer(env, "SLURM_ARRAY_TASK_STEP").value_or(1);
+  auto min = env_integer(env, "SLURM_ARRAY_TASK_MIN");
+  if (step < 1) fail("SLURM_ARRAY_TASK_STEP={} must be >= 1", step);
+  if (!min && count && max) min = *max - (*count - 1) * step;
+  if (!min || (!count && !max))
+    fail("SLURM_ARRAY_TASK_ID={} is set without SLURM_ARRAY_TASK_MIN and SLURM_ARRAY_TASK_COUNT or _MAX: pass --shard K/N",
+         id);
+  const long n = count ? *count : (*max - *min) / step + 1;
+  if (max && (*max - *min) / step + 1 != n)
+    fail("the SLURM array's task ids {}..{} (step {}) do not number its {} tasks 1..N (a list with gaps?): submit "
+         "--array=1-N or pass --shard K/N", *min, *max, step, n);
+  if (id < *min || (id - *min) % step != 0 || (id - *min) / step + 1 > n)
+    fail("SLURM_ARRAY_TASK_ID={} is not one of the array's ids {}, {}, ... ({} tasks)", id, *min, *min + step, n);
+  f.shard = static_cast<int>((id - *min) / step + 1);
+  f.shards = static_cast<int>(n);
+  f.shard_from = fmt::format("SLURM_ARRAY_TASK_ID={} of the array {}-{} ({} tasks)", id, *min, *min + (n - 1) * step, n);
+}
+
+}  // namespace
+
+RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env) {
+  RunFlags f;
+  std::vector<std::string> rest;
+  bool shard_given = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.rfind("--", 0) != 0 && a != "-h") {
+      rest.push_back(a);
+    } else if (a == "--help" || a == "-h") {
+      f.help = true;
+    } else if (a == "--merge") {
+      f.merge = true;
+    } else if (a == "--fresh") {
+      f.fresh = true;
+    } else if (a == "--shard" || a.rfind("--shard=", 0) == 0) {
+      if (a == "--shard" && i + 1 >= args.size()) fail("--shard needs K/N (e.g. --shard 2/4)");
+      const std::string v = a == "--shard" ? args[++i] : a.substr(8);
+      parse_shard(v, f);
+      shard_given = true;
+      f.shard_from = "--shard " + v;
+    } else {
+      const std::string best = closest_name(a, {"--shard", "--merge", "--fresh", "--help"});
+      fail("unknown flag '{}'{} (flags: --shard K/N, --merge, --fresh, --help)", a,
+           best.empty() ? std::string() : " (did you mean '" + best + "'?)");
+    }
+  }
+  args = std::move(rest);
+  if (f.merge && shard_given) fail("--merge assembles the parts of every shard: it takes no --shard");
+  const char* id = env("SLURM_ARRAY_TASK_ID");
+  if (id != nullptr && *id != 0 && !f.merge && !f.help) {
+    if (shard_given)
+      f.notes.push_back(fmt::format("{} wins over the SLURM array task (SLURM_ARRAY_TASK_ID={})", f.shard_from, id));
+    else
+      shard_from_slurm(env, f);
+  }
+  return f;
 }
 
 Session::Session() : state_(new_state()) {}

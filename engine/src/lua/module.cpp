@@ -5,9 +5,6 @@
 #include "wrc/core/paths.hpp"
 #include "lua/guard.hpp"
 
-#include <filesystem>
-#include <system_error>
-
 namespace wrc::lua {
 
 void open_core(lua_State* L) {
@@ -26,32 +23,13 @@ void open_core(lua_State* L) {
   lua_setfield(L, -2, "paths");
 }
 
-namespace {
-
-// wrc.fs.mkdir(path): creates a folder and its parents (no error if it exists).
-int fs_mkdir(lua_State* L) {
-  const std::string path = check_string(L, 1, "wrc.fs.mkdir");
-  std::error_code ec;
-  std::filesystem::create_directories(path, ec);
-  if (ec) fail("wrc.fs.mkdir: cannot create '{}': {}", path, ec.message());
-  return 0;
-}
-
-}  // namespace
-
-void open_fs(lua_State* L) {
-  lua_newtable(L);
-  lua_pushcfunction(L, guarded<fs_mkdir>);
-  lua_setfield(L, -2, "mkdir");
-  lua_setfield(L, -2, "fs");
-}
-
 int luaopen_wrc(lua_State* L) {
   lua_newtable(L);
   open_core(L);
   open_fs(L);
   open_profile(L);
   open_wheelset(L);
+  open_kinematics(L);
   return 1;
 }
 

@@ -7,9 +7,12 @@
 #include "lua/guard.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/load.hpp"
+#include "wrc/profile/orientation.hpp"
 #include "wrc/profile/reader.hpp"
+#include "wrc/profile/spline.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <system_error>
@@ -67,7 +70,7 @@ LoadOptions read_options(lua_State* L, int idx, std::string_view ctx, bool geome
 }
 
 bool has_geometric_options(const LoadOptions& o) {
-  return o.mirror_y || o.mirror_z || o.crop || o.shift_y != 0 || o.shift_z != 0 || o.name || o.kind;
+  return o.mirror_y || o.mirror_z || o.crop || o.shift_y != 0 || o.shift_z != 0 || o.name || o.kind || o.smooth;
 }
 
 // Relative paths: the working directory first, then wrc.paths.root.
@@ -137,14 +140,18 @@ int profile_load(lua_State* L) {
   const std::string given = check_string(L, 1, ctx);
   const LoadOptions o = read_options(L, 2, ctx, false);
   const std::string path = resolve_path(given);
+  std::shared_ptr<Profile> p;
   if (file_extension(path) == ".lua" && !o.reader) {
     if (o.metres_per_unit) fail("{}: {}: 'units' does not apply to a Lua definition (it returns metres)", ctx, path);
-    push_profile(L, std::make_shared<const Profile>(load_definition(L, path, 2, o)));
-    return 1;
+    p = std::make_shared<Profile>(load_definition(L, path, 2, o));
+    p->warnings = orientation_warnings(*p);
+  } else {
+    LuaReaders& lr = lua_readers(L);
+    CurrentState cs(lr, L);
+    p = std::make_shared<Profile>(load_profile_file(path, o, {&lr.registry, &ReaderRegistry::plugins()}));
   }
-  LuaReaders& lr = lua_readers(L);
-  CurrentState cs(lr, L);
-  push_profile(L, std::make_shared<const Profile>(load_profile_file(path, o, {&lr.registry, &ReaderRegistry::plugins()})));
+  for (const std::string& w : p->warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+  push_profile(L, std::move(p));
   return 1;
 }
 
@@ -343,6 +350,8 @@ int profile_index(lua_State* L) {
     if (key == "source") return lua_pushstring(L, p->source.c_str()), 1;
     if (key == "duplicates_dropped") return lua_pushinteger(L, p->duplicates_dropped), 1;
     if (key == "transforms") return push_strings(L, p->transforms), 1;
+    if (key == "warnings") return push_strings(L, p->warnings), 1;
+    if (key == "smooth") return p->spline ? lua_pushnumber(L, p->spline->smoothing) : lua_pushnil(L), 1;
     if (key == "metadata") {
       lua_createtable(L, 0, static_cast<int>(p->metadata.size()));
       for (const auto& [k, v] : p->metadata) set_string(L, k.c_str(), v);

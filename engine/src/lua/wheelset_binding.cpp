@@ -8,6 +8,10 @@
 #include "lua/results_binding.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/kinematics/table.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 namespace wrc::lua {
 
@@ -69,7 +73,8 @@ int wheelset_locate(lua_State* L) {
   return 1;
 }
 
-// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, search = "strategy" | "brute"}
+// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, search = "strategy" | "brute", and the rolling
+// keys: V=, omega=, vy=, yaw_rate= or creepage = {xi=, eta=, phi=}, mu= (or mu_static=, mu_kinetic=), method=}
 int wheelset_contact(lua_State* L) {
   const char* ctx = "wheelset:contact";
   LuaWheelset& w = self(L, ctx);
@@ -78,6 +83,7 @@ int wheelset_contact(lua_State* L) {
   ContactRequest req;
   req.keep_grids = a.reader.boolean("grids").value_or(true);
   req.sensitivity = a.reader.boolean("sensitivity").value_or(false);
+  req.rolling = read_rolling_request(a.reader);
   const bool brute = a.reader.choice("search", {"strategy", "brute"}).value_or("strategy") == "brute";
   a.reader.finish();
   const ContactModel& m = w.model->contact_model();
@@ -86,6 +92,21 @@ int wheelset_contact(lua_State* L) {
   const ContactResult c = evaluate_contact(m, pose, brute ? *own : workspace(L, w), req);
   push_result(L, c, req.sensitivity);
   return 1;
+}
+
+// {side =, y =, yaw =, roll =, Fz =} of a wheel with its vertical force given.
+struct WheelCase {
+  int side;
+  double y, yaw, roll, Fz;
+};
+WheelCase read_wheel_case(OptionReader& r, const char* ctx) {
+  WheelCase c;
+  c.side = parse_side(r.string("side").value_or(""), ctx);
+  c.y = r.number("y", 0.0);
+  c.yaw = r.number("yaw", 0.0);
+  c.roll = r.number("roll", 0.0);
+  c.Fz = r.need_number("Fz");
+  return c;
 }
 
 bool returns_failures(OptionReader& r) {
@@ -114,48 +135,90 @@ int wheelset_equilibrium(lua_State* L) {
   return 1;
 }
 
-// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, tolerances}: one wheel-rail pair, vertical force prescribed.
+// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, tolerances, rolling keys}: one wheel-rail pair, vertical force
+// prescribed.
 int wheelset_wheel(lua_State* L) {
   const char* ctx = "wheelset:wheel";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const int side = parse_side(a.reader.string("side").value_or(""), ctx);
-  const double y = a.reader.number("y", 0.0), yaw = a.reader.number("yaw", 0.0);
-  const double roll = a.reader.number("roll", 0.0), Fz = a.reader.need_number("Fz");
+  const WheelCase c = read_wheel_case(a.reader, ctx);
   const EquilibriumOptions opt = read_equilibrium_options(a.reader);
+  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
   const bool ret = returns_failures(a.reader);
   a.reader.finish();
-  const WheelResult r = solve_wheel(w.model->contact_model(), side, y, yaw, roll, Fz, workspace(L, w), opt);
+  const WheelResult r = solve_wheel(w.model->contact_model(), c.side, c.y, c.yaw, c.roll, c.Fz, workspace(L, w), opt, std::nullopt,
+                                    rolling);
   if (!r.converged && !ret) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;
 }
 
-// ws:rigid{y=, yaw=, Q=}: the rigid (kinematic) contact reference.
+// ws:rigid{y=, yaw=, roll = "free" | "fixed" | number, Q=, two_point_tolerance=, start=}: the rigid contact.
 int wheelset_rigid(lua_State* L) {
   const char* ctx = "wheelset:rigid";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const double y = a.reader.need_number("y"), yaw = a.reader.number("yaw", 0.0), Q = a.reader.number("Q", 200e3);
+  const double y = a.reader.need_number("y"), yaw = a.reader.number("yaw", 0.0);
+  const RigidOptions o = read_rigid_options(a.reader);
   a.reader.finish();
-  push_result(L, solve_rigid(w.model->geometry(), y, yaw, Q));
+  push_result(L, solve_rigid(w.model->geometry(), y, yaw, o));
   return 1;
 }
 
-// ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, progress=, tolerances}
+// ws:geometry_table{y = {from=, to=, step=}, yaw=, roll=, threads=, csv=, file=, progress=, ...}
+int wheelset_geometry_table(lua_State* L) {
+  const char* ctx = "wheelset:geometry_table";
+  LuaWheelset& w = self(L, ctx);
+  Args a(L, ctx);
+  const GeometryTableOptions o = read_geometry_table_options(a.reader);
+  a.reader.finish();
+  push_result(L, run_geometry_table(w.model->geometry(), o));
+  return 1;
+}
+
+// ws:conicity{yhat=, roll = "fixed" | "free", method=, ...} -> {tan gamma_e per amplitude}, details
+int wheelset_conicity(lua_State* L) {
+  const char* ctx = "wheelset:conicity";
+  LuaWheelset& w = self(L, ctx);
+  Args a(L, ctx);
+  const WheelsetConicityOptions o = read_wheelset_conicity_options(a.reader);
+  a.reader.finish();
+  const WheelsetConicity c = wheelset_conicity(w.model->geometry(), o);
+  push_array(L, c.conicity.tan_gamma);
+  push_result(L, c);
+  return 2;
+}
+
+// The sweep's cases from ws:sweep{...} and ws:sweep_plan{...}: y, yaw, chain.
+SweepPlan read_plan(OptionReader& r, const char* ctx) {
+  const auto ys = r.number_list("y");
+  if (!ys) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", ctx);
+  const std::vector<double> yaws = r.number_list("yaw").value_or(std::vector<double>{0.0});
+  return plan_sweep(*ys, yaws, r.integer("chain", 0, 100000000).value_or(0));
+}
+
+// ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, chain=, chunks=, progress=,
+// tolerances}: chunks = {k, ...} (1-based, as ws:sweep_plan lists them) runs those chunks alone.
 int wheelset_sweep(lua_State* L) {
   const char* ctx = "wheelset:sweep";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const auto ys = a.reader.number_list("y");
-  if (!ys) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", ctx);
-  const std::vector<double> yaws = a.reader.number_list("yaw").value_or(std::vector<double>{0.0});
+  const SweepPlan plan = read_plan(a.reader, ctx);
   SweepOptions so = read_sweep_options(a.reader);
+  std::vector<int> chunks;
+  if (const auto listed = a.reader.numbers("chunks")) {
+    for (double k : *listed) {
+      if (k != std::floor(k)) fail("{}: chunks must be whole numbers (1-based), got {}", ctx, k);
+      chunks.push_back(static_cast<int>(std::clamp(k, -1.0, 1e9)) - 1);
+    }
+  } else {
+    for (std::size_t k = 0; k < plan.chunks.size(); ++k) chunks.push_back(static_cast<int>(k));
+  }
   a.reader.finish();
   // An inline Lua strategy runs only in this state: one thread, this state's search.
   const bool portable = w.model->strategy().info().portable;
   if (!portable) so.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
-  const SweepResult r = run_sweep(w.model->contact_model(), *ys, yaws, so, [&]() -> std::unique_ptr<ContactWorkspace> {
+  const SweepResult r = run_sweep(w.model->contact_model(), plan, chunks, so, [&]() -> std::unique_ptr<ContactWorkspace> {
     if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
     return w.model->make_workspace();  // a worker's own Lua state
   });
@@ -171,6 +234,30 @@ int wheelset_sweep(lua_State* L) {
   set_integer(L, "threads", r.threads);
   if (!r.threads_note.empty()) set_string(L, "threads_note", r.threads_note.c_str());
   set_integer(L, "failed", failed);
+  return 1;
+}
+
+// ws:sweep_plan{y =, yaw =, chain =} -> {cases = n, chunks = {{first =, last =, count =, solves =}, ...}}: the
+// chunks ws:sweep cuts its cases into (1-based case indices; first .. last is a contiguous range when y is sorted).
+int wheelset_sweep_plan(lua_State* L) {
+  const char* ctx = "wheelset:sweep_plan";
+  self(L, ctx);
+  Args a(L, ctx);
+  const SweepPlan plan = read_plan(a.reader, ctx);
+  a.reader.finish();
+  lua_createtable(L, 0, 2);
+  set_integer(L, "cases", static_cast<long long>(plan.cases.size()));
+  lua_createtable(L, static_cast<int>(plan.chunks.size()), 0);
+  for (std::size_t k = 0; k < plan.chunks.size(); ++k) {
+    const SweepChunk& c = plan.chunks[k];
+    lua_createtable(L, 0, 4);
+    set_integer(L, "first", c.report.front() + 1);
+    set_integer(L, "last", c.report.back() + 1);
+    set_integer(L, "count", static_cast<long long>(c.report.size()));
+    set_integer(L, "solves", static_cast<long long>(c.solve.size()));
+    lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  lua_setfield(L, -2, "chunks");
   return 1;
 }
 
@@ -220,11 +307,9 @@ int trajectory_wheel(lua_State* L) {
   const char* ctx = "trajectory:wheel";
   LuaTrajectory& t = trajectory_self(L, ctx);
   Args a(L, ctx);
-  const int side = parse_side(a.reader.string("side").value_or(""), ctx);
-  const double y = a.reader.number("y", 0.0), yaw = a.reader.number("yaw", 0.0);
-  const double roll = a.reader.number("roll", 0.0), Fz = a.reader.need_number("Fz");
+  const WheelCase c = read_wheel_case(a.reader, ctx);
   a.reader.finish();
-  const WheelResult r = t.trajectory->wheel(side, y, yaw, roll, Fz);
+  const WheelResult r = t.trajectory->wheel(c.side, c.y, c.yaw, c.roll, c.Fz);
   if (!r.converged) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;
@@ -268,29 +353,35 @@ int wheelset_check_strategy(lua_State* L) {
   return 1;
 }
 
+// Placed points are ordered by increasing track y on both sides: the profile's own order on the left, the reverse
+// on the right (its field side first); `reversed` says which.
 void push_placed(lua_State* L, const std::vector<double>& y, const std::vector<double>& z, const char* kind,
-                 const char* frame) {
-  lua_createtable(L, 0, 4);
+                 const char* frame, int side = -1) {
+  lua_createtable(L, 0, 6);
   push_array(L, y);
   lua_setfield(L, -2, "y");
   push_array(L, z);
   lua_setfield(L, -2, "z");
   set_string(L, "kind", kind);
   set_string(L, "frame", frame);
+  set_string(L, "order", "increasing y");
+  if (side >= 0) set_bool(L, "reversed", side == kRight);
 }
 
 // ws:cones(side) -> {y, z, count}: the discretised wheel's generatrix points (wheelset frame; the first and last on
 // the axle). ws:lines(side) -> {y, z, count}: the rail lines (track frame).
 int wheelset_cones(lua_State* L) {
-  const WheelCones& c = self(L, "wheelset:cones").model->geometry().side[parse_side(check_string(L, 2, "wheelset:cones"), "wheelset:cones")].wheel;
-  push_placed(L, c.y, c.z, "wheel", "wheelset");
+  const int side = parse_side(check_string(L, 2, "wheelset:cones"), "wheelset:cones");
+  const WheelCones& c = self(L, "wheelset:cones").model->geometry().side[side].wheel;
+  push_placed(L, c.y, c.z, "wheel", "wheelset", side);
   set_integer(L, "count", c.cone_count());
   return 1;
 }
 
 int wheelset_lines(lua_State* L) {
-  const RailLines& r = self(L, "wheelset:lines").model->geometry().side[parse_side(check_string(L, 2, "wheelset:lines"), "wheelset:lines")].rail;
-  push_placed(L, r.y, r.z, "rail", "track");
+  const int side = parse_side(check_string(L, 2, "wheelset:lines"), "wheelset:lines");
+  const RailLines& r = self(L, "wheelset:lines").model->geometry().side[side].rail;
+  push_placed(L, r.y, r.z, "rail", "track", side);
   set_integer(L, "count", r.count());
   return 1;
 }
@@ -346,8 +437,8 @@ int wheelset_index(lua_State* L) {
   const std::string_view key = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "";
   for (int s : {kLeft, kRight}) {
     const std::string side = side_name(s);
-    if (key == side + "_wheel") return push_placed(L, t.wheel_y[s], t.wheel_z[s], "wheel", "wheelset"), 1;
-    if (key == side + "_rail") return push_placed(L, t.rail_y[s], t.rail_z[s], "rail", "track"), 1;
+    if (key == side + "_wheel") return push_placed(L, t.wheel_y[s], t.wheel_z[s], "wheel", "wheelset", s), 1;
+    if (key == side + "_rail") return push_placed(L, t.rail_y[s], t.rail_z[s], "rail", "track", s), 1;
   }
   if (key == "gauge_points" || key == "tape_points") {
     const auto& pts = key == "gauge_points" ? t.gauge_point : t.tape_point;
@@ -414,6 +505,9 @@ void open_wheelset(lua_State* L) {
     const luaL_Reg methods[] = {{"locate", guarded<wheelset_locate>},   {"contact", guarded<wheelset_contact>},
                                 {"equilibrium", guarded<wheelset_equilibrium>}, {"wheel", guarded<wheelset_wheel>},
                                 {"rigid", guarded<wheelset_rigid>},     {"sweep", guarded<wheelset_sweep>},
+                                {"sweep_plan", guarded<wheelset_sweep_plan>},
+                                {"geometry_table", guarded<wheelset_geometry_table>},
+                                {"conicity", guarded<wheelset_conicity>},
                                 {"cones", guarded<wheelset_cones>},     {"lines", guarded<wheelset_lines>},
                                 {"coarse", guarded<wheelset_coarse>},   {"trajectory", guarded<wheelset_trajectory>},
                                 {"check_strategy", guarded<wheelset_check_strategy>}, {nullptr, nullptr}};

@@ -1,6 +1,8 @@
 #include "wrc/profile/load.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/profile/orientation.hpp"
+#include "wrc/profile/spline.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -142,6 +144,10 @@ LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
     shift->finish();
   }
   if (auto crop = r.table("crop")) o.crop = read_crop(*crop);
+  o.smooth = r.number("smooth");
+  if (o.smooth && !(*o.smooth >= 0 && *o.smooth <= 1.0))
+    fail("{}: smooth = {} must be a smoothing length in metres, 0 .. 1 (0: interpolating cubic spline)", r.context(),
+         *o.smooth);
   if (geometric_only) {
     r.finish();
     return o;
@@ -247,6 +253,8 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
   transforms.insert(transforms.end(), p.transforms.begin(), p.transforms.end());
   p.transforms = std::move(transforms);
   p.metadata = std::move(raw.metadata);
+  if (o.smooth) p = smooth_profile(p, *o.smooth);
+  p.warnings = orientation_warnings(p);
   return p;
 }
 
@@ -267,6 +275,11 @@ Profile transform_profile(const Profile& p, const LoadOptions& o) {
   r.transforms = std::move(all);
   r.metadata = p.metadata;
   r.duplicates_dropped += p.duplicates_dropped;
+  r.warnings = p.warnings;
+  if (p.spline)  // the same smooth curve, mirrored and shifted as the points (a crop keeps the curve)
+    r.spline = std::make_shared<const ProfileSpline>(
+        mapped_spline(*p.spline, o.mirror_y ? -1.0 : 1.0, o.shift_y, o.mirror_z ? -1.0 : 1.0, o.shift_z));
+  if (o.smooth) r = smooth_profile(r, *o.smooth);
   return r;
 }
 

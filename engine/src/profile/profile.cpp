@@ -1,6 +1,7 @@
 #include "wrc/profile/profile.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/profile/spline.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -100,14 +101,59 @@ Profile resampled_copy(const Profile& p, std::vector<double> y, std::vector<doub
   r.z = std::move(z);
   r.transforms = p.transforms;
   r.metadata = p.metadata;
+  r.warnings = p.warnings;
+  r.spline = p.spline;
   r.transforms.push_back(std::move(what));
   return r;
+}
+
+// Points every `step` of arc along the profile's spline between its first and last points (end points kept).
+Profile resample_spline_arc(const Profile& p, double step) {
+  const ProfileSpline& c = *p.spline;
+  const double ta = c.closest({p.y.front(), p.z.front()}), tb = c.closest({p.y.back(), p.z.back()});
+  // Arc length along t by chords of 8 sub-steps per knot interval.
+  std::vector<double> ts{ta}, len{0.0};
+  const double lo = std::min(ta, tb), hi = std::max(ta, tb);
+  std::vector<double> cuts{lo};
+  for (double k : c.t)
+    if (k > lo && k < hi) cuts.push_back(k);
+  cuts.push_back(hi);
+  if (ta > tb) std::reverse(cuts.begin(), cuts.end());
+  Eigen::Vector2d prev = c.at(ta).p;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+    for (int k = 1; k <= 8; ++k) {
+      const double tt = cuts[i] + (cuts[i + 1] - cuts[i]) * k / 8.0;
+      const Eigen::Vector2d q = c.at(tt).p;
+      ts.push_back(tt);
+      len.push_back(len.back() + (q - prev).norm());
+      prev = q;
+    }
+  const double L = len.back();
+  const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil(L / step - 1e-9)));
+  if (m > 50'000'000) fail("resample: step {} m gives {} points over {} m of arc", step, m, L);
+  std::vector<double> y(m + 1), z(m + 1);
+  std::size_t k = 0;
+  for (std::size_t j = 0; j <= m; ++j) {
+    const double target = L * static_cast<double>(j) / static_cast<double>(m);
+    while (k + 2 < len.size() && len[k + 1] < target) ++k;
+    const double seg = len[k + 1] - len[k];
+    const double a = seg > 0 ? std::clamp((target - len[k]) / seg, 0.0, 1.0) : 0.0;
+    const Eigen::Vector2d q = c.at(ts[k] + a * (ts[k + 1] - ts[k])).p;
+    y[j] = q.x();
+    z[j] = q.y();
+  }
+  y.front() = p.y.front();
+  z.front() = p.z.front();
+  y.back() = p.y.back();
+  z.back() = p.z.back();
+  return resampled_copy(p, std::move(y), std::move(z), fmt::format("resampled along the spline's arc every {:.6g} m", L / m));
 }
 
 }  // namespace
 
 Profile resample_arc(const Profile& p, double step) {
   if (!(step > 0) || !std::isfinite(step)) fail("resample: step must be a positive number of metres, got {}", step);
+  if (p.spline) return resample_spline_arc(p, step);
   const std::size_t n = p.size();
   std::vector<double> s(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
@@ -154,13 +200,14 @@ Profile resample_y(const Profile& p, double step) {
   for (std::size_t j = 0; j <= m; ++j) {
     const double yq = y0 + step * static_cast<double>(j);
     y.push_back(yq);
-    z.push_back(interpolate_z(p, yq));
+    z.push_back(p.spline ? p.spline->at(p.spline->param_at_y(yq)).p.y() : interpolate_z(p, yq));
   }
   if (y1 - y.back() > kDuplicateTolerance) {
     y.push_back(y1);
     z.push_back(p.z.back());
   }
-  return resampled_copy(p, std::move(y), std::move(z), fmt::format("resampled along y every {:.6g} m", step));
+  return resampled_copy(p, std::move(y), std::move(z),
+                        fmt::format("resampled along {}y every {:.6g} m", p.spline ? "the spline in " : "", step));
 }
 
 }  // namespace wrc

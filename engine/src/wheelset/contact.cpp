@@ -1,6 +1,9 @@
 // Patches -> potential contact areas -> normal problems -> forces (wheelset_contact.hpp).
 #include "wrc/wheelset/contact.hpp"
 
+#include "contact_internal.hpp"
+#include "rolling_step.hpp"
+
 #include "wrc/contact/interaction.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
@@ -20,7 +23,7 @@ namespace wrc {
 
 ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
                            const ContactOptions& options)
-    : geometry_(std::move(geometry)), options_(options), solver_(material) {
+    : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
   if (!geometry_) fail("contact model: no geometry");
   if (geometry_->track)
     for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = flange_of(geometry_->track->wheel[s]);
@@ -41,40 +44,7 @@ ContactWorkspace::ContactWorkspace(const ContactModel& model) : locator(model.ge
 ContactWorkspace::ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search)
     : locator(model.geometry_ptr(), std::move(search)) {}
 
-namespace {
-
-double thread_seconds() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-// Adds the thread CPU time of its scope to a field of the workspace's times (when timing is on).
-class PhaseTimer {
- public:
-  PhaseTimer(const ContactWorkspace& ws, double& slot) : slot_(ws.timing ? &slot : nullptr) {
-    if (slot_) t0_ = thread_seconds();
-  }
-  ~PhaseTimer() {
-    if (slot_) *slot_ += thread_seconds() - t0_;
-  }
-  PhaseTimer(const PhaseTimer&) = delete;
-  PhaseTimer& operator=(const PhaseTimer&) = delete;
-
- private:
-  double* slot_;
-  double t0_ = 0;
-};
-
-// What the plane and h need of one segment.
-struct SegmentInfo {
-  int line = 0;
-  double y = 0, z = 0;         // rail line (track frame)
-  double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
-  double weight = 0;           // share of the inter-penetration volume (m^3)
-  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
-  double sagitta = 0;          // arc height at the mid-point (m)
-};
+namespace contact_detail {
 
 // Lateral spacing of rail line r: half the distance between its neighbours (one-sided at the ends).
 double line_spacing(const RailLines& rail, int r) {
@@ -92,11 +62,6 @@ double line_spacing(const RailLines& rail, int r) {
 double arc_radius(const WheelSurfacePoint& s, double yaw) {
   const double c = std::cos(yaw);
   return s.radius / (std::max(s.normal_r, 0.05) * c * c);
-}
-
-double arc_height(double R, double dx) {
-  const double q = R * R - dx * dx;
-  return q > 0 ? std::sqrt(q) : -R;  // beyond the arc's reach: far below (any negative h means "no contact")
 }
 
 void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
@@ -122,10 +87,6 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     out.push_back(info);
   }
 }
-
-struct Plane {
-  Eigen::Vector3d O, n, t1, t2;
-};
 
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
   Plane pl;
@@ -183,25 +144,13 @@ contact::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const P
   return fp;
 }
 
-// h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point.
-struct LineProfile {
-  double v = 0, u0 = 0;          // plane coordinates: v of the line, u of its point at x = 0
-  std::vector<const SegmentInfo*> arcs;
-  double apex = 0, x_apex = 0, R = 1;  // no segment: arc with height `apex` (< 0) at x_apex
-  double height(double x) const {
-    if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
-    double h = -INFINITY;
-    for (const SegmentInfo* s : arcs) h = std::max(h, arc_height(s->R, x - s->xm) - (s->R - s->sagitta));
-    return h;
-  }
-};
-
 // d(force, moment)/d(z, roll) of a solved area. Rigid perturbations of the wheelset move its surface point X by
 // dz e_z + droll a x (X - c), with a the roll axis Rz(yaw) e_x and c the centre; h grows by the motion toward
 // the rail, -dX . n, which is linear in the plane coordinates. The pressure response on the contact set
 // (normal.hpp) gives dN and the first moments, hence dF = n dN and dM. The plane is held fixed: exact to first
 // order for the elastic stiffness, which dominates while the contact does not slide along a curved profile.
 void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
+  if (pc.conformal) return conformal_sensitivity(model, pose, pc, ws);
   const contact::NormalSolution& sol = pc.solution;
   pc.sensitivity.setZero();
   if (!(sol.force > 0)) return;
@@ -425,6 +374,7 @@ void area_results(const WheelCones& wheel, const PoseFrame& f, PatchContact& pc)
   pc.point = pc.origin + sol.cop_x * pc.t1 + sol.cop_y * pc.t2;
   pc.moment = (pc.point - c).cross(pc.force);
   pc.angle = contact_angle(pc.side, pc.normal);
+  pc.angle_min = pc.angle_max = pc.angle;  // one plane: the pressure acts along one normal
   pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
 }
 
@@ -436,6 +386,11 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
   std::vector<SegmentInfo> all;
   for (int p : group) all.insert(all.end(), infos[p].begin(), infos[p].end());
   const Patch& first = st.patches(side)[static_cast<std::size_t>(group.front())];
+  if (opt.surface == ContactSurface::conformal) {  // the curved surface (conformal.cpp)
+    PatchContact pc = solve_conformal_area(model, st, side, all, first, ws, request, next_previous);
+    copy_located(st, side, group, pc);
+    return pc;
+  }
   const Plane pl = plane_of(all, first);
   const ContactWorkspace::Previous* prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
 
@@ -531,6 +486,8 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   std::vector<ContactWorkspace::Previous> next_previous;
   for (const auto& group : groups) {
     PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
+    if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws);
+    add_creep(wc.creep, pc);
     wc.force += pc.force;
     wc.moment += pc.moment;
     wc.sensitivity += pc.sensitivity;
@@ -545,7 +502,9 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   return wc;
 }
 
-}  // namespace
+}  // namespace contact_detail
+
+using namespace contact_detail;
 
 void ContactWorkspace::forget() {
   for (auto& p : previous) p.clear();
@@ -567,6 +526,7 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
     res.force += wc.force;
     res.moment += wc.moment;
     res.sensitivity += wc.sensitivity;
+    add_creep(res.creep, wc.creep);
   }
   if (!request.keep_grids) drop_grids(res);
   return res;
@@ -588,6 +548,29 @@ long long largest_potential_area(const ContactModel& model, const LocationState&
   return largest;
 }
 
+void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
+                 ContactWorkspace& ws) {
+  result.force.setZero();
+  result.moment.setZero();
+  result.creep = {};
+  for (WheelContact& wc : result.wheel) {
+    wc.force.setZero();
+    wc.moment.setZero();
+    wc.creep = {};
+    for (PatchContact& pc : wc.patches) {
+      solve_area_rolling(model, result.pose, pc, request, ws);
+      add_creep(wc.creep, pc);
+      wc.force += pc.force;
+      wc.moment += pc.moment;
+    }
+    const int side = &wc == &result.wheel[kLeft] ? kLeft : kRight;
+    wc.angle = wc.patches.empty() ? 0.0 : contact_angle(side, wc.force);
+    result.force += wc.force;
+    result.moment += wc.moment;
+    add_creep(result.creep, wc.creep);
+  }
+}
+
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& ws) {
   result.sensitivity.setZero();
   for (WheelContact& wc : result.wheel) {
@@ -607,6 +590,7 @@ void drop_grids(ContactResult& result) {
       pc.h = {};
       pc.solution.pressure = {};
       pc.solution.gap = {};
+      if (pc.rolling) drop_grids(*pc.rolling);
     }
 }
 
@@ -625,11 +609,15 @@ void describe(const PatchContact& pc, FieldSink& out) {
   const contact::NormalSolution& s = pc.solution;
   out.integer("merged", static_cast<long long>(pc.located.size()));
   out.number("normal_force", pc.normal_force);
+  out.number("pressure_integral", s.force);  // sum p dA: the normal force, or more where the normals turn
   out.vec3("force", pc.force);
   out.vec3("moment", pc.moment);
   out.vec3("point", pc.point);
   out.vec3("normal", pc.normal);
   out.number("angle", pc.angle);
+  out.string("surface", pc.conformal ? "conformal" : "planar");
+  out.number("angle_min", pc.angle_min);
+  out.number("angle_max", pc.angle_max);
   out.number("nominal_angle", pc.nominal_angle);
   out.number("area", s.area);
   out.number("pmax", s.max_pressure);
@@ -654,6 +642,8 @@ void describe(const PatchContact& pc, FieldSink& out) {
   out.end();
   if (!s.pressure.empty()) out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny);
   if (!pc.h.empty()) out.grid("h", pc.h.data(), s.grid.nx, s.grid.ny);
+  if (pc.rolling) describe(*pc.rolling, out);
+  if (pc.conformal) describe_conformal(pc, out);
 }
 
 void describe(const WheelContact& wc, FieldSink& out) {
@@ -664,6 +654,7 @@ void describe(const WheelContact& wc, FieldSink& out) {
   out.vec3("moment", wc.moment);
   out.number("angle", wc.angle);
   out.number("rolling_radius", wc.rolling_radius);
+  describe(wc.creep, out);
   out.begin_list("patches", wc.patches.size());
   for (const PatchContact& pc : wc.patches) {
     out.item();
@@ -700,6 +691,7 @@ void describe(const ContactResult& c, FieldSink& out, bool sensitivity) {
   }
   out.vec3("force", c.force);
   out.vec3("moment", c.moment);
+  describe(c.creep, out);
   describe(c.pose, out);
 }
 

@@ -14,6 +14,8 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   t.tape_offset = r.number("tape_offset", t.tape_offset);
   t.gauge = r.number("gauge", t.gauge);
   t.gauge_depth = r.number("gauge_depth", t.gauge_depth);
+  if (auto g = r.choice("gauge_point", {"first", "innermost"}))
+    t.gauge_rule = *g == "first" ? TrackParams::GaugeRule::first : TrackParams::GaugeRule::innermost;
   t.cant = r.number("cant", t.cant);
   p.material.E = r.number("E", p.material.E);
   p.material.nu = r.number("nu", p.material.nu);
@@ -25,8 +27,12 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   c.merge_tolerance = r.number("merge_tolerance", c.merge_tolerance);
   c.merge_angle = r.number("merge_angle", c.merge_angle);
   c.dense = r.choice("solver", {"fast", "dense"}).value_or(c.dense ? "dense" : "fast") == "dense";
+  c.surface = r.choice("surface", {"planar", "conformal"}).value_or(surface_name(c.surface)) == "conformal"
+                  ? ContactSurface::conformal
+                  : ContactSurface::planar;
   p.strategy = r.string("strategy").value_or(p.strategy);
   p.check_strategy = r.integer("check_strategy", 0, 10'000'000).value_or(p.check_strategy);
+  p.check_setup = r.boolean("check_setup").value_or(p.check_setup);
   return p;
 }
 
@@ -58,6 +64,7 @@ void describe(const WheelsetParams& p, FieldSink& out) {
   out.number("tape_offset", p.track.tape_offset);
   out.number("gauge", p.track.gauge);
   out.number("gauge_depth", p.track.gauge_depth);
+  out.string("gauge_point", p.track.gauge_rule == TrackParams::GaugeRule::first ? "first" : "innermost");
   out.number("cant", p.track.cant);
   out.number("E", p.material.E);
   out.number("nu", p.material.nu);
@@ -68,8 +75,10 @@ void describe(const WheelsetParams& p, FieldSink& out) {
   out.number("merge_tolerance", p.contact.merge_tolerance);
   out.number("merge_angle", p.contact.merge_angle);
   out.string("solver", p.contact.dense ? "dense" : "fast");
+  out.string("surface", surface_name(p.contact.surface));
   out.string("strategy", p.strategy);
   out.integer("check_strategy", p.check_strategy);
+  out.boolean("check_setup", p.check_setup);
 }
 
 namespace {
@@ -100,7 +109,7 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
     : params_(params), strategy_(std::move(strategy)) {
   if (!strategy_) fail("wheelset: no location strategy");
   track_ = std::make_shared<const Track>(assemble_track(profiles.wheel, profiles.rail, params.track));
-  check_setup(*track_);  // sizes and shapes for their kind, flanges against the gauge
+  if (params.check_setup) check_setup(*track_);  // sizes and shapes for their kind, flanges against the gauge
   std::array<SideDiscretisation, 2> sides;
   for (int s : {kLeft, kRight}) sides[s] = strategy_->discretise(s, profiles.wheel[s], profiles.rail[s]);
   StrategyInfo info = strategy_->info();

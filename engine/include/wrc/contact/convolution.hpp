@@ -33,6 +33,37 @@ int fft_size(int n);
 // faster to run), `estimate` picks one by heuristics.
 enum class FftPlanning { estimate, measure };
 
+// The FFTW plans of the 2-D real transforms of an Mx x My periodic grid, pruned: only the first `rows` rows
+// are transformed along x (the input is zero beyond them, and the output is not needed there), so the 2-D
+// transform runs as batched row and column transforms. Immutable once built; execution is thread-safe (FFTW's
+// new-array interface on buffers aligned like the workspace's).
+class PrunedFft {
+ public:
+  PrunedFft(int Mx, int My, int rows, FftPlanning planning);
+  ~PrunedFft();
+  PrunedFft(const PrunedFft&) = delete;
+  PrunedFft& operator=(const PrunedFft&) = delete;
+  int Mx() const { return Mx_; }
+  int My() const { return My_; }
+  int rows() const { return rows_; }
+  int complex_size() const { return My_ * (Mx_ / 2 + 1); }
+  // Forward (real -> spectrum, rows beyond `rows` taken as zero) and backward transforms (unnormalised; the
+  // rows beyond `rows` of the output are left undefined).
+  void forward(double* in, void* spectrum) const;
+  void backward(void* spectrum, double* out) const;
+
+ private:
+  int Mx_, My_, rows_;
+  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  // fftw_plan: rows r2c, columns fwd, columns bwd, rows c2r
+};
+
+// FFTW's planner is not thread-safe: every plan creation and destruction in wrc holds this lock.
+std::mutex& fftw_planner_mutex();
+
+// The spectrum (Mx/2 + 1 columns by My rows, FFTW's r2c layout, unnormalised) of a real kernel given on the
+// Mx x My periodic grid (index k + Mx l) that is even, or odd in both directions, so that its spectrum is real.
+std::vector<double> real_spectrum(const std::vector<double>& kernel, int Mx, int My);
+
 // Spectrum of the influence kernel of elements dx x dy on an Mx x My periodic grid, and its FFTW plans.
 // The kernel is embedded centred (slot s holds offset s for s <= M/2 and s - M above).
 //  - linear: Mx, My = padded_size(nx, ny); the circular convolution restricted to the grid is exactly
@@ -56,8 +87,9 @@ class InfluenceSpectrum {
   double dx() const { return dx_; }
   double dy() const { return dy_; }
   bool serves(const Grid& grid) const;
-  int complex_size() const { return My_ * (Mx_ / 2 + 1); }
-  int pruned_rows() const { return rows_; }  // rows transformed along x (My/2 + 1 linear, My periodic)
+  int complex_size() const { return fft_.complex_size(); }
+  int pruned_rows() const { return fft_.rows(); }  // rows transformed along x (My/2 + 1 linear, My periodic)
+  const PrunedFft& fft() const { return fft_; }
   // Eigenvalues of the circulant (m), times 1/(Mx My) for FFTW's unnormalised round trip; real because
   // the kernel is even. `inverse` holds their reciprocals (times the same factor; clamped positive).
   const std::vector<double>& eigenvalues() const { return eigen_; }
@@ -67,17 +99,17 @@ class InfluenceSpectrum {
   const InfluenceTable& table() const { return table_; }
 
   // Forward (real -> spectrum) and backward transforms of the workspace buffers.
-  void forward(double* in, void* spectrum) const;
-  void backward(void* spectrum, double* out) const;
+  void forward(double* in, void* spectrum) const { fft_.forward(in, spectrum); }
+  void backward(void* spectrum, double* out) const { fft_.backward(spectrum, out); }
 
  private:
   Kind kind_;
   double dx_, dy_;
-  int Mx_, My_, rows_;
+  int Mx_, My_;
+  PrunedFft fft_;
   InfluenceTable table_;
   std::vector<double> eigen_, inverse_;
   double min_eigen_ = 0;
-  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  // fftw_plan: rows r2c, columns fwd, columns bwd, rows c2r
 };
 
 // Buffers of one thread for the FFT round trips (FFTW-aligned). Grows on demand; not shareable.
@@ -92,7 +124,8 @@ class ConvolutionWorkspace {
 
   // Makes room for a spectrum's transforms on `grid` and makes sure the input buffer is zero outside the
   // grid's window (only the window is written afterwards).
-  void prepare(const InfluenceSpectrum& spectrum, const Grid& grid);
+  void prepare(const InfluenceSpectrum& spectrum, const Grid& grid) { prepare(spectrum.fft(), grid); }
+  void prepare(const PrunedFft& fft, const Grid& grid);
   double* input() { return in_; }
   double* output() { return out_; }
   void* spectrum_buffer() { return spec_; }

@@ -12,10 +12,12 @@
 // residual norm (|R_F|/Q)^2 + (|R_M|/(Q 1 m))^2.
 //
 // Rigid reference: the same (y, yaw) with undeformable bodies: z and roll such that both wheels just touch
-// (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q.
+// (kinematic constraint), the contact points where they touch, and the normal forces and Y that balance Q
+// (solve_rigid, wrc/kinematics/rigid.hpp).
 #pragma once
 
 #include "wrc/core/options.hpp"
+#include "wrc/kinematics/rigid.hpp"
 #include "wrc/wheelset/contact.hpp"
 
 #include <functional>
@@ -79,7 +81,8 @@ struct Start {
   bool jacobian_lifted = false;
 };
 
-// Solves the elastic equilibrium. Tries Newton from each of `starts` in order (neighbouring solutions of a
+// Solves the elastic equilibrium (frictionless: request.rolling is ignored; add_rolling gives the creep forces at the
+// solution's pose). Tries Newton from each of `starts` in order (neighbouring solutions of a
 // sweep), then from the rigid position pressed in by initial_approach, then by continuation in y from the
 // centred wheelset, then by nested bracketing. Never throws for lack of convergence: `converged` is false and
 // `message` says why each attempt stopped, with the last iterate in z, roll and contact. Throws wrc::Error on
@@ -89,7 +92,9 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
                                     const ContactRequest& request = {});
 
 // One wheel-rail pair with its vertical force prescribed (CONTACT / multibody style): the wheelset height z
-// that makes that wheel's vertical contact force equal Fz at the given y, yaw and roll.
+// that makes that wheel's vertical contact force equal Fz at the given y, yaw and roll. With `rolling`, the
+// tangential problems are solved too and Fz includes the creep forces' vertical part (the frictionless height
+// starts the iteration).
 struct WheelResult {
   bool converged = false;
   std::string message;
@@ -105,48 +110,45 @@ struct WheelResult {
 // at an approach of options.max_penetration is out of reach: not converged, with the reason.
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
                         ContactWorkspace& ws, const EquilibriumOptions& options = {},
-                        std::optional<double> start = std::nullopt);
-
-// Rigid (kinematic) contact of one wheel: the deepest rail line, its point and the wheel normal there.
-struct RigidWheel {
-  double overlap = 0;                 // radial overlap at the deepest point (m; 0 at the solution)
-  int line = -1;                      // rail line index
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // contact point (track frame, m)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // into the wheel
-  double angle = 0;                   // contact angle (rad)
-  double rolling_radius = 0;          // m
-  double normal_force = 0;            // N, from the force balance
-};
-struct RigidResult {
-  bool converged = false;     // both wheels touch (the kinematic constraint holds)
-  std::string message;
-  double y = 0, yaw = 0, Q = 0;
-  double z = 0, roll = 0;
-  double Y = 0, My = 0, Mz = 0;
-  // A wheel would need a pulling normal force to balance Q with no roll moment (e.g. a flange contact steeper
-  // than ~57 deg, whose line of action passes below the centre): the kinematics hold, the forces are no
-  // equilibrium of a wheelset resting on its rails.
-  bool tension = false;
-  std::array<RigidWheel, 2> wheel;
-};
-RigidResult solve_rigid(const GeometryModel& geometry, double y, double yaw, double Q);
-
-// The deepest rail line of one side at a pose (radial overlap > 0 inside the wheel).
-RigidWheel deepest_point(const GeometryModel& geometry, int side, const Pose& pose);
+                        std::optional<double> start = std::nullopt,
+                        const std::optional<RollingRequest>& rolling = std::nullopt);
 
 // A sweep of equilibria: for each yaw, y runs over `ys` with continuation, starting at the y closest to 0
-// and marching outward on both sides. Series are split into such chains and run on `threads` worker
-// threads (each with its own ContactWorkspace, made by `make_workspace`). A failed case is recorded and
-// the chain goes on from the last converged point.
+// and marching outward on both sides. The cases are cut into chunks (plan_sweep), each solved on its own from a
+// cold start, so that a case's result depends on the plan alone, never on which thread, process or machine ran
+// which chunk: 1, 2 or 8 threads, or a study split into shards, give the same numbers bit for bit. Chunks run on
+// `threads` worker threads (each with its own ContactWorkspace, made by `make_workspace`). A failed case is
+// recorded and its chain goes on from the last converged point.
 struct SweepCase {
   double y = 0, yaw = 0;
 };
+// A chunk solves `solve` in order: solve[0] from a cold start (no neighbour, an empty workspace), each next case by
+// continuation from the previous converged ones. It reports `report` (sorted case indices); solve[0] may be the
+// centre of a series that another chunk reports (the chain below the centre starts from its solution).
+struct SweepChunk {
+  std::vector<int> solve;
+  std::vector<int> report;
+};
+// For each yaw (sorted by y): the case nearest y = 0 is the centre; the chain above it (centre included) and the
+// chain below it (started from the centre, which it does not report) are chunks, each cut into pieces of at most
+// `chain` reported cases (0: uncut), every piece after the first starting cold at its first case. Chunks are
+// ordered by their first reported case; with ys sorted, each reports a contiguous range of cases.
+struct SweepPlan {
+  std::vector<SweepCase> cases;  // yaw major, then y as given
+  std::vector<SweepChunk> chunks;
+};
+SweepPlan plan_sweep(const std::vector<double>& ys, const std::vector<double>& yaws, int chain = 0);
+
 struct SweepOptions {
-  int threads = 0;             // 0: the machine's cores
+  int threads = 0;             // 0: the cores this process may use (available_cores)
   double Q = 200e3;            // N
   bool keep_grids = false;     // keep pressure/h grids of every case (memory)
   bool rigid = false;          // also solve the rigid reference of each case
+  int chain = 0;               // reported cases per chunk at most (0: whole continuation chains); see SweepPlan
   EquilibriumOptions equilibrium;
+  // With kinematics or creepages: the tangential problems of every converged case at its equilibrium pose (the
+  // equilibrium itself stays frictionless); the creep forces join the wheels' forces, Y, My, Mz do not.
+  std::optional<RollingRequest> rolling;
   // Called from worker threads (serialised) after each case: done, total, failed so far.
   std::function<void(int, int, int)> progress;
   // Why the sweep must run on the calling thread alone ("": it need not), e.g. a strategy bound to one Lua state.
@@ -155,7 +157,8 @@ struct SweepOptions {
   std::function<void(const std::string&)> notice;
 };
 struct SweepResult {
-  std::vector<SweepCase> cases;             // in the order given (yaw major, then y as given)
+  std::vector<int> index;                   // the plan's case index of each entry (ascending)
+  std::vector<SweepCase> cases;             // in the order of the plan (yaw major, then y as given)
   std::vector<EquilibriumResult> elastic;   // one per case
   std::vector<std::optional<RigidResult>> rigid;
   std::vector<std::string> errors;          // per case: exception text if the case threw, else empty
@@ -163,15 +166,21 @@ struct SweepResult {
   int threads = 1;            // worker threads used
   std::string threads_note;   // why fewer than SweepOptions::threads (when given) ran; "" otherwise
 };
+// All the cases of the plan_sweep(ys, yaws, options.chain).
 SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, const std::vector<double>& yaws,
+                      const SweepOptions& options,
+                      const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
+// The cases reported by the chunks `chunks` (indices into plan.chunks) alone: a part of a study.
+SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const std::vector<int>& chunks,
                       const SweepOptions& options,
                       const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace);
 
 // Options as Lua and the C API give them: force_tolerance, moment_tolerance, max_iterations, max_evaluations,
 // max_penetration, trace (true: print the Newton iterates to stderr).
 EquilibriumOptions read_equilibrium_options(OptionReader& options);
-// A sweep's options: Q (required), threads (0: all cores), rigid, grids, progress (default: stderr is a
-// terminal), and the equilibrium options above. A capped thread count is noted once on stderr.
+// A sweep's options: Q (required), threads (0: all cores), rigid, grids, chain, progress (default: stderr is a
+// terminal), the equilibrium options above, and the rolling keys (read_rolling_request). A capped thread count is
+// noted once on stderr.
 SweepOptions read_sweep_options(OptionReader& options);
 // Why a solve did not converge, with its last iterate (the error of a Lua call that does not return failures).
 std::string failure_message(const EquilibriumResult& result);
@@ -179,14 +188,13 @@ std::string failure_message(const WheelResult& result);
 
 // The results as fields (Lua tables, C API paths; docs in README "Equilibrium"). An equilibrium: converged,
 // error, flange_climb (and flange_climb_reason when true), y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations,
-// evaluations, residual = {force, moment}, left, right (as
-// wheelset/contact.hpp describes a wheel), rolling_radius_difference (left - right), force, moment. A wheel:
-// the side's wheel fields, converged, error, z, residual, iterations. A rigid case: converged, tension, error, y,
-// yaw, Q, z, roll, Y, My, Mz, Y_Q, left/right = {point, normal, angle, rolling_radius, normal_force, overlap, line}.
+// evaluations, residual = {force, moment}, left, right (as wheelset/contact.hpp describes a wheel),
+// rolling_radius_difference (left - right; only when both wheels carry load), force, moment. A wheel: the side's
+// wheel fields, converged, error, z, residual, iterations. (A rigid case: kinematics/rigid.hpp.)
 void describe(const EquilibriumResult& result, FieldSink& out);
 void describe(const WheelResult& result, FieldSink& out);
-void describe(const RigidResult& result, FieldSink& out);
-// Case i of a sweep: its equilibrium, and `rigid` (a rigid case) when the sweep solved it.
+// Entry i of a sweep: `case` (its 1-based index in the plan), its equilibrium, and `rigid` (a rigid case) when the
+// sweep solved it.
 void describe_case(const SweepResult& sweep, std::size_t i, FieldSink& out);
 
 }  // namespace wrc

@@ -13,6 +13,7 @@
 
 #include "wrc/geometry/track.hpp"
 #include "wrc/profile/profile.hpp"
+#include "wrc/profile/spline.hpp"
 
 #include <array>
 #include <functional>
@@ -109,6 +110,10 @@ struct SideGeometry {
   std::optional<CoarseLevel> coarse;
   double wheel_r2_max = 0;  // largest wheel radius squared (m^2)
   std::string wheel_name, rail_name;
+  // The profiles as given (track.wheel/rail, their own frames) as smooth curves: their spline when loaded with
+  // `smooth`, else the interpolating cubic spline through their points (profile/spline.hpp). The lateral curvature
+  // at a rigid contact point is read from them (a polyline has none).
+  std::shared_ptr<const ProfileSpline> wheel_curve, rail_curve;
 };
 
 // A strategy's option values (numbers, strings, booleans), kept so that a worker thread can rebuild the strategy.

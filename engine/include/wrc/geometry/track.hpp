@@ -18,6 +18,12 @@ struct TrackParams {
   double tape_offset = 0.070;  // tape circle from the flange back (m): left tape circle at y_w = 0.750
   double gauge = 1.435;        // between the gauge points (m)
   double gauge_depth = 0.014;  // gauge points this far below the top of each rail (m)
+  // Which point of the gauge face is the gauge point. Both look at the rail as it lies in the track (after the cant;
+  // a canted file, used with cant = 0, the same way), below its highest point, walking toward the gauge side:
+  //  - first: the first point gauge_depth below the top (the crossing of that level met first);
+  //  - innermost: the innermost gauge-face point from the top down to gauge_depth below it (EN 13848-1's measuring
+  //    band; differs from `first` only where the gauge face crosses the level more than once, e.g. a worn lip).
+  enum class GaugeRule { first, innermost } gauge_rule = GaugeRule::first;
   double cant = 1.0 / 40.0;    // rail inclination (tan of the angle); the head tilts toward the track centre
 };
 
@@ -49,6 +55,9 @@ struct Track {
   std::array<Eigen::Vector2d, 2> tape_point;   // wheelset frame (m): tape circle's lowest point
   std::array<double, 2> rail_top;              // z of each placed rail's highest point (m)
 };
+
+// A canted rail face that comes out vertical may lean back by rounding: up to this much (m) it is taken as vertical.
+inline constexpr double kVerticalRounding = 1e-9;
 
 // Assembles the track. Throws wrc::Error when a profile has the wrong kind, the rail does not reach
 // gauge_depth below its top on the gauge side, a parameter is out of range, or wheel and rail do not

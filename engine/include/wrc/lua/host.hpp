@@ -5,6 +5,7 @@
 #include "wrc/core/options.hpp"
 #include "wrc/profile/profile.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,11 +14,37 @@
 
 namespace wrc::lua {
 
+// What `wrc run STUDY.lua ...` is asked besides the study's own key=value options (README "Studies at scale").
+struct RunFlags {
+  int shard = 1, shards = 1;  // compute part `shard` of `shards` (1-based)
+  std::string shard_from;     // where the split came from ("--shard 2/4", "SLURM_ARRAY_TASK_ID=2 ..."), "" if none
+  bool merge = false;         // --merge: assemble the shards' parts, then figures and summary
+  bool fresh = false;         // --fresh: discard earlier parts and start over
+  bool help = false;          // --help: list the study's options
+  std::vector<std::string> notes;  // said once on stderr (e.g. SLURM's array variables overridden by --shard)
+};
+
+// Takes the flags --shard K/N (or --shard=K/N), --merge, --fresh and --help out of `args`. Without --shard, inside
+// a SLURM array job (SLURM_ARRAY_TASK_ID set), the split comes from SLURM: shard = (ID - MIN) / STEP + 1 of
+// SLURM_ARRAY_TASK_COUNT (or (MAX - MIN) / STEP + 1); --shard wins over SLURM (a note says so), and --merge
+// ignores SLURM. `env` reads an environment variable (nullptr when unset). Throws wrc::Error naming a malformed
+// flag or an array whose task ids do not number the shards (a list with gaps).
+RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env);
+
 // Runs a study script. `args` are the command-line words after the script: `key=value` pairs land in
 // the global table `arg` as arg.key (numbers converted), other words as arg[1], arg[2], ...; arg[0] is
-// the script path. Errors (missing file, syntax, runtime) are printed to stderr as `file:line: message`
-// with a traceback. Returns the process exit code (0 on success).
-int run_file(const std::string& path, const std::vector<std::string>& args);
+// the script path. The flags are in the table `wrc.command` (script, shard, shards, shard_from, merge, fresh,
+// help), which the study library reads. Errors (missing file, syntax, runtime) are printed to stderr as
+// `file:line: message` with a traceback. Returns the process exit code: 0 on success, 1 on an error, or
+// what the script left in wrc.command.status (3: a study completed with failed cases); an error object
+// {exit = code} (the study library's --help) ends the script quietly with that code. A script that runs no
+// study through wrc.study (wrc.command.study unset) ran whole: with --shard or --merge that is exit code 2, with a
+// message.
+int run_file(const std::string& path, const std::vector<std::string>& args, const RunFlags& flags = {});
+
+// `wrc merge DIR [key=value ...]`: runs the study whose parts are in DIR/parts again in merge mode, with the
+// options it was run with (and `args` on top, e.g. plots=false). Exit code as run_file.
+int merge_folder(const std::string& folder, const std::vector<std::string>& args);
 
 // Loads a profile as wrc.profile.load(path, options) does -- a Lua definition or a file through the readers -- in a
 // Lua state of its own, closed before returning (for callers without a Lua state: the C API). Throws wrc::Error.

@@ -42,12 +42,13 @@ struct LoadOptions {
   std::optional<ProfileKind> kind;        // when the file does not say (must agree when it does)
   std::optional<std::string> reader;      // reader id; default: chosen by the file's extension
   std::optional<std::string> name;        // overrides the profile's name
+  std::optional<double> smooth;           // smoothing spline, smoothing length (m; 0: interpolating; spline.hpp)
   std::vector<std::pair<std::string, std::string>> reader_options;
 };
 
 // Reads the options of wrc.profile.load and p:transform: mirror_y, mirror_z (booleans), name, kind, reader
 // (strings), units ("mm", "cm", "m", "in" or a number = metres per file unit), shift = {y =, z =} (m),
-// crop = {y = {min, max}, z = {min, max}} (m). With `geometric_only` (p:transform) reader and units are not
+// crop = {y = {min, max}, z = {min, max}} (m), smooth (m, a smoothing length >= 0). With `geometric_only` (p:transform) reader and units are not
 // allowed and the reader is finished; otherwise every other key goes to the reader as text (checked by the host
 // against the reader's own options when it reads).
 LoadOptions read_load_options(OptionReader& options, bool geometric_only);
@@ -66,13 +67,15 @@ inline constexpr double kMaxPlausibleChord = 0.500;
 double parse_units(const std::string& text, const std::string& context);
 
 // Turns raw points into a validated profile: units -> extent check (unless units were given explicitly)
-// -> mirror_y -> mirror_z -> crop -> shift -> make_profile. Every step taken is recorded in transforms.
+// -> mirror_y -> mirror_z -> crop -> shift -> make_profile -> smooth -> the orientation check (warnings). Every
+// step taken is recorded in transforms.
 // `source` is the file path used in messages ("file:line: ..."); `reader_id` names the reader.
 Profile finish_profile(RawProfile raw, const LoadOptions& options, const std::string& source,
                        const std::string& reader_id);
 
-// The same geometric options (mirror_y, mirror_z, crop, shift, name, kind check) applied to a profile
-// that is already in metres (a Lua definition, p:transform{...}). Returns a new validated profile.
+// The same geometric options (mirror_y, mirror_z, crop, shift, name, kind check, smooth) applied to a profile
+// that is already in metres (a Lua definition, p:transform{...}). Returns a new validated profile; a profile's
+// spline is mirrored and shifted with it.
 Profile transform_profile(const Profile& p, const LoadOptions& options);
 
 // The file's stem ("MBench_S1002_v3" for ".../MBench_S1002_v3.prw").

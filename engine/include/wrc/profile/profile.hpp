@@ -4,6 +4,7 @@
 //        uncanted head unless the source says the profile is already canted.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -20,6 +21,8 @@ const char* to_string(ProfileKind kind);
 // "wheel" or "rail"; anything else is an error naming `context`.
 ProfileKind parse_profile_kind(std::string_view text, std::string_view context);
 
+struct ProfileSpline;  // spline.hpp
+
 struct Profile {
   ProfileKind kind = ProfileKind::rail;
   std::string name;                     // e.g. "S1002"
@@ -28,6 +31,10 @@ struct Profile {
   int duplicates_dropped = 0;           // consecutive duplicates removed on creation
   std::vector<std::string> transforms;  // what was applied on the way in, in order ("mirror_y", ...)
   std::vector<std::pair<std::string, std::string>> metadata;  // kept from the source file (header keys)
+  // The smooth curve the points lie on (loaded with `smooth = ...`; spline.hpp), or null: a polyline. Resampling
+  // evaluates it; copies share it.
+  std::shared_ptr<const ProfileSpline> spline;
+  std::vector<std::string> warnings;    // what looks wrong but was accepted (e.g. the orientation; orientation.hpp)
 
   std::size_t size() const { return y.size(); }
 };

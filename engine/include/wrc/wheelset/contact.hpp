@@ -21,17 +21,25 @@
 // Areas of one wheel are solved together when contact::patches_interact says the separate solutions differ
 // by more than `merge_tolerance` and their normals differ by less than `merge_angle` (one plane must serve
 // both); otherwise each alone.
+//
+// That is the planar path (ContactOptions::surface = planar). The default, conformal, lays each area on the curved
+// surface along the rail's profile instead, with h along the normals and each row's pressure along its own normal
+// (wheelset/conformal.hpp); location, merging, solvers and results are shared.
 #pragma once
 
 #include "wrc/contact/normal.hpp"
+#include "wrc/contact/rolling.hpp"
 #include "wrc/core/fields.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/wheelset/plausibility.hpp"
+#include "wrc/wheelset/conformal.hpp"
+#include "wrc/wheelset/rolling.hpp"
 
 #include <Eigen/Core>
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace wrc {
@@ -47,6 +55,11 @@ struct ContactOptions {
   // yaw 0 and 1 deg) need up to ~2.0e6 elements at grid = 0.02 mm.
   int max_elements = 1 << 22;
   contact::NormalOptions normal;  // tolerance etc. of the normal solver
+  // The potential contact area: the curved surface along the rail's profile (CONTACT's conformal mode;
+  // wheelset/conformal.hpp) or one plane per area (the paper's, CONTACT's planar mode). Conformal by default: it
+  // agrees with the plane where the patch is flat and satisfies virtual work where the plane does not (README,
+  // "Conformal contact").
+  ContactSurface surface = ContactSurface::conformal;
 };
 
 // Memory of the normal solve per element of a potential contact area (bytes; measured with the fast solver,
@@ -57,6 +70,10 @@ inline constexpr double kBytesPerElement = 400;
 using Sensitivity = Eigen::Matrix<double, 6, 2>;
 
 // One potential contact area (one or more merged inter-penetration patches of one wheel) and its solution.
+// A conformal area (`conformal` set, wheelset/conformal.hpp) has no plane: origin, t1, t2 are the local frame at its
+// grid's origin on the curved surface, `normal` is the direction of the resultant force (normal_force = |force|,
+// below the pressure's integral), `point` the centre of pressure on the surface and `moment` the sum of the
+// elements' moments.
 struct PatchContact {
   int side = kLeft;
   std::vector<Patch> located;          // the inter-penetration patches of the area (copied from the location;
@@ -69,27 +86,39 @@ struct PatchContact {
   double nominal_angle = 0;            // contact angle of the wheel's normal there (rad): the paper's plane
   contact::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
   std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
+  std::optional<ConformalSurface> conformal;  // the curved surface of a conformal area (rows, normals); none: planar
   double normal_force = 0;             // N
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame): normal + creep force
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // centre of pressure (track frame, m)
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // of `force` about the wheelset centre (N m)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // of the area's tractions about the wheelset centre (N m)
   double angle = 0;                    // contact angle (rad): normal vs z, > 0 tilted toward the track centre
+  double angle_min = 0, angle_max = 0; // range of the directions the pressure acts in (rad; planar: = angle)
   double rolling_radius = 0;           // wheel radius at the centre of pressure (m)
   double penetration = 0;              // max h (m)
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
                                        // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
                                        // inter-penetration area holds
-  Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll), when asked for
+  Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll) of the normal problem, when asked for
+  std::optional<PatchRolling> rolling;  // the tangential solution, when the call gave kinematics or creepages
+};
+
+// Totals of the tangential solutions (when solved): creep forces, their moments, frictional power.
+struct CreepTotals {
+  bool solved = false;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, track frame
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, about the wheelset centre
+  double power = 0;                                  // W
 };
 
 struct WheelContact {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame), creep forces included
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // about the wheelset centre (N m)
   std::vector<PatchContact> patches;
   double angle = 0;           // contact angle of the resultant force (rad)
   double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); 0 without contact
   Sensitivity sensitivity = Sensitivity::Zero();
   std::string flange_climb;   // why the wheel is past flange climb (wheelset/plausibility.hpp); "" when it is not
+  CreepTotals creep;
 };
 
 struct ContactResult {
@@ -98,6 +127,7 @@ struct ContactResult {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // both wheels (N)
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // both wheels, about the wheelset centre (N m)
   Sensitivity sensitivity = Sensitivity::Zero();     // both wheels
+  CreepTotals creep;                                 // both wheels
 };
 
 // The immutable contact model: discretised geometry, material, normal solver (with its FFT caches) and options.
@@ -112,12 +142,14 @@ class ContactModel {
   const contact::NormalSolver& solver() const { return solver_; }
   // The flange of each side's wheel profile (for the flange-climb flags of the results).
   const Flange& flange(int side) const { return flange_[static_cast<std::size_t>(side)]; }
+  const contact::RollingSolver& rolling_solver() const { return rolling_; }
 
  private:
   std::shared_ptr<const GeometryModel> geometry_;
   std::array<Flange, 2> flange_;
   ContactOptions options_;
   contact::NormalSolver solver_;
+  contact::RollingSolver rolling_;
 };
 
 // Per-thread state: the locator (the model's strategy bound to this thread), the solver's buffers and the
@@ -129,6 +161,7 @@ class ContactWorkspace {
   ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search);
   Locator locator;
   contact::NormalWorkspace normal;
+  contact::RollingWorkspace rolling;
   struct Previous {
     Eigen::Vector3d origin, t1, t2, normal;
     contact::Grid grid;
@@ -158,6 +191,7 @@ struct ContactRequest {
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
   double tolerance = 0;      // > 0: the normal solver's tolerance for this evaluation (inexact Newton steps)
+  std::optional<RollingRequest> rolling;  // also solve the tangential problem of every area (wheelset/rolling.hpp)
 };
 
 // Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input
@@ -171,18 +205,25 @@ long long largest_potential_area(const ContactModel& model, const LocationState&
 
 // Fills the sensitivities of a result evaluated without them (its grids must have been kept).
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& workspace);
+// Solves the tangential problem of every area of a result evaluated without it (its grids must have been kept) and
+// adds the creep forces to the areas', wheels' and total forces and moments (replacing an earlier solution).
+void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
+                 ContactWorkspace& workspace);
 // Releases the pressure, gap and h grids of a result.
 void drop_grids(ContactResult& result);
 
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
 // flange_climb_reason when true), force, moment, angle, rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
-// iterations, complementarity, frame, grid, and the pressure and h grids when kept.
+// iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
+// also its fields (wheelset/rolling.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
 void describe(const PatchContact& area, FieldSink& out);
 void describe(const WheelContact& wheel, FieldSink& out);
 // With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.
 void describe(const ContactResult& result, FieldSink& out, bool sensitivity = false);
 void describe_sensitivity(const Sensitivity& s, FieldSink& out);
+// Creep totals as fields (nothing when no area was solved): creep_force, creep_moment, power.
+void describe(const CreepTotals& totals, FieldSink& out);
 void describe(const Pose& pose, FieldSink& out);  // pose = {y, z, roll, yaw}
 // The fields of a located patch (side, nominal_point, nominal_normal, wheel_point, cone, eps, wheel_radius, depth,
 // first_line, last_line, longest; 1-based indices) without its segments, and one segment (line, y, z, x_t, x_l,

@@ -27,7 +27,7 @@ struct WheelsetParams {
                                 // gauge_depth 0.014 m, cant 1/40 (track.hpp)
   contact::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (contact/material.hpp)
   ContactOptions contact;       // grid 0.2 mm, margin 2 elements, tolerance 1e-8, merge_tolerance 0.01,
-                                // merge_angle 0.26 rad, the fast solver (wheelset/contact.hpp)
+                                // merge_angle 0.26 rad, the fast solver, the conformal surface (wheelset/contact.hpp)
   // The location strategy: "accurate" (the profiles every 0.1 mm along the arc, coarse pre-search, topology walk).
   // The constant-slope wheel of "fast" stripes the pressure of near-conformal contacts (S1002/60E1 at y = 0), and
   // the search is a small part of an evaluation beside the normal problems.
@@ -36,11 +36,15 @@ struct WheelsetParams {
   // the first pose that differs (wheelset/strategy_check.hpp; range |y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad,
   // 1 um .. 1 mm deep). Opt-in: ~50 ms of brute force per pose at the paper's 0.1 mm discretisation.
   int check_strategy = 0;
+  // The set-up's plausibility for a railway wheelset, checked when it is built (wheelset/plausibility.hpp: sizes and
+  // shapes of the profiles for their kind, flanges against the gauge). false: for geometries that are no railway
+  // wheel on a rail on purpose (a pin in a hole, a Hertz test body).
+  bool check_setup = true;
 };
 
 // Reads wrc.wheelset{}'s keys over the defaults: radius, back_to_back, tape_offset, gauge, gauge_depth, cant, E,
-// nu, grid, margin, max_elements, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), strategy (a
-// name), check_strategy. Range
+// nu, grid, margin, max_elements, tolerance, merge_tolerance, merge_angle, solver ("fast" | "dense"), surface
+// ("planar" | "conformal"), strategy (a name), check_strategy, check_setup. Range
 // checks happen when the wheelset is built. Does not finish() the reader (the caller may read more keys).
 WheelsetParams read_wheelset_params(OptionReader& options);
 // The parameters as fields (wrc.defaults, ws.params).

@@ -1,0 +1,320 @@
+// Equivalent conicity of a Δr function (conicity.hpp): the integral method (the kinematic wheelset motion),
+// harmonic linearisation, linear regression and the simple quotient.
+#include "wrc/kinematics/conicity.hpp"
+
+#include "wrc/core/error.hpp"
+#include "wrc/core/roots.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace wrc {
+namespace {
+
+constexpr const char* kCtx = "wrc.conicity";
+
+// 8-point Gauss-Legendre nodes and weights on [-1, 1].
+constexpr std::array<double, 8> kNodes{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                                        -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                        0.7966664774136267,  0.9602898564975363};
+constexpr std::array<double, 8> kWeights{0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+                                         0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                                         0.2223810344533745, 0.1012285362903763};
+
+// Integral of f over [a, b] split at `breaks` (inside), 8-point Gauss-Legendre per panel.
+template <class F>
+double gauss(F&& f, double a, double b, std::vector<double> breaks) {
+  breaks.push_back(a);
+  breaks.push_back(b);
+  std::sort(breaks.begin(), breaks.end());
+  double sum = 0;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double lo = std::max(a, breaks[k]), hi = std::min(b, breaks[k + 1]);
+    if (!(hi > lo)) continue;
+    const double m = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
+    for (std::size_t i = 0; i < kNodes.size(); ++i) sum += kWeights[i] * r * f(m + r * kNodes[i]);
+  }
+  return sum;
+}
+
+// The piecewise-linear Δr and its integral G (G(y0) = 0).
+class Table {
+ public:
+  explicit Table(const DeltaRFunction& d) : y_(d.y), d_(d.dr), flange_(d.flange) {
+    C_.assign(y_.size(), 0.0);
+    for (std::size_t i = 1; i < y_.size(); ++i) C_[i] = C_[i - 1] + 0.5 * (d_[i] + d_[i - 1]) * (y_[i] - y_[i - 1]);
+    find_centre();
+  }
+  double centre() const { return y0_; }
+  double front() const { return y_.front(); }
+  double back() const { return y_.back(); }
+  double dr(double x) const {
+    const std::size_t i = seg(x);
+    return d_[i] + (d_[i + 1] - d_[i]) * (x - y_[i]) / (y_[i + 1] - y_[i]);
+  }
+  double G(double x) const { return C(x) - G0_; }
+  // The integral of Δr over [a, b] piece by piece: no cancellation of two large G values near a turning point.
+  double integral(double a, double b) const {
+    double sum = 0, p = a;
+    for (double k : knots(a, b)) {
+      sum += 0.5 * (dr(p) + dr(k)) * (k - p);
+      p = k;
+    }
+    return sum + 0.5 * (dr(p) + dr(b)) * (b - p);
+  }
+  // The integral of Δr from a over a signed offset delta, exact for offsets below the rounding of a + delta.
+  double integral_by(double a, double delta) const {
+    const double b = a + delta;
+    if (!knots(std::min(a, b), std::max(a, b)).empty()) return delta > 0 ? integral(a, b) : -integral(b, a);
+    const std::size_t i = seg(delta > 0 ? a : b);
+    const double slope = (d_[i + 1] - d_[i]) / (y_[i + 1] - y_[i]);
+    return delta * (dr(a) + 0.5 * slope * delta);
+  }
+  // Knots strictly inside ]a, b[ (panel breaks: Δr has kinks there).
+  std::vector<double> knots(double a, double b) const {
+    std::vector<double> k;
+    for (double v : y_)
+      if (v > a && v < b) k.push_back(v);
+    return k;
+  }
+  // Where G may peak inside ]a, b[: the knots and the points where Δr falls through zero.
+  std::vector<double> peaks(double a, double b) const {
+    std::vector<double> p = knots(a, b);
+    for (std::size_t i = 0; i + 1 < y_.size(); ++i)
+      if (d_[i] >= 0 && d_[i + 1] < 0) {
+        const double z = y_[i] + d_[i] / (d_[i] - d_[i + 1]) * (y_[i + 1] - y_[i]);
+        if (z > a && z < b) p.push_back(z);
+      }
+    return p;
+  }
+  // Fails when a table point inside [a, b] is marked as flange contact.
+  void check_flange(double a, double b, double yhat) const {
+    for (std::size_t i = 0; i < flange_.size() && i < y_.size(); ++i)
+      if (flange_[i] && y_[i] >= a && y_[i] <= b)
+        fail("{}: flange contact inside the motion of amplitude yhat = {:.3f} mm (y = {:.3f} .. {:.3f} mm): the Δr table "
+             "marks flange contact at y = {:.3f} mm; EN 15302's equivalent conicity is not defined where the flange "
+             "limits the motion (choose a smaller amplitude)",
+             kCtx, yhat * 1e3, a * 1e3, b * 1e3, y_[i] * 1e3);
+  }
+  void check_inside(double a, double b, double yhat) const {
+    if (a < y_.front() - 1e-15 || b > y_.back() + 1e-15)
+      fail("{}: the amplitude yhat = {:.4g} mm needs Δr over y = {:.4f} .. {:.4f} mm, beyond the table ({:.4f} .. {:.4f} "
+           "mm): extend the table or choose a smaller amplitude",
+           kCtx, yhat * 1e3, a * 1e3, b * 1e3, y_.front() * 1e3, y_.back() * 1e3);
+  }
+
+ private:
+  std::size_t seg(double x) const {
+    const auto it = std::upper_bound(y_.begin(), y_.end(), x);
+    const auto i = static_cast<std::ptrdiff_t>(it - y_.begin()) - 1;
+    return static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(i, 0, static_cast<std::ptrdiff_t>(y_.size()) - 2));
+  }
+  double C(double x) const {
+    const std::size_t i = seg(x);
+    const double t = x - y_[i], s = (d_[i + 1] - d_[i]) / (y_[i + 1] - y_[i]);
+    return C_[i] + d_[i] * t + 0.5 * s * t * t;
+  }
+  // The rising zero of Δr nearest y = 0 (the motion's centre).
+  void find_centre() {
+    bool found = false, falling = false;
+    for (std::size_t i = 0; i + 1 < y_.size(); ++i) {
+      const double a = d_[i], b = d_[i + 1];
+      if ((a <= 0 && b > 0) || (a < 0 && b >= 0)) {
+        const double z = y_[i] + (0 - a) / (b - a) * (y_[i + 1] - y_[i]);
+        if (!found || std::abs(z) < std::abs(y0_)) y0_ = z;
+        found = true;
+      } else if ((a >= 0 && b < 0) || (a > 0 && b <= 0)) {
+        falling = true;
+      }
+    }
+    if (!found && falling)
+      fail("{}: Δr falls through zero and never rises through it: the wheelset is not self-centring with this table "
+           "(Δr must be r_left - r_right, rising with y toward the left rail; check the sign)", kCtx);
+    if (!found)
+      fail("{}: Δr does not change sign over the table (y = {:.3f} .. {:.3f} mm, Δr = {:.4f} .. {:.4f} mm): no centre "
+           "of the motion; a Δr function of a wheelset on its track rises through zero",
+           kCtx, y_.front() * 1e3, y_.back() * 1e3, *std::min_element(d_.begin(), d_.end()) * 1e3,
+           *std::max_element(d_.begin(), d_.end()) * 1e3);
+    G0_ = C(y0_);
+  }
+
+  const std::vector<double>& y_;
+  const std::vector<double>& d_;
+  const std::vector<bool>& flange_;
+  std::vector<double> C_;  // integral of Δr from y_[0] at the knots
+  double y0_ = 0, G0_ = 0;
+};
+
+// Integral method: the turning points y1 < y0 < y2 of the motion with y2 - y1 = 2 yhat, and I = the integral of
+// dy / sqrt(G(turn) - G(y)) over [y1, y2], each half substituted y = turn -+ L u^2 so that the 1/sqrt of the turning
+// points disappears. tan(gamma_e) = pi^2 / I^2.
+void integral_method(const Table& t, double yhat, double& y1, double& y2, double& tan_gamma) {
+  const double y0 = t.centre(), L = 2 * yhat;
+  const double lo = std::max(y0 - L, t.front()), hi = std::min(y0, t.back() - L);
+  auto h = [&](double a) { return t.G(a) - t.G(a + L); };
+  auto leaves = [&](const char* side) {
+    fail("{}: the motion of amplitude yhat = {:.4g} mm about y0 = {:.4f} mm leaves the Δr table on its {} side (the "
+         "table covers y = {:.4f} .. {:.4f} mm): extend the table or choose a smaller amplitude",
+         kCtx, yhat * 1e3, y0 * 1e3, side, t.front() * 1e3, t.back() * 1e3);
+  };
+  auto not_one = [&] {
+    fail("{}: the motion of amplitude yhat = {:.4g} mm is not one oscillation about y0 = {:.4f} mm: Δr has other zeros "
+         "within it (the wheelset would rest there)", kCtx, yhat * 1e3, y0 * 1e3);
+  };
+  if (lo > hi) leaves(y0 - L < t.front() ? "-y" : "+y");
+  const double hlo = h(lo), hhi = h(hi);
+  if (hlo < 0) lo == t.front() ? leaves("-y") : not_one();
+  if (hhi > 0) hi == t.back() - L ? leaves("+y") : not_one();
+  bool ok = false;
+  const double scale = std::max({std::abs(hlo), std::abs(hhi), 1e-300});
+  y1 = hlo == 0 ? lo : (hhi == 0 ? hi : bracketed_root(h, lo, hi, hlo, hhi, 1e-14 * scale, 300, ok));
+  y2 = y1 + L;
+  const double g1 = t.G(y1), g2 = t.G(y2);
+  if (!(t.dr(y1) < 0 && t.dr(y2) > 0))
+    fail("{}: the motion of amplitude yhat = {:.4g} mm stalls at a turning point where Δr = 0 (y = {:.4f} .. {:.4f} mm)",
+         kCtx, yhat * 1e3, y1 * 1e3, y2 * 1e3);
+  const double level = std::max(g1, g2), margin = 1e-9 * L;  // knots on a turning point are turning points
+  for (double k : t.peaks(y1 + margin, y2 - margin))
+    if (t.G(k) >= level) not_one();
+  // y = turn + len u^2, u in [0, 1] (len signed); G(turn) - G(y) = -integral of Δr from the turning point.
+  auto half = [&](double turn, double len) {
+    std::vector<double> breaks;
+    for (double k : t.knots(std::min(turn, y0), std::max(turn, y0))) {
+      const double u = std::sqrt((k - turn) / len);
+      if (u > 1e-6) breaks.push_back(u);  // a knot on the turning point itself is no kink of the integrand
+    }
+    return gauss([&](double u) {
+      const double dG = -t.integral_by(turn, len * u * u);
+      return 2 * std::abs(len) * u / std::sqrt(std::max(dG, 1e-300));
+    }, 0.0, 1.0, breaks);
+  };
+  const double I = half(y1, y0 - y1) + half(y2, y0 - y2);
+  tan_gamma = std::numbers::pi * std::numbers::pi / (I * I);
+}
+
+double harmonic_method(const Table& t, double yhat) {
+  const double y0 = t.centre();
+  std::vector<double> breaks;
+  for (double k : t.knots(y0 - yhat, y0 + yhat)) breaks.push_back(std::asin((k - y0) / yhat));
+  const double pi = std::numbers::pi;
+  // The integral over [0, 2 pi] is twice the one over [-pi/2, pi/2] (phi -> pi - phi keeps y and sin phi).
+  const double s = gauss([&](double phi) { return t.dr(y0 + yhat * std::sin(phi)) * std::sin(phi); }, -pi / 2, pi / 2,
+                         breaks);
+  return 2 * s / (2 * pi * yhat);
+}
+
+double regression_method(const Table& t, double yhat) {
+  const double y0 = t.centre();
+  // Least squares over the interval: slope = integral (y - y0) Δr dy / integral (y - y0)^2 dy (exact per panel).
+  const double m = gauss([&](double yy) { return (yy - y0) * t.dr(yy); }, y0 - yhat, y0 + yhat, t.knots(y0 - yhat, y0 + yhat));
+  const double slope = m / (2 * yhat * yhat * yhat / 3);
+  return slope / 2;
+}
+
+void check_input(const DeltaRFunction& d) {
+  const std::size_t n = d.y.size();
+  if (d.dr.size() != n) fail("{}: y has {} values but dr has {}", kCtx, n, d.dr.size());
+  if (n < 3) fail("{}: a Δr table needs at least 3 points, got {}", kCtx, n);
+  if (!d.flange.empty() && d.flange.size() != n) fail("{}: flange has {} values for {} points", kCtx, d.flange.size(), n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(d.y[i]) || !std::isfinite(d.dr[i]))
+      fail("{}: point {} is not a finite number (y = {}, dr = {})", kCtx, i + 1, d.y[i], d.dr[i]);
+    if (std::abs(d.y[i]) > 0.1)
+      fail("{}: y[{}] = {} m lies beyond +-0.1 m: y is the lateral displacement in metres (mm given?)", kCtx, i + 1, d.y[i]);
+    if (std::abs(d.dr[i]) > 0.05)
+      fail("{}: dr[{}] = {} m: Δr is a rolling radius difference in metres, a few mm at most (mm given?)", kCtx, i + 1,
+           d.dr[i]);
+    if (i > 0 && !(d.y[i] > d.y[i - 1]))
+      fail("{}: y must increase strictly: y[{}] = {} m after y[{}] = {} m", kCtx, i + 1, d.y[i], i, d.y[i - 1]);
+  }
+}
+
+}  // namespace
+
+const char* to_string(ConicityMethod m) {
+  switch (m) {
+    case ConicityMethod::integral: return "integral";
+    case ConicityMethod::harmonic: return "harmonic";
+    case ConicityMethod::regression: return "regression";
+    case ConicityMethod::simple: return "simple";
+  }
+  return "?";
+}
+
+ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOptions& o) {
+  check_input(d);
+  if (o.yhat.empty()) fail("{}: 'yhat' needs at least one amplitude (m)", kCtx);
+  if (!(o.r0 > 0) || !(o.contact_distance > 0) || !std::isfinite(o.r0) || !std::isfinite(o.contact_distance))
+    fail("{}: r0 = {} m and contact_distance = {} m must be positive", kCtx, o.r0, o.contact_distance);
+  const Table t(d);
+  ConicityResult r;
+  r.method = o.method;
+  r.centre = t.centre();
+  for (double a : o.yhat) {
+    if (!(a > 0) || !std::isfinite(a) || a > 0.05)
+      fail("{}: the amplitude yhat = {} m must be a positive number of metres (up to 0.05)", kCtx, a);
+    double lo = r.centre - a, hi = r.centre + a, tg = 0;
+    if (o.method == ConicityMethod::integral) {
+      integral_method(t, a, lo, hi, tg);
+    } else {
+      t.check_inside(lo, hi, a);
+      if (o.method == ConicityMethod::harmonic) tg = harmonic_method(t, a);
+      else if (o.method == ConicityMethod::regression) tg = regression_method(t, a);
+      else tg = (t.dr(hi) - t.dr(lo)) / (4 * a);
+    }
+    t.check_flange(lo, hi, a);
+    r.yhat.push_back(a);
+    r.tan_gamma.push_back(tg);
+    r.y_min.push_back(lo);
+    r.y_max.push_back(hi);
+    const double e = 0.5 * o.contact_distance;
+    r.wavelength.push_back(tg > 0 ? 2 * std::numbers::pi * std::sqrt(e * o.r0 / tg) : 0.0);
+  }
+  return r;
+}
+
+ConicityOptions read_conicity_options(OptionReader& r) {
+  ConicityOptions o;
+  const auto yhat = r.numbers("yhat");
+  if (!yhat) fail("{}: 'yhat' is required: an amplitude or an array of amplitudes (m)", r.context());
+  o.yhat = *yhat;
+  const std::string m = r.choice("method", {"integral", "harmonic", "regression", "simple"}).value_or("integral");
+  o.method = m == "integral"   ? ConicityMethod::integral
+             : m == "harmonic" ? ConicityMethod::harmonic
+             : m == "regression" ? ConicityMethod::regression
+                                 : ConicityMethod::simple;
+  o.r0 = r.number("r0", o.r0);
+  o.contact_distance = r.number("contact_distance", o.contact_distance);
+  return o;
+}
+
+DeltaRFunction read_delta_r(OptionReader& r) {
+  DeltaRFunction d;
+  auto y = r.numbers("y", false), dr = r.numbers("dr", false);
+  if (!y || !dr) fail("{}: the Δr table needs arrays 'y' and 'dr' (m)", r.context());
+  d.y = std::move(*y);
+  d.dr = std::move(*dr);
+  if (const OptionValue* f = r.value("flange")) {
+    if (f->type != OptionValue::Type::array) fail("{}: 'flange' must be an array of booleans", r.context());
+    for (const OptionValue& v : f->array) {
+      if (v.type == OptionValue::Type::boolean) d.flange.push_back(v.boolean);
+      else if (v.type == OptionValue::Type::number && (v.number == 0 || v.number == 1)) d.flange.push_back(v.number == 1);
+      else fail("{}: 'flange' must be an array of booleans (or 0/1), got a {}", r.context(), v.type_name());
+    }
+  }
+  return d;
+}
+
+void describe(const ConicityResult& r, FieldSink& out) {
+  out.string("method", to_string(r.method));
+  out.number("centre", r.centre);
+  out.numbers("yhat", r.yhat.data(), r.yhat.size());
+  out.numbers("tan_gamma", r.tan_gamma.data(), r.tan_gamma.size());
+  out.numbers("y_min", r.y_min.data(), r.y_min.size());
+  out.numbers("y_max", r.y_max.data(), r.y_max.size());
+  out.numbers("wavelength", r.wavelength.data(), r.wavelength.size());
+}
+
+}  // namespace wrc

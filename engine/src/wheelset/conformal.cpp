@@ -1,0 +1,392 @@
+// The conformal path: a contact area on the rail's surface unrolled (wrc/wheelset/conformal.hpp says what and why;
+// docs/design.md section 3). The planar path is contact.cpp; both share contact_internal.hpp.
+#include "contact_internal.hpp"
+
+#include "wrc/core/error.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace wrc {
+
+const char* surface_name(ContactSurface surface) {
+  return surface == ContactSurface::conformal ? "conformal" : "planar";
+}
+
+namespace contact_detail {
+namespace {
+
+// One rail line of the reference curve across an area: its arc length, its point, the wheel's normal at its
+// deepest point and h(x) along it.
+struct SurfaceLine {
+  double S = 0;          // arc length along the rail profile from the side's first line (m)
+  double y = 0, z = 0;   // the line (track frame, m)
+  Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the line's deepest
+                         // point, x component dropped): the normal of the surface midway between them
+  LineProfile h;         // depth along the wheel's normal as a function of track x (v, u0 unused)
+};
+
+double chord(const RailLines& rail, int r) {  // between lines r and r + 1 (m)
+  return std::hypot(rail.y[r + 1] - rail.y[r], rail.z[r + 1] - rail.z[r]);
+}
+
+// The area's origin in unrolled coordinates (track x, arc length S): the segments' mid-points weighted by their
+// shares of the inter-penetration volume (the planar path's plane origin, on the surface), so that it moves
+// continuously with the pose; equal weights when only tangencies are left.
+Eigen::Vector2d surface_origin(const std::vector<SegmentInfo>& all, const std::vector<double>& S_of_segment) {
+  double W = 0;
+  Eigen::Vector2d o = Eigen::Vector2d::Zero();
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    W += all[k].weight;
+    o += all[k].weight * Eigen::Vector2d(all[k].xm, S_of_segment[k]);
+  }
+  if (W > 0) return o / W;
+  o.setZero();
+  for (std::size_t k = 0; k < all.size(); ++k) o += Eigen::Vector2d(all[k].xm, S_of_segment[k]);
+  return o / static_cast<double>(all.size());
+}
+
+// Arc length of every rail line in [first, last] from line 0 (exact chords).
+std::vector<double> rail_arc(const RailLines& rail, int first, int last) {
+  double S = 0;
+  for (int r = 0; r < first; ++r) S += chord(rail, r);
+  std::vector<double> out(static_cast<std::size_t>(last - first + 1));
+  for (int r = first; r <= last; ++r) {
+    out[static_cast<std::size_t>(r - first)] = S;
+    if (r < rail.count() - 1) S += chord(rail, r);
+  }
+  return out;
+}
+
+// The grid on the unrolled surface: element centres at integer multiples of the element from the origin, covering
+// the segments (x from their ends, s from their lines) plus the margin.
+contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all,
+                           const std::vector<double>& S_of_segment, const Eigen::Vector2d& o, int side,
+                           const Pose& pose) {
+  double xmin = INFINITY, xmax = -INFINITY, smin = INFINITY, smax = -INFINITY;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    xmin = std::min(xmin, all[k].xm - 0.5 * all[k].L);
+    xmax = std::max(xmax, all[k].xm + 0.5 * all[k].L);
+    smin = std::min(smin, S_of_segment[k]);
+    smax = std::max(smax, S_of_segment[k]);
+  }
+  const double e = opt.element;
+  const long i0 = static_cast<long>(std::floor((xmin - o.x()) / e)) - opt.margin;
+  const long i1 = static_cast<long>(std::ceil((xmax - o.x()) / e)) + opt.margin;
+  const long j0 = static_cast<long>(std::floor((smin - o.y()) / e)) - opt.margin;
+  const long j1 = static_cast<long>(std::ceil((smax - o.y()) / e)) + opt.margin;
+  const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
+  if (nx * ny > opt.max_elements) too_many_elements(opt, all, side, pose, nx, ny);
+  contact::Grid grid;
+  grid.nx = static_cast<int>(nx);
+  grid.ny = static_cast<int>(ny);
+  grid.dx = grid.dy = e;
+  grid.x0 = static_cast<double>(i0) * e;
+  grid.y0 = static_cast<double>(j0) * e;
+  return grid;
+}
+
+Eigen::Vector2d lateral_normal(const Eigen::Vector3d& n) {
+  const Eigen::Vector2d v(n.y(), n.z());
+  return v.norm() > 0 ? Eigen::Vector2d(v.normalized()) : Eigen::Vector2d(0, 1);
+}
+
+// The rail's outward normal (n_y, n_z) at line r: perpendicular to the chord between its neighbours (one-sided at
+// the ends); the lines are ordered by increasing y, so (-dz, dy) points out of the rail.
+Eigen::Vector2d rail_normal(const RailLines& rail, int r) {
+  const int a = std::max(0, r - 1), b = std::min(rail.count() - 1, r + 1);
+  const Eigen::Vector2d n(-(rail.z[b] - rail.z[a]), rail.y[b] - rail.y[a]);
+  return n.norm() > 0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d(0, 1);
+}
+
+// The normal of the surface midway between wheel and rail: the bisector of their normals.
+Eigen::Vector2d mid_normal(const Eigen::Vector2d& wheel, const Eigen::Vector2d& rail) {
+  const Eigen::Vector2d n = wheel + rail;
+  return n.norm() > 0 ? Eigen::Vector2d(n.normalized()) : rail;
+}
+
+// The rail lines from the last one at or before the grid's first row to the first one at or after its last row
+// (as far as the rail goes), each with its arc length, normal and h(x): the arcs of its segments (the deepest one
+// gives the wheel's normal), or the arc through its deepest point.
+std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationState& st, int side,
+                                       const std::vector<SegmentInfo>& all, double s_first, double s_last) {
+  const WheelCones& wheel = g.side[side].wheel;
+  const RailLines& rail = g.side[side].rail;
+  int rlo = rail.count(), rhi = -1;
+  for (const auto& s : all) {
+    rlo = std::min(rlo, s.line);
+    rhi = std::max(rhi, s.line);
+  }
+  double S_lo = rail_arc(rail, rlo, rlo).front(), S_hi = S_lo;
+  for (int r = rlo; r < rhi; ++r) S_hi += chord(rail, r);
+  while (rlo > 0 && S_lo > s_first) S_lo -= chord(rail, --rlo);
+  while (rhi < rail.count() - 1 && S_hi < s_last) S_hi += chord(rail, rhi++);
+  const std::vector<double> S = rail_arc(rail, rlo, rhi);
+  std::vector<SurfaceLine> lines(S.size());
+  std::vector<double> depth(S.size(), -INFINITY);
+  for (int r = rlo; r <= rhi; ++r) {
+    SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
+    l.S = S[static_cast<std::size_t>(r - rlo)];
+    l.y = rail.y[r];
+    l.z = rail.z[r];
+  }
+  for (const auto& s : all) {
+    const auto k = static_cast<std::size_t>(s.line - rlo);
+    lines[k].h.arcs.push_back(&s);
+    if (s.sagitta > depth[k]) {
+      depth[k] = s.sagitta;
+      lines[k].n = lateral_normal(s.normal);
+    }
+  }
+  for (SurfaceLine& l : lines) {
+    if (!l.h.arcs.empty()) continue;
+    const LineApproach a = line_approach(wheel, st.frame(), l.y, l.z);
+    const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
+    l.h.R = arc_radius(sp, st.pose().yaw);
+    l.h.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
+    l.h.x_apex = a.x;
+    l.n = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z}));
+  }
+  for (int r = rlo; r <= rhi; ++r) {
+    SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
+    l.n = mid_normal(l.n, rail_normal(rail, r));
+  }
+  return lines;
+}
+
+// Rows of the grid on the lines: per row its point, normal and the h of its elements (linear in s between the two
+// lines bracketing the row; the nearest line's beyond the rail's ends).
+void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, const Eigen::Vector2d& o,
+              ConformalSurface& surf, std::vector<double>& h) {
+  const int ny = grid.ny;
+  surf.y.resize(static_cast<std::size_t>(ny));
+  surf.z.resize(static_cast<std::size_t>(ny));
+  surf.normal_y.resize(static_cast<std::size_t>(ny));
+  surf.normal_z.resize(static_cast<std::size_t>(ny));
+  h.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  std::size_t b = 0;
+  for (int j = 0; j < ny; ++j) {
+    const double s = o.y() + grid.y(j);
+    while (b < lines.size() && lines[b].S <= s) ++b;  // rows ascend: the bracketing pair only moves forward
+    const std::size_t a = b == 0 ? 0 : b - 1, c = std::min(b, lines.size() - 1);
+    const SurfaceLine& la = lines[a];
+    const SurfaceLine& lc = lines[c];
+    const double t = (a == c || lc.S == la.S) ? 0.0 : std::clamp((s - la.S) / (lc.S - la.S), 0.0, 1.0);
+    const auto js = static_cast<std::size_t>(j);
+    surf.y[js] = (1 - t) * la.y + t * lc.y;
+    surf.z[js] = (1 - t) * la.z + t * lc.z;
+    const Eigen::Vector2d n = ((1 - t) * la.n + t * lc.n).normalized();
+    surf.normal_y[js] = n.x();
+    surf.normal_z[js] = n.y();
+    for (int i = 0; i < grid.nx; ++i) {
+      const double x = o.x() + grid.x(i);
+      const double ha = la.h.height(x);
+      h[static_cast<std::size_t>(grid.index(i, j))] = t > 0 ? (1 - t) * ha + t * lc.h.height(x) : ha;
+    }
+  }
+}
+
+// Per row of a pressure (or pressure response) field: its integral sum p dA and first moment sum p x dA (x: track x).
+void row_sums(const contact::Grid& grid, const std::vector<double>& p, double x0, std::vector<double>& P,
+              std::vector<double>& Q) {
+  P.assign(static_cast<std::size_t>(grid.ny), 0.0);
+  Q.assign(static_cast<std::size_t>(grid.ny), 0.0);
+  const double dA = grid.element_area();
+  for (int j = 0; j < grid.ny; ++j) {
+    double sp = 0, sx = 0;
+    for (int i = 0; i < grid.nx; ++i) {
+      const double v = p[static_cast<std::size_t>(grid.index(i, j))];
+      sp += v;
+      sx += v * (x0 + grid.x(i));
+    }
+    P[static_cast<std::size_t>(j)] = sp * dA;
+    Q[static_cast<std::size_t>(j)] = sx * dA;
+  }
+}
+
+// Force and moment about c of row integrals P (N) and first moments Q (N m): each element pushes along its row's
+// normal at (x, y_j, z_j), so row j gives n_j P_j and (X_j - c) x n_j P_j + e_x x n_j Q_j.
+void row_wrench(const ConformalSurface& surf, const std::vector<double>& P, const std::vector<double>& Q,
+                const Eigen::Vector3d& c, Eigen::Vector3d& F, Eigen::Vector3d& M) {
+  F.setZero();
+  M.setZero();
+  for (int j = 0; j < surf.rows(); ++j) {
+    const auto js = static_cast<std::size_t>(j);
+    if (P[js] == 0 && Q[js] == 0) continue;
+    const Eigen::Vector3d n = surf.normal(j);
+    F += n * P[js];
+    M += (surf.point(j, 0.0) - c).cross(n) * P[js] + Eigen::Vector3d::UnitX().cross(n) * Q[js];
+  }
+}
+
+// The surface point at arc coordinate s (grid y) between the rows.
+Eigen::Vector3d surface_point(const ConformalSurface& surf, const contact::Grid& grid, double x, double s) {
+  const double f = std::clamp((s - grid.y0) / grid.dy, 0.0, static_cast<double>(grid.ny - 1));
+  const int j = std::min(static_cast<int>(f), std::max(0, grid.ny - 2));
+  const int k = std::min(j + 1, grid.ny - 1);
+  const double t = f - j;
+  const auto a = static_cast<std::size_t>(j), b = static_cast<std::size_t>(k);
+  return {x, (1 - t) * surf.y[a] + t * surf.y[b], (1 - t) * surf.z[a] + t * surf.z[b]};
+}
+
+// Forces, moment, directions and measures of a solved conformal area.
+void conformal_results(const WheelCones& wheel, const PoseFrame& f, PatchContact& pc) {
+  const contact::NormalSolution& sol = pc.solution;
+  ConformalSurface& surf = *pc.conformal;
+  pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
+  pc.regions = contact_regions(sol);
+  const Eigen::Vector3d c(0, f.y, f.z);
+  std::vector<double> P, Q;
+  row_sums(sol.grid, sol.pressure, surf.x0, P, Q);
+  row_wrench(surf, P, Q, c, pc.force, pc.moment);
+  pc.normal_force = pc.force.norm();
+  const int j0 = std::clamp(static_cast<int>(std::lround(-sol.grid.y0 / sol.grid.dy)), 0, sol.grid.ny - 1);
+  pc.normal = pc.normal_force > 0 ? Eigen::Vector3d(pc.force / pc.normal_force) : surf.normal(j0);
+  pc.angle = contact_angle(pc.side, pc.normal);
+  pc.angle_min = pc.angle_max = contact_angle(pc.side, surf.normal(j0));
+  bool first = true;
+  for (int j = 0; j < surf.rows(); ++j) {
+    if (!(P[static_cast<std::size_t>(j)] > 0)) continue;
+    const double a = contact_angle(pc.side, surf.normal(j));
+    pc.angle_min = first ? a : std::min(pc.angle_min, a);
+    pc.angle_max = first ? a : std::max(pc.angle_max, a);
+    first = false;
+  }
+  // Centre of pressure on the surface (sol.cop_x, cop_y: the pressure's centroid in the unrolled coordinates).
+  pc.point = sol.force > 0 ? surface_point(surf, sol.grid, surf.x0 + sol.cop_x, sol.cop_y) : pc.origin;
+  pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
+}
+
+}  // namespace
+
+PatchContact solve_conformal_area(const ContactModel& model, const LocationState& st, int side,
+                                  const std::vector<SegmentInfo>& all, const Patch& first, ContactWorkspace& ws,
+                                  const ContactRequest& request, std::vector<ContactWorkspace::Previous>& next_previous) {
+  const GeometryModel& g = model.geometry();
+  const ContactOptions& opt = model.options();
+  const RailLines& rail = g.side[side].rail;
+  PatchContact pc;
+  pc.side = side;
+  pc.nominal = first.point;
+  pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
+  pc.conformal.emplace();
+  ConformalSurface& surf = *pc.conformal;
+  contact::Grid grid;
+  Plane pl;  // the area in unrolled coordinates (x, s, 0): the warm-start helpers' plane
+  const ContactWorkspace::Previous* prev = nullptr;
+  {
+    PhaseTimer t(ws, ws.times.geometry);
+    int rmin = rail.count(), rmax = -1;
+    for (const auto& s : all) {
+      rmin = std::min(rmin, s.line);
+      rmax = std::max(rmax, s.line);
+    }
+    const std::vector<double> arc = rail_arc(rail, rmin, rmax);
+    std::vector<double> S(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line - rmin)];
+    const Eigen::Vector2d o = surface_origin(all, S);
+    pl = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
+    prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
+    grid = surface_grid(opt, all, S, o, side, st.pose());
+    const auto lines = surface_lines(g, st, side, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
+    lay_rows(lines, grid, o, surf, pc.h);
+    surf.x0 = o.x();
+    surf.s0 = o.y();
+    const int j0 = std::clamp(static_cast<int>(std::lround(-grid.y0 / grid.dy)), 0, grid.ny - 1);
+    pc.origin = surface_point(surf, grid, o.x(), 0.0);
+    pc.t1 = Eigen::Vector3d::UnitX();
+    pc.t2 = surf.t2(j0);
+    pc.normal = surf.normal(j0);
+  }
+  {
+    PhaseTimer t(ws, ws.times.solve);
+    contact::NormalOptions nopt = opt.normal;
+    if (request.tolerance > 0) nopt.tolerance = request.tolerance;
+    std::vector<double> start;
+    if (warm_start(prev, pl, grid, start)) nopt.initial_pressure = start;
+    const contact::NormalLoad load = contact::NormalLoad::penetration();
+    pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
+                            : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
+  }
+  {
+    PhaseTimer t(ws, ws.times.results);
+    conformal_results(g.side[side].wheel, st.frame(), pc);
+    ++ws.times.areas;
+    ws.times.elements += grid.size();
+    ws.times.iterations += pc.solution.iterations + pc.solution.coarse_iterations;
+  }
+  if (request.sensitivity) {
+    PhaseTimer t(ws, ws.times.sensitivity);
+    conformal_sensitivity(model, st.pose(), pc, ws);
+  }
+  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure});
+  return pc;
+}
+
+// d(force, moment)/d(z, roll) of a solved conformal area, its surface held fixed. A rigid motion of the wheelset moves
+// its surface point X by dX = dz e_z + droll a x (X - c) (a = Rz(yaw) e_x the roll axis, c the centre); element
+// (i, j) measures h along n_j, so dh = -dX . n_j (the wheel moving against the normal goes deeper). The pressure
+// response on the contact set gives each row's dP and dQ, whose wrench (row_wrench) is the response; the moment
+// about the centre also changes because the centre moves with z: - e_z x F.
+void conformal_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
+  const contact::NormalSolution& sol = pc.solution;
+  const ConformalSurface& surf = *pc.conformal;
+  pc.sensitivity.setZero();
+  if (!(sol.force > 0)) return;
+  if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
+  const contact::Grid& grid = sol.grid;
+  const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
+  std::vector<double> dh(static_cast<std::size_t>(grid.size())), P, Q;
+  for (int col = 0; col < 2; ++col) {
+    for (int j = 0; j < grid.ny; ++j) {
+      const Eigen::Vector3d n = surf.normal(j);
+      // roll: -(a x (X - c)) . n = -a . ((X_j - c) x n) - x a . (e_x x n)
+      const double k0 = col == 0 ? n.z() : a.dot((surf.point(j, 0.0) - c).cross(n));
+      const double k1 = col == 0 ? 0.0 : a.dot(Eigen::Vector3d::UnitX().cross(n));
+      for (int i = 0; i < grid.nx; ++i)
+        dh[static_cast<std::size_t>(grid.index(i, j))] = -(k0 + k1 * (surf.x0 + grid.x(i)));
+    }
+    // A Jacobian for Newton steps needs a few digits (as the planar path's).
+    const contact::NormalResponse r = model.options().dense
+                                          ? contact::normal_response_dense(model.material(), sol, dh)
+                                          : model.solver().response(sol, dh, ws.normal, 1e-2);
+    row_sums(grid, r.pressure, surf.x0, P, Q);
+    Eigen::Vector3d dF, dM;
+    row_wrench(surf, P, Q, c, dF, dM);
+    if (col == 0) dM -= Eigen::Vector3d::UnitZ().cross(pc.force);  // the centre moves with z
+    pc.sensitivity.block<3, 1>(0, col) = dF;
+    pc.sensitivity.block<3, 1>(3, col) = dM;
+  }
+}
+
+// The conformal fields of an area: the rows (s, y, z, normal_y, normal_z, angle per grid row: the normals of its
+// elements) and, with the grids, the contact angle of every element.
+void describe_conformal(const PatchContact& pc, FieldSink& out) {
+  const ConformalSurface& surf = *pc.conformal;
+  const contact::Grid& grid = pc.solution.grid;
+  std::vector<double> s(static_cast<std::size_t>(surf.rows())), angle(s.size());
+  for (int j = 0; j < surf.rows(); ++j) {
+    s[static_cast<std::size_t>(j)] = surf.s0 + grid.y(j);
+    angle[static_cast<std::size_t>(j)] = contact_angle(pc.side, surf.normal(j));
+  }
+  out.begin("rows");
+  out.numbers("s", s.data(), s.size());
+  out.numbers("y", surf.y.data(), surf.y.size());
+  out.numbers("z", surf.z.data(), surf.z.size());
+  out.numbers("normal_y", surf.normal_y.data(), surf.normal_y.size());
+  out.numbers("normal_z", surf.normal_z.data(), surf.normal_z.size());
+  out.numbers("angle", angle.data(), angle.size());
+  out.end();
+  if (!pc.solution.pressure.empty()) {
+    std::vector<double> grid_angle(static_cast<std::size_t>(grid.size()));
+    for (int j = 0; j < grid.ny; ++j)
+      std::fill_n(grid_angle.begin() + static_cast<std::ptrdiff_t>(grid.index(0, j)), grid.nx,
+                  angle[static_cast<std::size_t>(j)]);
+    out.grid("angles", grid_angle.data(), grid.nx, grid.ny);
+  }
+}
+
+}  // namespace contact_detail
+}  // namespace wrc

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Runs a wrc study in N shards with GNU parallel -- on this machine, or on several over ssh -- then merges them into
+# exactly the files a single process writes (README "Studies at scale").
+#
+#   examples/cluster/parallel.sh [-n SHARDS] [-j JOBS] [-S HOSTS] STUDY.lua [key=value ...]
+#
+#   -n SHARDS  parts of the study (default 4); a shard is `wrc run STUDY.lua ... --shard K/N`
+#   -j JOBS    shards running at once on each host (default: all cores; give the study threads=1 then)
+#   -S HOSTS   GNU parallel's --sshlogin list, e.g. "8/node1,8/node2,:" (":" is this machine). Every host needs wrc,
+#              the study script at the same path, and the output folder on a shared file system; remote jobs run
+#              in this working directory.
+#
+# Environment: WRC, the wrc executable (default: `wrc` on the PATH). A shard that was stopped is simply run again:
+# it resumes after its last finished block. Exit status: that of the merge (0, or 3 when cases failed).
+set -euo pipefail
+
+shards=4 jobs="" hosts=""
+while getopts "n:j:S:h" o; do
+  case $o in
+    n) shards=$OPTARG ;;
+    j) jobs=$OPTARG ;;
+    S) hosts=$OPTARG ;;
+    *) sed -n '2,16p' "$0"; exit 2 ;;
+  esac
+done
+shift $((OPTIND - 1))
+if [ $# -lt 1 ]; then
+  sed -n '2,16p' "$0" >&2
+  exit 2
+fi
+study=$1
+shift
+wrc=${WRC:-wrc}
+command -v parallel >/dev/null || { echo "parallel.sh: GNU parallel is not installed (Debian: apt install parallel)" >&2; exit 2; }
+
+opts=(--will-cite --halt never --line-buffer --tagstring "shard {}/$shards")
+[ -n "$jobs" ] && opts+=(--jobs "$jobs")
+[ -n "$hosts" ] && opts+=(--sshlogin "$hosts" --workdir "$PWD")
+
+start=$(date +%s%N)
+# -q: the words of the command are quoted for the shell (on remote hosts too); a failed shard does not stop the others.
+parallel "${opts[@]}" -q "$wrc" run "$study" "$@" --shard "{}/$shards" ::: $(seq 1 "$shards") || true
+shards_done=$(date +%s%N)
+status=0
+"$wrc" run "$study" "$@" --merge || status=$?
+end=$(date +%s%N)
+ms() { echo $((($2 - $1) / 1000000)); }
+echo "parallel.sh: $shards shards in $(ms "$start" "$shards_done") ms, merge in $(ms "$shards_done" "$end") ms (exit $status)" >&2
+exit $status

@@ -1,0 +1,87 @@
+// The flags of `wrc run` (--shard, --merge, --fresh, --help) and the shard of a SLURM array task.
+#include "wrc/core/error.hpp"
+#include "wrc/lua/host.hpp"
+
+#include <doctest/doctest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace wrc;
+using wrc::lua::RunFlags;
+using wrc::lua::take_run_flags;
+
+namespace {
+
+RunFlags flags(std::vector<std::string>& args, const std::map<std::string, std::string>& env = {}) {
+  return take_run_flags(args, [&](const char* name) -> const char* {
+    const auto it = env.find(name);
+    return it == env.end() ? nullptr : it->second.c_str();
+  });
+}
+
+RunFlags flags_of(std::vector<std::string> args, const std::map<std::string, std::string>& env = {}) {
+  return flags(args, env);
+}
+
+}  // namespace
+
+TEST_CASE("host flags: --shard K/N, --merge, --fresh, --help are taken out; key=value words stay") {
+  std::vector<std::string> args{"step_mm=0.5", "--shard", "2/4", "out=x", "--fresh"};
+  const RunFlags f = flags(args);
+  CHECK(args == std::vector<std::string>{"step_mm=0.5", "out=x"});
+  CHECK(f.shard == 2);
+  CHECK(f.shards == 4);
+  CHECK(f.shard_from == "--shard 2/4");
+  CHECK(f.fresh);
+  CHECK_FALSE(f.merge);
+  CHECK(flags_of({"--shard=3/8"}).shard == 3);
+  CHECK(flags_of({"--merge"}).merge);
+  CHECK(flags_of({"-h"}).help);
+  const RunFlags none = flags_of({"a=1"});
+  CHECK(none.shard == 1);
+  CHECK(none.shards == 1);
+  CHECK(none.shard_from.empty());
+  for (const char* bad : {"0/4", "5/4", "2", "2/0", "a/b", "2/4x", "-1/3"})
+    CHECK_THROWS_WITH_AS(flags_of({"--shard", bad}), doctest::Contains("expected K/N with 1 <= K <= N"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"--shard"}), doctest::Contains("--shard needs K/N"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"--shrad", "1/2"}), doctest::Contains("did you mean '--shard'"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"--merge", "--shard", "1/2"}), doctest::Contains("takes no --shard"), Error);
+}
+
+TEST_CASE("host flags: the shard of a SLURM array task, and --shard winning over it") {
+  // --array=1-4, task 3
+  RunFlags f = flags_of({}, {{"SLURM_ARRAY_TASK_ID", "3"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "4"},
+                             {"SLURM_ARRAY_TASK_COUNT", "4"}});
+  CHECK(f.shard == 3);
+  CHECK(f.shards == 4);
+  CHECK(f.shard_from.find("SLURM_ARRAY_TASK_ID=3") != std::string::npos);
+  // --array=0-3: ids from 0; the count from MAX when COUNT is missing
+  f = flags_of({}, {{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_MAX", "3"}});
+  CHECK(f.shard == 1);
+  CHECK(f.shards == 4);
+  // --array=1-7:2 (ids 1, 3, 5, 7): task 5 is shard 3 of 4
+  f = flags_of({}, {{"SLURM_ARRAY_TASK_ID", "5"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "7"},
+                    {"SLURM_ARRAY_TASK_STEP", "2"}, {"SLURM_ARRAY_TASK_COUNT", "4"}});
+  CHECK(f.shard == 3);
+  CHECK(f.shards == 4);
+  // --array=1,3,7: ids that do not number the tasks
+  CHECK_THROWS_WITH_AS(flags_of({}, {{"SLURM_ARRAY_TASK_ID", "3"}, {"SLURM_ARRAY_TASK_MIN", "1"},
+                                     {"SLURM_ARRAY_TASK_MAX", "7"}, {"SLURM_ARRAY_TASK_COUNT", "3"}}),
+                       doctest::Contains("a list with gaps"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({}, {{"SLURM_ARRAY_TASK_ID", "x"}}), doctest::Contains("not a whole number"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({}, {{"SLURM_ARRAY_TASK_ID", "2"}}), doctest::Contains("pass --shard K/N"), Error);
+  // --shard wins, with a note; --merge and --help ignore the array
+  const std::map<std::string, std::string> task{{"SLURM_ARRAY_TASK_ID", "2"}, {"SLURM_ARRAY_TASK_MIN", "1"},
+                                                {"SLURM_ARRAY_TASK_COUNT", "4"}};
+  f = flags_of({"--shard", "1/2"}, task);
+  CHECK(f.shard == 1);
+  CHECK(f.shards == 2);
+  REQUIRE(f.notes.size() == 1);
+  CHECK(f.notes[0].find("--shard 1/2 wins") != std::string::npos);
+  f = flags_of({"--merge"}, task);
+  CHECK(f.shards == 1);
+  CHECK(f.notes.empty());
+  CHECK(flags_of({"--help"}, task).shards == 1);
+}
