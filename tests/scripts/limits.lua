@@ -87,3 +87,7 @@ check.ok(r.threads == 2 and r.threads_note == nil, "as asked: no note")
 local inline = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3, strategy = {locate = function(ctx, side) ctx:walk(side) end}}
 r = inline:sweep{y = {0, 1e-3}, Q = 200e3, threads = 2, progress = false}
 check.ok(r.threads == 1 and r.threads_note:find("inline Lua table", 1, true), tostring(r.threads_note))
+local t = coarse:geometry_table{y = {from = 0, to = 1e-3, step = 0.1e-3}, threads = 4, progress = false}
+check.ok(t.threads == 1 and t.threads_note and t.threads_note:find("threads = 4 asked for, 1 used: 11 rows", 1, true),
+         "geometry table: " .. tostring(t.threads_note))
+check.ok(coarse:geometry_table{y = {0, 1e-3}, threads = 1, progress = false}.threads_note == nil, "as asked: no note")

@@ -105,10 +105,14 @@ GeometryTable run_geometry_table(const GeometryModel& g, const GeometryTableOpti
   t.roll = o.rigid.roll;
   const std::size_t n = o.y.size();
   t.rows.resize(n);
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // At least 16 rows a chunk: continuation needs a run-up, and threads cost more than short chunks save.
-  const int threads = std::clamp(o.threads > 0 ? o.threads : cores, 1, std::max(1, static_cast<int>(n / 16)));
+  const int threads = std::clamp(o.threads > 0 ? o.threads : available_cores(), 1, std::max(1, static_cast<int>(n / 16)));
   t.threads = threads;
+  if (o.threads > threads) {
+    t.threads_note = fmt::format("threads = {} asked for, {} used: {} rows make {} chunk{} of at least 16 rows",
+                                 o.threads, threads, n, threads, threads == 1 ? "" : "s");
+    if (o.notice) o.notice(t.threads_note);
+  }
   std::mutex m;
   int done = 0;
   auto tick = [&] {
@@ -153,6 +157,7 @@ GeometryTableOptions read_geometry_table_options(OptionReader& r) {
   o.jump_threshold = r.number("jump_threshold", o.jump_threshold);
   o.csv = r.string("csv").value_or("");
   o.file = r.string("file").value_or("");
+  o.notice = [](const std::string& note) { std::fprintf(stderr, "wrc: geometry table: %s\n", note.c_str()); };
   if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
     o.progress = [](int done, int total) {
       if (done != total && done % 50 != 0) return;
@@ -348,6 +353,7 @@ void describe(const GeometryTable& t, FieldSink& out) {
   out.number("roll", t.roll);
   out.number("seconds", t.seconds);
   out.integer("threads", t.threads);
+  if (!t.threads_note.empty()) out.string("threads_note", t.threads_note);
   out.begin_list("rows", t.rows.size());
   for (const RigidResult& r : t.rows) {
     out.item();

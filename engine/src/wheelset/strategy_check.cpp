@@ -2,6 +2,7 @@
 #include "wrc/wheelset/strategy_check.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/core/files.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
@@ -136,7 +137,7 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Draw> draws = draw_poses(o);
   const int n = static_cast<int>(draws.size());
-  int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = o.threads > 0 ? o.threads : available_cores();
   threads = std::max(1, std::min(threads, n));
   std::vector<Worker> workers(static_cast<std::size_t>(threads));
   for (Worker& w : workers) w.search = make_search();  // on the calling thread: a strategy may need it

@@ -21,10 +21,11 @@ struct GeometryTableOptions {
   std::vector<double> y;             // lateral displacements (m), strictly increasing
   double yaw = 0;                    // rad
   RigidOptions rigid;                // roll mode, Q, two_point_tolerance (start: ignored)
-  int threads = 0;                   // 0: the machine's cores
+  int threads = 0;                   // 0: the cores this process may use (available_cores)
   double jump_threshold = 0.5e-3;    // m: a move of the touching point larger than this between rows is examined
   std::function<void(int, int)> progress;  // (rows done, rows): from the workers, serialised
   std::string csv, file;             // when not empty: write the CSV / the multibody table there
+  std::function<void(const std::string&)> notice;  // once, when fewer threads run than `threads` asked for
 };
 
 // A jump of one wheel's touching point between y_before and y_after (bisected to 1e-8 m).
@@ -41,7 +42,8 @@ struct GeometryTable {
   std::vector<RigidResult> rows;     // one per y, in order
   std::vector<ContactJump> jumps;    // by y, then side
   double seconds = 0;
-  int threads = 1;
+  int threads = 1;                   // worker threads used
+  std::string threads_note;          // why fewer than GeometryTableOptions::threads (when given) ran; "" otherwise
 };
 
 // Throws wrc::Error on bad input (no y, y not increasing, yaw or roll out of range) or when a file cannot be written;
@@ -56,7 +58,7 @@ GeometryTableOptions read_geometry_table_options(OptionReader& options);
 void write_geometry_csv(const GeometryTable& table, const std::string& path);
 void write_geometry_text(const GeometryTable& table, const GeometryModel& geometry, const std::string& path);
 
-// yaw, roll_mode, roll, seconds, threads, rows = {rigid results}, jumps = {{side, y_before, y_after,
+// yaw, roll_mode, roll, seconds, threads, threads_note (when set), rows = {rigid results}, jumps = {{side, y_before, y_after,
 // before = {contact point}, after = {...}, wheel_jump, rail_jump (m: along each profile)}}.
 void describe(const GeometryTable& table, FieldSink& out);
 
