@@ -13,7 +13,7 @@
 //      state, per wheel and step, at 0.5 and 0.2 mm.
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
-//   bench_online [quick] [reps=20]
+//   bench_online [quick] [reps=20] [surface=conformal|planar]   (the wheelset's default surface: conformal)
 #include "lua/lua.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -54,6 +54,8 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+wrc::ContactSurface surface = wrc::ContactSurface::conformal;
+
 std::shared_ptr<const wrc::Wheelset> paper_wheelset(double grid) {
   wrc::WheelsetProfiles p;
   const auto w = wrc::lua::load_profile("profiles/s1002.lua", {});
@@ -62,6 +64,7 @@ std::shared_ptr<const wrc::Wheelset> paper_wheelset(double grid) {
   p.rail = {*r, *r};
   wrc::WheelsetParams params;
   params.contact.element = grid;
+  params.contact.surface = surface;
   return wrc::build_wheelset(p, params);
 }
 
@@ -112,10 +115,12 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "quick") == 0) quick = true, reps = 5;
     if (std::strncmp(argv[i], "reps=", 5) == 0) reps = std::max(1, std::atoi(argv[i] + 5));
+    if (std::strcmp(argv[i], "surface=planar") == 0) surface = wrc::ContactSurface::planar;
   }
   double loads[3] = {0, 0, 0};
   if (getloadavg(loads, 3) < 0) loads[0] = -1;
-  fmt::print("bench_online: S1002/60E1, grid 0.2 mm, strategy accurate; load average {:.2f}\n", loads[0]);
+  fmt::print("bench_online: S1002/60E1, grid 0.2 mm, strategy accurate, {} surface; load average {:.2f}\n",
+             wrc::surface_name(surface), loads[0]);
   const double t0 = thread_cpu();
   const auto ws = paper_wheelset(0.2e-3);
   fmt::print("building the wheelset: {:.1f} ms\n", 1e3 * (thread_cpu() - t0));
@@ -163,7 +168,8 @@ int main(int argc, char** argv) {
   {
     wrc::lua::Session s;
     if (auto err = s.run("ws = wrc.wheelset{wheel = wrc.profile.load('profiles/s1002.lua'), "
-                         "rail = wrc.profile.load('profiles/60e1.lua')}")) {
+                         "rail = wrc.profile.load('profiles/60e1.lua'), surface = '" +
+                         std::string(wrc::surface_name(surface)) + "'}")) {
       fmt::print(stderr, "{}\n", *err);
       return 1;
     }
