@@ -52,7 +52,7 @@ struct ContactOptions {
   bool dense = false;             // the dense reference solver instead of the fast one (tests)
   // Largest potential contact area (elements, ~kBytesPerElement each): a larger one is an error naming the grid as too
   // fine for the cap, or the pose as far too deep. 2^22: the paper's poses (S1002/60E1, Q = 200 kN, y = -8 .. 8 mm,
-  // yaw 0 and 1 deg) need up to ~2.0e6 elements at grid = 0.02 mm.
+  // yaw 0 and 1 deg) need up to ~2.4e6 elements at grid = 0.02 mm (conformal areas; tests/scripts/limits.lua).
   int max_elements = 1 << 22;
   contact::NormalOptions normal;  // tolerance etc. of the normal solver
   // The potential contact area: the curved surface along the rail's profile (CONTACT's conformal mode;
