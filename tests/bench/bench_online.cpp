@@ -238,21 +238,29 @@ int main(int argc, char** argv) {
       for (const auto& e : r.elastic) tz.push_back(e.z), troll.push_back(e.roll);
     }
     const int steps = quick ? 200 : 1000;
-    wrc::Trajectory traj(wsg);
-    traj.workspace().timing = true;
-    std::vector<double> per_step;
-    const double V = 100 / 3.6, f = 1.5;
-    for (int k = 0; k < steps; ++k) {
-      const double t = k * 1e-3, y = 5e-3 * std::sin(2 * std::numbers::pi * f * t);
-      const double yaw = -5e-3 * 2 * std::numbers::pi * f / V * std::cos(2 * std::numbers::pi * f * t);
-      const double z = wrc::interpolate(ty, tz, y), roll = wrc::interpolate(ty, troll, y);
-      const double c0 = thread_cpu();
-      traj.contact({y, z, roll, yaw});
-      per_step.push_back(thread_cpu() - c0);
+    double ms[2] = {0, 0};
+    for (bool extrapolate : {true, false}) {
+      wrc::TrajectoryOptions to;
+      to.extrapolate = extrapolate;
+      wrc::Trajectory traj(wsg, to);
+      traj.workspace().timing = true;
+      std::vector<double> per_step;
+      const double V = 100 / 3.6, f = 1.5;
+      for (int k = 0; k < steps; ++k) {
+        const double t = k * 1e-3, y = 5e-3 * std::sin(2 * std::numbers::pi * f * t);
+        const double yaw = -5e-3 * 2 * std::numbers::pi * f / V * std::cos(2 * std::numbers::pi * f * t);
+        const double z = wrc::interpolate(ty, tz, y), roll = wrc::interpolate(ty, troll, y);
+        const double c0 = thread_cpu();
+        traj.contact({y, z, roll, yaw});
+        per_step.push_back(thread_cpu() - c0);
+      }
+      ms[extrapolate ? 0 : 1] = 1e3 * median(per_step);
+      fmt::print("grid {:.1f} mm, {}: {:.3f} ms per wheel and step (median {:.3f} ms per step for both wheels, {} steps)\n",
+                 grid * 1e3, extrapolate ? "extrapolated starts" : "the last step as start", 1e3 * median(per_step) / 2,
+                 1e3 * median(per_step), steps);
+      print_times("per step", traj.workspace().times, steps);
     }
-    fmt::print("grid {:.1f} mm: {:.3f} ms per wheel and step (median {:.3f} ms per step for both wheels, {} steps)\n",
-               grid * 1e3, 1e3 * median(per_step) / 2, 1e3 * median(per_step), steps);
-    print_times("per step", traj.workspace().times, steps);
+    fmt::print("  the last step as start / extrapolated: {:.2f}\n", ms[1] / ms[0]);
   }
   return 0;
 }

@@ -120,8 +120,9 @@ wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc
  * previous step's solution (warm), so its result depends on the steps before to the solver's tolerance. A trajectory
  * is used by one thread at a time (concurrent calls on one trajectory are serialised); it keeps its wheelset alive. */
 
-/* Options: tolerance (relative gap of the normal problems, default 1e-6), grids (default false). The caller owns
- * *out. */
+/* Options: tolerance (relative gap of the normal problems, default 1e-6), grids (default false), extrapolate
+ * (default true: wrc_trajectory_contact starts each step from the linear extrapolation of the last two, as for a
+ * fixed time step; false: from the last step alone). The caller owns *out. */
 wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_trajectory** out);
 /* Contact at a prescribed pose (m, rad), as wrc_contact. */
 wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,

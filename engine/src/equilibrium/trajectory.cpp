@@ -7,6 +7,7 @@ TrajectoryOptions read_trajectory_options(OptionReader& r) {
   TrajectoryOptions o;
   o.tolerance = r.number("tolerance", o.tolerance);
   o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
+  o.extrapolate = r.boolean("extrapolate").value_or(o.extrapolate);
   return o;
 }
 
@@ -22,6 +23,7 @@ ContactResult Trajectory::contact(const Pose& pose) {
   ContactRequest req;
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
+  workspace_->extrapolate = options_.extrapolate;
   return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
 }
 
@@ -29,6 +31,9 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   EquilibriumOptions opt;
   opt.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
+  // The secant's iterates are no time steps: start each from the last alone.
+  workspace_->extrapolate = false;
+  workspace_->before[side].clear();
   WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, last_z_[side]);
   if (r.converged) last_z_[side] = r.z;
   return r;

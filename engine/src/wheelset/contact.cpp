@@ -14,6 +14,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -210,8 +211,6 @@ int contact_regions(const contact::NormalSolution& sol) {
   return regions;
 }
 
-// Start pressures for an area from the last evaluation's area of the same side in (nearly) the same plane:
-// the old pressure at each new element centre (bilinear). False when there is none.
 // The last evaluation's area of the same side in (nearly) the same plane, or none.
 const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl) {
   const ContactWorkspace::Previous* best = nullptr;
@@ -227,26 +226,48 @@ const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspa
   return best;
 }
 
+namespace {
+
+// The old area's pressure at the point X (track frame; bilinear), or nothing where the nearest old element was not
+// in contact: interpolation alone smears the contact edge outward, and each element started in contact that is not
+// costs the CG a clipping step (as prolong does).
+std::optional<double> pressure_at(const ContactWorkspace::Previous& p, const Eigen::Vector3d& X) {
+  const contact::Grid& g = p.grid;
+  const Eigen::Vector3d d = X - p.origin;
+  const double fu = (d.dot(p.t1) - g.x0) / g.dx, fv = (d.dot(p.t2) - g.y0) / g.dy;
+  const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
+  if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) return std::nullopt;
+  const double a = fu - iu, b = fv - iv;
+  auto P = [&](int di, int dj) { return p.pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
+  if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) return std::nullopt;
+  return (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
+}
+
+}  // namespace
+
+// Start pressures for an area: the old pressure at each new element centre (bilinear), extrapolated with the area
+// before it where both were in contact. False when there is no old area.
 bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start) {
+                std::vector<double>& start, const ContactWorkspace::Previous* before) {
   if (!best) return false;
-  const contact::Grid& g = best->grid;
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      const Eigen::Vector3d X = pl.O + grid.x(i) * pl.t1 + grid.y(j) * pl.t2 - best->origin;
-      const double fu = (X.dot(best->t1) - g.x0) / g.dx, fv = (X.dot(best->t2) - g.y0) / g.dy;
-      const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
-      if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) continue;
-      const double a = fu - iu, b = fv - iv;
-      auto P = [&](int di, int dj) { return best->pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
-      // Only where the nearest old element was in contact: interpolation alone smears the contact edge outward,
-      // and each element started in contact that is not costs the CG a clipping step (as prolong does).
-      if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) continue;
-      start[static_cast<std::size_t>(grid.index(i, j))] =
-          (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
+      const Eigen::Vector3d X = pl.O + grid.x(i) * pl.t1 + grid.y(j) * pl.t2;
+      const auto p = pressure_at(*best, X);
+      if (!p) continue;
+      const auto q = before ? pressure_at(*before, X) : std::nullopt;
+      start[static_cast<std::size_t>(grid.index(i, j))] = q ? std::max(0.0, 2 * *p - *q) : *p;
     }
   return true;
+}
+
+std::pair<const ContactWorkspace::Previous*, const ContactWorkspace::Previous*> warm_areas(const ContactWorkspace& ws,
+                                                                                          int side, const Plane& pl) {
+  if (!ws.warm_start) return {nullptr, nullptr};
+  const auto* last = previous_area(ws.previous[side], pl);
+  const auto* before = last && ws.extrapolate ? previous_area(ws.before[side], pl) : nullptr;
+  return {last, before};
 }
 
 // The potential contact area of a pose exceeds max_elements: either the grid is too fine for the cap or the pose is
@@ -392,7 +413,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     return pc;
   }
   const Plane pl = plane_of(all, first);
-  const ContactWorkspace::Previous* prev = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
+  const auto [prev, before] = warm_areas(ws, side, pl);
 
   PatchContact pc;
   pc.side = side;
@@ -413,7 +434,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     contact::NormalOptions nopt = opt.normal;
     if (request.tolerance > 0) nopt.tolerance = request.tolerance;
     std::vector<double> start;
-    if (warm_start(prev, pl, grid, start)) nopt.initial_pressure = start;
+    if (warm_start(prev, pl, grid, start, before)) nopt.initial_pressure = start;
     const contact::NormalLoad load = contact::NormalLoad::penetration();
     pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
                             : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
@@ -495,6 +516,7 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
     N += pc.normal_force;
     wc.patches.push_back(std::move(pc));
   }
+  ws.before[side] = ws.extrapolate ? std::move(ws.previous[side]) : std::vector<ContactWorkspace::Previous>{};
   ws.previous[side] = std::move(next_previous);
   wc.rolling_radius = N > 0 ? rr / N : 0.0;
   wc.angle = N > 0 ? contact_angle(side, wc.force) : 0.0;
@@ -508,6 +530,7 @@ using namespace contact_detail;
 
 void ContactWorkspace::forget() {
   for (auto& p : previous) p.clear();
+  for (auto& p : before) p.clear();
 }
 
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace wrc::contact_detail {
@@ -78,8 +79,12 @@ int contact_regions(const contact::NormalSolution& sol);
 // Warm starts (contact.cpp): the last evaluation's area nearest to the plane, the start pressures interpolated from
 // it. A conformal area passes its unrolled coordinates as the plane (origin (x, s, 0), axes e_x, e_y, normal e_z).
 const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl);
+// With `before` (the area of the evaluation before, or null), the start is extrapolated linearly in time.
 bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start);
+                std::vector<double>& start, const ContactWorkspace::Previous* before = nullptr);
+// The two areas a warm start uses: the last evaluation's and, when the workspace extrapolates, the one before it.
+std::pair<const ContactWorkspace::Previous*, const ContactWorkspace::Previous*> warm_areas(const ContactWorkspace& ws,
+                                                                                          int side, const Plane& pl);
 // A potential contact area of nx x ny elements exceeds max_elements (contact.cpp): an error that says whether the
 // grid is too fine for the cap or the pose far too deep.
 [[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,

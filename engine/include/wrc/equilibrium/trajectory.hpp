@@ -17,9 +17,12 @@ struct TrajectoryOptions {
   // CG iterations.
   double tolerance = 1e-6;
   bool keep_grids = false;  // pressure and h grids in the results
+  // contact(): start each step from the linear extrapolation of the last two steps (2 p_k - p_k-1, where both were in
+  // contact), as for a fixed time step; false: from the last step alone (steps of varying size or direction).
+  bool extrapolate = true;
 };
 
-// Reads {tolerance =, grids =} (the keys of ws:trajectory{} and wrc_trajectory_new).
+// Reads {tolerance =, grids =, extrapolate =} (the keys of ws:trajectory{} and wrc_trajectory_new).
 TrajectoryOptions read_trajectory_options(OptionReader& options);
 
 class Trajectory {

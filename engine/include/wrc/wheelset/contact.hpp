@@ -169,6 +169,10 @@ class ContactWorkspace {
   };
   std::array<std::vector<Previous>, 2> previous;  // per side, the areas of the last evaluation
   bool warm_start = true;                         // use them (off to measure what it gains)
+  // Start from the linear extrapolation of the last two evaluations (2 p_last - p_before, where both were in
+  // contact) instead of the last alone: for poses along a trajectory at a fixed time step (Trajectory::contact).
+  bool extrapolate = false;
+  std::array<std::vector<Previous>, 2> before;    // per side, the areas of the evaluation before the last
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();
