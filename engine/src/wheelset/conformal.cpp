@@ -7,7 +7,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
 
 namespace wrc {
@@ -276,7 +275,6 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
   ConformalSurface& surf = *pc.conformal;
   contact::Grid grid;
   Plane pl;  // the area in unrolled coordinates (x, s, 0): the warm-start helpers' plane
-  const ContactWorkspace::Previous *prev = nullptr, *before = nullptr;
   {
     PhaseTimer t(ws, ws.times.geometry);
     int rmin = rail.count(), rmax = -1;
@@ -289,7 +287,6 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line - rmin)];
     const Eigen::Vector2d o = surface_origin(all, S);
     pl = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
-    std::tie(prev, before) = warm_areas(ws, side, pl);
     grid = surface_grid(opt, all, S, o, side, st.pose());
     const auto lines = surface_lines(g, st, side, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
     lay_rows(lines, grid, o, surf, pc.h);
@@ -301,16 +298,7 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     pc.t2 = surf.t2(j0);
     pc.normal = surf.normal(j0);
   }
-  {
-    PhaseTimer t(ws, ws.times.solve);
-    contact::NormalOptions nopt = opt.normal;
-    if (request.tolerance > 0) nopt.tolerance = request.tolerance;
-    std::vector<double> start;
-    if (warm_start(prev, pl, grid, start, before)) nopt.initial_pressure = start;
-    const contact::NormalLoad load = contact::NormalLoad::penetration();
-    pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
-                            : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
-  }
+  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, ws);
   {
     PhaseTimer t(ws, ws.times.results);
     conformal_results(g.side[side].wheel, st.frame(), pc);

@@ -14,11 +14,11 @@
 #include <time.h>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 
 namespace wrc {
 
@@ -211,6 +211,8 @@ int contact_regions(const contact::NormalSolution& sol) {
   return regions;
 }
 
+namespace {
+
 // The last evaluation's area of the same side in (nearly) the same plane, or none.
 const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl) {
   const ContactWorkspace::Previous* best = nullptr;
@@ -225,8 +227,6 @@ const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspa
   }
   return best;
 }
-
-namespace {
 
 // The old area's pressure at the point X (track frame; bilinear), or nothing where the nearest old element was not
 // in contact: interpolation alone smears the contact edge outward, and each element started in contact that is not
@@ -243,18 +243,19 @@ std::optional<double> pressure_at(const ContactWorkspace::Previous& p, const Eig
   return (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
 }
 
-}  // namespace
-
-// Start pressures for an area: the old pressure at each new element centre (bilinear), extrapolated with the area
-// before it where both were in contact. False when there is no old area.
-bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start, const ContactWorkspace::Previous* before) {
-  if (!best) return false;
+// Start pressures for an area in the plane pl from the workspace's last evaluation of that side: the old pressure at
+// each new element centre (bilinear), extrapolated linearly in time with the evaluation before it where both were in
+// contact and the workspace extrapolates. False when there is no old area (or warm starts are off).
+bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const contact::Grid& grid,
+                std::vector<double>& start) {
+  const auto* last = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
+  if (!last) return false;
+  const auto* before = ws.extrapolate ? previous_area(ws.before[side], pl) : nullptr;
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       const Eigen::Vector3d X = pl.O + grid.x(i) * pl.t1 + grid.y(j) * pl.t2;
-      const auto p = pressure_at(*best, X);
+      const auto p = pressure_at(*last, X);
       if (!p) continue;
       const auto q = before ? pressure_at(*before, X) : std::nullopt;
       start[static_cast<std::size_t>(grid.index(i, j))] = q ? std::max(0.0, 2 * *p - *q) : *p;
@@ -262,12 +263,20 @@ bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const c
   return true;
 }
 
-std::pair<const ContactWorkspace::Previous*, const ContactWorkspace::Previous*> warm_areas(const ContactWorkspace& ws,
-                                                                                          int side, const Plane& pl) {
-  if (!ws.warm_start) return {nullptr, nullptr};
-  const auto* last = previous_area(ws.previous[side], pl);
-  const auto* before = last && ws.extrapolate ? previous_area(ws.before[side], pl) : nullptr;
-  return {last, before};
+}  // namespace
+
+contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
+                                          const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
+                                          ContactWorkspace& ws) {
+  PhaseTimer t(ws, ws.times.solve);
+  const ContactOptions& opt = model.options();
+  contact::NormalOptions nopt = opt.normal;
+  if (request.tolerance > 0) nopt.tolerance = request.tolerance;
+  std::vector<double> start;
+  if (warm_start(ws, side, pl, grid, start)) nopt.initial_pressure = start;
+  const contact::NormalLoad load = contact::NormalLoad::penetration();
+  return opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
+                   : model.solver().solve(grid, h, load, ws.normal, nopt);
 }
 
 // The potential contact area of a pose exceeds max_elements: either the grid is too fine for the cap or the pose is
@@ -413,7 +422,6 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     return pc;
   }
   const Plane pl = plane_of(all, first);
-  const auto [prev, before] = warm_areas(ws, side, pl);
 
   PatchContact pc;
   pc.side = side;
@@ -429,16 +437,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     grid = area_grid(opt, all, pl, side, st.pose());
     pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
   }
-  {
-    PhaseTimer t(ws, ws.times.solve);
-    contact::NormalOptions nopt = opt.normal;
-    if (request.tolerance > 0) nopt.tolerance = request.tolerance;
-    std::vector<double> start;
-    if (warm_start(prev, pl, grid, start, before)) nopt.initial_pressure = start;
-    const contact::NormalLoad load = contact::NormalLoad::penetration();
-    pc.solution = opt.dense ? contact::solve_normal_dense(model.material(), grid, pc.h, load, nopt)
-                            : model.solver().solve(grid, pc.h, load, ws.normal, nopt);
-  }
+  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, ws);
   {
     PhaseTimer t(ws, ws.times.results);
     copy_located(st, side, group, pc);

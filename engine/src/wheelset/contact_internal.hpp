@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <vector>
 
 namespace wrc::contact_detail {
@@ -76,15 +75,12 @@ struct LineProfile {
 
 // Separate contact regions of a solution (8-connected, each >= 0.1 % of the force).
 int contact_regions(const contact::NormalSolution& sol);
-// Warm starts (contact.cpp): the last evaluation's area nearest to the plane, the start pressures interpolated from
-// it. A conformal area passes its unrolled coordinates as the plane (origin (x, s, 0), axes e_x, e_y, normal e_z).
-const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspace::Previous>& previous, const Plane& pl);
-// With `before` (the area of the evaluation before, or null), the start is extrapolated linearly in time.
-bool warm_start(const ContactWorkspace::Previous* best, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start, const ContactWorkspace::Previous* before = nullptr);
-// The two areas a warm start uses: the last evaluation's and, when the workspace extrapolates, the one before it.
-std::pair<const ContactWorkspace::Previous*, const ContactWorkspace::Previous*> warm_areas(const ContactWorkspace& ws,
-                                                                                          int side, const Plane& pl);
+// The normal problem of one area on its grid (contact.cpp), at the request's tolerance, warm-started from the
+// workspace's last evaluation of that side (extrapolated with the one before when the workspace extrapolates). A
+// conformal area passes its unrolled coordinates as the plane (origin (x, s, 0), axes e_x, e_y, normal e_z).
+contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
+                                          const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
+                                          ContactWorkspace& ws);
 // A potential contact area of nx x ny elements exceeds max_elements (contact.cpp): an error that says whether the
 // grid is too fine for the cap or the pose far too deep.
 [[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,
