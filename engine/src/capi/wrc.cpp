@@ -132,6 +132,10 @@ void set_out(T** out, const char* what) {
   *out = nullptr;
 }
 
+void check_side(int side) {
+  if (side != WRC_LEFT && side != WRC_RIGHT) invalid(fmt::format("side = {} must be WRC_LEFT (0) or WRC_RIGHT (1)", side));
+}
+
 void finite(const char* name, double v) {
   if (!std::isfinite(v)) invalid(fmt::format("{} = {} must be a finite number", name, v));
 }
@@ -352,7 +356,7 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
   return guard("wrc_wheel", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    if (side != WRC_LEFT && side != WRC_RIGHT) invalid(fmt::format("side = {} must be WRC_LEFT (0) or WRC_RIGHT (1)", side));
+    check_side(side);
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
     const wrc::OptionTable t = options_of(options, "wrc_wheel: options");
     wrc::OptionReader r(t, "wrc_wheel");
@@ -428,7 +432,7 @@ wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, 
   return guard("wrc_trajectory_wheel", [&] {
     set_out(out, "result");
     const auto t = registry().get(trajectory, "trajectory");
-    if (side != WRC_LEFT && side != WRC_RIGHT) invalid(fmt::format("side = {} must be WRC_LEFT (0) or WRC_RIGHT (1)", side));
+    check_side(side);
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
     std::lock_guard lock(t->mutex);
     const wrc::WheelResult res = t->trajectory->wheel(side, y, yaw, roll, Fz);
