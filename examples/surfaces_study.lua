@@ -54,35 +54,6 @@ local function series(sweep, yaw)
   return s
 end
 
--- The y (m) where Y/Q first exceeds `limit` from y = 0 toward +y, linear between cases (nil: never).
-local function first_crossing(s, limit)
-  local prev = nil
-  for _, r in ipairs(s) do
-    if r.converged and r.y >= 0 then
-      if prev and prev.Y_Q <= limit and r.Y_Q > limit then
-        return prev.y + (limit - prev.Y_Q) * (r.y - prev.y) / (r.Y_Q - prev.Y_Q)
-      end
-      prev = r
-    end
-  end
-  return nil
-end
-
--- Ranges of y (mm) where pred(case) holds, as text.
-local function ranges(s, pred)
-  local parts, first, last = {}, nil, nil
-  for _, r in ipairs(s) do
-    if r.converged and pred(r) then
-      first, last = first or r.y, r.y
-    elseif first then
-      parts[#parts + 1] = string.format("%.1f .. %.1f", first * 1e3, last * 1e3)
-      first = nil
-    end
-  end
-  if first then parts[#parts + 1] = string.format("%.1f .. %.1f", first * 1e3, last * 1e3) end
-  return #parts > 0 and table.concat(parts, ", ") or "none"
-end
-
 local sweeps, lines = {}, {}
 local columns = {}
 for _, c in ipairs(study.sweep_columns) do columns[#columns + 1] = c end
@@ -104,17 +75,17 @@ for _, surface in ipairs{"planar", "conformal"} do
   out.csv(string.format("%s/sweep_%s.csv", dir, surface), columns, rows)
   lines[#lines + 1] = string.format("%s: %d cases, %d failed, %.1f s on %d threads", surface, #sweep, sweep.failed,
                                     sweep.seconds, sweep.threads)
-  for _, yaw in ipairs(yaws) do
-    local s = series(sweep, yaw)
-    local y08 = first_crossing(s, 0.8)
+  for _, yaw in ipairs(yaws) do  -- on the table's rows, as the paper study's summary (wrc.study)
+    local s = study.series(rows, yaw * deg)
+    local y08 = study.first_crossing(s, 0.8)
     lines[#lines + 1] = string.format("  yaw %g deg: Y/Q first exceeds 0.8 at y = %s mm", yaw * deg,
-                                      y08 and string.format("%.2f", y08 * 1e3) or "(never)")
+                                      y08 and string.format("%.2f", y08) or "(never)")
     lines[#lines + 1] = "    left contact angle > 60 deg, the resultant:          y = " ..
-                            ranges(s, function(r) return r.left.angle > math.rad(60) end) .. " mm"
+                            study.ranges(s, function(r) return r.left_angle_deg > 60 end) .. " mm"
     lines[#lines + 1] = "    left contact angle > 60 deg, the steepest loaded row: y = " ..
-                            ranges(s, function(r) local _, hi = row_angles(r); return hi and hi > math.rad(60) end) .. " mm"
+                            study.ranges(s, function(r) return (r.left_max_row_angle_deg or 0) > 60 end) .. " mm"
     lines[#lines + 1] = "    right wheel lifted:                                   y = " ..
-                            ranges(s, function(r) return not (r.right.force.z > 0) end) .. " mm"
+                            study.ranges(s, function(r) return not (r.right_Fz_kN > 0) end) .. " mm"
   end
 end
 
