@@ -3,6 +3,8 @@
 #include "wrc/contact/influence.hpp"
 #include "wrc/core/error.hpp"
 
+#include "ray_integral.hpp"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -15,66 +17,6 @@
 using namespace wrc::contact;
 
 namespace {
-
-// Independent quadrature of the 1/r integral over [-a, a] x [-b, b] seen from (x, y): in polar coordinates
-// about the field point, the integral over the rectangle is the integral over the direction angle of the
-// length of the ray's chord inside it (dA / r = dr dtheta). The chord is found by slab clipping and the
-// angle integral by Gauss-Legendre on pieces between the corner directions (where the chord has kinks).
-double potential_by_rays(double x, double y, double a, double b) {
-  const auto chord = [&](double t) {
-    const double c = std::cos(t), s = std::sin(t);
-    double lo = 0, hi = INFINITY;
-    const auto slab = [&](double origin, double dir, double min, double max) {
-      if (std::abs(dir) < 1e-300) {
-        if (origin < min || origin > max) hi = -1;
-        return;
-      }
-      double t0 = (min - origin) / dir, t1 = (max - origin) / dir;
-      if (t0 > t1) std::swap(t0, t1);
-      lo = std::max(lo, t0);
-      hi = std::min(hi, t1);
-    };
-    slab(x, c, -a, a);
-    slab(y, s, -b, b);
-    return hi > lo ? hi - lo : 0.0;
-  };
-  std::vector<double> cuts = {-std::numbers::pi, std::numbers::pi};
-  for (double cx : {-a, a})
-    for (double cy : {-b, b})
-      if (cx != x || cy != y) cuts.push_back(std::atan2(cy - y, cx - x));
-  std::sort(cuts.begin(), cuts.end());
-  // 20-point Gauss-Legendre nodes and weights on [-1, 1] (computed by Newton on P_20).
-  constexpr int n = 20;
-  double nodes[n], weights[n];
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double pk = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = pk;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-16) break;
-    }
-    nodes[i] = z;
-    weights[i] = 2 / ((1 - z * z) * dp * dp);
-  }
-  double total = 0;
-  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
-    const double t0 = cuts[c], t1 = cuts[c + 1];
-    if (t1 - t0 < 1e-15) continue;
-    constexpr int sub = 8;  // sub-intervals per piece
-    for (int s = 0; s < sub; ++s) {
-      const double u0 = t0 + (t1 - t0) * s / sub, u1 = t0 + (t1 - t0) * (s + 1) / sub;
-      for (int i = 0; i < n; ++i) total += 0.5 * (u1 - u0) * weights[i] * chord(0.5 * (u0 + u1) + 0.5 * (u1 - u0) * nodes[i]);
-    }
-  }
-  return total;
-}
 
 // Direct product u_k = sum_l I(x_k - x_l, y_k - y_l) p_l with rectangle_potential itself.
 std::vector<double> direct_product(const Grid& g, const std::vector<double>& p) {
@@ -112,7 +54,7 @@ TEST_CASE("Love's closed form agrees with an independent quadrature inside, on e
                               {0.5e-3, 0.3e-3}};
   for (const auto& pt : points) {
     const double exact = rectangle_potential(pt[0], pt[1], a, b);
-    const double quad = potential_by_rays(pt[0], pt[1], a, b);
+    const double quad = wrc::test::ray_integral(pt[0], pt[1], a, b, [](double) { return 1.0; });  // 1 / r
     CAPTURE(pt[0]);
     CAPTURE(pt[1]);
     CHECK(exact == doctest::Approx(quad).epsilon(1e-11));
