@@ -92,10 +92,6 @@ struct Worker {
   StrategyCheckResult counts;
 };
 
-}  // namespace
-
-namespace {
-
 // A pose as drawn: its height follows from the geometry (touch_height), computed by the worker that checks it.
 struct Draw {
   double y, yaw, roll, depth;
