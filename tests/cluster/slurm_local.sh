@@ -3,6 +3,7 @@
 # their process ids) and, when STATUS is not 0, prints their logs. The caller traps EXIT to call slurm_stop.
 slurm_pids=()
 slurm_dir=""
+slurm_sock_dir=""
 
 slurm_fail() {
   echo "FAILED: $*" >&2
@@ -29,6 +30,8 @@ slurm_stop() {
   for p in "${slurm_pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done
   slurm_pids=()
   [ "$status" = 0 ] || slurm_logs
+  [ -n "$slurm_sock_dir" ] && rm -rf "$slurm_sock_dir"
+  slurm_sock_dir=""
 }
 
 # A TCP port nobody listens on.
@@ -47,7 +50,11 @@ slurm_start() {
   done
   slurm_dir=$S
   mkdir -p "$S/state" "$S/spool"
-  chmod 755 "$(dirname "$S")" "$S"  # munged wants its socket's folder open to all
+  # munged wants execute permission for all on every folder above its socket, which a checkout in a private folder
+  # (mktemp -d: 0700) does not give: the socket lives in a folder of its own under /tmp.
+  slurm_sock_dir=$(mktemp -d /tmp/wrc-munge.XXXXXX)
+  chmod 755 "$slurm_sock_dir"
+  local sock="$slurm_sock_dir/munge.sock"
   export SLURM_CONF="$S/slurm.conf"
   local ctld_port slurmd_port
   ctld_port=$(slurm_free_port)
@@ -57,11 +64,11 @@ slurm_start() {
   # munge: a fresh key, its own socket.
   head -c 1024 /dev/urandom > "$S/munge.key"
   chmod 400 "$S/munge.key"
-  munged -F --key-file="$S/munge.key" --socket="$S/munge.sock" --pid-file="$S/munged.pid" --log-file="$S/munged.log" \
+  munged -F --key-file="$S/munge.key" --socket="$sock" --pid-file="$S/munged.pid" --log-file="$S/munged.log" \
     --seed-file="$S/munged.seed" >"$S/munged.out.log" 2>&1 &
   slurm_pids+=($!)
-  for _ in $(seq 1 100); do [ -S "$S/munge.sock" ] && break; sleep 0.1; done
-  [ -S "$S/munge.sock" ] || slurm_fail "munged did not start"
+  for _ in $(seq 1 100); do [ -S "$sock" ] && break; sleep 0.1; done
+  [ -S "$sock" ] || slurm_fail "munged did not start"
 
   local user
   user=$(id -un)
@@ -73,7 +80,7 @@ SlurmdPort=$slurmd_port
 SlurmUser=$user
 SlurmdUser=$user
 AuthType=auth/munge
-AuthInfo=socket=$S/munge.sock
+AuthInfo=socket=$sock
 CredType=cred/munge
 StateSaveLocation=$S/state
 SlurmdSpoolDir=$S/spool
