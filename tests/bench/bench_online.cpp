@@ -13,7 +13,8 @@
 //      state, per wheel and step, at 0.5 and 0.2 mm.
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
-//   bench_online [quick] [reps=20] [surface=conformal|planar]   (the wheelset's default surface: conformal)
+//   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N]   (default surface: conformal; only=N runs
+//   section N alone, for a profiler)
 #include "lua/lua.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -111,12 +112,14 @@ double lua_ms(wrc::lua::Session& s, const std::string& call, int reps) {
 
 int main(int argc, char** argv) {
   bool quick = false;
-  int reps = 20;
+  int reps = 20, only = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "quick") == 0) quick = true, reps = 5;
     if (std::strncmp(argv[i], "reps=", 5) == 0) reps = std::max(1, std::atoi(argv[i] + 5));
     if (std::strcmp(argv[i], "surface=planar") == 0) surface = wrc::ContactSurface::planar;
+    if (std::strncmp(argv[i], "only=", 5) == 0) only = std::atoi(argv[i] + 5);
   }
+  auto run = [&](int section) { return only == 0 || only == section; };
   double loads[3] = {0, 0, 0};
   if (getloadavg(loads, 3) < 0) loads[0] = -1;
   fmt::print("bench_online: S1002/60E1, grid 0.2 mm, strategy accurate, {} surface; load average {:.2f}\n",
@@ -144,9 +147,10 @@ int main(int argc, char** argv) {
   // Equilibrium poses (also section 2).
   auto work = ws->make_workspace();
   work->timing = true;
-  fmt::print("\n== 2. one equilibrium from scratch (as ws:equilibrium: a cold workspace) ==\n");
+  if (run(1) || run(2)) fmt::print("\n== 2. one equilibrium from scratch (as ws:equilibrium: a cold workspace) ==\n");
   std::vector<wrc::Pose> poses;
   for (double y : {3e-3, 6e-3}) {
+    if (!run(1) && !run(2)) break;
     work->forget();
     work->times = {};
     const double c0 = thread_cpu();
@@ -158,14 +162,14 @@ int main(int argc, char** argv) {
     poses.push_back({y, e.z, e.roll, 0.0});
   }
 
-  fmt::print("\n== 1. one contact evaluation at the equilibrium pose (thread CPU, mean of {}) ==\n", reps);
-  for (std::size_t k = 0; k < poses.size(); ++k) {
+  if (run(1)) fmt::print("\n== 1. one contact evaluation at the equilibrium pose (thread CPU, mean of {}) ==\n", reps);
+  for (std::size_t k = 0; k < poses.size() && run(1); ++k) {
     fmt::print("y = {:.0f} mm:\n", poses[k].y * 1e3);
     evaluations(*ws, poses[k], reps, false, false, "cold");
     evaluations(*ws, poses[k], reps, true, false, "warm (same pose)");
     evaluations(*ws, poses[k], reps, false, true, "cold, with sensitivities");
   }
-  {
+  if (run(1)) {
     wrc::lua::Session s;
     if (auto err = s.run("ws = wrc.wheelset{wheel = wrc.profile.load('profiles/s1002.lua'), "
                          "rail = wrc.profile.load('profiles/60e1.lua'), surface = '" +
@@ -187,28 +191,32 @@ int main(int argc, char** argv) {
                "Lua overhead {:.2f} / {:.2f} ms\n", with, without, e_ms, with - e_ms, without - e_ms);
   }
 
-  fmt::print("\n== 3. one wheel with Fz = 100 kN given (as ws:wheel), y = 0 .. 7 mm ==\n");
-  {
-    std::vector<double> t;
-    int evaluations = 0;
-    work->times = {};
-    for (double y = 0; y <= 7e-3 + 1e-12; y += 0.5e-3) {
-      work->forget();
-      const double c0 = thread_cpu();
-      const wrc::WheelResult r = solve_wheel(m, wrc::kLeft, y, 0.0, 0.0, 100e3, *work);
-      t.push_back(thread_cpu() - c0);
-      evaluations += r.iterations;
-      if (!r.converged) fmt::print("  y = {:.1f} mm did not converge: {}\n", y * 1e3, r.message);
+  if (run(3)) {
+    fmt::print("\n== 3. one wheel with Fz = 100 kN given (as ws:wheel), y = 0 .. 7 mm ==\n");
+    // Twice over the same poses: the first pass also builds the influence spectra of grid shapes the process has not
+    // met yet (cached for good), the second shows a caller whose cache already holds them.
+    for (const char* pass : {"first pass", "second pass"}) {
+      std::vector<double> t;
+      int evaluations = 0;
+      work->times = {};
+      const std::size_t built = m.solver().cache().built();
+      for (double y = 0; y <= 7e-3 + 1e-12; y += 0.5e-3) {
+        work->forget();
+        const double c0 = thread_cpu();
+        const wrc::WheelResult r = solve_wheel(m, wrc::kLeft, y, 0.0, 0.0, 100e3, *work);
+        t.push_back(thread_cpu() - c0);
+        evaluations += r.iterations;
+        if (!r.converged) fmt::print("  y = {:.1f} mm did not converge: {}\n", y * 1e3, r.message);
+      }
+      fmt::print("{}: median {:.2f} ms, max {:.2f} ms over {} poses; {:.1f} evaluations per solve; {} influence "
+                 "spectra built\n", pass, 1e3 * median(t), 1e3 * *std::max_element(t.begin(), t.end()), t.size(),
+                 double(evaluations) / t.size(), m.solver().cache().built() - built);
+      print_times("per evaluation", work->times, work->times.evaluations);
     }
-    fmt::print("median {:.2f} ms, max {:.2f} ms over {} poses; {:.1f} evaluations per solve\n", 1e3 * median(t),
-               1e3 * *std::max_element(t.begin(), t.end()), t.size(), double(evaluations) / t.size());
-    print_times("per evaluation", work->times, work->times.evaluations);
-    fmt::print("influence spectra built in the process so far: {} (the cache holds {})\n", m.solver().cache().built(),
-               m.solver().cache().size());
   }
 
-  fmt::print("\n== 4. the paper's sweep (y = -8 .. 8 mm every 0.1 mm, yaw 0 and 1 deg, rigid reference), 2 threads ==\n");
-  {
+  if (run(4)) {
+    fmt::print("\n== 4. the paper's sweep (y = -8 .. 8 mm every 0.1 mm, yaw 0 and 1 deg, rigid reference), 2 threads ==\n");
     std::vector<double> ys;
     for (int i = 0; i <= 160; ++i) ys.push_back((-8.0 + 0.1 * i) * 1e-3);
     if (quick) ys = {-6e-3, -3e-3, 0.0, 3e-3, 5e-3, 6e-3};
@@ -224,9 +232,10 @@ int main(int argc, char** argv) {
                r.cases.size(), wl, cpu, 1e3 * cpu / r.cases.size(), double(evals) / r.cases.size(), failed);
   }
 
-  fmt::print("\n== 5. trajectory: hunting y = 5 mm sin(2 pi 1.5 Hz t), yaw following, 1 kHz, z and roll at the "
+  if (run(5)) fmt::print("\n== 5. trajectory: hunting y = 5 mm sin(2 pi 1.5 Hz t), yaw following, 1 kHz, z and roll at the "
              "equilibrium of each y (prescribed poses, as a multibody code gives them) ==\n");
   for (double grid : {0.5e-3, 0.2e-3}) {
+    if (!run(5)) break;
     const auto wsg = paper_wheelset(grid);
     // The prescribed poses: the equilibrium z and roll of y, from a coarse table (interpolated), yaw = -dy/dx.
     std::vector<double> ty, tz, troll;
