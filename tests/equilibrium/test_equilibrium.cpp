@@ -175,6 +175,28 @@ TEST_CASE("sweep: cases in the order given, 1 and 2 threads agree with single so
   }
 }
 
+TEST_CASE("sweep: a repeated y continues from the points of distinct y and costs no more than a confirmation") {
+  // A chain's start is the parabola through its last points of distinct y; at a y solved just before it is that
+  // solution itself: one evaluation at the inner tolerance and one at the model's. (Weights computed over the
+  // repeated y would not sum to one and start the case far off.)
+  const ContactModel& model = synthetic_model();
+  const std::vector<double> ys{0.0, 1e-3, 2e-3, 2e-3, 3e-3, 3e-3, 3e-3};
+  SweepOptions o;
+  o.Q = kQ;
+  const SweepResult r = run_sweep(model, ys, {0.0}, o, [&] { return std::make_unique<ContactWorkspace>(model); });
+  REQUIRE(r.elastic.size() == ys.size());
+  ContactWorkspace ws(model);
+  for (std::size_t c = 0; c < ys.size(); ++c) {
+    CAPTURE(ys[c]);
+    REQUIRE(r.elastic[c].converged);
+    const EquilibriumResult e = solve_equilibrium(model, ys[c], 0.0, kQ, ws);
+    REQUIRE(e.converged);
+    CHECK(std::abs(r.elastic[c].z - e.z) <= 1e-8);  // within tolerance / stiffness, as above
+    CHECK(std::abs(r.elastic[c].roll - e.roll) <= 1e-8);
+    if (c > 0 && ys[c] == ys[c - 1]) CHECK(r.elastic[c].evaluations <= 2);
+  }
+}
+
 // Bitwise equality of two solved cases (what a study's shards and threads must not change).
 static void check_same_bits(const EquilibriumResult& a, const EquilibriumResult& b) {
   CHECK(a.converged == b.converged);

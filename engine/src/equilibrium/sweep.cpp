@@ -65,13 +65,29 @@ void run_parallel(std::vector<std::unique_ptr<ContactWorkspace>>& workspaces, in
   if (error) std::rethrow_exception(error);
 }
 
-// The weights w_i of the polynomial through the points (x_i, v_i) at x: v(x) = sum w_i v_i (Lagrange).
-std::vector<double> lagrange_weights(const std::vector<double>& xs, double x) {
-  std::vector<double> w(xs.size(), 1.0);
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    for (std::size_t j = 0; j < xs.size(); ++j)
-      if (j != i) w[i] *= xs[i] != xs[j] ? (x - xs[j]) / (xs[i] - xs[j]) : 0.0;
-  return w;
+// A converged case of a continuation chain.
+struct ChainPoint {
+  double y, z, roll;
+  std::optional<Eigen::Matrix2d> jacobian;
+  bool lifted;
+};
+
+// The start of the chain's next case at y: the polynomial through its last points of distinct y -- a parabola
+// through three, a line through two -- evaluated at y (Lagrange), with the last point's Jacobian; none before two.
+std::optional<Start> predicted_start(const std::vector<ChainPoint>& path, double y) {
+  std::vector<const ChainPoint*> points;
+  for (auto it = path.rbegin(); it != path.rend() && points.size() < 3; ++it)
+    if (std::none_of(points.begin(), points.end(), [&](const ChainPoint* p) { return p->y == it->y; })) points.push_back(&*it);
+  if (points.size() < 2) return std::nullopt;
+  Start st{0.0, 0.0, path.back().jacobian, path.back().lifted};
+  for (const ChainPoint* p : points) {
+    double w = 1;
+    for (const ChainPoint* q : points)
+      if (q != p) w *= (y - q->y) / (p->y - q->y);
+    st.z += w * p->z;
+    st.roll += w * p->roll;
+  }
+  return st;
 }
 
 class SweepRun {
@@ -83,37 +99,19 @@ class SweepRun {
   }
 
   // Continuation along a chunk: its first case from a cold start, each next one from the parabola through the last
-  // three converged points (the line through two after the first step; the last point alone if that fails). z(y)
-  // and roll(y) curve enough that a line's start is ~2e-3 Q off at 0.1 mm steps, a parabola's ~1e-4 Q: the
-  // Newton step from it then converges at once. The workspace is emptied before
-  // and after the first case, so that the chunk's results do not depend on which worker ran it or what it ran
-  // before.
+  // three converged points (predicted_start; the last point alone if that fails). z(y) and roll(y) curve enough
+  // that a line's start is ~2e-3 Q off at 0.1 mm steps, a parabola's ~1e-4 Q, from which one Newton step mostly
+  // converges. The workspace is emptied before and after the first case, so that the chunk's results do not depend
+  // on which worker ran it or what it ran before.
   void run_chunk(ContactWorkspace& ws, const SweepChunk& chunk) {
-    struct Point {
-      double y, z, roll;
-      std::optional<Eigen::Matrix2d> jacobian;
-      bool lifted;
-    };
-    std::vector<Point> path;
+    std::vector<ChainPoint> path;
     const bool has_lead = chunk.solve.size() > chunk.report.size();
     EquilibriumResult lead;  // the first case when the chunk does not report it (the centre of a series)
     for (std::size_t k = 0; k < chunk.solve.size(); ++k) {
       const int c = chunk.solve[k];
       const double yc = plan_.cases[static_cast<std::size_t>(c)].y;
       std::vector<Start> starts;
-      if (path.size() >= 2) {
-        const std::size_t m = std::min<std::size_t>(path.size(), 3);
-        std::vector<double> ys;
-        for (std::size_t i = path.size() - m; i < path.size(); ++i) ys.push_back(path[i].y);
-        const std::vector<double> w = lagrange_weights(ys, yc);
-        Start st{0.0, 0.0, path.back().jacobian, path.back().lifted};
-        for (std::size_t i = 0; i < m; ++i) {
-          const Point& p = path[path.size() - m + i];
-          st.z += w[i] * p.z;
-          st.roll += w[i] * p.roll;
-        }
-        starts.push_back(st);
-      }
+      if (auto st = predicted_start(path, yc)) starts.push_back(*st);
       if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt, false});
       if (k <= 1) ws.forget();
       const bool reported = !(k == 0 && has_lead);
