@@ -14,7 +14,7 @@
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
 //   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N]   (default surface: conformal; only=N runs
-//   section N alone, for a profiler)
+//   section N alone, for a profiler; section 1 runs 2 as well, for its poses)
 #include "lua/lua.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -232,8 +232,9 @@ int main(int argc, char** argv) {
                r.cases.size(), wl, cpu, 1e3 * cpu / r.cases.size(), double(evals) / r.cases.size(), failed);
   }
 
-  if (run(5)) fmt::print("\n== 5. trajectory: hunting y = 5 mm sin(2 pi 1.5 Hz t), yaw following, 1 kHz, z and roll at the "
-             "equilibrium of each y (prescribed poses, as a multibody code gives them) ==\n");
+  if (run(5))
+    fmt::print("\n== 5. trajectory: hunting y = 5 mm sin(2 pi 1.5 Hz t), yaw following, 1 kHz, z and roll at the "
+               "equilibrium of each y (prescribed poses, as a multibody code gives them) ==\n");
   for (double grid : {0.5e-3, 0.2e-3}) {
     if (!run(5)) break;
     const auto wsg = paper_wheelset(grid);
