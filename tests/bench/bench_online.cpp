@@ -271,6 +271,25 @@ int main(int argc, char** argv) {
       print_times("per step", traj.workspace().times, steps);
     }
     fmt::print("  the last step as start / extrapolated: {:.2f}\n", ms[1] / ms[0]);
+    // The same motion with each wheel's vertical force prescribed (100 kN; tr:wheel, from the previous height).
+    wrc::Trajectory traj(wsg);
+    std::vector<double> per_step;
+    int evaluations = 0, failed = 0;
+    for (int k = 0; k < steps; ++k) {
+      const double t = k * 1e-3, y = 5e-3 * std::sin(2 * std::numbers::pi * 1.5 * t);
+      const double yaw = -5e-3 * 2 * std::numbers::pi * 1.5 / (100 / 3.6) * std::cos(2 * std::numbers::pi * 1.5 * t);
+      const double roll = wrc::interpolate(ty, troll, y);
+      const double c0 = thread_cpu();
+      for (int side : {wrc::kLeft, wrc::kRight}) {
+        const wrc::WheelResult r = traj.wheel(side, y, yaw, roll, 100e3);
+        evaluations += r.iterations;
+        failed += !r.converged;
+      }
+      per_step.push_back(thread_cpu() - c0);
+    }
+    fmt::print("grid {:.1f} mm, each wheel's Fz given (tr:wheel): {:.3f} ms per wheel and step, {:.2f} evaluations per "
+               "wheel and step, {} failed\n", grid * 1e3, 1e3 * median(per_step) / 2,
+               double(evaluations) / (2.0 * steps), failed);
   }
   return 0;
 }

@@ -127,7 +127,8 @@ wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_t
 /* Contact at a prescribed pose (m, rad), as wrc_contact. */
 wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
                                   wrc_result** out);
-/* One wheel with its vertical force Fz (N) given, as wrc_wheel, from the previous step's height. */
+/* One wheel with its vertical force Fz (N) given, as wrc_wheel, from the previous steps' approach (its depth below
+ * the touching height, extrapolated in time unless the trajectory's extrapolate is 0). */
 wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
                                 wrc_result** out);
 /* Forgets the previous steps. */

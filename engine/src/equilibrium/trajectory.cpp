@@ -34,15 +34,19 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   // The secant's iterates are no time steps: start each from the last alone.
   workspace_->extrapolate = false;
   workspace_->before[side].clear();
-  WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, last_z_[side]);
-  if (r.converged) last_z_[side] = r.z;
+  // The start: the approach of the last step, extrapolated linearly in time with the one before when steps are
+  // (extrapolate): it follows the load, where the height follows the rail.
+  std::optional<double> start = last_approach_[side];
+  if (start && before_approach_[side] && options_.extrapolate) start = 2 * *start - *before_approach_[side];
+  WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, start);
+  before_approach_[side] = r.converged ? last_approach_[side] : std::nullopt;
+  last_approach_[side] = r.converged ? std::optional<double>(r.approach) : std::nullopt;
   return r;
 }
 
 void Trajectory::reset() {
   workspace_->forget();
-  last_z_[kLeft].reset();
-  last_z_[kRight].reset();
+  for (int s : {kLeft, kRight}) last_approach_[s].reset(), before_approach_[s].reset();
 }
 
 }  // namespace wrc

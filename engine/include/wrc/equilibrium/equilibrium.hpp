@@ -101,12 +101,13 @@ struct WheelResult {
   int side = kLeft;
   double Fz = 0;             // the prescribed vertical force (N)
   double z = 0;              // solved height of the wheelset centre (m)
+  double approach = 0;       // how far that is below the height at which the wheel just touches its rail (m)
   double residual = 0;       // Fz(side) - Fz (N)
   int iterations = 0;        // contact evaluations
   WheelContact wheel;        // the side's contact
 };
-// `start`: a height to start from (e.g. the previous time step's); otherwise the touching height pressed in by
-// initial_approach. The normal problems are solved to options.normal_tolerance. A load that the wheel does not carry
+// `start`: an approach to start from (m below the touching height; e.g. the previous time step's, which follows the
+// load where the height does not); otherwise initial_approach. The normal problems are solved to options.normal_tolerance. A load that the wheel does not carry
 // at an approach of options.max_penetration is out of reach: not converged, with the reason.
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
                         ContactWorkspace& ws, const EquilibriumOptions& options = {},

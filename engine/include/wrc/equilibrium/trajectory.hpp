@@ -30,7 +30,7 @@ class Trajectory {
   explicit Trajectory(std::shared_ptr<const Wheelset> wheelset, const TrajectoryOptions& options = {});
   // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step.
   ContactResult contact(const Pose& pose);
-  // One wheel with its vertical force Fz (N) prescribed (as solve_wheel), from the previous step's height.
+  // One wheel with its vertical force Fz (N) prescribed (as solve_wheel), from the previous step's approach.
   WheelResult wheel(int side, double y, double yaw, double roll, double Fz);
   // Forget the previous steps.
   void reset();
@@ -43,7 +43,8 @@ class Trajectory {
   std::shared_ptr<const Wheelset> wheelset_;
   TrajectoryOptions options_;
   std::unique_ptr<ContactWorkspace> workspace_;
-  std::optional<double> last_z_[2];  // the previous wheel solve's height per side
+  // Per side, the approaches (WheelResult::approach) of the last wheel solve and the one before it.
+  std::optional<double> last_approach_[2], before_approach_[2];
 };
 
 }  // namespace wrc
