@@ -10,7 +10,8 @@
 //   3. one wheel with its vertical force given (ws:wheel) over the tread-to-flange poses y = 0 .. 7 mm: median;
 //   4. the paper's sweep (161 y x 2 yaws, with the rigid reference) on 2 threads: wall and CPU;
 //   5. a trajectory (hunting-like: y = 5 mm sin, yaw following) at 1 kHz steps with the warm-started trajectory
-//      state, per wheel and step, at 0.5 and 0.2 mm.
+//      state, per wheel and step, at 0.5 and 0.2 mm: the poses prescribed (tr:contact), then each wheel's vertical
+//      force (tr:wheel).
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
 //   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N]   (default surface: conformal; only=N runs
