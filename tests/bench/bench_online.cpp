@@ -10,8 +10,8 @@
 //   3. one wheel with its vertical force given (ws:wheel) over the tread-to-flange poses y = 0 .. 7 mm: median;
 //   4. the paper's sweep (161 y x 2 yaws, with the rigid reference) on 2 threads: wall and CPU;
 //   5. a trajectory (hunting-like: y = 5 mm sin, yaw following) at 1 kHz steps with the warm-started trajectory
-//      state, per wheel and step, at 0.5 and 0.2 mm: the poses prescribed (tr:contact), then each wheel's vertical
-//      force (tr:wheel).
+//      state, per wheel and step, at 0.5 and 0.2 mm: the poses prescribed (tr:contact), with FASTSIM creep forces,
+//      then each wheel's vertical force (tr:wheel).
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
 //   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N]   (default surface: conformal; only=N runs
@@ -272,7 +272,26 @@ int main(int argc, char** argv) {
       print_times("per step", traj.workspace().times, steps);
     }
     fmt::print("  the last step as start / extrapolated: {:.2f}\n", ms[1] / ms[0]);
-    // The same motion with each wheel's vertical force prescribed (100 kN; tr:wheel, from the previous height).
+    // The same poses with the creep forces by FASTSIM (100 km/h, mu = 0.3, the motion's lateral and yaw velocities).
+    {
+      wrc::Trajectory traj(wsg);
+      std::vector<double> per_step;
+      const double V = 100 / 3.6, w = 2 * std::numbers::pi * 1.5;
+      for (int k = 0; k < steps; ++k) {
+        const double t = k * 1e-3, y = 5e-3 * std::sin(w * t), yaw = -5e-3 * w / V * std::cos(w * t);
+        wrc::RollingRequest rolling;
+        rolling.kinematics = wrc::Kinematics{V, std::nullopt, 5e-3 * w * std::cos(w * t), 5e-3 * w * w / V * std::sin(w * t)};
+        rolling.friction = wrc::contact::Friction::coulomb(0.3);
+        rolling.method = wrc::RollingMethod::fastsim;
+        const double z = wrc::interpolate(ty, tz, y), roll = wrc::interpolate(ty, troll, y);
+        const double c0 = thread_cpu();
+        traj.contact({y, z, roll, yaw}, rolling);
+        per_step.push_back(thread_cpu() - c0);
+      }
+      fmt::print("grid {:.1f} mm, with FASTSIM creep forces: {:.3f} ms per wheel and step\n", grid * 1e3,
+                 1e3 * median(per_step) / 2);
+    }
+    // The same motion with each wheel's vertical force prescribed (100 kN; tr:wheel, from the previous approach).
     wrc::Trajectory traj(wsg);
     std::vector<double> per_step;
     int evaluations = 0, failed = 0;

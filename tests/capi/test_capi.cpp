@@ -225,6 +225,41 @@ TEST_CASE("a trajectory follows a motion warm-started, with the forces of cold e
   CHECK(wrc_trajectory_free(tr) == WRC_INVALID_ARGUMENT);
 }
 
+TEST_CASE("a trajectory with rolling options: the creep forces of wrc_contact at its poses; bad options refused") {
+  Fixture f;
+  wrc_trajectory* tr = nullptr;
+  REQUIRE_MESSAGE(wrc_trajectory_new(f.ws, "tolerance=1e-6", &tr) == WRC_OK, last());
+  const std::string opts = "V=27.78 vy=0.01 mu=0.3 method=fastsim";
+  for (int k = 0; k < 5; ++k) {
+    const double y = 1e-3 * k, z = -0.03e-3;
+    wrc_result *a = nullptr, *b = nullptr;
+    REQUIRE_MESSAGE(wrc_trajectory_contact_with(tr, y, z, 0.0, 0.0, opts.c_str(), &a) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_contact(f.ws, y, z, 0.0, 0.0, (opts + " grids=false").c_str(), &b) == WRC_OK, last());
+    // The creep forces follow the pressures, within the trajectory's tolerance (1e-6 of the gap) of a cold solve.
+    const double scale = 0.3 * number(b, "left.force.z");
+    for (const char* path : {"left.creep_force.x", "left.creep_force.y", "left.creep_moment.z"}) {  // the left wheel carries the load
+      CAPTURE(path);
+      CHECK(std::abs(number(a, path) - number(b, path)) <= 1e-4 * scale);
+    }
+    CHECK(std::abs(number(a, "left.creep_force.y")) > 1e-3 * scale);  // a lateral slip: a lateral creep force
+    wrc_result_free(a);
+    wrc_result_free(b);
+  }
+  wrc_result* w = nullptr;
+  REQUIRE_MESSAGE(wrc_trajectory_wheel_with(tr, WRC_LEFT, 1e-3, 0, 0, 80e3, opts.c_str(), &w) == WRC_OK, last());
+  CHECK(std::abs(number(w, "force.z") - 80e3) <= 1e-6 * 80e3);  // the creep forces' vertical part included
+  wrc_result_free(w);
+  CHECK(wrc_trajectory_contact_with(tr, 0, 0, 0, 0, "mu=0.3", &w) == WRC_ERROR);  // friction needs V or creepage
+  CHECK(last().find("neither V") != std::string::npos);
+  CHECK(wrc_trajectory_wheel_with(tr, WRC_LEFT, 0, 0, 0, 80e3, "V=0 mu=0.3", &w) == WRC_ERROR);
+  CHECK(w == nullptr);
+  CHECK(wrc_trajectory_contact_with(tr, 0, -0.03e-3, 0, 0, "", &w) == WRC_OK);  // no options: frictionless
+  double v = 0;
+  CHECK(wrc_result_number(w, "left.creep_force.x", &v) == WRC_NOT_FOUND);
+  wrc_result_free(w);
+  CHECK(wrc_trajectory_free(tr) == WRC_OK);
+}
+
 TEST_CASE("rigid contact geometry, tables, conicity and flange measures through the C API") {
   Fixture f;
   // The rigid contact, roll fixed: Δr from the touching points' radii.

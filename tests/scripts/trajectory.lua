@@ -7,6 +7,7 @@
 --   - tr:wheel{Fz =} finds the height ws:wheel finds, within 1e-9 m (Fz within 1e-6 relative, stiffness > 1e9 N/m),
 --     and meets the force tolerance at every step of a 1 kHz hunting motion; its approach is measured from the
 --     height at which the wheel just touches (ws:rigid, roll fixed);
+--   - with the rolling keys, every step's creep forces equal those of the cold call with the same keys;
 --   - reset() forgets the previous steps; bad options are errors.
 local check = require "wrc.check"
 
@@ -75,6 +76,33 @@ for k = 0, steps - 1 do
   end
 end
 print(("trajectory: tr:wheel along the hunting motion, %.2f evaluations per wheel and step"):format(evaluations / (2 * steps)))
+
+-- Rolling along the steps: the rolling keys of ws:contact / ws:wheel at every step (the velocities of a multibody
+-- code change from step to step). The creep forces equal those of a cold call with the same keys, within the
+-- trajectory's tolerance; tr:wheel's Fz includes the creep forces' vertical part, as ws:wheel's does.
+tr = ws:trajectory{}
+for k = 0, 4 do
+  local y, V = 0.8e-3 * k, 100 / 3.6
+  local keys = {V = V, vy = 0.02 * (k - 2), yaw_rate = 0.01, mu = 0.3, method = k % 2 == 0 and "exact" or "fastsim"}
+  local pose = {y = y, z = e0.z - 0.01e-3 + 0.02 * y * y, roll = 0.05 * y, yaw = -1e-3}
+  local function with(t) for key, v in pairs(keys) do t[key] = v end return t end
+  local a = tr:contact(with{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw})
+  local b = ws:contact(with{y = pose.y, z = pose.z, roll = pose.roll, yaw = pose.yaw, grids = false})
+  for _, side in ipairs{"left", "right"} do
+    local scale = 0.3 * b[side].force.z
+    for _, c in ipairs{"x", "y", "z"} do
+      check.near(a[side].creep_force[c], b[side].creep_force[c], 1e-4 * scale,
+                 ("rolling step %d (%s), %s: creep force %s"):format(k, keys.method, side, c))
+    end
+  end
+  local wa = tr:wheel(with{side = "left", y = y, yaw = -1e-3, Fz = 100e3})
+  local wb = ws:wheel(with{side = "left", y = y, yaw = -1e-3, Fz = 100e3})
+  check.near(wa.force.z, 100e3, 1e-6 * 100e3, ("rolling step %d: tr:wheel Fz with the creep forces"):format(k))
+  check.near(wa.z, wb.z, 1e-8, ("rolling step %d: tr:wheel height as ws:wheel's"):format(k))
+  check.near(wa.creep_force.y, wb.creep_force.y, 1e-4 * 30e3, ("rolling step %d: tr:wheel lateral creep force"):format(k))
+end
+check.fails(function() tr:contact{y = 0, z = e0.z, mu = 0.3} end, "neither V", "friction without V or creepage")
+check.fails(function() tr:wheel{side = "left", y = 0, Fz = 100e3, V = 0, mu = 0.3} end, "V", "V = 0")
 
 check.fails(function() ws:trajectory{tolerence = 1e-6} end, "did you mean 'tolerance'", "misspelt option")
 check.fails(function() ws:trajectory{extrapolate = 1} end, "extrapolate", "extrapolate must be a boolean")

@@ -124,13 +124,22 @@ wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc
  * (default true: wrc_trajectory_contact starts each step from the linear extrapolation of the last two, as for a
  * fixed time step; false: from the last step alone). The caller owns *out. */
 wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_trajectory** out);
-/* Contact at a prescribed pose (m, rad), as wrc_contact. */
+/* Contact at a prescribed pose (m, rad), as wrc_contact without options (frictionless). */
 wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
                                   wrc_result** out);
+/* The same with options (NULL or "": none): the rolling options of wrc_contact (V, omega, vy, yaw_rate or
+ * creepage.xi/eta/phi, mu or mu_static and mu_kinetic, method "exact" | "fastsim", rolling_tolerance), read at every
+ * step, since a multibody code's velocities change from step to step. */
+wrc_status wrc_trajectory_contact_with(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
+                                       const char* options, wrc_result** out);
 /* One wheel with its vertical force Fz (N) given, as wrc_wheel, from the previous steps' approach (its depth below
  * the touching height, extrapolated in time unless the trajectory's extrapolate is 0). */
 wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
                                 wrc_result** out);
+/* The same with the rolling options of wrc_trajectory_contact_with (Fz then includes the creep forces' vertical
+ * part, as in wrc_wheel). */
+wrc_status wrc_trajectory_wheel_with(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
+                                     const char* options, wrc_result** out);
 /* Forgets the previous steps. */
 wrc_status wrc_trajectory_reset(wrc_trajectory* trajectory);
 /* Releases a trajectory (NULL: nothing to do). */

@@ -416,28 +416,46 @@ wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_t
   });
 }
 
-wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
-                                  wrc_result** out) {
+wrc_status wrc_trajectory_contact_with(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
+                                       const char* options, wrc_result** out) {
   return guard("wrc_trajectory_contact", [&] {
     set_out(out, "result");
     const auto t = registry().get(trajectory, "trajectory");
     for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
+    const wrc::OptionTable o = options_of(options, "wrc_trajectory_contact: options");
+    wrc::OptionReader r(o, "wrc_trajectory_contact");
+    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
+    r.finish();
     std::lock_guard lock(t->mutex);
-    return make_result(out, true, "", t->trajectory->contact({y, z, roll, yaw}));
+    return make_result(out, true, "", t->trajectory->contact({y, z, roll, yaw}, rolling));
   });
 }
 
-wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
-                                wrc_result** out) {
+wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
+                                  wrc_result** out) {
+  return wrc_trajectory_contact_with(trajectory, y, z, roll, yaw, nullptr, out);
+}
+
+wrc_status wrc_trajectory_wheel_with(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
+                                     const char* options, wrc_result** out) {
   return guard("wrc_trajectory_wheel", [&] {
     set_out(out, "result");
     const auto t = registry().get(trajectory, "trajectory");
     check_side(side);
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
+    const wrc::OptionTable o = options_of(options, "wrc_trajectory_wheel: options");
+    wrc::OptionReader r(o, "wrc_trajectory_wheel");
+    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
+    r.finish();
     std::lock_guard lock(t->mutex);
-    const wrc::WheelResult res = t->trajectory->wheel(side, y, yaw, roll, Fz);
+    const wrc::WheelResult res = t->trajectory->wheel(side, y, yaw, roll, Fz, rolling);
     return make_result(out, res.converged, res.converged ? "" : "wrc_trajectory_wheel: " + failure_message(res), res);
   });
+}
+
+wrc_status wrc_trajectory_wheel(wrc_trajectory* trajectory, int side, double y, double yaw, double roll, double Fz,
+                                wrc_result** out) {
+  return wrc_trajectory_wheel_with(trajectory, side, y, yaw, roll, Fz, nullptr, out);
 }
 
 wrc_status wrc_trajectory_reset(wrc_trajectory* trajectory) {

@@ -19,15 +19,17 @@ Trajectory::Trajectory(std::shared_ptr<const Wheelset> wheelset, const Trajector
     fail("trajectory: tolerance must be in [1e-14, 1e-2[, got {}", options.tolerance);
 }
 
-ContactResult Trajectory::contact(const Pose& pose) {
+ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingRequest>& rolling) {
   ContactRequest req;
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
+  req.rolling = rolling;
   workspace_->extrapolate = options_.extrapolate;
   return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
 }
 
-WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, double Fz) {
+WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, double Fz,
+                              const std::optional<RollingRequest>& rolling) {
   EquilibriumOptions opt;
   opt.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
@@ -38,7 +40,7 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   // (extrapolate): it follows the load, where the height follows the rail.
   std::optional<double> start = last_approach_[side];
   if (start && before_approach_[side] && options_.extrapolate) start = 2 * *start - *before_approach_[side];
-  WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, start);
+  WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, start, rolling);
   before_approach_[side] = r.converged ? last_approach_[side] : std::nullopt;
   last_approach_[side] = r.converged ? std::optional<double>(r.approach) : std::nullopt;
   return r;

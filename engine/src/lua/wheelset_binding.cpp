@@ -291,25 +291,27 @@ LuaTrajectory& trajectory_self(lua_State* L, const char* ctx) {
   return t;
 }
 
-// tr:contact{y=, z=, roll=, yaw=}: the contact at a prescribed pose, from the previous step's pressures.
+// tr:contact{y=, z=, roll=, yaw=, rolling keys}: the contact at a prescribed pose, from the previous step's pressures.
 int trajectory_contact(lua_State* L) {
   const char* ctx = "trajectory:contact";
   LuaTrajectory& t = trajectory_self(L, ctx);
   Args a(L, ctx);
   const Pose pose = read_pose(a.reader);
+  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
   a.reader.finish();
-  push_result(L, t.trajectory->contact(pose));
+  push_result(L, t.trajectory->contact(pose, rolling));
   return 1;
 }
 
-// tr:wheel{side=, y=, yaw=, roll=, Fz=}: one wheel with Fz given, from the previous step's height.
+// tr:wheel{side=, y=, yaw=, roll=, Fz=, rolling keys}: one wheel with Fz given, from the previous steps' approach.
 int trajectory_wheel(lua_State* L) {
   const char* ctx = "trajectory:wheel";
   LuaTrajectory& t = trajectory_self(L, ctx);
   Args a(L, ctx);
   const WheelCase c = read_wheel_case(a.reader, ctx);
+  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
   a.reader.finish();
-  const WheelResult r = t.trajectory->wheel(c.side, c.y, c.yaw, c.roll, c.Fz);
+  const WheelResult r = t.trajectory->wheel(c.side, c.y, c.yaw, c.roll, c.Fz, rolling);
   if (!r.converged) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;

@@ -28,10 +28,13 @@ TrajectoryOptions read_trajectory_options(OptionReader& options);
 class Trajectory {
  public:
   explicit Trajectory(std::shared_ptr<const Wheelset> wheelset, const TrajectoryOptions& options = {});
-  // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step.
-  ContactResult contact(const Pose& pose);
-  // One wheel with its vertical force Fz (N) prescribed (as solve_wheel), from the previous step's approach.
-  WheelResult wheel(int side, double y, double yaw, double roll, double Fz);
+  // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step; with `rolling`, the
+  // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed).
+  ContactResult contact(const Pose& pose, const std::optional<RollingRequest>& rolling = std::nullopt);
+  // One wheel with its vertical force Fz (N) prescribed (as solve_wheel, `rolling` included), from the previous
+  // steps' approach.
+  WheelResult wheel(int side, double y, double yaw, double roll, double Fz,
+                    const std::optional<RollingRequest>& rolling = std::nullopt);
   // Forget the previous steps.
   void reset();
   const TrajectoryOptions& options() const { return options_; }
