@@ -501,15 +501,18 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   const double final_tolerance = opt.final_at_model_tolerance ? model.options().normal.tolerance : tight;
   int evaluations = 0;
   double tolerance = 0;  // of the last evaluation
-  auto evaluate = [&](double a, double tol) {
+  auto evaluate_at = [&](double a, const ContactRequest& req) {  // the wheel pressed in by a, within the budget
     if (evaluations++ >= opt.max_evaluations)
       throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", opt.max_evaluations));
-    ContactRequest req;
-    req.only_side = side;
-    req.tolerance = tolerance = tol;
     cur = evaluate_contact(model, {y, z_touch - a, roll, yaw}, ws, req);
     res.z = z_touch - a;
     res.approach = a;
+  };
+  auto evaluate = [&](double a, double tol) {  // frictionless, the normal problems solved to tol
+    ContactRequest req;
+    req.only_side = side;
+    req.tolerance = tolerance = tol;
+    evaluate_at(a, req);
   };
   auto phi = [&](double a, double tol) {
     evaluate(a, tol);
@@ -528,11 +531,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     fr.only_side = side;
     fr.rolling = rolling;
     auto error = [&](double at) {
-      if (evaluations++ >= opt.max_evaluations)
-        throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", opt.max_evaluations));
-      cur = evaluate_contact(model, {y, z_touch - at, roll, yaw}, ws, fr);
-      res.z = z_touch - at;
-      res.approach = at;
+      evaluate_at(at, fr);
       return cur.wheel[side].force.z() - Fz;
     };
     double e = error(a), k = 1.5 * Fz / a;
