@@ -144,6 +144,15 @@ wrc::OptionTable options_of(const char* text, const char* context) {
   return text ? wrc::parse_option_text(text, context) : wrc::OptionTable{};
 }
 
+// Options of a trajectory step: the rolling keys of wrc_contact and nothing else (unknown keys are errors).
+std::optional<wrc::RollingRequest> rolling_options(const char* text, const std::string& context) {
+  const wrc::OptionTable o = options_of(text, (context + ": options").c_str());
+  wrc::OptionReader r(o, context);
+  std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
+  r.finish();
+  return rolling;
+}
+
 // A workspace of the wheelset's pool for the duration of one call (returned to the pool after it).
 class Lease {
  public:
@@ -422,10 +431,7 @@ wrc_status wrc_trajectory_contact_with(wrc_trajectory* trajectory, double y, dou
     set_out(out, "result");
     const auto t = registry().get(trajectory, "trajectory");
     for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
-    const wrc::OptionTable o = options_of(options, "wrc_trajectory_contact: options");
-    wrc::OptionReader r(o, "wrc_trajectory_contact");
-    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
-    r.finish();
+    const std::optional<wrc::RollingRequest> rolling = rolling_options(options, "wrc_trajectory_contact");
     std::lock_guard lock(t->mutex);
     return make_result(out, true, "", t->trajectory->contact({y, z, roll, yaw}, rolling));
   });
@@ -443,10 +449,7 @@ wrc_status wrc_trajectory_wheel_with(wrc_trajectory* trajectory, int side, doubl
     const auto t = registry().get(trajectory, "trajectory");
     check_side(side);
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
-    const wrc::OptionTable o = options_of(options, "wrc_trajectory_wheel: options");
-    wrc::OptionReader r(o, "wrc_trajectory_wheel");
-    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
-    r.finish();
+    const std::optional<wrc::RollingRequest> rolling = rolling_options(options, "wrc_trajectory_wheel");
     std::lock_guard lock(t->mutex);
     const wrc::WheelResult res = t->trajectory->wheel(side, y, yaw, roll, Fz, rolling);
     return make_result(out, res.converged, res.converged ? "" : "wrc_trajectory_wheel: " + failure_message(res), res);
