@@ -111,6 +111,17 @@ double lua_ms(wrc::lua::Session& s, const std::string& call, int reps) {
 
 }  // namespace
 
+// Step k of the hunting-like motion replayed at 1 kHz: y = 5 mm sin(2 pi 1.5 Hz t), the yaw following the path at
+// 100 km/h (yaw = -dy/dx), and their rates.
+struct HuntingStep {
+  double y, yaw, vy, yaw_rate;
+};
+constexpr double kHuntingSpeed = 100 / 3.6;  // m/s
+HuntingStep hunting(int k) {
+  const double w = 2 * std::numbers::pi * 1.5, t = k * 1e-3, A = 5e-3, V = kHuntingSpeed;
+  return {A * std::sin(w * t), -A * w / V * std::cos(w * t), A * w * std::cos(w * t), A * w * w / V * std::sin(w * t)};
+}
+
 int main(int argc, char** argv) {
   bool quick = false;
   int reps = 20, only = 0;
@@ -256,13 +267,11 @@ int main(int argc, char** argv) {
       wrc::Trajectory traj(wsg, to);
       traj.workspace().timing = true;
       std::vector<double> per_step;
-      const double V = 100 / 3.6, f = 1.5;
       for (int k = 0; k < steps; ++k) {
-        const double t = k * 1e-3, y = 5e-3 * std::sin(2 * std::numbers::pi * f * t);
-        const double yaw = -5e-3 * 2 * std::numbers::pi * f / V * std::cos(2 * std::numbers::pi * f * t);
-        const double z = wrc::interpolate(ty, tz, y), roll = wrc::interpolate(ty, troll, y);
+        const HuntingStep h = hunting(k);
+        const double z = wrc::interpolate(ty, tz, h.y), roll = wrc::interpolate(ty, troll, h.y);
         const double c0 = thread_cpu();
-        traj.contact({y, z, roll, yaw});
+        traj.contact({h.y, z, roll, h.yaw});
         per_step.push_back(thread_cpu() - c0);
       }
       ms[extrapolate ? 0 : 1] = 1e3 * median(per_step);
@@ -276,16 +285,15 @@ int main(int argc, char** argv) {
     {
       wrc::Trajectory traj(wsg);
       std::vector<double> per_step;
-      const double V = 100 / 3.6, w = 2 * std::numbers::pi * 1.5;
       for (int k = 0; k < steps; ++k) {
-        const double t = k * 1e-3, y = 5e-3 * std::sin(w * t), yaw = -5e-3 * w / V * std::cos(w * t);
+        const HuntingStep h = hunting(k);
         wrc::RollingRequest rolling;
-        rolling.kinematics = wrc::Kinematics{V, std::nullopt, 5e-3 * w * std::cos(w * t), 5e-3 * w * w / V * std::sin(w * t)};
+        rolling.kinematics = wrc::Kinematics{kHuntingSpeed, std::nullopt, h.vy, h.yaw_rate};
         rolling.friction = wrc::contact::Friction::coulomb(0.3);
         rolling.method = wrc::RollingMethod::fastsim;
-        const double z = wrc::interpolate(ty, tz, y), roll = wrc::interpolate(ty, troll, y);
+        const double z = wrc::interpolate(ty, tz, h.y), roll = wrc::interpolate(ty, troll, h.y);
         const double c0 = thread_cpu();
-        traj.contact({y, z, roll, yaw}, rolling);
+        traj.contact({h.y, z, roll, h.yaw}, rolling);
         per_step.push_back(thread_cpu() - c0);
       }
       fmt::print("grid {:.1f} mm, with FASTSIM creep forces: {:.3f} ms per wheel and step\n", grid * 1e3,
@@ -296,12 +304,11 @@ int main(int argc, char** argv) {
     std::vector<double> per_step;
     int evaluations = 0, failed = 0;
     for (int k = 0; k < steps; ++k) {
-      const double t = k * 1e-3, y = 5e-3 * std::sin(2 * std::numbers::pi * 1.5 * t);
-      const double yaw = -5e-3 * 2 * std::numbers::pi * 1.5 / (100 / 3.6) * std::cos(2 * std::numbers::pi * 1.5 * t);
-      const double roll = wrc::interpolate(ty, troll, y);
+      const HuntingStep h = hunting(k);
+      const double roll = wrc::interpolate(ty, troll, h.y);
       const double c0 = thread_cpu();
       for (int side : {wrc::kLeft, wrc::kRight}) {
-        const wrc::WheelResult r = traj.wheel(side, y, yaw, roll, 100e3);
+        const wrc::WheelResult r = traj.wheel(side, h.y, h.yaw, roll, 100e3);
         evaluations += r.iterations;
         failed += !r.converged;
       }
