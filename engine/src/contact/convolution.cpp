@@ -32,6 +32,71 @@ int padded_size(int n) {
   return fft_size(std::max(1, 2 * n - 2));  // M >= 2n - 2 gives floor(M/2) >= n - 1
 }
 
+namespace {
+
+// FFTW's cost per length, as PrunedFft runs its transforms: ns per real row of that length (r2c + c2r) and per
+// complex column (forward + backward, batched and strided). Measured by bench_fft_sizes (FFTW 3.3.10 of Debian 12,
+// FFTW_ESTIMATE plans, AVX codelets). It is far from smooth: lengths with a direct SIMD codelet (<= 16, 20, 32, 64,
+// 128) are 2-4x cheaper per point than their neighbours, so that a 128-point column costs half a 112-point one.
+struct LengthCost {
+  int length;
+  double row, column;
+};
+constexpr LengthCost kLengthCosts[] = {
+    {1, 1, 0}, {2, 2, 2}, {3, 3, 3}, {4, 4, 3}, {5, 6, 5}, {6, 6, 5},
+    {7, 10, 8}, {8, 8, 8}, {9, 13, 12}, {10, 12, 11}, {12, 13, 12}, {14, 40, 17},
+    {15, 30, 19}, {16, 30, 16}, {18, 66, 97}, {20, 36, 24}, {24, 88, 98}, {28, 93, 119},
+    {30, 103, 340}, {32, 71, 39}, {36, 106, 227}, {40, 122, 267}, {42, 114, 201}, {48, 129, 175},
+    {50, 142, 295}, {54, 176, 343}, {56, 121, 221}, {60, 201, 329}, {64, 173, 98}, {70, 170, 409},
+    {72, 155, 277}, {80, 246, 393}, {84, 184, 457}, {90, 202, 578}, {96, 300, 444}, {98, 254, 433},
+    {100, 219, 482}, {108, 360, 765}, {112, 241, 473}, {120, 254, 562}, {126, 412, 577}, {128, 412, 240},
+    {140, 341, 588}, {144, 260, 935}, {150, 312, 742}, {160, 367, 722}, {162, 537, 1101}, {168, 435, 943},
+    {180, 335, 1494}, {192, 371, 1466}, {196, 523, 1007}, {200, 397, 963}, {210, 596, 1848}, {216, 625, 1427},
+    {224, 518, 1589}, {240, 498, 1959}, {250, 582, 1467}, {252, 832, 1383}, {256, 588, 1053}, {270, 907, 2393},
+    {280, 814, 1951}, {288, 805, 2035}, {294, 1113, 1943}, {300, 622, 1928}, {320, 596, 1577}, {324, 1079, 2595},
+    {336, 853, 2522}, {350, 1031, 2886}, {360, 1056, 3365}, {378, 1257, 2649}, {384, 747, 1771}, {392, 1077, 3114},
+    {400, 792, 1980}, {420, 1460, 3243}, {432, 1325, 3569}, {448, 971, 2562}, {450, 1172, 3818}, {480, 986, 3190},
+    {486, 1866, 4233}, {490, 1376, 4010}, {500, 1259, 3701}, {504, 1270, 3422}, {512, 1013, 2615}, {540, 1918, 4727},
+    {560, 1607, 3984}, {576, 1213, 4012}, {588, 1654, 4417}, {600, 1724, 4408}, {630, 1660, 5585}, {640, 1257, 4442},
+    {648, 1911, 5406}, {672, 2374, 6136}, {686, 2282, 4735}, {700, 2210, 5067}, {720, 2270, 5034}, {750, 2061, 6333},
+    {756, 2214, 5873}, {768, 1628, 4117}, {784, 2285, 6217}, {800, 2230, 6183}, {810, 2204, 6904}, {840, 2850, 7558},
+    {864, 2579, 7354}, {882, 3637, 6415}, {896, 2540, 5134}, {900, 2518, 8917}, {960, 2672, 6798}, {972, 3541, 9151},
+    {980, 3038, 7782}, {1000, 2827, 7340}, {1008, 2947, 7009}, {1024, 2065, 6111}, {1050, 2969, 9008}, {1080, 3988, 11300},
+    {1120, 3721, 8561}, {1134, 4794, 8536}, {1152, 2710, 8877}, {1176, 4949, 8314}, {1200, 3483, 8748}, {1250, 4112, 11775},
+    {1260, 3647, 10071}, {1280, 2998, 10427}, {1296, 4670, 12105}, {1344, 4750, 12730}, {1350, 3965, 11971}, {1372, 5061, 10814},
+    {1400, 4098, 11328}, {1440, 3573, 9232}, {1458, 6176, 14230}, {1470, 6302, 16671}, {1500, 4573, 13492}, {1512, 6535, 12861},
+    {1536, 3278, 13675}, {1568, 5020, 14039}, {1600, 4168, 11785}, {1620, 4755, 17161}, {1680, 6313, 15636}, {1728, 5430, 15985},
+    {1750, 5850, 16246}, {1764, 7584, 14386}, {1792, 5046, 15647}, {1800, 5918, 18621}, {1890, 8299, 21845}, {1920, 4958, 21487},
+    {1944, 7626, 20259}, {1960, 5788, 17546}, {2000, 5212, 15621}, {2016, 7396, 15235}, {2048, 4419, 13363},
+};
+// Per complex point of the spectrum: the product with the kernel's spectrum and the buffers' traffic.
+constexpr double kPointCost = 0.5;
+
+// The table's lengths from `least` up to 2 least + 16 (a longer one never pays), else fft_size(least) alone.
+std::vector<LengthCost> candidates(int least) {
+  std::vector<LengthCost> out;
+  for (const LengthCost& c : kLengthCosts)
+    if (c.length >= least && c.length <= 2 * least + 16) out.push_back(c);
+  if (out.empty()) out.push_back({fft_size(least), 0, 0});  // beyond the table: one size, nothing to compare
+  return out;
+}
+
+}  // namespace
+
+FftShape fft_shape(int min_x, int min_y, bool pruned) {
+  if (min_x < 1 || min_y < 1) fail("fft_shape: least size {} x {}, expected at least 1 x 1", min_x, min_y);
+  const std::vector<LengthCost> xs = candidates(min_x), ys = candidates(min_y);
+  FftShape best{xs.front().length, ys.front().length};
+  double least = INFINITY;
+  for (const LengthCost& x : xs)
+    for (const LengthCost& y : ys) {
+      const double rows = pruned ? y.length / 2 + 1 : y.length, columns = x.length / 2 + 1;
+      const double cost = rows * x.row + columns * y.column + kPointCost * columns * y.length;
+      if (cost < least) least = cost, best = {x.length, y.length};
+    }
+  return best;
+}
+
 std::mutex& fftw_planner_mutex() {
   static std::mutex m;
   return m;
@@ -268,9 +333,10 @@ void deconvolve(const InfluenceSpectrum& s, const Grid& grid, const double* r, d
 std::shared_ptr<const InfluenceSpectrum> InfluenceCache::get(const Grid& grid, InfluenceSpectrum::Kind kind) const {
   validate(grid, "InfluenceCache");
   const bool linear = kind == InfluenceSpectrum::Kind::linear;
-  const Key key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy,
-                                  linear ? padded_size(grid.nx) : fft_size(grid.nx),
-                                  linear ? padded_size(grid.ny) : fft_size(grid.ny));
+  // Linear: M >= 2n - 2 gives floor(M/2) >= n - 1, a slot for every offset; its rows beyond My/2 + 1 are pruned.
+  const FftShape shape = linear ? fft_shape(std::max(1, 2 * grid.nx - 2), std::max(1, 2 * grid.ny - 2), true)
+                                : fft_shape(grid.nx, grid.ny, false);
+  const Key key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy, shape.Mx, shape.My);
   {
     std::lock_guard lock(mutex_);
     if (auto it = entries_.find(key); it != entries_.end()) {

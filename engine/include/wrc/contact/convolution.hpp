@@ -28,6 +28,14 @@ int padded_size(int n);
 // The smallest size >= n among 7-smooth sizes up to 16 and 2^a {1, 9/8, 5/4, 3/2, 7/4} above: fast for
 // FFTW, and few distinct sizes so that grids of similar shape share a spectrum.
 int fft_size(int n);
+// The periodic size of the normal solver's FFT products: Mx >= min_x and My >= min_y that cost least by FFTW's
+// measured speed per length (the table in convolution.cpp, from bench_fft_sizes): rows(My) row transforms of length
+// Mx and Mx/2 + 1 column transforms of length My, with rows(My) = My/2 + 1 when the rows beyond are pruned (the
+// linear product), else My. Deterministic (a fixed table), so results do not depend on the machine's timing.
+struct FftShape {
+  int Mx, My;
+};
+FftShape fft_shape(int min_x, int min_y, bool pruned);
 
 // How hard FFTW's planner works: `measure` times candidate algorithms once per size (slower to build,
 // faster to run), `estimate` picks one by heuristics.
@@ -66,11 +74,11 @@ std::vector<double> real_spectrum(const std::vector<double>& kernel, int Mx, int
 
 // Spectrum of the influence kernel of elements dx x dy on an Mx x My periodic grid, and its FFTW plans.
 // The kernel is embedded centred (slot s holds offset s for s <= M/2 and s - M above).
-//  - linear: Mx, My = padded_size(nx, ny); the circular convolution restricted to the grid is exactly
+//  - linear: Mx, My >= 2 nx - 2, 2 ny - 2 (fft_shape); the circular convolution restricted to the grid is exactly
 //    the product with the influence matrix. Serves grids with nx - 1 <= Mx/2 and ny - 1 <= My/2. The
 //    transforms are pruned: rows beyond My/2 + 1 are known to be zero on the way in and are not needed
 //    on the way out, so the 2-D transform runs as batched row and column transforms.
-//  - periodic: Mx, My = fft_size(nx, ny); the grid itself made periodic. Its circulant inverse is the
+//  - periodic: Mx, My >= nx, ny (fft_shape); the grid itself made periodic. Its circulant inverse is the
 //    preconditioner of the normal solver (cheap: no padding). Serves grids with nx <= Mx, ny <= My.
 // Immutable once built.
 class InfluenceSpectrum {
