@@ -172,6 +172,29 @@ Start make_start(const Grid& grid, std::span<const double> h, const NormalOption
   return start;
 }
 
+// The CG's vector kernels, kept out of line: inlined into the solver, their sums were spilled to the stack at every
+// element for want of registers. Sums run in four partial sums (independent chains of additions).
+[[gnu::noinline]] double dot(const double* a, const double* b, int n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) s0 += a[k] * b[k], s1 += a[k + 1] * b[k + 1], s2 += a[k + 2] * b[k + 2], s3 += a[k + 3] * b[k + 3];
+  for (; k < n; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+// z = z on S, 0 elsewhere; returns the sum of z.
+[[gnu::noinline]] double mask_and_sum(const unsigned char* S, double* z, int n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    z[k] = S[k] ? z[k] : 0.0, z[k + 1] = S[k + 1] ? z[k + 1] : 0.0;
+    z[k + 2] = S[k + 2] ? z[k + 2] : 0.0, z[k + 3] = S[k + 3] ? z[k + 3] : 0.0;
+    s0 += z[k], s1 += z[k + 1], s2 += z[k + 2], s3 += z[k + 3];
+  }
+  for (; k < n; ++k) z[k] = S[k] ? z[k] : 0.0, s0 += z[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 // The projected CG on one grid (see the top of the file), on the workspace's vectors: p the pressure, u = K p,
 // r the residual, z the preconditioned residual, d the search direction, q = K d.
 class ProjectedCg {
@@ -250,60 +273,69 @@ void ProjectedCg::start(const std::vector<double>& pressure) {
   if (force_control_) rescale_to_force();
 }
 
-// Working set S = {p > 0} U {g < 0}, the approach, and the residual r = -g on S (0 elsewhere).
+// Working set S = {p > 0} U {g < 0}, the approach, and the residual r = -g on S (0 elsewhere). The loops read and
+// write through local pointers: a store to S (unsigned char) may alias anything, and through the vectors it would
+// make the compiler reload every vector's data pointer at every element.
 ProjectedCg::Residual ProjectedCg::update_working_set() {
   std::swap(ws_.active, ws_.previous_active);
   unsigned char* S = ws_.active.data();
   const unsigned char* S_previous = ws_.previous_active.data();
-  const double* hp = h_.data();
+  const double *hp = h_.data(), *p = p_.data(), *u = u_.data();
+  double* r = r_.data();
+  const int n = n_;
   if (force_control_) {  // the approach seen by the current contact, then by the working set
     double sum = 0;
     int count = 0;
-    for (int k = 0; k < n_; ++k)
-      if (p_[k] > 0) sum += u_[k] - hp[k], ++count;
+    for (int k = 0; k < n; ++k)
+      if (p[k] > 0) sum += u[k] - hp[k], ++count;
     delta_ = sum / count;
   }
   Residual res{false, 0.0, 0};
-  double sum = 0;
-  for (int k = 0; k < n_; ++k) {
-    const double g = u_[k] - hp[k] - delta_;
-    const unsigned char in = p_[k] > 0 || g < 0;
+  double sum = 0, error = 0;
+  int changed = 0, count = 0;
+  const double delta = delta_;
+  for (int k = 0; k < n; ++k) {
+    const double e = u[k] - hp[k];  // g = e - delta
+    const bool in = p[k] > 0 || e < delta;
     S[k] = in;
-    res.changed |= in != S_previous[k];
-    r_[k] = in ? -g : 0.0;
-    sum += in ? u_[k] - hp[k] : 0.0;
-    res.count += in;
+    changed |= in != S_previous[k];
+    r[k] = in ? delta - e : 0.0;
+    sum += in ? e : 0.0;
+    count += in;
+    error = std::max(error, std::abs(r[k]));
   }
+  res.changed = changed;
+  res.count = count;
   if (force_control_) {  // re-centre on S: the residual has zero mean there
-    const double shift = sum / res.count - delta_;
+    const double shift = sum / count - delta_;
     delta_ += shift;
-    for (int k = 0; k < n_; ++k) r_[k] += S[k] ? shift : 0.0;
+    error = 0;
+    for (int k = 0; k < n; ++k) {
+      r[k] += S[k] ? shift : 0.0;
+      error = std::max(error, std::abs(r[k]));
+    }
   }
-  for (int k = 0; k < n_; ++k) res.error = std::max(res.error, std::abs(r_[k]));
+  res.error = error;
   return res;
 }
 
 // Preconditioned residual z on S (zero mean on S for a prescribed force), the conjugate direction d (restarted
 // when S changed) and q = K d. Returns false if rz or dq lost their sign to rounding.
 bool ProjectedCg::find_direction(const Residual& res, bool precondition, double& rz, double& dq) {
-  const unsigned char* S = ws_.active.data();
   if (precondition)
     K_.invert(r_, z_);
   else
     z_ = r_;
-  rz = 0;
-  double zsum = 0;
-  for (int k = 0; k < n_; ++k) {
-    z_[k] = S[k] ? z_[k] : 0.0;
-    rz += r_[k] * z_[k];
-    zsum += z_[k];
-  }
+  const unsigned char* S = ws_.active.data();
+  double *z = z_.data(), *d = d_.data();
+  const int n = n_;
+  const double zsum = mask_and_sum(S, z, n);
+  rz = dot(r_.data(), z, n);
   const double zmean = force_control_ ? zsum / res.count : 0.0;  // r sums to zero on S: rz is unchanged
   const double beta = have_direction_ && !res.changed ? rz / rz_previous_ : 0.0;
-  for (int k = 0; k < n_; ++k) d_[k] = S[k] ? z_[k] - zmean + beta * d_[k] : 0.0;
+  for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] - zmean + beta * d[k] : 0.0;
   K_.apply(d_, q_);
-  dq = 0;
-  for (int k = 0; k < n_; ++k) dq += d_[k] * q_[k];
+  dq = dot(d, q_.data(), n);
   return dq > 0 && rz > 0;
 }
 
@@ -311,11 +343,13 @@ bool ProjectedCg::find_direction(const Residual& res, bool precondition, double&
 // direct sums when few, else u is recomputed by a product.
 void ProjectedCg::take_step(double alpha) {
   clipped_.clear();
+  double *p = p_.data(), *u = u_.data();
+  const double *d = d_.data(), *q = q_.data();
   for (int k = 0; k < n_; ++k) {
-    const double v = p_[k] + alpha * d_[k];
+    const double v = p[k] + alpha * d[k];
     if (v < 0) clipped_.emplace_back(k, -v);  // the projection adds -v back
-    p_[k] = std::max(v, 0.0);
-    u_[k] += alpha * q_[k];
+    p[k] = std::max(v, 0.0);
+    u[k] += alpha * q[k];
   }
   if (static_cast<int>(clipped_.size()) > direct_limit_) {
     K_.apply(p_, u_);

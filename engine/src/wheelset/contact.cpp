@@ -228,20 +228,31 @@ const ContactWorkspace::Previous* previous_area(const std::vector<ContactWorkspa
   return best;
 }
 
-// The old area's pressure at the point X (track frame; bilinear), or nothing where the nearest old element was not
-// in contact: interpolation alone smears the contact edge outward, and each element started in contact that is not
-// costs the CG a clipping step (as prolong does).
-std::optional<double> pressure_at(const ContactWorkspace::Previous& p, const Eigen::Vector3d& X) {
-  const contact::Grid& g = p.grid;
-  const Eigen::Vector3d d = X - p.origin;
-  const double fu = (d.dot(p.t1) - g.x0) / g.dx, fv = (d.dot(p.t2) - g.y0) / g.dy;
-  const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
-  if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) return std::nullopt;
-  const double a = fu - iu, b = fv - iv;
-  auto P = [&](int di, int dj) { return p.pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
-  if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) return std::nullopt;
-  return (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
-}
+// Fractional element indices (u, v) on an old area's grid of the points of a new plane: linear in the new plane's
+// coordinates (x, y), so a whole grid is mapped with two multiply-adds per element.
+struct OldGridMap {
+  const ContactWorkspace::Previous* old;
+  double u0, ux, uy, v0, vx, vy;
+  OldGridMap(const ContactWorkspace::Previous& p, const Plane& pl) : old(&p) {
+    const contact::Grid& g = p.grid;
+    const Eigen::Vector3d d = pl.O - p.origin;
+    u0 = (d.dot(p.t1) - g.x0) / g.dx, ux = pl.t1.dot(p.t1) / g.dx, uy = pl.t2.dot(p.t1) / g.dx;
+    v0 = (d.dot(p.t2) - g.y0) / g.dy, vx = pl.t1.dot(p.t2) / g.dy, vy = pl.t2.dot(p.t2) / g.dy;
+  }
+  // The old pressure at (x, y) of the new plane (bilinear), or nothing where the nearest old element was not in
+  // contact: interpolation alone smears the contact edge outward, and each element started in contact that is not
+  // costs the CG a clipping step (as prolong does).
+  std::optional<double> pressure_at(double x, double y) const {
+    const contact::Grid& g = old->grid;
+    const double fu = u0 + ux * x + uy * y, fv = v0 + vx * x + vy * y;
+    const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
+    if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) return std::nullopt;
+    const double a = fu - iu, b = fv - iv;
+    auto P = [&](int di, int dj) { return old->pressure[static_cast<std::size_t>(g.index(iu + di, iv + dj))]; };
+    if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) return std::nullopt;
+    return (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
+  }
+};
 
 // Start pressures for an area in the plane pl from the workspace's last evaluation of that side: the old pressure at
 // each new element centre (bilinear), extrapolated linearly in time with the evaluation before it where both were in
@@ -251,13 +262,14 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
   const auto* last = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
   if (!last) return false;
   const auto* before = ws.extrapolate ? previous_area(ws.before[side], pl) : nullptr;
+  const OldGridMap now(*last, pl), then(before ? *before : *last, pl);
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      const Eigen::Vector3d X = pl.O + grid.x(i) * pl.t1 + grid.y(j) * pl.t2;
-      const auto p = pressure_at(*last, X);
+      const double x = grid.x(i), y = grid.y(j);
+      const auto p = now.pressure_at(x, y);
       if (!p) continue;
-      const auto q = before ? pressure_at(*before, X) : std::nullopt;
+      const auto q = before ? then.pressure_at(x, y) : std::nullopt;
       start[static_cast<std::size_t>(grid.index(i, j))] = q ? std::max(0.0, 2 * *p - *q) : *p;
     }
   return true;
