@@ -551,7 +551,14 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     for (int it = 0;; ++it) {
       const double error = std::abs(cur.wheel[side].force.z() - Fz) / Fz;
       const bool settled = tolerance <= tight;  // a looser evaluation may be off by about its tolerance
-      if (settled && std::abs(f1) <= ftol) break;
+      if (settled && std::abs(f1) <= ftol) {
+        if (tolerance <= final_tolerance) break;
+        // The result at the model's own tolerance (the forces evaluate_contact gives at the solved pose, from the
+        // converged pressures in a few CG iterations); its force may move out of the tolerance by the noise of the
+        // looser solve, and then the steps go on from it.
+        f1 = phi(a1, final_tolerance);
+        continue;
+      }
       if (it >= opt.max_iterations) {
         res.message = fmt::format("no convergence in {} iterations", opt.max_iterations);
         break;
@@ -571,10 +578,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
                                                             : tolerance_for(error);
       f1 = phi(a1, next);
     }
-    res.converged = tolerance <= tight && std::abs(f1) <= ftol;
-    // The result at the model's own tolerance when the last step used a looser one: the forces are those
-    // evaluate_contact gives at the solved pose (from the converged pressures, a few CG iterations).
-    if (res.converged && tolerance > final_tolerance) evaluate(a1, final_tolerance);
+    res.converged = tolerance <= final_tolerance && std::abs(f1) <= ftol;
     if (res.converged && rolling) res.converged = with_friction(a1);
   } catch (const EvaluationBudget& e) {
     res.message = e.what();
@@ -584,6 +588,9 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   res.iterations = evaluations;
   res.residual = cur.wheel[side].force.z() - Fz;
   res.converged = res.converged && std::abs(res.residual) <= opt.force_tolerance * Fz;
+  if (!res.converged && res.message.empty())
+    res.message = fmt::format("the last evaluation is {:.4g} N off, beyond force_tolerance x Fz = {:.4g} N", res.residual,
+                              opt.force_tolerance * Fz);
   res.wheel = std::move(cur.wheel[side]);
   return res;
 }
