@@ -1,6 +1,6 @@
-// Cost of FFTW's transforms per length, as the normal solver's FFT products run them (PrunedFft: batched real row
-// transforms r2c + c2r, and batched complex column transforms forward + backward, strided across the columns,
-// FFTW_ESTIMATE plans). Prints one line per length: the length, ns per row (both directions), ns per column (both
+// Cost of FFTW's transforms per length, as the normal solver's FFT products run them (PrunedFft: real row transforms
+// r2c + c2r, one plan run on each row, and batched complex column transforms forward + backward, strided across the
+// columns; FFTW_ESTIMATE plans). Prints one line per length: the length, ns per row (both directions), ns per column (both
 // directions), in the form of the table kLengthCosts in engine/src/contact/convolution.cpp, which chooses the
 // periodic sizes of the FFT products by these costs.
 //
@@ -65,13 +65,17 @@ int main(int argc, char** argv) {
     fftw_complex* cols = fftw_alloc_complex(static_cast<std::size_t>(M) * K);
     for (int i = 0; i < M * K; ++i) real[i] = i % 5, cols[i][0] = i % 3, cols[i][1] = 0;
     int n = M;
-    // Rows: K real rows of length M, contiguous (PrunedFft's plans 0 and 3).
-    fftw_plan r2c = fftw_plan_many_dft_r2c(1, &n, K, real, nullptr, 1, M, rows, nullptr, 1, H, FFTW_ESTIMATE);
-    fftw_plan c2r = fftw_plan_many_dft_c2r(1, &n, K, rows, nullptr, 1, H, real, nullptr, 1, M, FFTW_ESTIMATE);
+    // Rows: K real rows of length M, contiguous, one row plan run on each (PrunedFft's plans 0 and 3).
+    const unsigned row_flags = FFTW_ESTIMATE | (M % 2 ? FFTW_UNALIGNED : 0u);
+    fftw_plan r2c = fftw_plan_dft_r2c_1d(M, real, rows, row_flags);
+    fftw_plan c2r = fftw_plan_dft_c2r_1d(M, rows, real, row_flags);
     // Columns: K complex columns of length M, stride K, in place (PrunedFft's plans 1 and 2).
     fftw_plan fwd = fftw_plan_many_dft(1, &n, K, cols, nullptr, K, 1, cols, nullptr, K, 1, FFTW_FORWARD, FFTW_ESTIMATE);
     fftw_plan bwd = fftw_plan_many_dft(1, &n, K, cols, nullptr, K, 1, cols, nullptr, K, 1, FFTW_BACKWARD, FFTW_ESTIMATE);
-    const double row = time_ns([&] { fftw_execute(r2c), fftw_execute(c2r); }) / K;
+    const double row = time_ns([&] {
+                         for (int k = 0; k < K; ++k) fftw_execute_dft_r2c(r2c, real + M * k, rows + H * k);
+                         for (int k = 0; k < K; ++k) fftw_execute_dft_c2r(c2r, rows + H * k, real + M * k);
+                       }) / K;
     const double column = time_ns([&] { fftw_execute(fwd), fftw_execute(bwd); }) / K;
     std::printf("{%d, %.0f, %.0f},\n", M, row, column);
     for (fftw_plan p : {r2c, c2r, fwd, bwd}) fftw_destroy_plan(p);

@@ -43,31 +43,31 @@ struct LengthCost {
   double row, column;
 };
 constexpr LengthCost kLengthCosts[] = {
-    {1, 1, 0}, {2, 2, 2}, {3, 3, 3}, {4, 4, 3}, {5, 6, 5}, {6, 6, 5},
-    {7, 10, 8}, {8, 8, 8}, {9, 13, 12}, {10, 12, 11}, {12, 13, 12}, {14, 40, 17},
-    {15, 30, 19}, {16, 30, 16}, {18, 66, 97}, {20, 36, 24}, {24, 88, 98}, {28, 93, 119},
-    {30, 103, 340}, {32, 71, 39}, {36, 106, 227}, {40, 122, 267}, {42, 114, 201}, {48, 129, 175},
-    {50, 142, 295}, {54, 176, 343}, {56, 121, 221}, {60, 201, 329}, {64, 173, 98}, {70, 170, 409},
-    {72, 155, 277}, {80, 246, 393}, {84, 184, 457}, {90, 202, 578}, {96, 300, 444}, {98, 254, 433},
-    {100, 219, 482}, {108, 360, 765}, {112, 241, 473}, {120, 254, 562}, {126, 412, 577}, {128, 412, 240},
-    {140, 341, 588}, {144, 260, 935}, {150, 312, 742}, {160, 367, 722}, {162, 537, 1101}, {168, 435, 943},
-    {180, 335, 1494}, {192, 371, 1466}, {196, 523, 1007}, {200, 397, 963}, {210, 596, 1848}, {216, 625, 1427},
-    {224, 518, 1589}, {240, 498, 1959}, {250, 582, 1467}, {252, 832, 1383}, {256, 588, 1053}, {270, 907, 2393},
-    {280, 814, 1951}, {288, 805, 2035}, {294, 1113, 1943}, {300, 622, 1928}, {320, 596, 1577}, {324, 1079, 2595},
-    {336, 853, 2522}, {350, 1031, 2886}, {360, 1056, 3365}, {378, 1257, 2649}, {384, 747, 1771}, {392, 1077, 3114},
-    {400, 792, 1980}, {420, 1460, 3243}, {432, 1325, 3569}, {448, 971, 2562}, {450, 1172, 3818}, {480, 986, 3190},
-    {486, 1866, 4233}, {490, 1376, 4010}, {500, 1259, 3701}, {504, 1270, 3422}, {512, 1013, 2615}, {540, 1918, 4727},
-    {560, 1607, 3984}, {576, 1213, 4012}, {588, 1654, 4417}, {600, 1724, 4408}, {630, 1660, 5585}, {640, 1257, 4442},
-    {648, 1911, 5406}, {672, 2374, 6136}, {686, 2282, 4735}, {700, 2210, 5067}, {720, 2270, 5034}, {750, 2061, 6333},
-    {756, 2214, 5873}, {768, 1628, 4117}, {784, 2285, 6217}, {800, 2230, 6183}, {810, 2204, 6904}, {840, 2850, 7558},
-    {864, 2579, 7354}, {882, 3637, 6415}, {896, 2540, 5134}, {900, 2518, 8917}, {960, 2672, 6798}, {972, 3541, 9151},
-    {980, 3038, 7782}, {1000, 2827, 7340}, {1008, 2947, 7009}, {1024, 2065, 6111}, {1050, 2969, 9008}, {1080, 3988, 11300},
-    {1120, 3721, 8561}, {1134, 4794, 8536}, {1152, 2710, 8877}, {1176, 4949, 8314}, {1200, 3483, 8748}, {1250, 4112, 11775},
-    {1260, 3647, 10071}, {1280, 2998, 10427}, {1296, 4670, 12105}, {1344, 4750, 12730}, {1350, 3965, 11971}, {1372, 5061, 10814},
-    {1400, 4098, 11328}, {1440, 3573, 9232}, {1458, 6176, 14230}, {1470, 6302, 16671}, {1500, 4573, 13492}, {1512, 6535, 12861},
-    {1536, 3278, 13675}, {1568, 5020, 14039}, {1600, 4168, 11785}, {1620, 4755, 17161}, {1680, 6313, 15636}, {1728, 5430, 15985},
-    {1750, 5850, 16246}, {1764, 7584, 14386}, {1792, 5046, 15647}, {1800, 5918, 18621}, {1890, 8299, 21845}, {1920, 4958, 21487},
-    {1944, 7626, 20259}, {1960, 5788, 17546}, {2000, 5212, 15621}, {2016, 7396, 15235}, {2048, 4419, 13363},
+    {1, 9, 0}, {2, 10, 2}, {3, 13, 3}, {4, 13, 3}, {5, 14, 6}, {6, 14, 6},
+    {7, 19, 8}, {8, 16, 7}, {9, 23, 12}, {10, 20, 11}, {12, 21, 12}, {14, 48, 17},
+    {15, 36, 21}, {16, 35, 16}, {18, 66, 96}, {20, 68, 25}, {24, 86, 100}, {28, 91, 116},
+    {30, 103, 354}, {32, 105, 44}, {36, 106, 225}, {40, 119, 256}, {42, 133, 201}, {48, 133, 174},
+    {50, 142, 297}, {54, 180, 343}, {56, 121, 225}, {60, 204, 328}, {64, 163, 104}, {70, 170, 415},
+    {72, 154, 277}, {80, 251, 390}, {84, 184, 462}, {90, 202, 584}, {96, 306, 472}, {98, 256, 441},
+    {100, 219, 513}, {108, 362, 761}, {112, 241, 479}, {120, 253, 567}, {126, 413, 583}, {128, 217, 241},
+    {140, 336, 606}, {144, 259, 932}, {150, 314, 741}, {160, 378, 745}, {162, 538, 1109}, {168, 431, 944},
+    {180, 334, 1495}, {192, 378, 1485}, {196, 532, 1015}, {200, 402, 956}, {210, 596, 1907}, {216, 622, 1446},
+    {224, 519, 1556}, {240, 503, 1862}, {250, 592, 1467}, {252, 829, 1395}, {256, 589, 1048}, {270, 908, 2424},
+    {280, 816, 1988}, {288, 803, 2022}, {294, 1121, 1962}, {300, 623, 1960}, {320, 609, 1605}, {324, 1081, 2608},
+    {336, 855, 2545}, {350, 1034, 2978}, {360, 1057, 3361}, {378, 1759, 2666}, {384, 770, 1750}, {392, 1085, 3090},
+    {400, 797, 1983}, {420, 1473, 3293}, {432, 1314, 3583}, {448, 969, 2593}, {450, 1184, 3842}, {480, 998, 3236},
+    {486, 1874, 4276}, {490, 1404, 4121}, {500, 1270, 3701}, {504, 1262, 3444}, {512, 1026, 2666}, {540, 1921, 4725},
+    {560, 1592, 3911}, {576, 1232, 4147}, {588, 1666, 4460}, {600, 1739, 4344}, {630, 1688, 5509}, {640, 1289, 4492},
+    {648, 1906, 5385}, {672, 2371, 5989}, {686, 2249, 4793}, {700, 2216, 5094}, {720, 2264, 5066}, {750, 2075, 6315},
+    {756, 2232, 5985}, {768, 1673, 4100}, {784, 2294, 6190}, {800, 2241, 6170}, {810, 2222, 6910}, {840, 2848, 7563},
+    {864, 2583, 7384}, {882, 3640, 6419}, {896, 2551, 5066}, {900, 2503, 8924}, {960, 2690, 6755}, {972, 3590, 9230},
+    {980, 3098, 7840}, {1000, 2841, 7300}, {1008, 2966, 7071}, {1024, 2092, 6198}, {1050, 3025, 8907}, {1080, 3996, 11473},
+    {1120, 3704, 8517}, {1134, 4840, 8563}, {1152, 2721, 9121}, {1176, 4955, 8218}, {1200, 3515, 8907}, {1250, 4092, 11732},
+    {1260, 3620, 10193}, {1280, 3066, 10688}, {1296, 4736, 12095}, {1344, 4831, 12615}, {1350, 3998, 12289}, {1372, 4975, 10738},
+    {1400, 4096, 11252}, {1440, 3618, 9249}, {1458, 6228, 14401}, {1470, 6368, 16825}, {1500, 4678, 13733}, {1512, 6603, 12993},
+    {1536, 3340, 13657}, {1568, 5068, 14153}, {1600, 4245, 12060}, {1620, 4847, 18460}, {1680, 6750, 15761}, {1728, 5511, 15949},
+    {1750, 5870, 17036}, {1764, 7656, 14450}, {1792, 5132, 15540}, {1800, 6075, 18736}, {1890, 8365, 22593}, {1920, 5010, 22335},
+    {1944, 7711, 20302}, {1960, 5807, 17623}, {2000, 5211, 15822}, {2016, 7450, 15432}, {2048, 4447, 13464},
 };
 // Per complex point of the spectrum: the product with the kernel's spectrum and the buffers' traffic.
 constexpr double kPointCost = 0.5;
@@ -113,15 +113,17 @@ PrunedFft::PrunedFft(int Mx, int My, int rows, FftPlanning planning) : Mx_(Mx), 
   fftw_complex* spec = fftw_alloc_complex(ncomplex);
   bool planned = false;
   if (in && out && spec) {
-    // Row transforms (length Mx, contiguous) of the first rows_ rows, and column transforms (length My,
-    // stride H) of all H columns, in place in the complex buffer.
+    // One row transform (length Mx), run on each row that holds data, and the column transforms (length My,
+    // stride H) of all H columns, in place in the complex buffer. Rows of an odd length start at alternating
+    // alignments, which FFTW's new-array execution allows only for plans made unaligned.
     std::lock_guard lock(fftw_planner_mutex());
     const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-    int nx = Mx, ny = My;
-    plans_[0] = fftw_plan_many_dft_r2c(1, &nx, rows_, in, nullptr, 1, Mx, spec, nullptr, 1, H, flags);
+    const unsigned row_flags = flags | (Mx % 2 ? FFTW_UNALIGNED : 0u);
+    int ny = My;
+    plans_[0] = fftw_plan_dft_r2c_1d(Mx, in, spec, row_flags);
     plans_[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
     plans_[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
-    plans_[3] = fftw_plan_many_dft_c2r(1, &nx, rows_, spec, nullptr, 1, H, out, nullptr, 1, Mx, flags);
+    plans_[3] = fftw_plan_dft_c2r_1d(Mx, spec, out, row_flags);
     planned = plans_[0] && plans_[1] && plans_[2] && plans_[3];
   }
   fftw_free(in);
@@ -143,19 +145,30 @@ PrunedFft::~PrunedFft() {
     if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
 }
 
-void PrunedFft::forward(double* in, void* spectrum) const {
+int PrunedFft::row_count(int rows) const {
+  if (rows < 0) return rows_;
+  if (rows > rows_) fail("PrunedFft: {} rows of data, the transform holds {}", rows, rows_);
+  return rows;
+}
+
+void PrunedFft::forward(double* in, void* spectrum, int rows) const {
+  rows = row_count(rows);
   auto* spec = static_cast<fftw_complex*>(spectrum);
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(plans_[0]), in, spec);
-  // Rows rows_..My-1 of the input are zero, so are their row transforms.
   const std::size_t H = Mx_ / 2 + 1;
-  std::memset(static_cast<void*>(spec + H * rows_), 0, sizeof(fftw_complex) * H * (My_ - rows_));
+  const auto r2c = static_cast<fftw_plan>(plans_[0]);
+  for (int j = 0; j < rows; ++j) fftw_execute_dft_r2c(r2c, in + static_cast<std::size_t>(Mx_) * j, spec + H * j);
+  // The other rows of the input are zero, so are their row transforms.
+  std::memset(static_cast<void*>(spec + H * rows), 0, sizeof(fftw_complex) * H * (My_ - rows));
   fftw_execute_dft(static_cast<fftw_plan>(plans_[1]), spec, spec);
 }
 
-void PrunedFft::backward(void* spectrum, double* out) const {
+void PrunedFft::backward(void* spectrum, double* out, int rows) const {
+  rows = row_count(rows);
   auto* spec = static_cast<fftw_complex*>(spectrum);
+  const std::size_t H = Mx_ / 2 + 1;
   fftw_execute_dft(static_cast<fftw_plan>(plans_[2]), spec, spec);
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(plans_[3]), spec, out);  // rows >= rows_ are not needed
+  const auto c2r = static_cast<fftw_plan>(plans_[3]);
+  for (int j = 0; j < rows; ++j) fftw_execute_dft_c2r(c2r, spec + H * j, out + static_cast<std::size_t>(Mx_) * j);
 }
 
 InfluenceSpectrum::InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, int My, FftPlanning planning)
@@ -304,7 +317,7 @@ void round_trip(const InfluenceSpectrum& s, const Grid& grid, const double* src,
   for (int j = 0; j < ny; ++j)
     std::memcpy(in + static_cast<std::size_t>(Mx) * j, src + static_cast<std::size_t>(nx) * j, nx * sizeof(double));
   auto* spec = static_cast<fftw_complex*>(ws.spectrum_buffer());
-  s.forward(in, spec);
+  s.forward(in, spec, ny);
   const double* f = factor.data();
   const int nc = s.complex_size();
   for (int q = 0; q < nc; ++q) {
@@ -313,7 +326,7 @@ void round_trip(const InfluenceSpectrum& s, const Grid& grid, const double* src,
     spec[q][1] *= fq;
   }
   double* out = ws.output();
-  s.backward(spec, out);
+  s.backward(spec, out, ny);
   for (int j = 0; j < ny; ++j)
     std::memcpy(dst + static_cast<std::size_t>(nx) * j, out + static_cast<std::size_t>(Mx) * j, nx * sizeof(double));
 }

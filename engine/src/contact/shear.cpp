@@ -85,8 +85,8 @@ void round_trip(const ShearSpectrum& s, const Grid& grid, const double* sx, cons
   }
   auto* X = static_cast<fftw_complex*>(ws.x.spectrum_buffer());
   auto* Y = static_cast<fftw_complex*>(ws.y.spectrum_buffer());
-  f.forward(ws.x.input(), X);
-  f.forward(ws.y.input(), Y);
+  f.forward(ws.x.input(), X, ny);
+  f.forward(ws.y.input(), Y, ny);
   const double *a = s.xx().data(), *b = s.xy().data(), *c = s.yy().data();
   const int nc = f.complex_size();
   for (int q = 0; q < nc; ++q) {
@@ -96,8 +96,8 @@ void round_trip(const ShearSpectrum& s, const Grid& grid, const double* sx, cons
     Y[q][0] = b[q] * xr + c[q] * yr;
     Y[q][1] = b[q] * xi + c[q] * yi;
   }
-  f.backward(X, ws.x.output());
-  f.backward(Y, ws.y.output());
+  f.backward(X, ws.x.output(), ny);
+  f.backward(Y, ws.y.output(), ny);
   for (int j = 0; j < ny; ++j) {
     std::memcpy(ox + static_cast<std::size_t>(nx) * j, ws.x.output() + static_cast<std::size_t>(Mx) * j, nx * sizeof(double));
     std::memcpy(oy + static_cast<std::size_t>(nx) * j, ws.y.output() + static_cast<std::size_t>(Mx) * j, nx * sizeof(double));

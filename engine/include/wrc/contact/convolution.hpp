@@ -41,10 +41,11 @@ FftShape fft_shape(int min_x, int min_y, bool pruned);
 // faster to run), `estimate` picks one by heuristics.
 enum class FftPlanning { estimate, measure };
 
-// The FFTW plans of the 2-D real transforms of an Mx x My periodic grid, pruned: only the first `rows` rows
+// The FFTW plans of the 2-D real transforms of an Mx x My periodic grid, pruned: at most the first `rows` rows
 // are transformed along x (the input is zero beyond them, and the output is not needed there), so the 2-D
-// transform runs as batched row and column transforms. Immutable once built; execution is thread-safe (FFTW's
-// new-array interface on buffers aligned like the workspace's).
+// transform runs as row transforms (one plan, run on each row that holds data) and batched column transforms.
+// Immutable once built; execution is thread-safe (FFTW's new-array interface on buffers aligned like the
+// workspace's).
 class PrunedFft {
  public:
   PrunedFft(int Mx, int My, int rows, FftPlanning planning);
@@ -55,14 +56,15 @@ class PrunedFft {
   int My() const { return My_; }
   int rows() const { return rows_; }
   int complex_size() const { return My_ * (Mx_ / 2 + 1); }
-  // Forward (real -> spectrum, rows beyond `rows` taken as zero) and backward transforms (unnormalised; the
-  // rows beyond `rows` of the output are left undefined).
-  void forward(double* in, void* spectrum) const;
-  void backward(void* spectrum, double* out) const;
+  // Forward (real -> spectrum, the input rows from `rows` on taken as zero) and backward transforms
+  // (unnormalised; the output rows from `rows` on are left undefined); rows <= rows(), -1 for rows().
+  void forward(double* in, void* spectrum, int rows = -1) const;
+  void backward(void* spectrum, double* out, int rows = -1) const;
 
  private:
+  int row_count(int rows) const;
   int Mx_, My_, rows_;
-  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  // fftw_plan: rows r2c, columns fwd, columns bwd, rows c2r
+  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  // fftw_plan: a row r2c, columns fwd, columns bwd, a row c2r
 };
 
 // FFTW's planner is not thread-safe: every plan creation and destruction in wrc holds this lock.
@@ -106,9 +108,9 @@ class InfluenceSpectrum {
   // The coefficients I for offsets 0..Mx/2, 0..My/2 (for direct sums of a few elements).
   const InfluenceTable& table() const { return table_; }
 
-  // Forward (real -> spectrum) and backward transforms of the workspace buffers.
-  void forward(double* in, void* spectrum) const { fft_.forward(in, spectrum); }
-  void backward(void* spectrum, double* out) const { fft_.backward(spectrum, out); }
+  // Forward (real -> spectrum) and backward transforms of the workspace buffers, of the first `rows` rows.
+  void forward(double* in, void* spectrum, int rows = -1) const { fft_.forward(in, spectrum, rows); }
+  void backward(void* spectrum, double* out, int rows = -1) const { fft_.backward(spectrum, out, rows); }
 
  private:
   Kind kind_;
