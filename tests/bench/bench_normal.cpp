@@ -87,7 +87,8 @@ void fft_choice() {
     int M = 0;
     for (FftPlanning planning : {FftPlanning::estimate, FftPlanning::measure}) {
       const double t0 = cpu_ms();
-      const InfluenceSpectrum s(InfluenceSpectrum::Kind::linear, g.dx, g.dy, padded_size(g.nx), padded_size(g.ny), planning);
+      const FftShape shape = fft_shape(2 * g.nx - 2, 2 * g.ny - 2, true);
+      const InfluenceSpectrum s(InfluenceSpectrum::Kind::linear, g.dx, g.dy, shape.Mx, shape.My, planning);
       const double plan = cpu_ms() - t0;
       ConvolutionWorkspace ws;
       const double t = best_ms([&] { convolve(s, g, p.data(), u.data(), ws); }, 20);

@@ -112,19 +112,38 @@ TEST_CASE("InfluenceTable holds the coefficients of the grid offsets") {
   CHECK_THROWS_AS(InfluenceTable(1e-3, NAN, 3, 3), wrc::Error);
 }
 
-TEST_CASE("padded and FFT sizes") {
+TEST_CASE("FFT sizes: fft_size, and the shapes of least cost") {
+  const auto smooth = [](int v) {
+    for (int f : {2, 3, 5, 7})
+      while (v % f == 0) v /= f;
+    return v == 1;
+  };
   for (int n = 1; n < 3000; ++n) {
-    const int M = padded_size(n), P = fft_size(n);
-    CHECK(M / 2 >= n - 1);
+    const int P = fft_size(n);
     CHECK(P >= n);
-    for (int v : {M, P}) {
-      int r = v;
-      for (int f : {2, 3, 5, 7})
-        while (r % f == 0) r /= f;
-      CHECK(r == 1);
-    }
+    CHECK(smooth(P));
     CHECK(P <= std::max(16, n * 6 / 5 + 1));  // at most 1/5 larger
   }
+  // fft_shape: at least the sizes asked for, 7-smooth, never more than twice as large (plus 16), and the same for the
+  // same question (a fixed table, not a timing).
+  for (int nx = 1; nx < 400; nx += 7)
+    for (int ny = 1; ny < 400; ny += 11)
+      for (bool pruned : {true, false}) {
+        const FftShape s = fft_shape(nx, ny, pruned);
+        CAPTURE(nx);
+        CAPTURE(ny);
+        CHECK(s.Mx >= nx);
+        CHECK(s.My >= ny);
+        CHECK(smooth(s.Mx));
+        CHECK(smooth(s.My));
+        CHECK(s.Mx <= 2 * nx + 16);
+        CHECK(s.My <= 2 * ny + 16);
+        const FftShape again = fft_shape(nx, ny, pruned);
+        CHECK((again.Mx == s.Mx && again.My == s.My));
+      }
+  const FftShape big = fft_shape(5000, 3, true);  // beyond the measured lengths: fft_size
+  CHECK(big.Mx == fft_size(5000));
+  CHECK_THROWS_AS(fft_shape(0, 5, true), wrc::Error);
 }
 
 TEST_CASE("FFT product equals the direct product with the influence coefficients") {
@@ -176,7 +195,8 @@ TEST_CASE("the circulants are positive definite (the preconditioner needs it)") 
 TEST_CASE("cache: spectra shared by shape, products identical from several threads") {
   InfluenceCache cache;
   Grid a = Grid::square(30, 20, 0.2e-3), b = Grid::square(32, 19 + 1, 0.2e-3), c = Grid::square(30, 20, 0.25e-3);
-  REQUIRE(padded_size(30) == padded_size(32));
+  const FftShape sa = fft_shape(2 * 30 - 2, 2 * 20 - 2, true), sb = fft_shape(2 * 32 - 2, 2 * 20 - 2, true);
+  REQUIRE((sa.Mx == sb.Mx && sa.My == sb.My));
   CHECK(cache.get(a) == cache.get(b));  // same padded shape
   CHECK(cache.get(a) != cache.get(c));  // another element size
   CHECK(cache.size() == 2);

@@ -27,10 +27,6 @@ int fft_size(int n) {
   }
 }
 
-int padded_size(int n) {
-  if (n < 1) fail("padded_size: {} elements, expected at least 1", n);
-  return fft_size(std::max(1, 2 * n - 2));  // M >= 2n - 2 gives floor(M/2) >= n - 1
-}
 
 namespace {
 

@@ -126,9 +126,9 @@ ShearCache::ShearCache(const Material& material, FftPlanning planning, std::size
 std::shared_ptr<const ShearSpectrum> ShearCache::get(const Grid& grid, ShearSpectrum::Kind kind) const {
   validate(grid, "ShearCache");
   const bool linear = kind == ShearSpectrum::Kind::linear;
-  const auto key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy,
-                                   linear ? fft_size(2 * grid.nx - 1) : fft_size(grid.nx),
-                                   linear ? fft_size(2 * grid.ny - 1) : fft_size(grid.ny));
+  // The sizes of least cost (fft_shape, as the normal products); linear: every offset -(n-1)..n-1 its own slot.
+  const FftShape shape = linear ? fft_shape(2 * grid.nx - 1, 2 * grid.ny - 1, true) : fft_shape(grid.nx, grid.ny, false);
+  const auto key = std::make_tuple(static_cast<int>(kind), grid.dx, grid.dy, shape.Mx, shape.My);
   std::lock_guard lock(mutex_);
   if (auto it = entries_.find(key); it != entries_.end()) return it->second;
   if (entries_.size() >= max_entries_) entries_.clear();

@@ -22,11 +22,8 @@
 
 namespace wrc::contact {
 
-// The periodic size of the exact (linear) convolution for n elements: the smallest M with
-// floor(M/2) >= n - 1 (every offset -(n-1)..n-1 has its own slot) among the sizes of fft_size.
-int padded_size(int n);
-// The smallest size >= n among 7-smooth sizes up to 16 and 2^a {1, 9/8, 5/4, 3/2, 7/4} above: fast for
-// FFTW, and few distinct sizes so that grids of similar shape share a spectrum.
+// The smallest size >= n among 7-smooth sizes up to 16 and 2^a {1, 9/8, 5/4, 3/2, 7/4} above (fft_shape's sizes
+// beyond its table).
 int fft_size(int n);
 // The periodic size of the normal solver's FFT products: Mx >= min_x and My >= min_y that cost least by FFTW's
 // measured speed per length (the table in convolution.cpp, from bench_fft_sizes): rows(My) row transforms of length

@@ -20,10 +20,10 @@
 namespace wrc::contact {
 
 // The three kernels' spectra of one grid shape (element dx x dy, m), and their FFT plans.
-//  - linear: Mx, My = fft_size(2n - 1), so that every offset -(n-1)..n-1 has its own slot even for the odd B_xy;
+//  - linear: Mx, My >= 2n - 1 (fft_shape), so that every offset -(n-1)..n-1 has its own slot even for the odd B_xy;
 //    the circular convolution restricted to the grid is exactly the product with B. Serves grids with
 //    2 nx - 1 <= Mx and 2 ny - 1 <= My.
-//  - periodic: Mx, My = fft_size(n): the grid made periodic; holds the INVERSE of the 2 x 2 symbol at every
+//  - periodic: Mx, My >= n (fft_shape): the grid made periodic; holds the INVERSE of the 2 x 2 symbol at every
 //    frequency (B_xy's Nyquist offsets, which an odd kernel cannot have, are set to zero). Serves nx <= Mx, ny <= My.
 // Both scaled by 1/(Mx My) for FFTW's unnormalised round trip. Immutable once built.
 class ShearSpectrum {
