@@ -27,7 +27,6 @@ int fft_size(int n) {
   }
 }
 
-
 namespace {
 
 // FFTW's cost per length, as PrunedFft runs its transforms: ns per real row of that length (r2c + c2r) and per

@@ -75,8 +75,8 @@ std::vector<double> real_spectrum(const std::vector<double>& kernel, int Mx, int
 // The kernel is embedded centred (slot s holds offset s for s <= M/2 and s - M above).
 //  - linear: Mx, My >= 2 nx - 2, 2 ny - 2 (fft_shape); the circular convolution restricted to the grid is exactly
 //    the product with the influence matrix. Serves grids with nx - 1 <= Mx/2 and ny - 1 <= My/2. The
-//    transforms are pruned: rows beyond My/2 + 1 are known to be zero on the way in and are not needed
-//    on the way out, so the 2-D transform runs as batched row and column transforms.
+//    transforms are pruned: rows beyond the grid's are known to be zero on the way in and are not needed
+//    on the way out, so the 2-D transform runs as row transforms of the grid's rows and column transforms.
 //  - periodic: Mx, My >= nx, ny (fft_shape); the grid itself made periodic. Its circulant inverse is the
 //    preconditioner of the normal solver (cheap: no padding). Serves grids with nx <= Mx, ny <= My.
 // Immutable once built.
