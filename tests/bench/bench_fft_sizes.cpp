@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < M * K; ++i) real[i] = i % 5, cols[i][0] = i % 3, cols[i][1] = 0;
     int n = M;
     // Rows: K real rows of length M, contiguous, one row plan run on each (PrunedFft's plans 0 and 3).
-    const unsigned row_flags = FFTW_ESTIMATE | (M % 2 ? FFTW_UNALIGNED : 0u);
+    const unsigned row_flags = FFTW_ESTIMATE | (fftw_alignment_of(real + M) == fftw_alignment_of(real) ? 0u : FFTW_UNALIGNED);
     fftw_plan r2c = fftw_plan_dft_r2c_1d(M, real, rows, row_flags);
     fftw_plan c2r = fftw_plan_dft_c2r_1d(M, rows, real, row_flags);
     // Columns: K complex columns of length M, stride K, in place (PrunedFft's plans 1 and 2).

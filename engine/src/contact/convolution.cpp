@@ -109,11 +109,15 @@ PrunedFft::PrunedFft(int Mx, int My, int rows, FftPlanning planning) : Mx_(Mx), 
   bool planned = false;
   if (in && out && spec) {
     // One row transform (length Mx), run on each row that holds data, and the column transforms (length My,
-    // stride H) of all H columns, in place in the complex buffer. Rows of an odd length start at alternating
-    // alignments, which FFTW's new-array execution allows only for plans made unaligned.
+    // stride H) of all H columns, in place in the complex buffer. FFTW's new-array execution needs arrays aligned
+    // as the plan's: if the rows do not all start so (an odd Mx with FFTW's 16-byte SIMD alignment), the row plans
+    // are made unaligned.
     std::lock_guard lock(fftw_planner_mutex());
     const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-    const unsigned row_flags = flags | (Mx % 2 ? FFTW_UNALIGNED : 0u);
+    const bool rows_aligned = fftw_alignment_of(in + Mx) == fftw_alignment_of(in) &&
+                              fftw_alignment_of(out + Mx) == fftw_alignment_of(out) &&
+                              fftw_alignment_of(spec[H]) == fftw_alignment_of(spec[0]);
+    const unsigned row_flags = flags | (rows_aligned ? 0u : FFTW_UNALIGNED);
     int ny = My;
     plans_[0] = fftw_plan_dft_r2c_1d(Mx, in, spec, row_flags);
     plans_[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
