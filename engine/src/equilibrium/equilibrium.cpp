@@ -493,8 +493,9 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   // The normal problems are solved only as well as the step needs: to 1e-2 while > 5 % off the load (their force
   // is then ~1e-3 off, well within what the step needs; 1e-3 solves cost 10 % more in all), to normal_tolerance
   // while > 1e-3 off, then at the model's own tolerance (the result's). Only an evaluation at normal_tolerance or
-  // tighter may conclude; a looser one brackets only when it is more than 10x its tolerance off the load (nearer,
-  // its side of the load is not sure), but its secant step counts.
+  // tighter may conclude, and one at normal_tolerance is evaluated once more at the model's tolerance first; a
+  // looser one brackets only when it is more than 10x its tolerance off the load (nearer, its side of the load is
+  // not sure), but its secant step counts.
   ContactResult cur;
   const double target = std::cbrt(Fz * Fz);
   const double tight = std::max(opt.normal_tolerance, model.options().normal.tolerance), loose = std::max(tight, 1e-2);
