@@ -33,9 +33,9 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   EquilibriumOptions opt;
   opt.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
-  // The secant's iterates are no time steps: start each from the last alone.
+  // The secant's iterates are no time steps: start each from the last alone (the evaluations then keep no older
+  // areas, so a later contact() step cannot extrapolate across them either).
   workspace_->extrapolate = false;
-  workspace_->before[side].clear();
   // The start: the approach of the last step, extrapolated linearly in time with the one before when steps are
   // (extrapolate): it follows the load, where the height follows the rail.
   std::optional<double> start = last_approach_[side];
