@@ -140,6 +140,51 @@ TEST_CASE("fast solver = dense solver on 120 random non-Hertzian patches, both c
           worst_pressure, ", max |dF|/F = ", worst_force);
 }
 
+// A weighted force (sum w p dA = F, the approach entering the gap as approach w) is the penetration problem with
+// h + approach w: solve that one for a chosen approach, prescribe its weighted force, and both solvers must find the
+// same approach and pressures. Weights vary across the rows, as the vertical parts of a curved surface's normals.
+TEST_CASE("weighted force control = the penetration problem with h + approach w, fast and dense") {
+  std::mt19937 rng(8086);
+  const NormalSolver solver(steel);
+  NormalWorkspace ws;
+  NormalOptions tight;
+  tight.tolerance = 1e-11;
+  for (int t = 0; t < 24; ++t) {
+    const NormalCase c = t < 20 ? random_case(rng) : random_case(rng, 34, 44);  // the last ones nested
+    const Grid& g = c.grid;
+    const double w0 = std::uniform_real_distribution<double>(0.3, 1.0)(rng), slope = 0.6 * (1 - w0);
+    std::vector<double> w(g.size());
+    for (int k = 0; k < g.size(); ++k) w[k] = w0 + slope * (k / g.nx) / std::max(1, g.ny - 1);
+    double hmax = 0;
+    for (double h : c.h) hmax = std::max(hmax, h);
+    const double approach = std::uniform_real_distribution<double>(-0.3, 0.5)(rng) * hmax;
+    std::vector<double> shifted = c.h;
+    for (int k = 0; k < g.size(); ++k) shifted[k] += approach * w[k];
+    const NormalSolution ref = solve_normal_dense(steel, g, shifted, NormalLoad::penetration());
+    double F = 0;
+    for (int k = 0; k < g.size(); ++k) F += w[k] * ref.pressure[k] * g.element_area();
+    REQUIRE(F > 0);
+    const NormalLoad load = NormalLoad::normal_force(F, w);
+    const NormalSolution fast = solver.solve(g, c.h, load, ws, tight);
+    const NormalSolution dense = solve_normal_dense(steel, g, c.h, load);
+    CAPTURE(t);
+    for (const NormalSolution* s : {&fast, &dense}) {
+      CHECK(s->approach == doctest::Approx(approach).scale(hmax).epsilon(1e-8));
+      double dp = 0, Fw = 0;
+      int different = 0;
+      for (int k = 0; k < g.size(); ++k) {
+        dp = std::max(dp, std::abs(s->pressure[k] - ref.pressure[k]));
+        different += (s->pressure[k] > 0) != (ref.pressure[k] > 0);
+        Fw += w[k] * s->pressure[k] * g.element_area();
+      }
+      CHECK(different == 0);
+      CHECK(dp < 1e-6 * ref.max_pressure);
+      CHECK(Fw == doctest::Approx(F).epsilon(1e-10));
+      CHECK(s->residual.relative < 1e-9);  // its gaps include approach w
+    }
+  }
+}
+
 TEST_CASE("plain CG, no nested start, and a warm start reach the same solution") {
   std::mt19937 rng(5);
   const NormalSolver solver(steel);
@@ -285,6 +330,15 @@ TEST_CASE("bad input: a wrc::Error that names the problem") {
     CHECK(both({2.1e11, nu}, g, h, NormalLoad::penetration()).find("Poisson's ratio") != std::string::npos);
   CHECK(both(steel, g, h, NormalLoad::normal_force(-1)).find("F = -1 N") != std::string::npos);
   CHECK(both(steel, g, h, NormalLoad::normal_force(NAN)).find("normal force") != std::string::npos);
+  CHECK(both(steel, g, h, NormalLoad::normal_force(1, {1.0, 2.0})).find("weights has 2 values") != std::string::npos);
+  std::vector<double> w(g.size(), 1.0);
+  w[4] = 0;
+  CHECK(both(steel, g, h, NormalLoad::normal_force(1, w)).find("weight 0 at element 4") != std::string::npos);
+  w[4] = NAN;
+  CHECK(both(steel, g, h, NormalLoad::normal_force(1, w)).find("at element 4 must be finite") != std::string::npos);
+  NormalLoad weighted_penetration = NormalLoad::penetration();
+  weighted_penetration.weights.assign(g.size(), 1.0);
+  CHECK(both(steel, g, h, weighted_penetration).find("weights apply to a prescribed force only") != std::string::npos);
   NormalOptions o;
   o.tolerance = 0;
   CHECK(both(steel, g, h, NormalLoad::penetration(), o).find("tolerance") != std::string::npos);

@@ -5,8 +5,9 @@
 // of normal.hpp. The iteration (after Polonsky and Keer, Wear 231, 1999) runs CG on the working set
 // S = {p > 0} U {p = 0 and g < 0}, projects p onto p >= 0 after every step, and restarts the conjugate
 // directions (beta = 0) whenever S changes. For a prescribed force the approach is the Lagrange multiplier
-// of sum p dA = F: the residual and the search directions are kept at zero mean on S, so a step keeps the
-// force, and a projection that clips pressures is followed by a rescaling to the force.
+// of sum w p dA = F (weights w, all 1 unless given): the residual and the search directions are kept orthogonal
+// to w on S (zero mean for w = 1), so a step keeps the force, and a projection that clips pressures is followed
+// by a rescaling to the force.
 //
 // Preconditioner: z = P_S C^-1 P_S r, where C is the circulant of the zero-padded periodic grid (whose
 // restriction to the grid is K exactly) inverted by FFT. K's symbol behaves like 1/|wave number|, so plain
@@ -147,19 +148,21 @@ struct Start {
 
 // Nested start: the coarse grid's solution, interpolated, is a start whose contact set is right to a coarse
 // element or two, so the fine grid mostly runs the CG's converging phase. Otherwise the warm start if given.
-// solve_coarse(coarse grid, its h, its options) is the solver itself, one level down.
+// solve_coarse(coarse grid, its h, its load, its options) is the solver itself, one level down.
 template <class SolveCoarse>
-Start make_start(const Grid& grid, std::span<const double> h, const NormalOptions& options,
+Start make_start(const Grid& grid, std::span<const double> h, const NormalLoad& load, const NormalOptions& options,
                  SolveCoarse&& solve_coarse) {
   Start start;
   if (options.initial_pressure.empty() && options.nested && grid.size() > options.coarse_limit && grid.nx >= 4 &&
       grid.ny >= 4) {
     const Grid coarse = coarse_grid(grid);
     const std::vector<double> hc = restrict_to(grid, coarse, h);
+    NormalLoad coarse_load = load;
+    if (!load.weights.empty()) coarse_load.weights = restrict_to(grid, coarse, load.weights);
     NormalOptions coarse_options = options;
     coarse_options.tolerance = std::max(options.tolerance, 1e-2);  // a start only: the coarse grid's own
                                                                    // discretisation error is of this order
-    const NormalSolution sc = solve_coarse(coarse, hc, coarse_options);
+    const NormalSolution sc = solve_coarse(coarse, hc, coarse_load, coarse_options);
     start.iterations = sc.iterations + sc.coarse_iterations;
     start.products = sc.products + sc.coarse_products;
     if (sc.force > 0) {
@@ -182,17 +185,9 @@ Start make_start(const Grid& grid, std::span<const double> h, const NormalOption
   return (s0 + s1) + (s2 + s3);
 }
 
-// z = z on S, 0 elsewhere; returns the sum of z.
-[[gnu::noinline]] double mask_and_sum(const unsigned char* S, double* z, int n) {
-  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int k = 0;
-  for (; k + 4 <= n; k += 4) {
-    z[k] = S[k] ? z[k] : 0.0, z[k + 1] = S[k + 1] ? z[k + 1] : 0.0;
-    z[k + 2] = S[k + 2] ? z[k + 2] : 0.0, z[k + 3] = S[k + 3] ? z[k + 3] : 0.0;
-    s0 += z[k], s1 += z[k + 1], s2 += z[k + 2], s3 += z[k + 3];
-  }
-  for (; k < n; ++k) z[k] = S[k] ? z[k] : 0.0, s0 += z[k];
-  return (s0 + s1) + (s2 + s3);
+// z = z on S, 0 elsewhere.
+[[gnu::noinline]] void mask(const unsigned char* S, double* z, int n) {
+  for (int k = 0; k < n; ++k) z[k] = S[k] ? z[k] : 0.0;
 }
 
 // The projected CG on one grid (see the top of the file), on the workspace's vectors: p the pressure, u = K p,
@@ -205,6 +200,7 @@ class ProjectedCg {
         n_(grid.size()), dA_(grid.element_area()), direct_limit_(K.direct_limit()), ws_(ws), p_(ws.p), u_(ws.u),
         r_(ws.r), z_(ws.z), d_(ws.d), q_(ws.q) {
     for (auto* v : {&p_, &u_, &r_, &z_, &d_, &q_}) v->assign(n_, 0.0);
+    if (force_control_) w_ = load.weights.empty() ? std::vector<double>(n_, 1.0) : load.weights;
     ws_.active.assign(n_, 0);
     ws_.previous_active.assign(n_, 0);
   }
@@ -221,7 +217,6 @@ class ProjectedCg {
   struct Residual {
     bool changed;  // the working set differs from the previous iteration's
     double error;  // max |r|
-    int count;     // elements in the working set
   };
   Residual update_working_set();
   bool find_direction(const Residual& res, bool precondition, double& rz, double& dq);
@@ -238,6 +233,8 @@ class ProjectedCg {
   const int direct_limit_;  // clipped elements up to this count are added back by direct sums
   NormalWorkspace& ws_;
   std::vector<double>&p_, &u_, &r_, &z_, &d_, &q_;
+  std::vector<double> w_;  // the force's weights (force control)
+  double ww_ = 0;          // sum of w^2 on S
   double delta_ = 0;  // the approach
   double rz_previous_ = 0;
   bool have_direction_ = false, fresh_ = true;  // fresh: u = K p by a product, not by updates
@@ -247,9 +244,7 @@ class ProjectedCg {
 
 // A prescribed force is kept by scaling p (and u = K p with it).
 void ProjectedCg::rescale_to_force() {
-  double sum = 0;
-  for (double v : p_) sum += v;
-  const double f = load_.force / (sum * dA_);
+  const double f = load_.force / (dot(w_.data(), p_.data(), n_) * dA_);
   for (int k = 0; k < n_; ++k) p_[k] *= f, u_[k] *= f;
 }
 
@@ -283,44 +278,54 @@ ProjectedCg::Residual ProjectedCg::update_working_set() {
   const double *hp = h_.data(), *p = p_.data(), *u = u_.data();
   double* r = r_.data();
   const int n = n_;
-  if (force_control_) {  // the approach seen by the current contact, then by the working set
-    double sum = 0;
-    int count = 0;
-    for (int k = 0; k < n; ++k)
-      if (p[k] > 0) sum += u[k] - hp[k], ++count;
-    delta_ = sum / count;
+  Residual res{false, 0.0};
+  double error = 0;
+  int changed = 0;
+  if (!force_control_) {  // g = u - h
+    for (int k = 0; k < n; ++k) {
+      const double e = u[k] - hp[k];
+      const bool in = p[k] > 0 || e < 0;
+      S[k] = in;
+      changed |= in != S_previous[k];
+      r[k] = in ? -e : 0.0;
+      error = std::max(error, std::abs(r[k]));
+    }
+    res.changed = changed;
+    res.error = error;
+    return res;
   }
-  Residual res{false, 0.0, 0};
-  double sum = 0, error = 0;
-  int changed = 0, count = 0;
+  // g = u - h - delta w. The approach seen by the current contact (least squares of u - h = delta w on it), then
+  // re-centred on the working set, where the residual is made orthogonal to w.
+  const double* w = w_.data();
+  double we = 0, ww = 0;
+  for (int k = 0; k < n; ++k)
+    if (p[k] > 0) we += w[k] * (u[k] - hp[k]), ww += w[k] * w[k];
+  delta_ = we / ww;
   const double delta = delta_;
+  we = 0, ww = 0;
   for (int k = 0; k < n; ++k) {
-    const double e = u[k] - hp[k];  // g = e - delta
-    const bool in = p[k] > 0 || e < delta;
+    const double e = u[k] - hp[k];
+    const bool in = p[k] > 0 || e < delta * w[k];
     S[k] = in;
     changed |= in != S_previous[k];
-    r[k] = in ? delta - e : 0.0;
-    sum += in ? e : 0.0;
-    count += in;
+    r[k] = in ? delta * w[k] - e : 0.0;
+    we += in ? w[k] * e : 0.0;
+    ww += in ? w[k] * w[k] : 0.0;
+  }
+  const double shift = we / ww - delta_;
+  delta_ += shift;
+  ww_ = ww;
+  for (int k = 0; k < n; ++k) {
+    r[k] += S[k] ? shift * w[k] : 0.0;
     error = std::max(error, std::abs(r[k]));
   }
   res.changed = changed;
-  res.count = count;
-  if (force_control_) {  // re-centre on S: the residual has zero mean there
-    const double shift = sum / count - delta_;
-    delta_ += shift;
-    error = 0;
-    for (int k = 0; k < n; ++k) {
-      r[k] += S[k] ? shift : 0.0;
-      error = std::max(error, std::abs(r[k]));
-    }
-  }
   res.error = error;
   return res;
 }
 
-// Preconditioned residual z on S (zero mean on S for a prescribed force), the conjugate direction d (restarted
-// when S changed) and q = K d. Returns false if rz or dq lost their sign to rounding.
+// Preconditioned residual z on S (orthogonal to w on S for a prescribed force), the conjugate direction d
+// (restarted when S changed) and q = K d. Returns false if rz or dq lost their sign to rounding.
 bool ProjectedCg::find_direction(const Residual& res, bool precondition, double& rz, double& dq) {
   if (precondition)
     K_.invert(r_, z_);
@@ -329,11 +334,15 @@ bool ProjectedCg::find_direction(const Residual& res, bool precondition, double&
   const unsigned char* S = ws_.active.data();
   double *z = z_.data(), *d = d_.data();
   const int n = n_;
-  const double zsum = mask_and_sum(S, z, n);
+  mask(S, z, n);
   rz = dot(r_.data(), z, n);
-  const double zmean = force_control_ ? zsum / res.count : 0.0;  // r sums to zero on S: rz is unchanged
   const double beta = have_direction_ && !res.changed ? rz / rz_previous_ : 0.0;
-  for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] - zmean + beta * d[k] : 0.0;
+  if (force_control_) {  // z minus its part along w (r is orthogonal to w on S: rz is unchanged)
+    const double c = dot(w_.data(), z, n) / ww_, *w = w_.data();
+    for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] - c * w[k] + beta * d[k] : 0.0;
+  } else {
+    for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] + beta * d[k] : 0.0;
+  }
   K_.apply(d_, q_);
   dq = dot(d, q_.data(), n);
   return dq > 0 && rz > 0;
@@ -495,9 +504,11 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
                                            double hmax, std::vector<double>& pressure, std::vector<int>& penetrating) {
   const Grid sub = w.of(grid);
   const std::vector<double> hs = cut(grid, w, h);
+  NormalLoad sub_load = load;
+  if (!load.weights.empty()) sub_load.weights = cut(grid, w, load.weights);
   Start sub_start{start.pressure.empty() ? std::vector<double>{} : cut(grid, w, start.pressure), start.iterations,
                   start.products};
-  const NormalSolution part = solve_grid(cache, factor, sub, hs, load, ws, options, sub_start, hmax);
+  const NormalSolution part = solve_grid(cache, factor, sub, hs, sub_load, ws, options, sub_start, hmax);
 
   NormalSolution s;
   s.grid = grid;
@@ -518,7 +529,7 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
     for (int i = 0; i < grid.nx; ++i) {
       const int k = grid.index(i, j);
       const bool inside = i >= w.i0 && i <= w.i1 && j >= w.j0 && j <= w.j1;
-      if (!inside && u[k] - h[k] - s.approach < limit) penetrating.push_back(k);
+      if (!inside && u[k] - h[k] - s.approach * load.weight(k) < limit) penetrating.push_back(k);
     }
   if (!penetrating.empty()) return std::nullopt;
   detail::finish_solution(s, u, h);
@@ -533,9 +544,9 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
   const double hmax = *std::max_element(h.begin(), h.end());
   if ((force_control && load.force == 0) || (!force_control && hmax <= 0)) return detail::zero_solution(grid, h, load);
 
-  Start start = make_start(grid, h, options, [&](const Grid& coarse, std::span<const double> hc,
-                                                 const NormalOptions& coarse_options) {
-    return solve_checked(coarse, hc, load, ws, coarse_options);
+  Start start = make_start(grid, h, load, options, [&](const Grid& coarse, std::span<const double> hc,
+                                                       const NormalLoad& coarse_load, const NormalOptions& coarse_options) {
+    return solve_checked(coarse, hc, coarse_load, ws, coarse_options);
   });
   const double factor = material_.pair_compliance();
   // The contact lies where the start says, to a few elements: solve on that window, check the whole grid (one
@@ -580,15 +591,23 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   auto& d = ws.d;
   auto& q = ws.q;
   for (auto* v : {&r, &z, &d, &q}) v->assign(n, 0.0);
-  // Plain PCG on the fixed set (projected to sum dp = 0 for a prescribed force); x = 0 to start.
-  double rhs_norm = 0, mean = 0;
-  for (int k = 0; k < n; ++k)
-    if (A[k]) mean += dh[k];
-  mean = force_control ? mean / count : 0.0;
+  // Plain PCG on the fixed set (projected to sum w dp = 0 for a prescribed force, with the force's weights w);
+  // x = 0 to start. along_w(v): the factor of v's part along w on the set.
+  const NormalLoad& load = solution.load;
+  double ww = 0;
+  for (int k = 0; k < n; ++k) ww += A[k] ? load.weight(k) * load.weight(k) : 0.0;
+  auto along_w = [&](const std::vector<double>& v) {
+    double s = 0;
+    for (int k = 0; k < n; ++k) s += A[k] ? load.weight(k) * v[k] : 0.0;
+    return force_control ? s / ww : 0.0;
+  };
+  double rhs_norm = 0;
   for (int k = 0; k < n; ++k) {
-    r[k] = A[k] ? dh[k] - mean : 0.0;
-    rhs_norm = std::max(rhs_norm, std::abs(A[k] ? dh[k] : 0.0));
+    r[k] = A[k] ? dh[k] : 0.0;
+    rhs_norm = std::max(rhs_norm, std::abs(r[k]));
   }
+  const double mean = along_w(r);
+  for (int k = 0; k < n; ++k) r[k] -= A[k] ? mean * load.weight(k) : 0.0;
   double dapproach = -mean;
   if (rhs_norm == 0) {
     detail::finish_response(out, grid);
@@ -604,30 +623,27 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
       fail("NormalSolver::response: no convergence in {} CG iterations ({:.3g} of the perturbation)", max_iterations,
            error / rhs_norm);
     K.invert(r, z);
-    double rz = 0, zsum = 0;
+    double rz = 0;
     for (int k = 0; k < n; ++k) {
       z[k] = A[k] ? z[k] : 0.0;
       rz += r[k] * z[k];
-      zsum += z[k];
     }
-    const double zmean = force_control ? zsum / count : 0.0;
+    const double zw = along_w(z);
     const double beta = it == 0 ? 0.0 : rz / rz_previous;
-    for (int k = 0; k < n; ++k) d[k] = A[k] ? z[k] - zmean + beta * d[k] : 0.0;
+    for (int k = 0; k < n; ++k) d[k] = A[k] ? z[k] - zw * load.weight(k) + beta * d[k] : 0.0;
     K.apply(d, q);
     double dq = 0;
     for (int k = 0; k < n; ++k) dq += d[k] * q[k];
     if (!(dq > 0) || !(rz > 0)) break;  // converged to rounding
     const double alpha = rz / dq;
-    double rsum = 0;
     for (int k = 0; k < n; ++k) {
       x[k] += alpha * d[k];
       r[k] -= A[k] ? alpha * q[k] : 0.0;
-      rsum += r[k];
     }
-    if (force_control) {  // the approach absorbs the mean of the residual
-      const double m = rsum / count;
+    if (force_control) {  // the approach absorbs the residual's part along w
+      const double m = along_w(r);
       dapproach -= m;
-      for (int k = 0; k < n; ++k) r[k] -= A[k] ? m : 0.0;
+      for (int k = 0; k < n; ++k) r[k] -= A[k] ? m * load.weight(k) : 0.0;
     }
     rz_previous = rz;
     out.iterations = it + 1;

@@ -19,6 +19,14 @@ void validate_normal_input(const Material& material, const Grid& grid, std::span
       fail("{}: h is not finite at element {} (i = {}, j = {}): {}", context, k, k % grid.nx, k / grid.nx, h[k]);
   if (load.control == NormalLoad::Control::force && (!std::isfinite(load.force) || load.force < 0))
     fail("{}: prescribed normal force F = {} N must be finite and >= 0", context, load.force);
+  if (!load.weights.empty()) {
+    if (load.control != NormalLoad::Control::force) fail("{}: weights apply to a prescribed force only", context);
+    if (load.weights.size() != h.size())
+      fail("{}: weights has {} values for {} elements", context, load.weights.size(), h.size());
+    for (std::size_t k = 0; k < h.size(); ++k)
+      if (!std::isfinite(load.weights[k]) || !(load.weights[k] > 0))
+        fail("{}: weight {} at element {} must be finite and > 0", context, load.weights[k], k);
+  }
   if (!std::isfinite(options.tolerance) || !(options.tolerance > 0) || options.tolerance >= 1)
     fail("{}: tolerance {} must be in ]0, 1[", context, options.tolerance);
   if (options.max_iterations < 0) fail("{}: max_iterations {} must be >= 0", context, options.max_iterations);
@@ -46,9 +54,10 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
     for (int i = 0; i < grid.nx; ++i) {
       const int k = grid.index(i, j);
       const double p = s.pressure[k];
-      const double g = u[k] - h[k] - s.approach;
+      const double shift = s.approach * s.load.weight(k);
+      const double g = u[k] - h[k] - shift;
       s.gap[k] = g;
-      hmax = std::max(hmax, h[k] + s.approach);
+      hmax = std::max(hmax, h[k] + shift);
       c.negative_pressure = std::max(c.negative_pressure, -p);
       c.product = std::max(c.product, std::abs(p * g));
       if (p > 0) {
@@ -85,8 +94,11 @@ NormalSolution zero_solution(const Grid& grid, std::span<const double> h, const 
   s.grid = grid;
   s.load = load;
   s.pressure.assign(grid.size(), 0.0);
-  // For F = 0 the approach is any value <= -max h: report the one at which the bodies just touch.
-  if (load.control == NormalLoad::Control::force) s.approach = -*std::max_element(h.begin(), h.end());
+  // For F = 0 the approach is any value <= -max h / w: report the one at which the bodies just touch.
+  if (load.control == NormalLoad::Control::force) {
+    s.approach = INFINITY;
+    for (std::size_t k = 0; k < h.size(); ++k) s.approach = std::min(s.approach, -h[k] / load.weight(k));
+  }
   const std::vector<double> u(grid.size(), 0.0);
   finish_solution(s, u, h);
   return s;

@@ -102,9 +102,11 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
     for (int a = 0; a < m; ++a) rhs[a] = h[active[a]];
     Eigen::VectorXd pa = block.solve(rhs);
     double approach = 0;
-    if (force_control) {  // p = K^-1 (h + approach 1), sum p dA = F
-      const Eigen::VectorXd v = block.solve(Eigen::VectorXd::Ones(m));
-      approach = (load.force / dA - pa.sum()) / v.sum();
+    if (force_control) {  // p = K^-1 (h + approach w), sum w p dA = F
+      Eigen::VectorXd w(m);
+      for (int a = 0; a < m; ++a) w[a] = load.weight(active[a]);
+      const Eigen::VectorXd v = block.solve(w);
+      approach = (load.force / dA - w.dot(pa)) / w.dot(v);
       pa += approach * v;
     }
     std::fill(s.pressure.begin(), s.pressure.end(), 0.0);
@@ -124,7 +126,7 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
     const double scale = hmax + approach;
     bool added = false;
     for (int k = 0; k < n; ++k)
-      if (!in[k] && u[k] - h[k] - approach < -1e-12 * scale) {
+      if (!in[k] && u[k] - h[k] - approach * load.weight(k) < -1e-12 * scale) {
         in[k] = 1;
         added = true;
       }
@@ -157,9 +159,11 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
   Eigen::VectorXd rhs(m);
   for (int a = 0; a < m; ++a) rhs[a] = dh[active[a]];
   Eigen::VectorXd dp = block.solve(rhs);
-  if (solution.load.control == NormalLoad::Control::force) {  // sum dp = 0: the approach moves instead
-    const Eigen::VectorXd v = block.solve(Eigen::VectorXd::Ones(m));
-    r.approach = -dp.sum() / v.sum();
+  if (solution.load.control == NormalLoad::Control::force) {  // sum w dp = 0: the approach moves instead
+    Eigen::VectorXd w(m);
+    for (int a = 0; a < m; ++a) w[a] = solution.load.weight(active[a]);
+    const Eigen::VectorXd v = block.solve(w);
+    r.approach = -w.dot(dp) / w.dot(v);
     dp += r.approach * v;
   }
   for (int a = 0; a < m; ++a) r.pressure[active[a]] = dp[a];

@@ -2,10 +2,10 @@
 //
 // Given the undeformed inter-penetration h at the element centres (m, > 0 where the undeformed surfaces
 // overlap) find the pressure p >= 0 (Pa) with
-//   g = 2 D p - (h + approach) >= 0,   p >= 0,   p g = 0   at every element,
+//   g = 2 D p - (h + approach w) >= 0,   p >= 0,   p g = 0   at every element,
 // where 2 D is the influence matrix of the pair (influence.hpp) and g the deformed gap (m). With a
 // prescribed penetration `approach` = 0 (h says everything); with a prescribed normal force F (N) the
-// uniform rigid approach (m) is the extra unknown and sum p dA = F.
+// rigid approach (m) is the extra unknown and sum w p dA = F (weights w: NormalLoad, all 1 unless given).
 //
 // Two solvers give the same answer: solve_normal_dense, the paper's active-set iteration with a dense
 // Cholesky solve (the reference, O(n^3)), and NormalSolver, conjugate gradients on the active set with
@@ -18,6 +18,7 @@
 #include "wrc/contact/material.hpp"
 
 #include <span>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -27,9 +28,16 @@ struct NormalLoad {
   enum class Control { penetration, force };
   Control control = Control::penetration;
   double force = 0;  // N, for Control::force (>= 0)
+  // For Control::force only: weights w > 0 per element (empty: all 1). The prescribed force is then
+  // sum w p dA = F and the approach enters the gap as approach * w. On a curved surface whose element normals
+  // differ, w = each element's vertical normal part makes F the vertical force and the approach the vertical one.
+  std::vector<double> weights;
 
+  double weight(std::size_t k) const { return weights.empty() ? 1.0 : weights[k]; }
   static NormalLoad penetration() { return {}; }
-  static NormalLoad normal_force(double F) { return {Control::force, F}; }
+  static NormalLoad normal_force(double F, std::vector<double> weights = {}) {
+    return {Control::force, F, std::move(weights)};
+  }
 };
 
 struct NormalOptions {
@@ -85,8 +93,8 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
                                   const NormalLoad& load, const NormalOptions& options = {});
 
 // Linearised response of a converged solution: the change of the pressure per unit of a perturbation dh
-// of h (m), on the solution's contact set held fixed: 2 D_AA dp_A = dh_A (+ d approach for a prescribed
-// force, where sum dp = 0). Valid while the contact set does not change (generic).
+// of h (m), on the solution's contact set held fixed: 2 D_AA dp_A = dh_A (+ d approach w for a prescribed
+// force, where sum w dp = 0). Valid while the contact set does not change (generic).
 struct NormalResponse {
   std::vector<double> pressure;  // dp (Pa per unit of the perturbation), per element
   double force = 0;              // dF (N)
