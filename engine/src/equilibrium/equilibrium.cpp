@@ -487,9 +487,10 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   res.side = side;
   res.Fz = Fz;
   const double z_touch = touch_height(model.geometry(), side, y, yaw, roll);
-  // phi(a) = Fz(a)^(2/3) - Fz^(2/3) of the approach a = z_touch - z is close to linear and passes through
-  // (0, -Fz^(2/3)): a Hertz contact has F ~ a^1.5 (a conformal one grows a little faster or slower). Secant steps
-  // on it, kept inside the bracket once the load is passed, converge in a few evaluations without sensitivities.
+  // Predictions (below) bring the approach a = z_touch - z within ~1e-6 of the load's in two evaluations. From
+  // there, or without them: phi(a) = Fz(a)^(2/3) - Fz^(2/3) is close to linear and passes through (0, -Fz^(2/3)): a
+  // Hertz contact has F ~ a^1.5 (a conformal one grows a little faster or slower). Secant steps on it, kept inside
+  // the bracket once the load is passed, converge in a few evaluations without sensitivities.
   // The normal problems are solved only as well as the step needs: to 1e-2 while > 5 % off the load (their force
   // is then ~1e-3 off, well within what the step needs; 1e-3 solves cost 10 % more in all), to normal_tolerance
   // while > 1e-3 off, then at the model's own tolerance (the result's). Only an evaluation at normal_tolerance or
@@ -520,6 +521,22 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     return std::cbrt(std::pow(std::max(cur.wheel[side].force.z(), 0.0), 2)) - target;
   };
   auto tolerance_for = [&](double error) { return error > 0.05 ? loose : error > 1e-3 ? tight : final_tolerance; };
+  // A prediction: the wheel's area solved for Fz itself on the grid of approach a (its normals' vertical parts as
+  // weights), whose multiplier is the further approach that carries Fz there; a moves on by it. False when the wheel
+  // has several areas or steep normals (evaluate_contact then solved the penetration) or the step is unusable.
+  auto predict = [&](double& a, double tol) {
+    ContactRequest req;
+    req.only_side = side;
+    req.tolerance = tolerance = tol;
+    req.vertical_force = Fz;
+    evaluate_at(a, req);
+    const auto& patches = cur.wheel[side].patches;
+    if (patches.size() != 1 || patches[0].solution.load.control != contact::NormalLoad::Control::force) return false;
+    const double next = a + patches[0].solution.approach;
+    if (!(next > 0)) return false;
+    a = std::min(next, opt.max_penetration);
+    return true;
+  };
   const double ftol = (2.0 / 3.0) * opt.force_tolerance * target;  // |F - Fz| <= tol Fz, in phi's units
   double a0 = 0, f0 = -target;                                       // the exact point of no contact
   double a1 = start && *start > 0 ? std::min(*start, opt.max_penetration) : opt.initial_approach;
@@ -548,7 +565,14 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     return true;
   };
   try {
-    double f1 = phi(a1, start ? tight : loose);
+    // Two predictions first: one on the grid of the start (loose when cold: its grid is too small for Fz anyway),
+    // then one at the model's tolerance on the grid the first leads to, which corrects what the first one's grid
+    // and linearised geometry missed. Its own error is the grid's motion with the pose, which the fixed-grid model
+    // leaves out: 2e-4 (tread) to 1e-2 (flange root) of its step, so the evaluation at the model's tolerance that
+    // follows mostly concludes (3 evaluations in all); otherwise the secant steps below go on from it, as they do
+    // for a wheel with several areas or steep normals (no prediction).
+    bool predicted = opt.max_evaluations >= 4 && predict(a1, start ? tight : loose) && predict(a1, final_tolerance);
+    double f1 = phi(a1, predicted ? final_tolerance : start ? tight : loose);
     for (int it = 0;; ++it) {
       const double error = std::abs(cur.wheel[side].force.z() - Fz) / Fz;
       const bool settled = tolerance <= tight;  // a looser evaluation may be off by about its tolerance

@@ -298,7 +298,7 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     pc.t2 = surf.t2(j0);
     pc.normal = surf.normal(j0);
   }
-  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, ws);
+  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, surf.normal_z, ws);
   {
     PhaseTimer t(ws, ws.times.results);
     conformal_results(g.side[side].wheel, st.frame(), pc);

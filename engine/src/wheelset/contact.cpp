@@ -275,18 +275,34 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
   return true;
 }
 
+// The load of an area: its penetration, or the request's vertical force with the rows' vertical normal parts as
+// weights. A vertical approach a deepens h by a n_z (h is measured along the rows' normals), and the vertical force
+// is sum n_z p dA: the solution is the pose's penetration problem with h + a n_z, a the multiplier. Rows less upright
+// than kVerticalWeightMin: the penetration.
+contact::NormalLoad area_load(const ContactRequest& request, const contact::Grid& grid,
+                              const std::vector<double>& vertical) {
+  if (!request.vertical_force) return contact::NormalLoad::penetration();
+  std::vector<double> w(static_cast<std::size_t>(grid.size()));
+  for (int j = 0; j < grid.ny; ++j) {
+    const double v = vertical[static_cast<std::size_t>(j)];
+    if (!(v >= kVerticalWeightMin)) return contact::NormalLoad::penetration();
+    std::fill_n(w.begin() + grid.index(0, j), grid.nx, v);
+  }
+  return contact::NormalLoad::normal_force(*request.vertical_force, std::move(w));
+}
+
 }  // namespace
 
 contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
                                           const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
-                                          ContactWorkspace& ws) {
+                                          const std::vector<double>& vertical, ContactWorkspace& ws) {
   PhaseTimer t(ws, ws.times.solve);
   const ContactOptions& opt = model.options();
   contact::NormalOptions nopt = opt.normal;
   if (request.tolerance > 0) nopt.tolerance = request.tolerance;
   std::vector<double> start;
   if (warm_start(ws, side, pl, grid, start)) nopt.initial_pressure = start;
-  const contact::NormalLoad load = contact::NormalLoad::penetration();
+  const contact::NormalLoad load = area_load(request, grid, vertical);
   return opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
                    : model.solver().solve(grid, h, load, ws.normal, nopt);
 }
@@ -449,7 +465,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     grid = area_grid(opt, all, pl, side, st.pose());
     pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
   }
-  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, ws);
+  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, std::vector<double>(grid.ny, pl.n.z()), ws);
   {
     PhaseTimer t(ws, ws.times.results);
     copy_located(st, side, group, pc);
@@ -516,8 +532,10 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   WheelContact wc;
   double rr = 0, N = 0;
   std::vector<ContactWorkspace::Previous> next_previous;
+  ContactRequest one_area = request;  // a vertical force can be prescribed to a single area only
+  if (groups.size() != 1) one_area.vertical_force.reset();
   for (const auto& group : groups) {
-    PatchContact pc = solve_area(model, st, side, group, infos, ws, request, next_previous);
+    PatchContact pc = solve_area(model, st, side, group, infos, ws, one_area, next_previous);
     if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws);
     add_creep(wc.creep, pc);
     wc.force += pc.force;
@@ -546,6 +564,12 @@ void ContactWorkspace::forget() {
 
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,
                                const ContactRequest& request) {
+  if (request.vertical_force) {
+    if (!std::isfinite(*request.vertical_force) || !(*request.vertical_force > 0))
+      fail("contact: vertical_force = {} N must be a positive number", *request.vertical_force);
+    if (request.only_side < 0 || request.sensitivity || request.rolling)
+      fail("contact: a vertical force is prescribed to one wheel (only_side), without sensitivities or rolling");
+  }
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);

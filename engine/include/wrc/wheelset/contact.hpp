@@ -196,7 +196,16 @@ struct ContactRequest {
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
   double tolerance = 0;      // > 0: the normal solver's tolerance for this evaluation (inexact Newton steps)
   std::optional<RollingRequest> rolling;  // also solve the tangential problem of every area (wheelset/rolling.hpp)
+  // With only_side: solve that wheel's area for this vertical force (N) rather than for the pose's penetration, each
+  // element weighted by the vertical part of its normal (normal.hpp's weighted force). Its solution's approach is
+  // then the further vertical approach (m, the wheel moving down) that carries the force on the pose's own grid:
+  // solve_wheel's predictor; such a result is not the pose's contact. A wheel with several areas, or with normals
+  // less than kVerticalWeightMin upright, is solved for the penetration as usual (its solutions' load says which).
+  std::optional<double> vertical_force;
 };
+
+// The least vertical part of the normals (their cosine to the vertical) over an area solved for a vertical force.
+inline constexpr double kVerticalWeightMin = 0.05;
 
 // Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input
 // or a potential contact area beyond options.max_elements.
