@@ -12,6 +12,8 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 using namespace wrc;
@@ -100,4 +102,58 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
     CHECK(lua_number(lua, row + "Mz") == s.elastic[i].Mz);
     CHECK(lua_number(lua, row + "rigid.z") == s.rigid[i]->z);
   }
+}
+
+// ContactRequest::vertical_force (solve_wheel's predictor): the wheel's area solved for a vertical force F is the
+// pose's penetration problem with the wheel pressed further down by the solution's approach. Against evaluations of
+// the poses themselves (grid 0.5 mm), on the tread and at the flange root (contact angle 26 deg, where a force
+// without the normals' vertical parts as weights would be ~10 % off): F of the pose gives approach 0; F of the pose
+// 0.1 um lower gives 0.1 um, up to what the grid's motion with the pose adds (a fixed grid leaves it out; measured
+// 2e-4 to 1e-2 of the step).
+TEST_CASE("vertical_force: the multiplier is the further vertical approach that carries the force") {
+  WheelsetProfiles profiles;
+  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
+  profiles.wheel = {wheel, wheel};
+  profiles.rail = {rail, rail};
+  WheelsetParams params;
+  params.contact.element = 0.5e-3;
+  const auto wheelset = build_wheelset(profiles, params);
+  const ContactModel& model = wheelset->contact_model();
+  const auto work = wheelset->make_workspace();
+  ContactWorkspace& ws = *work;
+  for (double y : {3e-3, 6.4e-3}) {
+    CAPTURE(y);
+    const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, ws);
+    REQUIRE(w.converged);
+    ContactRequest pen;
+    pen.only_side = kLeft;
+    pen.tolerance = 1e-11;
+    auto Fz = [&](double z) { return evaluate_contact(model, {y, z, 0.0, 0.0}, ws, pen).wheel[kLeft].force.z(); };
+    auto predicted = [&](double F) {
+      ContactRequest fc = pen;
+      fc.vertical_force = F;
+      const ContactResult c = evaluate_contact(model, {y, w.z, 0.0, 0.0}, ws, fc);
+      REQUIRE(c.wheel[kLeft].patches.size() == 1);
+      const contact::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
+      REQUIRE(s.load.control == contact::NormalLoad::Control::force);
+      CHECK(c.wheel[kLeft].force.z() == doctest::Approx(F).epsilon(1e-9));
+      return s.approach;
+    };
+    const double F0 = Fz(w.z);
+    CHECK(std::abs(predicted(F0)) < 1e-13);
+    const double d = 1e-7, F1 = Fz(w.z - d);
+    REQUIRE(F1 > F0);
+    const double a = predicted(F1);
+    MESSAGE("y = ", y * 1e3, " mm, contact angle ", w.wheel.angle * 180 / std::numbers::pi, " deg: predicted approach / actual - 1 = ", a / d - 1);
+    CHECK(a == doctest::Approx(d).epsilon(2e-2));
+  }
+  ContactRequest bad;
+  bad.vertical_force = 1e5;
+  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("only_side"), Error);
+  bad.only_side = kLeft;
+  bad.sensitivity = true;
+  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("sensitivities"), Error);
+  bad.sensitivity = false;
+  bad.vertical_force = -1;
+  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("vertical_force = -1 N"), Error);
 }

@@ -566,12 +566,13 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   };
   try {
     // Two predictions first: one on the grid of the start (loose when cold: its grid is too small for Fz anyway),
-    // then one at the model's tolerance on the grid the first leads to, which corrects what the first one's grid
-    // and linearised geometry missed. Its own error is the grid's motion with the pose, which the fixed-grid model
-    // leaves out: 2e-4 (tread) to 1e-2 (flange root) of its step, so the evaluation at the model's tolerance that
-    // follows mostly concludes (3 evaluations in all); otherwise the secant steps below go on from it, as they do
-    // for a wheel with several areas or steep normals (no prediction).
-    bool predicted = opt.max_evaluations >= 4 && predict(a1, start ? tight : loose) && predict(a1, final_tolerance);
+    // then one at normal_tolerance on the grid the first leads to, which corrects what the first one's grid and
+    // linearised geometry missed. Its own error is the grid's motion with the pose, which the fixed-grid model leaves
+    // out (measured against evaluations: 2e-4 of its step at the tread, 1e-2 at the flange root), and its solve's
+    // ~1e-6: the evaluation at the model's tolerance that follows concludes at most tread poses (3 evaluations in
+    // all); otherwise the secant steps below go on from it, as they do for a wheel with several areas or steep
+    // normals (no prediction). A second prediction at the model's tolerance costs more CG iterations than it saves.
+    bool predicted = opt.max_evaluations >= 4 && predict(a1, start ? tight : loose) && predict(a1, tight);
     double f1 = phi(a1, predicted ? final_tolerance : start ? tight : loose);
     for (int it = 0;; ++it) {
       const double error = std::abs(cur.wheel[side].force.z() - Fz) / Fz;
