@@ -177,37 +177,45 @@ void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact&
   }
 }
 
-// Separate contact regions of a solution: 8-connected components of {p > 0} carrying >= 0.1 % of the force.
+// Separate contact regions of a solution: 8-connected components of {p > 0} carrying >= 0.1 % of the force. The
+// contact is cut into runs (maximal intervals of a row in contact); runs of neighbouring rows whose columns touch or
+// overlap diagonally are one region.
 int contact_regions(const contact::NormalSolution& sol) {
   const contact::Grid& g = sol.grid;
   if (sol.pressure.empty() || !(sol.force > 0)) return 0;
-  std::vector<int> label(static_cast<std::size_t>(g.size()), -1);
-  std::vector<int> stack;
-  int regions = 0;
+  struct Run {
+    int i0, i1;    // columns
+    double force;  // N
+  };
+  std::vector<Run> runs;
+  std::vector<std::size_t> row_start(static_cast<std::size_t>(g.ny) + 1, 0);
   const double dA = g.element_area();
-  for (int start = 0; start < g.size(); ++start) {
-    if (!(sol.pressure[static_cast<std::size_t>(start)] > 0) || label[static_cast<std::size_t>(start)] >= 0) continue;
-    double force = 0;
-    stack.assign(1, start);
-    label[static_cast<std::size_t>(start)] = start;
-    while (!stack.empty()) {
-      const int k = stack.back();
-      stack.pop_back();
-      force += sol.pressure[static_cast<std::size_t>(k)] * dA;
-      const int i = k % g.nx, j = k / g.nx;
-      for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di) {
-          const int ii = i + di, jj = j + dj;
-          if (ii < 0 || jj < 0 || ii >= g.nx || jj >= g.ny) continue;
-          const auto m = static_cast<std::size_t>(g.index(ii, jj));
-          if (sol.pressure[m] > 0 && label[m] < 0) {
-            label[m] = start;
-            stack.push_back(static_cast<int>(m));
-          }
-        }
+  for (int j = 0; j < g.ny; ++j) {
+    row_start[static_cast<std::size_t>(j)] = runs.size();
+    const double* p = sol.pressure.data() + static_cast<std::size_t>(g.index(0, j));
+    for (int i = 0; i < g.nx;) {
+      if (!(p[i] > 0)) {
+        ++i;
+        continue;
+      }
+      Run r{i, i, 0.0};
+      for (; i < g.nx && p[i] > 0; ++i) r.force += p[i] * dA;
+      r.i1 = i - 1;
+      runs.push_back(r);
     }
-    if (force >= 1e-3 * sol.force) ++regions;
   }
+  row_start[static_cast<std::size_t>(g.ny)] = runs.size();
+  UnionFind sets;
+  sets.reset(static_cast<int>(runs.size()));
+  for (int j = 1; j < g.ny; ++j)
+    for (std::size_t a = row_start[static_cast<std::size_t>(j - 1)]; a < row_start[static_cast<std::size_t>(j)]; ++a)
+      for (std::size_t b = row_start[static_cast<std::size_t>(j)]; b < row_start[static_cast<std::size_t>(j) + 1]; ++b)
+        if (runs[b].i0 <= runs[a].i1 + 1 && runs[b].i1 >= runs[a].i0 - 1) sets.unite(static_cast<int>(a), static_cast<int>(b));
+  std::vector<double> force(runs.size(), 0.0);
+  for (std::size_t r = 0; r < runs.size(); ++r) force[static_cast<std::size_t>(sets.find(static_cast<int>(r)))] += runs[r].force;
+  int regions = 0;
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    regions += sets.find(static_cast<int>(r)) == static_cast<int>(r) && force[r] >= 1e-3 * sol.force;
   return regions;
 }
 
