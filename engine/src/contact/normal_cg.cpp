@@ -207,8 +207,9 @@ class ProjectedCg {
 
   void start(const std::vector<double>& pressure);
   // Iterates until the gap on the working set is within options.tolerance of the penetration hmax + approach
-  // (confirmed on a fresh product); throws wrc::Error after the iteration limit.
-  void run(const NormalOptions& options, double hmax);
+  // (confirmed on a fresh product unless the caller confirms it on its own); throws wrc::Error after the iteration
+  // limit.
+  void run(const NormalOptions& options, double hmax, bool confirm);
 
   double approach() const { return delta_; }
   int iterations() const { return iterations_; }
@@ -370,13 +371,13 @@ void ProjectedCg::take_step(double alpha) {
   if (force_control_ && !clipped_.empty()) rescale_to_force();
 }
 
-void ProjectedCg::run(const NormalOptions& options, double hmax) {
+void ProjectedCg::run(const NormalOptions& options, double hmax, bool confirm) {
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 2000;
   for (;;) {
     const Residual res = update_working_set();
     const double scale = hmax + delta_;
     if (res.error <= options.tolerance * scale) {
-      if (fresh_) break;
+      if (fresh_ || !confirm) break;
       K_.apply(p_, u_);  // incremental updates may have drifted: confirm with a fresh product
       fresh_ = true;
       continue;
@@ -471,15 +472,17 @@ constexpr int kWindowMargin = 4;
 namespace {
 
 // The projected CG on the whole of `grid` from `start`.
+// `window`: the grid is a window that solve_window checks by a product on the whole grid, which confirms the
+// CG's convergence as well (no confirming product here) and gives the solution's summaries (none here).
 NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid& grid, std::span<const double> h,
                           const NormalLoad& load, NormalWorkspace& ws, const NormalOptions& options, const Start& start,
-                          double hmax) {
+                          double hmax, bool window = false) {
   const auto spectrum = cache.get(grid);
   const auto periodic = cache.get(grid, InfluenceSpectrum::Kind::periodic);
   FftOperator K{*spectrum, *periodic, grid, factor, ws.fft, ws.fft_periodic};
   ProjectedCg cg(K, grid, h, load, ws);
   cg.start(start.pressure);
-  cg.run(options, hmax);
+  cg.run(options, hmax, !window);
 
   NormalSolution s;
   s.grid = grid;
@@ -490,14 +493,15 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
   s.products = K.products;
   s.coarse_iterations = start.iterations;
   s.coarse_products = start.products;
-  detail::finish_solution(s, ws.u, h);
+  if (!window) detail::finish_solution(s, ws.u, h);
   return s;
 }
 
 // The solve on a window of the grid, checked on the whole grid by one product: the solution of the whole grid
 // when no element outside the window penetrates (its gap below -tolerance x (hmax + approach), the condition the
 // CG itself enforces), else nothing and those elements in `penetrating`. `pressure` is the window's solution on the
-// whole grid either way.
+// whole grid either way. The same product confirms the CG's convergence inside the window, which its incremental
+// updates of K p may have drifted from (then it is solved again from there, confirming on its own).
 std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double factor, const Grid& grid,
                                            std::span<const double> h, const NormalLoad& load, NormalWorkspace& ws,
                                            const NormalOptions& options, const Window& w, const Start& start,
@@ -508,32 +512,41 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
   if (!load.weights.empty()) sub_load.weights = cut(grid, w, load.weights);
   Start sub_start{start.pressure.empty() ? std::vector<double>{} : cut(grid, w, start.pressure), start.iterations,
                   start.products};
-  const NormalSolution part = solve_grid(cache, factor, sub, hs, sub_load, ws, options, sub_start, hmax);
-
   NormalSolution s;
   s.grid = grid;
   s.load = load;
-  s.approach = part.approach;
-  s.iterations = part.iterations;
-  s.products = part.products + 1;
-  s.coarse_iterations = part.coarse_iterations;
-  s.coarse_products = part.coarse_products;
-  paste(grid, w, part.pressure, pressure);
-  s.pressure = pressure;
-  std::vector<double>& u = ws.u;
-  u.resize(grid.size());
-  convolve(*cache.get(grid), grid, s.pressure.data(), u.data(), ws.fft, factor);
-  penetrating.clear();
-  const double limit = -options.tolerance * (hmax + s.approach);
-  for (int j = 0; j < grid.ny; ++j)
-    for (int i = 0; i < grid.nx; ++i) {
-      const int k = grid.index(i, j);
-      const bool inside = i >= w.i0 && i <= w.i1 && j >= w.j0 && j <= w.j1;
-      if (!inside && u[k] - h[k] - s.approach * load.weight(k) < limit) penetrating.push_back(k);
+  for (int attempt = 0;; ++attempt) {
+    const NormalSolution part = solve_grid(cache, factor, sub, hs, sub_load, ws, options, sub_start, hmax, attempt == 0);
+    s.approach = part.approach;
+    s.iterations += part.iterations;
+    s.products += part.products + 1;
+    s.coarse_iterations = part.coarse_iterations;
+    s.coarse_products = part.coarse_products;
+    paste(grid, w, part.pressure, pressure);
+    std::vector<double>& u = ws.u;
+    u.resize(grid.size());
+    convolve(*cache.get(grid), grid, pressure.data(), u.data(), ws.fft, factor);
+    penetrating.clear();
+    const double bound = options.tolerance * (hmax + s.approach);
+    bool drifted = false;
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        const int k = grid.index(i, j);
+        const double g = u[k] - h[k] - s.approach * load.weight(k);
+        if (i >= w.i0 && i <= w.i1 && j >= w.j0 && j <= w.j1)
+          drifted |= pressure[k] > 0 ? std::abs(g) > bound : g < -bound;
+        else if (g < -bound)
+          penetrating.push_back(k);
+      }
+    if (!penetrating.empty()) return std::nullopt;
+    if (drifted && attempt == 0) {
+      sub_start.pressure = part.pressure;
+      continue;
     }
-  if (!penetrating.empty()) return std::nullopt;
-  detail::finish_solution(s, u, h);
-  return s;
+    s.pressure = pressure;
+    detail::finish_solution(s, u, h);
+    return s;
+  }
 }
 
 }  // namespace
