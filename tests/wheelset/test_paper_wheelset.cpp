@@ -157,3 +157,40 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
   bad.vertical_force = -1;
   CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("vertical_force = -1 N"), Error);
 }
+
+// Warm starts map the last evaluation's pressure onto the new grid: at the same pose they are the solution (no CG
+// iteration), at a pose 0.2 um away close to it (far fewer iterations than a cold solve, and the same answer).
+TEST_CASE("warm starts: the same pose needs no CG iteration, a nearby pose few, with the cold solve's answer") {
+  WheelsetProfiles profiles;
+  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
+  profiles.wheel = {wheel, wheel};
+  profiles.rail = {rail, rail};
+  WheelsetParams params;
+  params.contact.element = 0.5e-3;
+  for (ContactSurface surface : {ContactSurface::conformal, ContactSurface::planar}) {
+    const std::string name = surface_name(surface);
+    CAPTURE(name);
+    params.contact.surface = surface;
+    const auto wheelset = build_wheelset(profiles, params);
+    const ContactModel& model = wheelset->contact_model();
+    const auto work = wheelset->make_workspace();
+    ContactRequest left;
+    left.only_side = kLeft;
+    const Pose pose{3e-3, -0.1e-3, 0.164e-3, 0.002}, near{3.0002e-3, -0.10005e-3, 0.164e-3, 0.002};
+    auto iterations = [](const ContactResult& c) {
+      REQUIRE(c.wheel[kLeft].patches.size() == 1);
+      const contact::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
+      return s.iterations + s.coarse_iterations;
+    };
+    const ContactResult first = evaluate_contact(model, pose, *work, left);
+    const ContactResult again = evaluate_contact(model, pose, *work, left);
+    CHECK(iterations(again) == 0);
+    CHECK(again.wheel[kLeft].force.z() == doctest::Approx(first.wheel[kLeft].force.z()).epsilon(1e-12));
+    const ContactResult warm = evaluate_contact(model, near, *work, left);
+    work->forget();
+    const ContactResult cold = evaluate_contact(model, near, *work, left);
+    MESSAGE(name, ": CG iterations warm ", iterations(warm), ", cold ", iterations(cold));
+    CHECK(5 * iterations(warm) <= 3 * iterations(cold));
+    CHECK(warm.wheel[kLeft].force.z() == doctest::Approx(cold.wheel[kLeft].force.z()).epsilon(1e-7));
+  }
+}

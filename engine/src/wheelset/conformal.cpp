@@ -166,6 +166,18 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
   surf.normal_y.resize(static_cast<std::size_t>(ny));
   surf.normal_z.resize(static_cast<std::size_t>(ny));
   h.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  // Each line's h at the grid's columns, computed once (neighbouring rows share their lines).
+  const auto nx = static_cast<std::size_t>(grid.nx);
+  std::vector<double> line_h(lines.size() * nx);
+  std::vector<char> done(lines.size(), 0);
+  auto heights = [&](std::size_t l) {
+    double* row = line_h.data() + l * nx;
+    if (!done[l]) {
+      for (std::size_t i = 0; i < nx; ++i) row[i] = lines[l].h.height(o.x() + grid.x(static_cast<int>(i)));
+      done[l] = 1;
+    }
+    return row;
+  };
   std::size_t b = 0;
   for (int j = 0; j < ny; ++j) {
     const double s = o.y() + grid.y(j);
@@ -180,11 +192,10 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
     const Eigen::Vector2d n = ((1 - t) * la.n + t * lc.n).normalized();
     surf.normal_y[js] = n.x();
     surf.normal_z[js] = n.y();
-    for (int i = 0; i < grid.nx; ++i) {
-      const double x = o.x() + grid.x(i);
-      const double ha = la.h.height(x);
-      h[static_cast<std::size_t>(grid.index(i, j))] = t > 0 ? (1 - t) * ha + t * lc.h.height(x) : ha;
-    }
+    const double* ha = heights(a);
+    const double* hc = t > 0 ? heights(c) : ha;
+    double* out = h.data() + static_cast<std::size_t>(grid.index(0, j));
+    for (std::size_t i = 0; i < nx; ++i) out[i] = t > 0 ? (1 - t) * ha[i] + t * hc[i] : ha[i];
   }
 }
 

@@ -260,6 +260,37 @@ struct OldGridMap {
     if (!(P(a < 0.5 ? 0 : 1, b < 0.5 ? 0 : 1) > 0)) return std::nullopt;
     return (1 - a) * (1 - b) * P(0, 0) + a * (1 - b) * P(1, 0) + (1 - a) * b * P(0, 1) + a * b * P(1, 1);
   }
+  // pressure_at every element of a grid of the new plane (0 where it gives nothing) into out (zeroed). When the
+  // planes share their axes and the grids their element size (the conformal path always, a plane that did not turn),
+  // every element sits at one fractional offset (a, b) from the old elements: constant weights, row by row.
+  void fill(const contact::Grid& grid, double* out) const {
+    const contact::Grid& g = old->grid;
+    const bool shifted = uy == 0 && vx == 0 && std::abs(ux * grid.dx - 1) < 1e-12 && std::abs(vy * grid.dy - 1) < 1e-12;
+    if (!shifted) {
+      for (int j = 0; j < grid.ny; ++j)
+        for (int i = 0; i < grid.nx; ++i)
+          if (const auto p = pressure_at(grid.x(i), grid.y(j))) out[grid.index(i, j)] = *p;
+      return;
+    }
+    const double fu = u0 + ux * grid.x(0), fv = v0 + vy * grid.y(0);
+    const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
+    const double a = fu - iu, b = fv - iv;
+    const double w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
+    const int i_lo = std::max(0, -iu), i_hi = std::min(grid.nx - 1, g.nx - 2 - iu);
+    for (int j = 0; j < grid.ny; ++j) {
+      const int jv = iv + j;
+      if (jv < 0 || jv + 1 >= g.ny) continue;
+      const double* r0 = old->pressure.data() + g.index(0, jv);  // old rows jv and jv + 1, from column 0
+      const double* r1 = r0 + g.nx;
+      const double* nearest = b < 0.5 ? r0 : r1;
+      const int ni = a < 0.5 ? 0 : 1;
+      double* o = out + grid.index(0, j);
+      for (int i = i_lo; i <= i_hi; ++i) {
+        const int k = iu + i;
+        o[i] = nearest[k + ni] > 0 ? w00 * r0[k] + w10 * r0[k + 1] + w01 * r1[k] + w11 * r1[k + 1] : 0.0;
+      }
+    }
+  }
 };
 
 // Start pressures for an area in the plane pl from the workspace's last evaluation of that side: the old pressure at
@@ -272,6 +303,10 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
   const auto* before = ws.extrapolate ? previous_area(ws.before[side], pl) : nullptr;
   const OldGridMap now(*last, pl), then(before ? *before : *last, pl);
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  if (!before) {
+    now.fill(grid, start.data());
+    return true;
+  }
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       const double x = grid.x(i), y = grid.y(j);
