@@ -199,7 +199,8 @@ class ProjectedCg {
       : K_(K), grid_(grid), h_(h), load_(load), force_control_(load.control == NormalLoad::Control::force),
         n_(grid.size()), dA_(grid.element_area()), direct_limit_(K.direct_limit()), ws_(ws), p_(ws.p), u_(ws.u),
         r_(ws.r), z_(ws.z), d_(ws.d), q_(ws.q) {
-    for (auto* v : {&p_, &u_, &r_, &z_, &d_, &q_}) v->assign(n_, 0.0);
+    for (auto* v : {&p_, &d_}) v->assign(n_, 0.0);  // the others are written before they are read
+    for (auto* v : {&u_, &r_, &z_, &q_}) v->resize(n_);
     if (force_control_) w_ = load.weights.empty() ? std::vector<double>(n_, 1.0) : load.weights;
     ws_.active.assign(n_, 0);
     ws_.previous_active.assign(n_, 0);
@@ -265,7 +266,10 @@ void ProjectedCg::start(const std::vector<double>& pressure) {
       }
     }
   }
-  if (std::any_of(p_.begin(), p_.end(), [](double v) { return v > 0; })) K_.apply(p_, u_);  // else u = 0 already
+  if (std::any_of(p_.begin(), p_.end(), [](double v) { return v > 0; }))
+    K_.apply(p_, u_);
+  else
+    std::fill(u_.begin(), u_.end(), 0.0);
   if (force_control_) rescale_to_force();
 }
 
@@ -439,9 +443,15 @@ struct Window {
 Window support(const Grid& g, std::span<const double> v) {
   Window w;
   if (v.empty()) return w;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i)
-      if (v[g.index(i, j)] > 0) w.extend(i, j);
+  for (int j = 0; j < g.ny; ++j) {  // per row, its first and last element > 0, scanning in from both ends
+    const double* row = v.data() + g.index(0, j);
+    int first = 0, last = g.nx - 1;
+    while (first < g.nx && !(row[first] > 0)) ++first;
+    if (first == g.nx) continue;
+    while (!(row[last] > 0)) --last;
+    w.extend(first, j);
+    w.extend(last, j);
+  }
   return w;
 }
 
@@ -529,15 +539,25 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
     penetrating.clear();
     const double bound = options.tolerance * (hmax + s.approach);
     bool drifted = false;
-    for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i) {
-        const int k = grid.index(i, j);
-        const double g = u[k] - h[k] - s.approach * load.weight(k);
-        if (i >= w.i0 && i <= w.i1 && j >= w.j0 && j <= w.j1)
-          drifted |= pressure[k] > 0 ? std::abs(g) > bound : g < -bound;
-        else if (g < -bound)
-          penetrating.push_back(k);
+    const bool weighted = !load.weights.empty();
+    auto gap = [&](int k) { return u[k] - h[k] - s.approach * (weighted ? load.weights[k] : 1.0); };
+    auto outside = [&](int k0, int k1) {  // elements [k0, k1) outside the window: those that penetrate
+      for (int k = k0; k < k1; ++k)
+        if (gap(k) < -bound) penetrating.push_back(k);
+    };
+    for (int j = 0; j < grid.ny; ++j) {
+      const int row = grid.index(0, j);
+      if (j < w.j0 || j > w.j1) {
+        outside(row, row + grid.nx);
+        continue;
       }
+      outside(row, row + w.i0);
+      for (int k = row + w.i0; k <= row + w.i1; ++k) {
+        const double g = gap(k);
+        drifted |= pressure[k] > 0 ? std::abs(g) > bound : g < -bound;
+      }
+      outside(row + w.i1 + 1, row + grid.nx);
+    }
     if (!penetrating.empty()) return std::nullopt;
     if (drifted && attempt == 0) {
       sub_start.pressure = part.pressure;

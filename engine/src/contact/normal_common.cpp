@@ -45,33 +45,38 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
   const Grid& grid = s.grid;
   const int n = grid.size();
   const double dA = grid.element_area();
-  s.gap.assign(n, 0.0);
+  s.gap.resize(static_cast<std::size_t>(n));
   double F = 0, mx = 0, my = 0, pmax = 0, hmax = -INFINITY;
   int count = 0, edge = 0;
   Complementarity& c = s.residual;
   c = {};
-  for (int j = 0; j < grid.ny; ++j)
+  const bool weighted = !s.load.weights.empty();
+  for (int j = 0; j < grid.ny; ++j) {
+    const double y = grid.y(j);
+    const bool edge_row = j == 0 || j == grid.ny - 1;
     for (int i = 0; i < grid.nx; ++i) {
       const int k = grid.index(i, j);
       const double p = s.pressure[k];
-      const double shift = s.approach * s.load.weight(k);
+      const double shift = s.approach * (weighted ? s.load.weights[k] : 1.0);
       const double g = u[k] - h[k] - shift;
-      s.gap[k] = g;
       hmax = std::max(hmax, h[k] + shift);
       c.negative_pressure = std::max(c.negative_pressure, -p);
       c.product = std::max(c.product, std::abs(p * g));
       if (p > 0) {
         ++count;
-        edge += i == 0 || j == 0 || i == grid.nx - 1 || j == grid.ny - 1;
+        edge += edge_row || i == 0 || i == grid.nx - 1;
         F += p;
         mx += p * grid.x(i);
-        my += p * grid.y(j);
+        my += p * y;
         pmax = std::max(pmax, p);
         c.contact_gap = std::max(c.contact_gap, std::abs(g));
+        s.gap[k] = 0;  // zero by definition in contact: the exact complementary pair
       } else {
         c.negative_gap = std::max(c.negative_gap, -g);
+        s.gap[k] = g;
       }
     }
+  }
   s.force = F * dA;
   s.cop_x = F > 0 ? mx / F : grid.x0 + 0.5 * (grid.nx - 1) * grid.dx;
   s.cop_y = F > 0 ? my / F : grid.y0 + 0.5 * (grid.ny - 1) * grid.dy;
@@ -84,9 +89,6 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
                         c.product, c.relative};
   for (double v : all)
     if (!std::isfinite(v)) fail("normal contact solve: a result is not finite (internal error; inputs were finite)");
-  // The gap of elements in contact is zero by definition; store the exact complementary pair.
-  for (int k = 0; k < n; ++k)
-    if (s.pressure[k] > 0) s.gap[k] = 0;
 }
 
 NormalSolution zero_solution(const Grid& grid, std::span<const double> h, const NormalLoad& load) {
