@@ -509,8 +509,8 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
 
 // The solve on a window of the grid, checked on the whole grid by one product: the solution of the whole grid
 // when no element outside the window penetrates (its gap below -tolerance x (hmax + approach), the condition the
-// CG itself enforces), else nothing and those elements in `penetrating`. `pressure` is the window's solution on the
-// whole grid either way. The same product confirms the CG's convergence inside the window, which its incremental
+// CG itself enforces), else nothing, those elements in `penetrating` and the window's solution on the whole grid in
+// `pressure` (the start of the next attempt). The same product confirms the CG's convergence inside the window, which its incremental
 // updates of K p may have drifted from (then it is solved again from there, confirming on its own).
 std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double factor, const Grid& grid,
                                            std::span<const double> h, const NormalLoad& load, NormalWorkspace& ws,
@@ -563,7 +563,7 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
       sub_start.pressure = part.pressure;
       continue;
     }
-    s.pressure = pressure;
+    s.pressure = std::move(pressure);
     detail::finish_solution(s, u, h);
     return s;
   }
@@ -589,7 +589,7 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
   std::vector<int> penetrating;
   std::vector<double> found;
   for (int attempt = 0; attempt < 3 && w.size() > 0 && w.size() <= (1 - kWindowGain) * grid.size(); ++attempt) {
-    if (auto s = solve_window(*cache_, factor, grid, h, load, ws, options, w, start, hmax, found, penetrating)) return *s;
+    if (auto s = solve_window(*cache_, factor, grid, h, load, ws, options, w, start, hmax, found, penetrating)) return std::move(*s);
     for (int k : penetrating) w.extend(k % grid.nx, k / grid.nx);
     w.dilate(grid, kWindowMargin);
     start.pressure = found;

@@ -165,7 +165,7 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
   surf.z.resize(static_cast<std::size_t>(ny));
   surf.normal_y.resize(static_cast<std::size_t>(ny));
   surf.normal_z.resize(static_cast<std::size_t>(ny));
-  h.assign(static_cast<std::size_t>(grid.size()), 0.0);
+  h.resize(static_cast<std::size_t>(grid.size()));  // every element is written below
   // Each line's h at the grid's columns, computed once (neighbouring rows share their lines).
   const auto nx = static_cast<std::size_t>(grid.nx);
   std::vector<double> line_h(lines.size() * nx);
