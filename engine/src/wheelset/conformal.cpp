@@ -170,11 +170,21 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
   const auto nx = static_cast<std::size_t>(grid.nx);
   std::vector<double> line_h(lines.size() * nx);
   std::vector<char> done(lines.size(), 0);
+  std::vector<double> xs(nx);
+  for (std::size_t i = 0; i < nx; ++i) xs[i] = o.x() + grid.x(static_cast<int>(i));
   auto heights = [&](std::size_t l) {
     double* row = line_h.data() + l * nx;
-    if (!done[l]) {
-      for (std::size_t i = 0; i < nx; ++i) row[i] = lines[l].h.height(o.x() + grid.x(static_cast<int>(i)));
-      done[l] = 1;
+    if (done[l]) return row;
+    done[l] = 1;
+    const LineProfile& lp = lines[l].h;
+    if (lp.arcs.empty()) {
+      for (std::size_t i = 0; i < nx; ++i) row[i] = lp.height(xs[i]);
+      return row;
+    }
+    std::fill_n(row, nx, -INFINITY);
+    for (const SegmentInfo* a : lp.arcs) {  // LineProfile::height arc by arc, a loop the compiler vectorises
+      const double R = a->R, drop = a->R - a->sagitta, xm = a->xm;
+      for (std::size_t i = 0; i < nx; ++i) row[i] = std::max(row[i], arc_height(R, xs[i] - xm) - drop);
     }
     return row;
   };
