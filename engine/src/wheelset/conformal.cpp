@@ -48,18 +48,6 @@ Eigen::Vector2d surface_origin(const std::vector<SegmentInfo>& all, const std::v
   return o / static_cast<double>(all.size());
 }
 
-// Arc length of every rail line in [first, last] from line 0 (exact chords).
-std::vector<double> rail_arc(const RailLines& rail, int first, int last) {
-  double S = 0;
-  for (int r = 0; r < first; ++r) S += chord(rail, r);
-  std::vector<double> out(static_cast<std::size_t>(last - first + 1));
-  for (int r = first; r <= last; ++r) {
-    out[static_cast<std::size_t>(r - first)] = S;
-    if (r < rail.count() - 1) S += chord(rail, r);
-  }
-  return out;
-}
-
 // The grid on the unrolled surface: element centres at integer multiples of the element from the origin, covering
 // the segments (x from their ends, s from their lines) plus the margin.
 contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all,
@@ -111,7 +99,8 @@ Eigen::Vector2d mid_normal(const Eigen::Vector2d& wheel, const Eigen::Vector2d& 
 // (as far as the rail goes), each with its arc length, normal and h(x): the arcs of its segments (the deepest one
 // gives the wheel's normal), or the arc through its deepest point.
 std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationState& st, int side,
-                                       const std::vector<SegmentInfo>& all, double s_first, double s_last) {
+                                       const std::vector<double>& arc, const std::vector<SegmentInfo>& all,
+                                       double s_first, double s_last) {
   const WheelCones& wheel = g.side[side].wheel;
   const RailLines& rail = g.side[side].rail;
   int rlo = rail.count(), rhi = -1;
@@ -119,16 +108,15 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
     rlo = std::min(rlo, s.line);
     rhi = std::max(rhi, s.line);
   }
-  double S_lo = rail_arc(rail, rlo, rlo).front(), S_hi = S_lo;
+  double S_lo = arc[static_cast<std::size_t>(rlo)], S_hi = S_lo;
   for (int r = rlo; r < rhi; ++r) S_hi += chord(rail, r);
   while (rlo > 0 && S_lo > s_first) S_lo -= chord(rail, --rlo);
   while (rhi < rail.count() - 1 && S_hi < s_last) S_hi += chord(rail, rhi++);
-  const std::vector<double> S = rail_arc(rail, rlo, rhi);
-  std::vector<SurfaceLine> lines(S.size());
-  std::vector<double> depth(S.size(), -INFINITY);
+  std::vector<SurfaceLine> lines(static_cast<std::size_t>(rhi - rlo + 1));
+  std::vector<double> depth(lines.size(), -INFINITY);
   for (int r = rlo; r <= rhi; ++r) {
     SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
-    l.S = S[static_cast<std::size_t>(r - rlo)];
+    l.S = arc[static_cast<std::size_t>(r)];
     l.y = rail.y[r];
     l.z = rail.z[r];
   }
@@ -287,7 +275,6 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
                                   const ContactRequest& request, std::vector<ContactWorkspace::Previous>& next_previous) {
   const GeometryModel& g = model.geometry();
   const ContactOptions& opt = model.options();
-  const RailLines& rail = g.side[side].rail;
   PatchContact pc;
   pc.side = side;
   pc.nominal = first.point;
@@ -298,18 +285,13 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
   Plane pl;  // the area in unrolled coordinates (x, s, 0): the warm-start helpers' plane
   {
     PhaseTimer t(ws, ws.times.geometry);
-    int rmin = rail.count(), rmax = -1;
-    for (const auto& s : all) {
-      rmin = std::min(rmin, s.line);
-      rmax = std::max(rmax, s.line);
-    }
-    const std::vector<double> arc = rail_arc(rail, rmin, rmax);
+    const std::vector<double>& arc = model.rail_arc(side);
     std::vector<double> S(all.size());
-    for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line - rmin)];
+    for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line)];
     const Eigen::Vector2d o = surface_origin(all, S);
     pl = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
     grid = surface_grid(opt, all, S, o, side, st.pose());
-    const auto lines = surface_lines(g, st, side, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
+    const auto lines = surface_lines(g, st, side, arc, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
     lay_rows(lines, grid, o, surf, pc.h);
     surf.x0 = o.x();
     surf.s0 = o.y();

@@ -28,6 +28,13 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
   if (!geometry_) fail("contact model: no geometry");
   if (geometry_->track)
     for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = flange_of(geometry_->track->wheel[s]);
+  for (int s : {kLeft, kRight}) {
+    const RailLines& rail = geometry_->side[s].rail;
+    std::vector<double>& S = rail_arc_[static_cast<std::size_t>(s)];
+    S.assign(static_cast<std::size_t>(rail.count()), 0.0);
+    for (int r = 1; r < rail.count(); ++r)
+      S[static_cast<std::size_t>(r)] = S[static_cast<std::size_t>(r - 1)] + std::hypot(rail.y[r] - rail.y[r - 1], rail.z[r] - rail.z[r - 1]);
+  }
   contact::validate(material, "contact model");
   if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
     fail("contact model: the element size (grid) must be in ]0, 0.01] m, got {}", options.element);

@@ -143,9 +143,13 @@ class ContactModel {
   // The flange of each side's wheel profile (for the flange-climb flags of the results).
   const Flange& flange(int side) const { return flange_[static_cast<std::size_t>(side)]; }
   const contact::RollingSolver& rolling_solver() const { return rolling_; }
+  // Arc length of each of a side's rail lines along the rail profile from its first line (m): the conformal
+  // surface's coordinate s (chords between neighbouring lines summed once, here).
+  const std::vector<double>& rail_arc(int side) const { return rail_arc_[static_cast<std::size_t>(side)]; }
 
  private:
   std::shared_ptr<const GeometryModel> geometry_;
+  std::array<std::vector<double>, 2> rail_arc_;
   std::array<Flange, 2> flange_;
   ContactOptions options_;
   contact::NormalSolver solver_;
