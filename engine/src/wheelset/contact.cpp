@@ -88,7 +88,8 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     info.mid = {info.xm, s.y, s.z};
     const double Yt = f.to_wheelset({s.x_t, s.y, s.z}).y(), Yl = f.to_wheelset({s.x_l, s.y, s.z}).y();
     const double yaw = st.pose().yaw;
-    info.R = 0.5 * (arc_radius(wheel_surface_at(w, Yt), yaw) + arc_radius(wheel_surface_at(w, Yl), yaw));
+    const double Rt = arc_radius(wheel_surface_at(w, Yt), yaw);
+    info.R = 0.5 * (Rt + (Yl == Yt ? Rt : arc_radius(wheel_surface_at(w, Yl), yaw)));  // equal at yaw 0
     info.sagitta = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
     info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
     info.normal = wheel_inward_normal(w, f, info.mid);
