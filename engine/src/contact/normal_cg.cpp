@@ -628,11 +628,13 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   // x = 0 to start. along_w(v): the factor of v's part along w on the set.
   const NormalLoad& load = solution.load;
   double ww = 0;
-  for (int k = 0; k < n; ++k) ww += A[k] ? load.weight(k) * load.weight(k) : 0.0;
+  if (force_control)
+    for (int k = 0; k < n; ++k) ww += A[k] ? load.weight(k) * load.weight(k) : 0.0;
   auto along_w = [&](const std::vector<double>& v) {
+    if (!force_control) return 0.0;
     double s = 0;
     for (int k = 0; k < n; ++k) s += A[k] ? load.weight(k) * v[k] : 0.0;
-    return force_control ? s / ww : 0.0;
+    return s / ww;
   };
   double rhs_norm = 0;
   for (int k = 0; k < n; ++k) {
