@@ -510,8 +510,9 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
 // The solve on a window of the grid, checked on the whole grid by one product: the solution of the whole grid
 // when no element outside the window penetrates (its gap below -tolerance x (hmax + approach), the condition the
 // CG itself enforces), else nothing, those elements in `penetrating` and the window's solution on the whole grid in
-// `pressure` (the start of the next attempt). The same product confirms the CG's convergence inside the window, which its incremental
-// updates of K p may have drifted from (then it is solved again from there, confirming on its own).
+// `pressure` (the start of the next attempt). The same product confirms the CG's convergence inside the window,
+// which its incremental updates of K p may have drifted from (then it is solved again from there, confirming on its
+// own).
 std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double factor, const Grid& grid,
                                            std::span<const double> h, const NormalLoad& load, NormalWorkspace& ws,
                                            const NormalOptions& options, const Window& w, const Start& start,

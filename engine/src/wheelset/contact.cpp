@@ -32,8 +32,10 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     const RailLines& rail = geometry_->side[s].rail;
     std::vector<double>& S = rail_arc_[static_cast<std::size_t>(s)];
     S.assign(static_cast<std::size_t>(rail.count()), 0.0);
-    for (int r = 1; r < rail.count(); ++r)
-      S[static_cast<std::size_t>(r)] = S[static_cast<std::size_t>(r - 1)] + std::hypot(rail.y[r] - rail.y[r - 1], rail.z[r] - rail.z[r - 1]);
+    for (int r = 1; r < rail.count(); ++r) {
+      const auto k = static_cast<std::size_t>(r);
+      S[k] = S[k - 1] + std::hypot(rail.y[r] - rail.y[r - 1], rail.z[r] - rail.z[r - 1]);
+    }
   }
   contact::validate(material, "contact model");
   if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
@@ -215,15 +217,16 @@ int contact_regions(const contact::NormalSolution& sol) {
   row_start[static_cast<std::size_t>(g.ny)] = runs.size();
   UnionFind sets;
   sets.reset(static_cast<int>(runs.size()));
-  for (int j = 1; j < g.ny; ++j)
-    for (std::size_t a = row_start[static_cast<std::size_t>(j - 1)]; a < row_start[static_cast<std::size_t>(j)]; ++a)
-      for (std::size_t b = row_start[static_cast<std::size_t>(j)]; b < row_start[static_cast<std::size_t>(j) + 1]; ++b)
-        if (runs[b].i0 <= runs[a].i1 + 1 && runs[b].i1 >= runs[a].i0 - 1) sets.unite(static_cast<int>(a), static_cast<int>(b));
+  for (std::size_t j = 1; j < static_cast<std::size_t>(g.ny); ++j)
+    for (std::size_t a = row_start[j - 1]; a < row_start[j]; ++a)
+      for (std::size_t b = row_start[j]; b < row_start[j + 1]; ++b)
+        if (runs[b].i0 <= runs[a].i1 + 1 && runs[b].i1 >= runs[a].i0 - 1)
+          sets.unite(static_cast<int>(a), static_cast<int>(b));
   std::vector<double> force(runs.size(), 0.0);
-  for (std::size_t r = 0; r < runs.size(); ++r) force[static_cast<std::size_t>(sets.find(static_cast<int>(r)))] += runs[r].force;
+  const auto root = [&](std::size_t r) { return static_cast<std::size_t>(sets.find(static_cast<int>(r))); };
+  for (std::size_t r = 0; r < runs.size(); ++r) force[root(r)] += runs[r].force;
   int regions = 0;
-  for (std::size_t r = 0; r < runs.size(); ++r)
-    regions += sets.find(static_cast<int>(r)) == static_cast<int>(r) && force[r] >= 1e-3 * sol.force;
+  for (std::size_t r = 0; r < runs.size(); ++r) regions += root(r) == r && force[r] >= 1e-3 * sol.force;
   return regions;
 }
 
@@ -327,8 +330,9 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
 }
 
 // The load of an area: its penetration, or the request's vertical force with the rows' vertical normal parts as
-// weights. A vertical approach a deepens h by a n_z (h is measured along the rows' normals), and the vertical force
-// is sum n_z p dA: the solution is the pose's penetration problem with h + a n_z, a the multiplier. Rows less upright
+// weights. A vertical approach a deepens h by a n_z (to first order: h is measured along the plane's normal, or on
+// the curved surface along the wheel's, within a fraction of a degree of the row's), and the vertical force is
+// sum n_z p dA: the solution is the pose's penetration problem with h + a n_z, a the multiplier. Rows less upright
 // than kVerticalWeightMin: the penetration.
 contact::NormalLoad area_load(const ContactRequest& request, const contact::Grid& grid,
                               const std::vector<double>& vertical) {
