@@ -659,17 +659,13 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
       fail("NormalSolver::response: no convergence in {} CG iterations ({:.3g} of the perturbation)", max_iterations,
            error / rhs_norm);
     K.invert(r, z);
-    double rz = 0;
-    for (int k = 0; k < n; ++k) {
-      z[k] = A[k] ? z[k] : 0.0;
-      rz += r[k] * z[k];
-    }
+    mask(A.data(), z.data(), n);
+    const double rz = dot(r.data(), z.data(), n);  // out of line: inlined here, the sum lived on the stack
     const double zw = along_w(z);
     const double beta = it == 0 ? 0.0 : rz / rz_previous;
     for (int k = 0; k < n; ++k) d[k] = A[k] ? z[k] - zw * load.weight(k) + beta * d[k] : 0.0;
     K.apply(d, q);
-    double dq = 0;
-    for (int k = 0; k < n; ++k) dq += d[k] * q[k];
+    const double dq = dot(d.data(), q.data(), n);
     if (!(dq > 0) || !(rz > 0)) break;  // converged to rounding
     const double alpha = rz / dq;
     for (int k = 0; k < n; ++k) {
