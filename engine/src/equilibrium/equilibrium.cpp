@@ -510,10 +510,12 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     res.z = z_touch - a;
     res.approach = a;
   };
-  auto evaluate = [&](double a, double tol) {  // frictionless, the normal problems solved to tol
+  // Frictionless, the normal problems solved to tol; with `vertical`, the wheel's area solved for that vertical force.
+  auto evaluate = [&](double a, double tol, std::optional<double> vertical = std::nullopt) {
     ContactRequest req;
     req.only_side = side;
     req.tolerance = tolerance = tol;
+    req.vertical_force = vertical;
     evaluate_at(a, req);
   };
   auto phi = [&](double a, double tol) {
@@ -525,11 +527,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   // weights), whose multiplier is the further approach that carries Fz there; a moves on by it. False when the wheel
   // has several areas or steep normals (evaluate_contact then solved the penetration) or the step is unusable.
   auto predict = [&](double& a, double tol) {
-    ContactRequest req;
-    req.only_side = side;
-    req.tolerance = tolerance = tol;
-    req.vertical_force = Fz;
-    evaluate_at(a, req);
+    evaluate(a, tol, Fz);
     const auto& patches = cur.wheel[side].patches;
     if (patches.size() != 1 || patches[0].solution.load.control != contact::NormalLoad::Control::force) return false;
     const double next = a + patches[0].solution.approach;

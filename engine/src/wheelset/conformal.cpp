@@ -164,16 +164,7 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
     double* row = line_h.data() + l * nx;
     if (done[l]) return row;
     done[l] = 1;
-    const LineProfile& lp = lines[l].h;
-    if (lp.arcs.empty()) {
-      for (std::size_t i = 0; i < nx; ++i) row[i] = lp.height(xs[i]);
-      return row;
-    }
-    std::fill_n(row, nx, -INFINITY);
-    for (const SegmentInfo* a : lp.arcs) {  // LineProfile::height arc by arc, a loop the compiler vectorises
-      const double R = a->R, drop = a->R - a->sagitta, xm = a->xm;
-      for (std::size_t i = 0; i < nx; ++i) row[i] = std::max(row[i], arc_height(R, xs[i] - xm) - drop);
-    }
+    lines[l].h.heights(xs.data(), nx, row);
     return row;
   };
   std::size_t b = 0;

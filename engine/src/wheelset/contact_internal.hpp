@@ -71,6 +71,18 @@ struct LineProfile {
     for (const SegmentInfo* s : arcs) h = std::max(h, arc_height(s->R, x - s->xm) - (s->R - s->sagitta));
     return h;
   }
+  // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises).
+  void heights(const double* x, std::size_t n, double* out) const {
+    if (arcs.empty()) {
+      for (std::size_t i = 0; i < n; ++i) out[i] = height(x[i]);
+      return;
+    }
+    std::fill_n(out, n, -INFINITY);
+    for (const SegmentInfo* s : arcs) {
+      const double drop = s->R - s->sagitta;
+      for (std::size_t i = 0; i < n; ++i) out[i] = std::max(out[i], arc_height(s->R, x[i] - s->xm) - drop);
+    }
+  }
 };
 
 // Separate contact regions of a solution (8-connected, each >= 0.1 % of the force).
