@@ -28,6 +28,15 @@ Profile load_text(const char* name, ProfileKind kind) {
   return load_profile_file(profile_file(name), o);
 }
 
+// S1002 wheels on 60E1 rails, both sides, read from the text files.
+WheelsetProfiles paper_profiles() {
+  WheelsetProfiles profiles;
+  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
+  profiles.wheel = {wheel, wheel};
+  profiles.rail = {rail, rail};
+  return profiles;
+}
+
 // A number of the Lua global table `R` at a dotted path.
 double lua_number(lua::Session& s, const std::string& path) {
   auto* L = static_cast<lua_State*>(s.state());
@@ -50,10 +59,7 @@ double lua_number(lua::Session& s, const std::string& path) {
 }  // namespace
 
 TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of the same calls through Lua") {
-  WheelsetProfiles profiles;
-  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
-  profiles.wheel = {wheel, wheel};
-  profiles.rail = {rail, rail};
+  const WheelsetProfiles profiles = paper_profiles();
   const WheelsetParams params;  // the defaults are the paper's track and material
   CHECK(params.strategy == "accurate");
   const auto ws = build_wheelset(profiles, params);
@@ -111,10 +117,7 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
 // 0.1 um lower gives 0.1 um, up to what the grid's motion with the pose adds (a fixed grid leaves it out; measured
 // 2e-4 to 1e-2 of the step).
 TEST_CASE("vertical_force: the multiplier is the further vertical approach that carries the force") {
-  WheelsetProfiles profiles;
-  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
-  profiles.wheel = {wheel, wheel};
-  profiles.rail = {rail, rail};
+  const WheelsetProfiles profiles = paper_profiles();
   WheelsetParams params;
   params.contact.element = 0.5e-3;
   const auto wheelset = build_wheelset(profiles, params);
@@ -161,10 +164,7 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
 // Warm starts map the last evaluation's pressure onto the new grid: at the same pose they are the solution (no CG
 // iteration), at a pose 0.2 um away close to it (far fewer iterations than a cold solve, and the same answer).
 TEST_CASE("warm starts: the same pose needs no CG iteration, a nearby pose few, with the cold solve's answer") {
-  WheelsetProfiles profiles;
-  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
-  profiles.wheel = {wheel, wheel};
-  profiles.rail = {rail, rail};
+  const WheelsetProfiles profiles = paper_profiles();
   WheelsetParams params;
   params.contact.element = 0.5e-3;
   for (ContactSurface surface : {ContactSurface::conformal, ContactSurface::planar}) {
