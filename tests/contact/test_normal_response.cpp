@@ -49,6 +49,9 @@ TEST_CASE("response = central finite differences of the solver = dense response,
     NormalLoad load = force_control ? NormalLoad::normal_force(800.0) : NormalLoad::penetration();
     if (t % 4 == 3)  // weighted: sum w p dA = F, w varying across the rows
       for (int k = 0; k < c.grid.size(); ++k) load.weights.push_back(0.4 + 0.5 * (k / c.grid.nx) / c.grid.ny);
+    if (t == 11)  // and the approach with gap weights of its own (5 % off w along the columns)
+      for (int k = 0; k < c.grid.size(); ++k)
+        load.gap_weights.push_back(load.weights[k] * (0.97 + 0.05 * (k % c.grid.nx) / c.grid.nx));
     const NormalSolution s = solver.solve(c.grid, c.h, load, ws, tight);
     double hscale = 0;
     for (double h : c.h) hscale = std::max(hscale, std::abs(h));

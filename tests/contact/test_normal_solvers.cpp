@@ -143,7 +143,9 @@ TEST_CASE("fast solver = dense solver on 120 random non-Hertzian patches, both c
 // A weighted force (sum w p dA = F, the approach entering the gap as approach w) is the penetration problem with
 // h + approach w: solve that one for a chosen approach, prescribe its weighted force, and both solvers must find the
 // same approach and pressures. Weights vary across the rows, as the vertical parts of a curved surface's normals.
-TEST_CASE("weighted force control = the penetration problem with h + approach w, fast and dense") {
+// Odd cases give the approach its own gap weights gw (w varied by up to 6 % across the columns): the gap is then
+// u - h - approach gw, the force still sum w p dA.
+TEST_CASE("weighted force control = the penetration problem with h + approach w (or gw), fast and dense") {
   std::mt19937 rng(8086);
   const NormalSolver solver(steel);
   NormalWorkspace ws;
@@ -155,16 +157,20 @@ TEST_CASE("weighted force control = the penetration problem with h + approach w,
     const double w0 = std::uniform_real_distribution<double>(0.3, 1.0)(rng), slope = 0.6 * (1 - w0);
     std::vector<double> w(g.size());
     for (int k = 0; k < g.size(); ++k) w[k] = w0 + slope * (k / g.nx) / std::max(1, g.ny - 1);
+    std::vector<double> gw = w;
+    if (t % 2 == 1)
+      for (int k = 0; k < g.size(); ++k) gw[k] *= 1 + 0.06 * (k % g.nx) / std::max(1, g.nx - 1) - 0.02;
     double hmax = 0;
     for (double h : c.h) hmax = std::max(hmax, h);
     const double approach = std::uniform_real_distribution<double>(-0.3, 0.5)(rng) * hmax;
     std::vector<double> shifted = c.h;
-    for (int k = 0; k < g.size(); ++k) shifted[k] += approach * w[k];
+    for (int k = 0; k < g.size(); ++k) shifted[k] += approach * gw[k];
     const NormalSolution ref = solve_normal_dense(steel, g, shifted, NormalLoad::penetration());
     double F = 0;
     for (int k = 0; k < g.size(); ++k) F += w[k] * ref.pressure[k] * g.element_area();
     REQUIRE(F > 0);
-    const NormalLoad load = NormalLoad::normal_force(F, w);
+    NormalLoad load = NormalLoad::normal_force(F, w);
+    if (t % 2 == 1) load.gap_weights = gw;
     const NormalSolution fast = solver.solve(g, c.h, load, ws, tight);
     const NormalSolution dense = solve_normal_dense(steel, g, c.h, load);
     CAPTURE(t);
@@ -180,7 +186,7 @@ TEST_CASE("weighted force control = the penetration problem with h + approach w,
       CHECK(different == 0);
       CHECK(dp < 1e-6 * ref.max_pressure);
       CHECK(Fw == doctest::Approx(F).epsilon(1e-10));
-      CHECK(s->residual.relative < 1e-9);  // its gaps include approach w
+      CHECK(s->residual.relative < 1e-9);  // its gaps include approach gw
     }
   }
 }
@@ -242,6 +248,36 @@ TEST_CASE("nested start on a larger grid: same answer as without it") {
     CHECK(b.coarse_iterations == 0);
     CHECK(a.elements_in_contact == b.elements_in_contact);
     for (int k = 0; k < c.grid.size(); ++k) CHECK(std::abs(a.pressure[k] - b.pressure[k]) < 1e-6 * a.max_pressure);
+  }
+}
+
+// The estimate is the coarse grid's solution interpolated: on a Hertzian patch of ~25 x 50 coarse elements its
+// approach is within a per cent or two of the fine grid's, its force near F; one fine product. With a warm start, or
+// on a grid too small to nest, it is the ordinary solve.
+TEST_CASE("estimate: the nested start as the solution, a fraction of the solve") {
+  const double A = 1 / (2 * 0.45), B = 4 * A, delta = 70e-6;
+  const NormalCase c = paraboloid_case(A, B, delta, 0.2e-3);
+  const NormalSolver solver(steel);
+  NormalWorkspace ws;
+  NormalOptions quick;
+  quick.estimate = true;
+  std::vector<double> w(c.grid.size());
+  for (int k = 0; k < c.grid.size(); ++k) w[k] = 0.8 + 0.2 * (k / c.grid.nx) / c.grid.ny;
+  for (const NormalLoad& load : {NormalLoad::penetration(), NormalLoad::normal_force(2e4, w)}) {
+    const bool force = load.control == NormalLoad::Control::force;
+    CAPTURE(force);
+    const NormalSolution full = solver.solve(c.grid, c.h, load, ws);
+    const NormalSolution est = solver.solve(c.grid, c.h, load, ws, quick);
+    CHECK(est.products == 1);
+    CHECK(est.iterations == 0);
+    CHECK(est.coarse_iterations > 0);
+    CHECK(est.force == doctest::Approx(full.force).epsilon(0.03));
+    if (force) CHECK(est.approach == doctest::Approx(full.approach).epsilon(0.02));
+    quick.initial_pressure = full.pressure;  // warm: solved as usual
+    const NormalSolution warm = solver.solve(c.grid, c.h, load, ws, quick);
+    CHECK(warm.coarse_iterations == 0);
+    CHECK(std::abs(warm.force - full.force) < 1e-6 * full.force);
+    quick.initial_pressure = {};
   }
 }
 
@@ -339,6 +375,12 @@ TEST_CASE("bad input: a wrc::Error that names the problem") {
   NormalLoad weighted_penetration = NormalLoad::penetration();
   weighted_penetration.weights.assign(g.size(), 1.0);
   CHECK(both(steel, g, h, weighted_penetration).find("weights apply to a prescribed force only") != std::string::npos);
+  NormalLoad gapped = NormalLoad::normal_force(1);
+  gapped.gap_weights.assign(g.size(), 1.0);
+  gapped.gap_weights[2] = 0;
+  CHECK(both(steel, g, h, gapped).find("gap weight 0 at element 2 must be finite and > 0") != std::string::npos);
+  gapped.gap_weights.pop_back();
+  CHECK(both(steel, g, h, gapped).find("gap_weights has") != std::string::npos);
   NormalOptions o;
   o.tolerance = 0;
   CHECK(both(steel, g, h, NormalLoad::penetration(), o).find("tolerance") != std::string::npos);

@@ -144,6 +144,8 @@ void prolong(const Grid& coarse, const std::vector<double>& pc, const Grid& fine
 struct Start {
   std::vector<double> pressure;
   int iterations = 0, products = 0;
+  double approach = 0;  // the coarse solution's (nested start, prescribed force)
+  bool nested = false;
 };
 
 // Nested start: the coarse grid's solution, interpolated, is a start whose contact set is right to a coarse
@@ -159,12 +161,16 @@ Start make_start(const Grid& grid, std::span<const double> h, const NormalLoad& 
     const std::vector<double> hc = restrict_to(grid, coarse, h);
     NormalLoad coarse_load = load;
     if (!load.weights.empty()) coarse_load.weights = restrict_to(grid, coarse, load.weights);
+    if (!load.gap_weights.empty()) coarse_load.gap_weights = restrict_to(grid, coarse, load.gap_weights);
     NormalOptions coarse_options = options;
+    coarse_options.estimate = false;
     coarse_options.tolerance = std::max(options.tolerance, 1e-2);  // a start only: the coarse grid's own
                                                                    // discretisation error is of this order
     const NormalSolution sc = solve_coarse(coarse, hc, coarse_load, coarse_options);
     start.iterations = sc.iterations + sc.coarse_iterations;
     start.products = sc.products + sc.coarse_products;
+    start.approach = sc.approach;
+    start.nested = true;
     if (sc.force > 0) {
       start.pressure.resize(grid.size());
       prolong(coarse, sc.pressure, grid, start.pressure);
@@ -201,7 +207,10 @@ class ProjectedCg {
         r_(ws.r), z_(ws.z), d_(ws.d), q_(ws.q) {
     for (auto* v : {&p_, &d_}) v->assign(n_, 0.0);  // the others are written before they are read
     for (auto* v : {&u_, &r_, &z_, &q_}) v->resize(n_);
-    if (force_control_) w_ = load.weights.empty() ? std::vector<double>(n_, 1.0) : load.weights;
+    if (force_control_) {
+      w_ = load.weights.empty() ? std::vector<double>(n_, 1.0) : load.weights;
+      g_ = load.gap_weights.empty() ? w_ : load.gap_weights;
+    }
     ws_.active.assign(n_, 0);
     ws_.previous_active.assign(n_, 0);
   }
@@ -235,8 +244,8 @@ class ProjectedCg {
   const int direct_limit_;  // clipped elements up to this count are added back by direct sums
   NormalWorkspace& ws_;
   std::vector<double>&p_, &u_, &r_, &z_, &d_, &q_;
-  std::vector<double> w_;  // the force's weights (force control)
-  double ww_ = 0;          // sum of w^2 on S
+  std::vector<double> w_, g_;  // the force's weights and the approach's on the gap (force control)
+  double ww_ = 0;              // sum of w^2 on S
   double delta_ = 0;  // the approach
   double rz_previous_ = 0;
   bool have_direction_ = false, fresh_ = true;  // fresh: u = K p by a product, not by updates
@@ -299,29 +308,33 @@ ProjectedCg::Residual ProjectedCg::update_working_set() {
     res.error = error;
     return res;
   }
-  // g = u - h - delta w. The approach seen by the current contact (least squares of u - h = delta w on it), then
-  // re-centred on the working set, where the residual is made orthogonal to w.
-  const double* w = w_.data();
-  double we = 0, ww = 0;
+  // g = u - h - delta gw (gw: the gap weights, w unless given). The approach seen by the current contact (least
+  // squares of u - h = delta gw on it), then re-centred on the working set, where the residual is made orthogonal
+  // to w (the directions keep sum w p; with gw != w the projection along gw is oblique, which CG tolerates for
+  // gw within a few per cent of w).
+  const double *w = w_.data(), *gw = g_.data();
+  double we = 0, wg = 0;
   for (int k = 0; k < n; ++k)
-    if (p[k] > 0) we += w[k] * (u[k] - hp[k]), ww += w[k] * w[k];
-  delta_ = we / ww;
+    if (p[k] > 0) we += gw[k] * (u[k] - hp[k]), wg += gw[k] * gw[k];
+  delta_ = we / wg;
   const double delta = delta_;
-  we = 0, ww = 0;
+  double ww = 0;
+  we = 0, wg = 0;
   for (int k = 0; k < n; ++k) {
     const double e = u[k] - hp[k];
-    const bool in = p[k] > 0 || e < delta * w[k];
+    const bool in = p[k] > 0 || e < delta * gw[k];
     S[k] = in;
     changed |= in != S_previous[k];
-    r[k] = in ? delta * w[k] - e : 0.0;
+    r[k] = in ? delta * gw[k] - e : 0.0;
     we += in ? w[k] * e : 0.0;
+    wg += in ? w[k] * gw[k] : 0.0;
     ww += in ? w[k] * w[k] : 0.0;
   }
-  const double shift = we / ww - delta_;
+  const double shift = we / wg - delta_;
   delta_ += shift;
   ww_ = ww;
   for (int k = 0; k < n; ++k) {
-    r[k] += S[k] ? shift * w[k] : 0.0;
+    r[k] += S[k] ? shift * gw[k] : 0.0;
     error = std::max(error, std::abs(r[k]));
   }
   res.changed = changed;
@@ -434,6 +447,7 @@ struct Window {
     i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
   }
   void dilate(const Grid& g, int margin) {
+    if (i1 < i0) return;  // empty: stays so (a start without pressure solves on the whole grid)
     i0 = std::max(0, i0 - margin), j0 = std::max(0, j0 - margin);
     i1 = std::min(g.nx - 1, i1 + margin), j1 = std::min(g.ny - 1, j1 + margin);
   }
@@ -521,6 +535,7 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
   const std::vector<double> hs = cut(grid, w, h);
   NormalLoad sub_load = load;
   if (!load.weights.empty()) sub_load.weights = cut(grid, w, load.weights);
+  if (!load.gap_weights.empty()) sub_load.gap_weights = cut(grid, w, load.gap_weights);
   Start sub_start{start.pressure.empty() ? std::vector<double>{} : cut(grid, w, start.pressure), start.iterations,
                   start.products};
   NormalSolution s;
@@ -540,8 +555,7 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
     penetrating.clear();
     const double bound = options.tolerance * (hmax + s.approach);
     bool drifted = false;
-    const bool weighted = !load.weights.empty();
-    auto gap = [&](int k) { return u[k] - h[k] - s.approach * (weighted ? load.weights[k] : 1.0); };
+    auto gap = [&](int k) { return u[k] - h[k] - s.approach * load.gap_weight(static_cast<std::size_t>(k)); };
     auto outside = [&](int k0, int k1) {  // elements [k0, k1) outside the window: those that penetrate
       for (int k = k0; k < k1; ++k)
         if (gap(k) < -bound) penetrating.push_back(k);
@@ -570,6 +584,24 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
   }
 }
 
+// The nested start as the solution (NormalOptions::estimate): its pressure, the coarse approach, and the gaps of
+// one product.
+NormalSolution estimate(const InfluenceCache& cache, const Grid& grid, std::span<const double> h,
+                        const NormalLoad& load, NormalWorkspace& ws, double factor, Start& start) {
+  NormalSolution s;
+  s.grid = grid;
+  s.load = load;
+  s.pressure = std::move(start.pressure);
+  s.approach = load.control == NormalLoad::Control::force ? start.approach : 0.0;
+  s.products = 1;
+  s.coarse_iterations = start.iterations;
+  s.coarse_products = start.products;
+  ws.u.resize(grid.size());
+  convolve(*cache.get(grid), grid, s.pressure.data(), ws.u.data(), ws.fft, factor);
+  detail::finish_solution(s, ws.u, h);
+  return s;
+}
+
 }  // namespace
 
 NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const double> h, const NormalLoad& load,
@@ -583,6 +615,7 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
     return solve_checked(coarse, hc, coarse_load, ws, coarse_options);
   });
   const double factor = material_.pair_compliance();
+  if (options.estimate && start.nested && !start.pressure.empty()) return estimate(*cache_, grid, h, load, ws, factor, start);
   // The contact lies where the start says, to a few elements: solve on that window, check the whole grid (one
   // product) and widen the window to the elements that would penetrate, starting from what was found.
   Window w = support(grid, start.pressure);
@@ -626,24 +659,26 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   auto& q = ws.q;
   for (auto* v : {&r, &z, &d, &q}) v->assign(n, 0.0);
   // Plain PCG on the fixed set (projected to sum w dp = 0 for a prescribed force, with the force's weights w);
-  // x = 0 to start. along_w(v): the factor of v's part along w on the set.
+  // x = 0 to start. along_w(v): the factor of v's part along w on the set; absorbed(v): the approach change that
+  // leaves v orthogonal to w once it moves the gap by that times the gap weights gw (= along_w for gw = w).
   const NormalLoad& load = solution.load;
-  double ww = 0;
+  double ww = 0, wg = 0;
   if (force_control)
-    for (int k = 0; k < n; ++k) ww += A[k] ? load.weight(k) * load.weight(k) : 0.0;
+    for (int k = 0; k < n; ++k) ww += A[k] ? load.weight(k) * load.weight(k) : 0.0, wg += A[k] ? load.weight(k) * load.gap_weight(k) : 0.0;
   auto along_w = [&](const std::vector<double>& v) {
     if (!force_control) return 0.0;
     double s = 0;
     for (int k = 0; k < n; ++k) s += A[k] ? load.weight(k) * v[k] : 0.0;
     return s / ww;
   };
+  auto absorbed = [&](const std::vector<double>& v) { return force_control ? along_w(v) * ww / wg : 0.0; };
   double rhs_norm = 0;
   for (int k = 0; k < n; ++k) {
     r[k] = A[k] ? dh[k] : 0.0;
     rhs_norm = std::max(rhs_norm, std::abs(r[k]));
   }
-  const double mean = along_w(r);
-  for (int k = 0; k < n; ++k) r[k] -= A[k] ? mean * load.weight(k) : 0.0;
+  const double mean = absorbed(r);
+  for (int k = 0; k < n; ++k) r[k] -= A[k] ? mean * load.gap_weight(k) : 0.0;
   double dapproach = -mean;
   if (rhs_norm == 0) {
     detail::finish_response(out, grid);
@@ -673,9 +708,9 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
       r[k] -= A[k] ? alpha * q[k] : 0.0;
     }
     if (force_control) {  // the approach absorbs the residual's part along w
-      const double m = along_w(r);
+      const double m = absorbed(r);
       dapproach -= m;
-      for (int k = 0; k < n; ++k) r[k] -= A[k] ? m * load.weight(k) : 0.0;
+      for (int k = 0; k < n; ++k) r[k] -= A[k] ? m * load.gap_weight(k) : 0.0;
     }
     rz_previous = rz;
     out.iterations = it + 1;

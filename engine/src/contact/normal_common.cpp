@@ -27,6 +27,14 @@ void validate_normal_input(const Material& material, const Grid& grid, std::span
       if (!std::isfinite(load.weights[k]) || !(load.weights[k] > 0))
         fail("{}: weight {} at element {} must be finite and > 0", context, load.weights[k], k);
   }
+  if (!load.gap_weights.empty()) {
+    if (load.control != NormalLoad::Control::force) fail("{}: gap_weights apply to a prescribed force only", context);
+    if (load.gap_weights.size() != h.size())
+      fail("{}: gap_weights has {} values for {} elements", context, load.gap_weights.size(), h.size());
+    for (std::size_t k = 0; k < h.size(); ++k)
+      if (!std::isfinite(load.gap_weights[k]) || !(load.gap_weights[k] > 0))
+        fail("{}: gap weight {} at element {} must be finite and > 0", context, load.gap_weights[k], k);
+  }
   if (!std::isfinite(options.tolerance) || !(options.tolerance > 0) || options.tolerance >= 1)
     fail("{}: tolerance {} must be in ]0, 1[", context, options.tolerance);
   if (options.max_iterations < 0) fail("{}: max_iterations {} must be >= 0", context, options.max_iterations);
@@ -50,14 +58,13 @@ void finish_solution(NormalSolution& s, std::span<const double> u, std::span<con
   int count = 0, edge = 0;
   Complementarity& c = s.residual;
   c = {};
-  const bool weighted = !s.load.weights.empty();
   for (int j = 0; j < grid.ny; ++j) {
     const double y = grid.y(j);
     const bool edge_row = j == 0 || j == grid.ny - 1;
     for (int i = 0; i < grid.nx; ++i) {
       const int k = grid.index(i, j);
       const double p = s.pressure[k];
-      const double shift = s.approach * (weighted ? s.load.weights[k] : 1.0);
+      const double shift = s.approach * s.load.gap_weight(static_cast<std::size_t>(k));
       const double g = u[k] - h[k] - shift;
       hmax = std::max(hmax, h[k] + shift);
       c.negative_pressure = std::max(c.negative_pressure, -p);
@@ -99,7 +106,7 @@ NormalSolution zero_solution(const Grid& grid, std::span<const double> h, const 
   // For F = 0 the approach is any value <= -max h / w: report the one at which the bodies just touch.
   if (load.control == NormalLoad::Control::force) {
     s.approach = INFINITY;
-    for (std::size_t k = 0; k < h.size(); ++k) s.approach = std::min(s.approach, -h[k] / load.weight(k));
+    for (std::size_t k = 0; k < h.size(); ++k) s.approach = std::min(s.approach, -h[k] / load.gap_weight(k));
   }
   const std::vector<double> u(grid.size(), 0.0);
   finish_solution(s, u, h);

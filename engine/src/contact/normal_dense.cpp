@@ -102,10 +102,10 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
     for (int a = 0; a < m; ++a) rhs[a] = h[active[a]];
     Eigen::VectorXd pa = block.solve(rhs);
     double approach = 0;
-    if (force_control) {  // p = K^-1 (h + approach w), sum w p dA = F
-      Eigen::VectorXd w(m);
-      for (int a = 0; a < m; ++a) w[a] = load.weight(active[a]);
-      const Eigen::VectorXd v = block.solve(w);
+    if (force_control) {  // p = K^-1 (h + approach g), sum w p dA = F (g: the gap weights)
+      Eigen::VectorXd w(m), g(m);
+      for (int a = 0; a < m; ++a) w[a] = load.weight(active[a]), g[a] = load.gap_weight(active[a]);
+      const Eigen::VectorXd v = block.solve(g);
       approach = (load.force / dA - w.dot(pa)) / w.dot(v);
       pa += approach * v;
     }
@@ -126,7 +126,7 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
     const double scale = hmax + approach;
     bool added = false;
     for (int k = 0; k < n; ++k)
-      if (!in[k] && u[k] - h[k] - approach * load.weight(k) < -1e-12 * scale) {
+      if (!in[k] && u[k] - h[k] - approach * load.gap_weight(k) < -1e-12 * scale) {
         in[k] = 1;
         added = true;
       }
@@ -160,9 +160,9 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
   for (int a = 0; a < m; ++a) rhs[a] = dh[active[a]];
   Eigen::VectorXd dp = block.solve(rhs);
   if (solution.load.control == NormalLoad::Control::force) {  // sum w dp = 0: the approach moves instead
-    Eigen::VectorXd w(m);
-    for (int a = 0; a < m; ++a) w[a] = solution.load.weight(active[a]);
-    const Eigen::VectorXd v = block.solve(w);
+    Eigen::VectorXd w(m), g(m);
+    for (int a = 0; a < m; ++a) w[a] = solution.load.weight(active[a]), g[a] = solution.load.gap_weight(active[a]);
+    const Eigen::VectorXd v = block.solve(g);
     r.approach = -w.dot(dp) / w.dot(v);
     dp += r.approach * v;
   }

@@ -32,11 +32,17 @@ struct NormalLoad {
   // sum w p dA = F and the approach enters the gap as approach * w. On a curved surface whose element normals
   // differ, w = each element's vertical normal part makes F the vertical force and the approach the vertical one.
   std::vector<double> weights;
+  // For Control::force only, optional: the approach's effect on each element's gap when it is not its weight (the
+  // gap is then u - h - approach * gap_weights; the force stays sum w p dA = F). A body moved along a direction
+  // whose component along the element normals differs from the force's weights: e.g. the vertical approach of a
+  // wheel deepens h by the wheel's normal z part, while its vertical force sums the row normals' (empty: weights).
+  std::vector<double> gap_weights;
 
   double weight(std::size_t k) const { return weights.empty() ? 1.0 : weights[k]; }
+  double gap_weight(std::size_t k) const { return gap_weights.empty() ? weight(k) : gap_weights[k]; }
   static NormalLoad penetration() { return {}; }
   static NormalLoad normal_force(double F, std::vector<double> weights = {}) {
-    return {Control::force, F, std::move(weights)};
+    return {Control::force, F, std::move(weights), {}};
   }
 };
 
@@ -51,6 +57,10 @@ struct NormalOptions {
   // while the grid has more than coarse_limit elements). Off only to measure what it gains.
   bool nested = true;
   int coarse_limit = 1000;
+  // Fast solver, no warm start: return the nested start itself (the coarse grid's solution at max(tolerance, 1e-2),
+  // interpolated, with the coarse approach), without iterating on this grid: an estimate for a predictor, a fraction
+  // of a solve's cost (a grid too small to nest is solved as usual).
+  bool estimate = false;
   // Optional warm start (Pa, one value per element), e.g. the previous pose's pressure; empty: none.
   std::span<const double> initial_pressure = {};
 };
