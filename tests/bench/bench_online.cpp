@@ -14,8 +14,9 @@
 //      then each wheel's vertical force (tr:wheel).
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
-//   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N]   (default surface: conformal; only=N runs
-//   section N alone, for a profiler; section 1 runs 2 as well, for its poses)
+//   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N] [poses] [passes=K]   (default surface:
+//   conformal; only=N runs section N alone, for a profiler; section 1 runs 2 as well, for its poses; poses: section
+//   3's time and evaluations per pose; passes=K: K more passes of section 3, e.g. for a profiler)
 #include "lua/lua.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -125,11 +126,15 @@ HuntingStep hunting(int k) {
 int main(int argc, char** argv) {
   bool quick = false;
   int reps = 20, only = 0;
+  bool per_pose = false;
+  int extra_passes = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "quick") == 0) quick = true, reps = 5;
     if (std::strncmp(argv[i], "reps=", 5) == 0) reps = std::max(1, std::atoi(argv[i] + 5));
     if (std::strcmp(argv[i], "surface=planar") == 0) surface = wrc::ContactSurface::planar;
     if (std::strncmp(argv[i], "only=", 5) == 0) only = std::atoi(argv[i] + 5);
+    if (std::strcmp(argv[i], "poses") == 0) per_pose = true;
+    if (std::strncmp(argv[i], "passes=", 7) == 0) extra_passes = std::atoi(argv[i] + 7);
   }
   auto run = [&](int section) { return only == 0 || only == section; };
   double loads[3] = {0, 0, 0};
@@ -207,7 +212,9 @@ int main(int argc, char** argv) {
     fmt::print("\n== 3. one wheel with Fz = 100 kN given (as ws:wheel), y = 0 .. 7 mm ==\n");
     // Twice over the same poses: the first pass also builds the influence spectra of grid shapes the process has not
     // met yet (cached for good), the second shows a caller whose cache already holds them.
-    for (const char* pass : {"first pass", "second pass"}) {
+    std::vector<const char*> passes{"first pass", "second pass"};
+    for (int k = 0; k < extra_passes; ++k) passes.push_back("again");  // as the second
+    for (const char* pass : passes) {
       std::vector<double> t;
       int evaluations = 0;
       work->times = {};
@@ -219,6 +226,7 @@ int main(int argc, char** argv) {
         t.push_back(thread_cpu() - c0);
         evaluations += r.iterations;
         if (!r.converged) fmt::print("  y = {:.1f} mm did not converge: {}\n", y * 1e3, r.message);
+        if (per_pose) fmt::print("  y = {:.1f} mm: {:.2f} ms, {} evaluations\n", y * 1e3, 1e3 * t.back(), r.iterations);
       }
       fmt::print("{}: median {:.2f} ms, max {:.2f} ms over {} poses; {:.1f} evaluations per solve; {} influence "
                  "spectra built\n", pass, 1e3 * median(t), 1e3 * *std::max_element(t.begin(), t.end()), t.size(),

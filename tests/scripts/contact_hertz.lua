@@ -191,9 +191,15 @@ do
     print(string.format("%8.3f %10.4f %10.4f %9.4f %9.4f", psi, p.penetration * 1e6, delta * 1e6, 100 * eF, 100 * ep))
     local what = string.format("yaw %g rad: ", psi)
     check.near(p.normal.z, 1, 1e-12, what .. "contact normal vertical")
-    check.rel(p.penetration, delta, 1e-5, what .. "max h = the penetration to 1e-5 (the yawed section's radius; the apex moves between element centres)")
-    -- The axle's lowest line passes over the crown (track y = yc) at x = -yc tan(psi).
+    -- The axle's lowest line passes over the crown (track y = yc) at x = -yc tan(psi). The deepest element is the
+    -- crown's nearest to it (the elements lie on the rail's fixed lattice, one row on the crown): h = delta - a11 dx^2
+    -- there. The section's radius counts: with the unyawed one, h would be deeper by 1 / cos^2 psi (1e-4 at 0.01 rad).
     local yc = p.point.y
+    local apex, g = -yc * math.tan(psi), p.grid
+    local offset = math.huge
+    for i = 0, g.nx - 1 do offset = math.min(offset, math.abs(p.frame.origin.x + g.x0 + i * g.dx - apex)) end
+    check.ok(offset <= 0.5 * g.dx + 1e-12, what .. "an element within half an element of the apex along x")
+    check.rel(p.penetration, delta - a11 * offset ^ 2, 1e-5, what .. "max h = the penetration at the deepest element to 1e-5 (the yawed section's radius)")
     check.near(yc, 0.75, 1e-6, what .. "centre of pressure on the crown")
     check.near(p.point.x, -yc * math.tan(psi), 1e-6, what .. "centre of pressure under the axle")
     check.ok(math.abs(eF) < 0.01, what .. "normal force within 1 % of Hertz")

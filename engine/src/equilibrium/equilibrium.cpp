@@ -510,12 +510,14 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     res.z = z_touch - a;
     res.approach = a;
   };
-  // Frictionless, the normal problems solved to tol; with `vertical`, the wheel's area solved for that vertical force.
-  auto evaluate = [&](double a, double tol, std::optional<double> vertical = std::nullopt) {
+  // Frictionless, the normal problems solved to tol; with `vertical`, the wheel's area solved for that vertical force
+  // (`estimate`: only estimated on the coarse grid when cold).
+  auto evaluate = [&](double a, double tol, std::optional<double> vertical = std::nullopt, bool estimate = false) {
     ContactRequest req;
     req.only_side = side;
     req.tolerance = tolerance = tol;
     req.vertical_force = vertical;
+    req.estimate = estimate;
     evaluate_at(a, req);
   };
   auto phi = [&](double a, double tol) {
@@ -524,10 +526,11 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   };
   auto tolerance_for = [&](double error) { return error > 0.05 ? loose : error > 1e-3 ? tight : final_tolerance; };
   // A prediction: the wheel's area solved for Fz itself on the grid of approach a (its normals' vertical parts as
-  // weights), whose multiplier is the further approach that carries Fz there; a moves on by it. False when the wheel
+  // weights, the approach deepening h as it does), whose multiplier is the further approach that carries Fz there; a
+  // moves on by it. False when the wheel
   // has several areas or steep normals (evaluate_contact then solved the penetration) or the step is unusable.
-  auto predict = [&](double& a, double tol) {
-    evaluate(a, tol, Fz);
+  auto predict = [&](double& a, double tol, bool estimate = false) {
+    evaluate(a, tol, Fz, estimate);
     const auto& patches = cur.wheel[side].patches;
     if (patches.size() != 1 || patches[0].solution.load.control != contact::NormalLoad::Control::force) return false;
     const double next = a + patches[0].solution.approach;
@@ -537,7 +540,8 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   };
   const double ftol = (2.0 / 3.0) * opt.force_tolerance * target;  // |F - Fz| <= tol Fz, in phi's units
   double a0 = 0, f0 = -target;                                       // the exact point of no contact
-  double a1 = start && *start > 0 ? std::min(*start, opt.max_penetration) : opt.initial_approach;
+  const double cold = opt.wheel_approach * std::cbrt((Fz / 100e3) * (Fz / 100e3));  // Hertz: a ~ F^(2/3)
+  double a1 = std::min(start && *start > 0 ? *start : cold, opt.max_penetration);
   double lo = 0, hi = INFINITY;
   // With friction the creep forces' vertical part joins Fz (a tilted contact plane turns lateral creep forces partly
   // vertical): from the frictionless approach, secant steps on the total vertical force with the tangential problems
@@ -563,18 +567,16 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     return true;
   };
   try {
-    // Two predictions first: one on the grid of the start (loose when cold: its grid is too small for Fz anyway),
-    // then one at normal_tolerance on the grid the first leads to, which corrects what the first one's grid and
-    // linearised geometry missed. Its own error is the grid's motion with the pose, which the fixed-grid model leaves
-    // out (measured against evaluations: 2e-4 of its step at the tread, 1e-2 at the flange root), and its solve's
-    // ~1e-6: the evaluation at the model's tolerance that follows concludes at most tread poses (3 evaluations in
-    // all); otherwise the secant steps below go on from it, as they do for a wheel with several areas or steep
-    // normals (no prediction). A second prediction at the model's tolerance costs more CG iterations than it saves.
-    // From a close start (a trajectory's last approach) the first step is within 1e-3 of the approach, and the
-    // error it leaves is that fraction of the grid's motion effect: the second prediction is skipped (tr:wheel 3.0 ->
-    // 2.1 evaluations per step).
+    // Two predictions first: one on the grid of the start (cold: only estimated on the coarse grid, a few per cent
+    // off), then one at normal_tolerance on the grid the first leads to, which corrects what the first one's grid,
+    // coarseness and linearised geometry missed. The conformal grid's elements stay on the rail's lattice, so the
+    // second one's model differs from the evaluation of the pose it predicts only by h's curvature in z (second
+    // order in its step) and its solve's ~1e-6: the evaluation at the model's tolerance that follows concludes (3
+    // evaluations in all) but where the step is large (deep in the flange), and then the secant steps below go on
+    // from it, as they do for a wheel with several areas or steep normals (no prediction). From a close start (a
+    // trajectory's last approach) the first step is within 1e-3 of the approach and the second is skipped.
     const double from = a1;
-    bool predicted = opt.max_evaluations >= 4 && predict(a1, start ? tight : loose);
+    bool predicted = opt.max_evaluations >= 4 && predict(a1, start ? tight : loose, !start);
     if (predicted && std::abs(a1 - from) > 1e-3 * a1) predicted = predict(a1, tight);
     double f1 = phi(a1, predicted ? final_tolerance : start ? tight : loose);
     for (int it = 0;; ++it) {

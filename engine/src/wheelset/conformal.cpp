@@ -26,6 +26,8 @@ struct SurfaceLine {
   Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the line's deepest
                          // point, x component dropped): the normal of the surface midway between them
   LineProfile h;         // depth along the wheel's normal as a function of track x (v, u0 unused)
+  double deepening = 1;  // dh/dz: h's growth as the wheel moves down, the z part of the wheel's normal n_w (h is a
+                         // depth along n_w; n is the bisector)
 };
 
 double chord(const RailLines& rail, int r) {  // between lines r and r + 1 (m)
@@ -48,11 +50,15 @@ Eigen::Vector2d surface_origin(const std::vector<SegmentInfo>& all, const std::v
   return o / static_cast<double>(all.size());
 }
 
-// The grid on the unrolled surface: element centres at integer multiples of the element from the origin, covering
-// the segments (x from their ends, s from their lines) plus the margin.
+// The grid on the unrolled surface, covering the segments (x from their ends, s from their lines) plus the margin:
+// element centres on the rail's own lattice, x and s - s_lattice at integer multiples of the element
+// (ContactModel::rail_lattice_origin), in coordinates relative to the origin o. The rail does not move, so neither does the lattice: h at an element
+// changes only with the wheel's pose (continuously), a warm start finds the previous pressures on the same points,
+// and a deeper pose on the same lattice differs from the shallower one only by h (what the fixed-surface sensitivities
+// and ws:wheel's predictions assume). Anchored at a moving origin instead, the elements would slide with the pose.
 contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all,
-                           const std::vector<double>& S_of_segment, const Eigen::Vector2d& o, int side,
-                           const Pose& pose) {
+                           const std::vector<double>& S_of_segment, const Eigen::Vector2d& o, double s_lattice,
+                           int side, const Pose& pose) {
   double xmin = INFINITY, xmax = -INFINITY, smin = INFINITY, smax = -INFINITY;
   for (std::size_t k = 0; k < all.size(); ++k) {
     xmin = std::min(xmin, all[k].xm - 0.5 * all[k].L);
@@ -61,18 +67,18 @@ contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentI
     smax = std::max(smax, S_of_segment[k]);
   }
   const double e = opt.element;
-  const long i0 = static_cast<long>(std::floor((xmin - o.x()) / e)) - opt.margin;
-  const long i1 = static_cast<long>(std::ceil((xmax - o.x()) / e)) + opt.margin;
-  const long j0 = static_cast<long>(std::floor((smin - o.y()) / e)) - opt.margin;
-  const long j1 = static_cast<long>(std::ceil((smax - o.y()) / e)) + opt.margin;
+  const long i0 = static_cast<long>(std::floor(xmin / e)) - opt.margin;
+  const long i1 = static_cast<long>(std::ceil(xmax / e)) + opt.margin;
+  const long j0 = static_cast<long>(std::floor((smin - s_lattice) / e)) - opt.margin;
+  const long j1 = static_cast<long>(std::ceil((smax - s_lattice) / e)) + opt.margin;
   const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
   if (nx * ny > opt.max_elements) too_many_elements(opt, all, side, pose, nx, ny);
   contact::Grid grid;
   grid.nx = static_cast<int>(nx);
   grid.ny = static_cast<int>(ny);
   grid.dx = grid.dy = e;
-  grid.x0 = static_cast<double>(i0) * e;
-  grid.y0 = static_cast<double>(j0) * e;
+  grid.x0 = static_cast<double>(i0) * e - o.x();
+  grid.y0 = static_cast<double>(j0) * e + s_lattice - o.y();
   return grid;
 }
 
@@ -139,20 +145,22 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
   }
   for (int r = rlo; r <= rhi; ++r) {
     SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
+    l.deepening = l.n.y();
     l.n = mid_normal(l.n, rail_normal(rail, r));
   }
   return lines;
 }
 
-// Rows of the grid on the lines: per row its point, normal and the h of its elements (linear in s between the two
-// lines bracketing the row; the nearest line's beyond the rail's ends).
+// Rows of the grid on the lines: per row its point, normal, dh/dz and the h of its elements (linear in s between the
+// two lines bracketing the row; the nearest line's beyond the rail's ends).
 void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, const Eigen::Vector2d& o,
-              ConformalSurface& surf, std::vector<double>& h) {
+              ConformalSurface& surf, std::vector<double>& deepening, std::vector<double>& h) {
   const int ny = grid.ny;
   surf.y.resize(static_cast<std::size_t>(ny));
   surf.z.resize(static_cast<std::size_t>(ny));
   surf.normal_y.resize(static_cast<std::size_t>(ny));
   surf.normal_z.resize(static_cast<std::size_t>(ny));
+  deepening.resize(static_cast<std::size_t>(ny));
   h.resize(static_cast<std::size_t>(grid.size()));  // every element is written below
   // Each line's h at the grid's columns, computed once (neighbouring rows share their lines).
   const auto nx = static_cast<std::size_t>(grid.nx);
@@ -181,6 +189,7 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
     const Eigen::Vector2d n = ((1 - t) * la.n + t * lc.n).normalized();
     surf.normal_y[js] = n.x();
     surf.normal_z[js] = n.y();
+    deepening[js] = (1 - t) * la.deepening + t * lc.deepening;
     const double* ha = heights(a);
     const double* hc = t > 0 ? heights(c) : ha;
     double* out = h.data() + static_cast<std::size_t>(grid.index(0, j));
@@ -274,6 +283,7 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
   ConformalSurface& surf = *pc.conformal;
   contact::Grid grid;
   Plane pl;  // the area in unrolled coordinates (x, s, 0): the warm-start helpers' plane
+  std::vector<double> deepening;  // per row, dh/dz
   {
     PhaseTimer t(ws, ws.times.geometry);
     const std::vector<double>& arc = model.rail_arc(side);
@@ -281,9 +291,9 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line)];
     const Eigen::Vector2d o = surface_origin(all, S);
     pl = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
-    grid = surface_grid(opt, all, S, o, side, st.pose());
+    grid = surface_grid(opt, all, S, o, model.rail_lattice_origin(side), side, st.pose());
     const auto lines = surface_lines(g, st, side, arc, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
-    lay_rows(lines, grid, o, surf, pc.h);
+    lay_rows(lines, grid, o, surf, deepening, pc.h);
     surf.x0 = o.x();
     surf.s0 = o.y();
     const int j0 = std::clamp(static_cast<int>(std::lround(-grid.y0 / grid.dy)), 0, grid.ny - 1);
@@ -292,7 +302,7 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     pc.t2 = surf.t2(j0);
     pc.normal = surf.normal(j0);
   }
-  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, surf.normal_z, ws);
+  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, surf.normal_z, deepening, ws);
   {
     PhaseTimer t(ws, ws.times.results);
     conformal_results(g.side[side].wheel, st.frame(), pc);

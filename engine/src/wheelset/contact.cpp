@@ -22,6 +22,24 @@
 
 namespace wrc {
 
+namespace {
+
+// The arc length (along the chords of `rail`, whose lines' arc lengths are S) of the rail's point nearest to P.
+double nearest_arc(const RailLines& rail, const std::vector<double>& S, const Eigen::Vector2d& P) {
+  double best = INFINITY, arc = 0;
+  for (int r = 0; r < rail.count(); ++r) {
+    const Eigen::Vector2d A(rail.y[r], rail.z[r]);
+    Eigen::Vector2d d = Eigen::Vector2d::Zero();
+    if (r + 1 < rail.count()) d = Eigen::Vector2d(rail.y[r + 1], rail.z[r + 1]) - A;
+    const double t = d.squaredNorm() > 0 ? std::clamp((P - A).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double dist = (A + t * d - P).squaredNorm();
+    if (dist < best) best = dist, arc = S[static_cast<std::size_t>(r)] + t * d.norm();
+  }
+  return arc;
+}
+
+}  // namespace
+
 ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
                            const ContactOptions& options)
     : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
@@ -36,6 +54,8 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
       const auto k = static_cast<std::size_t>(r);
       S[k] = S[k - 1] + std::hypot(rail.y[r] - rail.y[r - 1], rail.z[r] - rail.z[r - 1]);
     }
+    if (geometry_->track)
+      rail_lattice_[static_cast<std::size_t>(s)] = nearest_arc(rail, S, geometry_->track->place[s].rail(0.0, 0.0));
   }
   contact::validate(material, "contact model");
   if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
@@ -329,35 +349,40 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
   return true;
 }
 
-// The load of an area: its penetration, or the request's vertical force with the rows' vertical normal parts as
-// weights. A vertical approach a deepens h by a n_z (to first order: h is measured along the plane's normal, or on
-// the curved surface along the wheel's, within a fraction of a degree of the row's), and the vertical force is
-// sum n_z p dA: the solution is the pose's penetration problem with h + a n_z, a the multiplier. Rows less upright
-// than kVerticalWeightMin: the penetration.
+// The load of an area: its penetration, or the request's vertical force with the rows' vertical normal parts n_z as
+// weights. The vertical force is sum n_z p dA, and a vertical approach a deepens h by a times `deepening` (to first
+// order; on a plane n_z itself; on the curved surface the z part of the wheel's normal, along which h is measured,
+// up to a few per mille from the row's bisector normal at the flange root): the solution is the pose's penetration
+// problem with h + a deepening, a the multiplier. Rows less upright than kVerticalWeightMin: the penetration.
 contact::NormalLoad area_load(const ContactRequest& request, const contact::Grid& grid,
-                              const std::vector<double>& vertical) {
+                              const std::vector<double>& vertical, const std::vector<double>& deepening) {
   if (!request.vertical_force) return contact::NormalLoad::penetration();
-  std::vector<double> w(static_cast<std::size_t>(grid.size()));
+  std::vector<double> w(static_cast<std::size_t>(grid.size())), g(w.size());
   for (int j = 0; j < grid.ny; ++j) {
-    const double v = vertical[static_cast<std::size_t>(j)];
-    if (!(v >= kVerticalWeightMin)) return contact::NormalLoad::penetration();
+    const double v = vertical[static_cast<std::size_t>(j)], d = deepening[static_cast<std::size_t>(j)];
+    if (!(v >= kVerticalWeightMin) || !(d >= kVerticalWeightMin)) return contact::NormalLoad::penetration();
     std::fill_n(w.begin() + grid.index(0, j), grid.nx, v);
+    std::fill_n(g.begin() + grid.index(0, j), grid.nx, d);
   }
-  return contact::NormalLoad::normal_force(*request.vertical_force, std::move(w));
+  contact::NormalLoad load = contact::NormalLoad::normal_force(*request.vertical_force, std::move(w));
+  if (g != load.weights) load.gap_weights = std::move(g);
+  return load;
 }
 
 }  // namespace
 
 contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
                                           const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
-                                          const std::vector<double>& vertical, ContactWorkspace& ws) {
+                                          const std::vector<double>& vertical, const std::vector<double>& deepening,
+                                          ContactWorkspace& ws) {
   PhaseTimer t(ws, ws.times.solve);
   const ContactOptions& opt = model.options();
   contact::NormalOptions nopt = opt.normal;
   if (request.tolerance > 0) nopt.tolerance = request.tolerance;
+  nopt.estimate = request.estimate;
   std::vector<double> start;
   if (warm_start(ws, side, pl, grid, start)) nopt.initial_pressure = start;
-  const contact::NormalLoad load = area_load(request, grid, vertical);
+  const contact::NormalLoad load = area_load(request, grid, vertical, deepening);
   return opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
                    : model.solver().solve(grid, h, load, ws.normal, nopt);
 }
@@ -520,7 +545,8 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     grid = area_grid(opt, all, pl, side, st.pose());
     pc.h = undeformed_distance(line_profiles(g, st, side, all, pl, grid), pl, grid);
   }
-  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, std::vector<double>(grid.ny, pl.n.z()), ws);
+  const std::vector<double> vertical(static_cast<std::size_t>(grid.ny), pl.n.z());
+  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, vertical, vertical, ws);
   {
     PhaseTimer t(ws, ws.times.results);
     copy_located(st, side, group, pc);

@@ -90,10 +90,12 @@ int contact_regions(const contact::NormalSolution& sol);
 // The normal problem of one area on its grid (contact.cpp), at the request's tolerance, warm-started from the
 // workspace's last evaluation of that side (extrapolated with the one before when the workspace extrapolates). A
 // conformal area passes its unrolled coordinates as the plane (origin (x, s, 0), axes e_x, e_y, normal e_z).
-// vertical: per grid row, the vertical part of its normal (for the request's vertical_force).
+// vertical: per grid row, the vertical part of its normal (for the request's vertical_force); deepening: per row,
+// dh/dz (h's growth as the wheel moves down; the request's vertical approach enters the gap so).
 contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
                                           const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
-                                          const std::vector<double>& vertical, ContactWorkspace& ws);
+                                          const std::vector<double>& vertical, const std::vector<double>& deepening,
+                                          ContactWorkspace& ws);
 // A potential contact area of nx x ny elements exceeds max_elements (contact.cpp): an error that says whether the
 // grid is too fine for the cap or the pose far too deep.
 [[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,

@@ -35,6 +35,10 @@ struct EquilibriumOptions {
   double max_step_z = 0.5e-3;      // largest Newton step in z (m)
   double max_step_roll = 2e-3;     // largest Newton step in roll (rad)
   double initial_approach = 0.05e-3;  // cold start: the rigid position pressed in by this much (m)
+  // solve_wheel's cold start for Fz = 100 kN (m below the touching height), scaled as Fz^(2/3) (Hertz): a little
+  // deeper than a tread contact's approach (S1002/60E1: 75-115 um on the tread, 150 um at the flange root), so that
+  // the first prediction's grid, which covers the rigid overlap at this approach, holds most of the contact.
+  double wheel_approach = 0.08e-3;
   // An iterate whose contacts are deeper than this (m) and still carry less than the load ends the solve at once: the
   // load is out of reach. Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075 mm at 100 kN
   // per wheel, 0.24 mm for 367 kN on the flange root); at 1 mm the contact is tens of mm long on a 0.45 m wheel,
@@ -107,7 +111,7 @@ struct WheelResult {
   WheelContact wheel;        // the side's contact
 };
 // `start`: an approach to start from (m below the touching height; e.g. the previous time step's, which follows the
-// load where the height does not); otherwise initial_approach. The approach is predicted by the wheel's normal
+// load where the height does not); otherwise options.wheel_approach scaled to Fz. The approach is predicted by the wheel's normal
 // problem solved for Fz itself (ContactRequest::vertical_force), twice from afar and once from a close start, then
 // confirmed (and corrected by secant steps) by evaluations of the pose; the result is always such an evaluation, at
 // the model's normal tolerance. A load that the wheel does not carry at an approach of options.max_penetration is out

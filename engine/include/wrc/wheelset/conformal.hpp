@@ -10,7 +10,9 @@
 //    so its surface is exactly x-extruded: the curve across the patch is the rail profile through the placed rail
 //    points, the potential contact area lies on it, and unrolling it is exact (no stretching).
 //  - Parameters: x (track x, m) along the track and s (m), the arc length along the rail profile (the chords between
-//    consecutive rail points, counted from the side's first rail line). The grid is regular in (x, s): the normal
+//    consecutive rail points, counted from the side's first rail line). The grid is regular in (x, s), its element
+//    centres on the rail's fixed lattice (x, s integer multiples of the element), so they do not slide with the pose;
+//    the normal
 //    solver and its half-space influence coefficients are those of the planar path, applied on the unrolled surface
 //    (the standard approximation of the conformal mode; a kernel corrected for the surface's turning would enter
 //    there).

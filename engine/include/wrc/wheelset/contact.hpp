@@ -146,10 +146,15 @@ class ContactModel {
   // Arc length of each of a side's rail lines along the rail profile from its first line (m): the conformal
   // surface's coordinate s (chords between neighbouring lines summed once, here).
   const std::vector<double>& rail_arc(int side) const { return rail_arc_[static_cast<std::size_t>(side)]; }
+  // The arc length (m, as rail_arc) of the point of a side's rail nearest to its profile's origin (0 without a
+  // track): the conformal grids' elements lie at this s plus integer multiples of the element, so that mirrored
+  // rails have mirrored lattices and a contact centred on a symmetric rail head has an element at its centre.
+  double rail_lattice_origin(int side) const { return rail_lattice_[static_cast<std::size_t>(side)]; }
 
  private:
   std::shared_ptr<const GeometryModel> geometry_;
   std::array<std::vector<double>, 2> rail_arc_;
+  std::array<double, 2> rail_lattice_{0.0, 0.0};
   std::array<Flange, 2> flange_;
   ContactOptions options_;
   contact::NormalSolver solver_;
@@ -206,6 +211,9 @@ struct ContactRequest {
   // solve_wheel's predictor; such a result is not the pose's contact. A wheel with several areas, or with normals
   // less than kVerticalWeightMin upright, is solved for the penetration as usual (its solutions' load says which).
   std::optional<double> vertical_force;
+  // The normal problems without a warm start only estimated (NormalOptions::estimate: the coarse grid's solution,
+  // interpolated): a predictor's cheap first step; such a result is not the pose's contact either.
+  bool estimate = false;
 };
 
 // The least vertical part of the normals (their cosine to the vertical) over an area solved for a vertical force.
