@@ -206,9 +206,24 @@ TEST_CASE("plain CG, no nested start, and a warm start reach the same solution")
       NormalOptions warm;
       warm.initial_pressure = base.pressure;
       const NormalSolution w = solver.solve(c.grid, c.h, load, ws, warm);
+      // The solution's displacements are D p: given with the start, they replace its product (not with a NaN in the
+      // contact; elsewhere outside the window the solve works on, a NaN does not matter).
+      REQUIRE(base.displacement.size() == c.h.size());
+      const std::vector<double> u = independent_gap(c, base);  // D p - h - approach, by direct sums
+      for (int k = 0; k < c.grid.size(); ++k)
+        CHECK(base.displacement[k] == doctest::Approx(u[k] + c.h[k] + base.approach * load.weight(k)).scale(1e-6));
+      warm.initial_displacement = base.displacement;
+      const NormalSolution wu = solver.solve(c.grid, c.h, load, ws, warm);
+      std::vector<double> partial = base.displacement;
+      partial[static_cast<std::size_t>(std::max_element(base.pressure.begin(), base.pressure.end()) - base.pressure.begin())] = NAN;
+      warm.initial_displacement = partial;
+      const NormalSolution wn = solver.solve(c.grid, c.h, load, ws, warm);
+      CHECK(wn.products == w.products);
+      CHECK(wu.products == w.products - 1);
       for (int k = 0; k < c.grid.size(); ++k) {
         CHECK(std::abs(p.pressure[k] - base.pressure[k]) < 1e-6 * base.max_pressure);
         CHECK(std::abs(w.pressure[k] - base.pressure[k]) < 1e-6 * base.max_pressure);
+        CHECK(std::abs(wu.pressure[k] - base.pressure[k]) < 1e-6 * base.max_pressure);
       }
       CHECK(w.iterations <= 2);  // started at the solution
     }

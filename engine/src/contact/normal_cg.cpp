@@ -143,6 +143,7 @@ void prolong(const Grid& coarse, const std::vector<double>& pc, const Grid& fine
 // The start of a solve: the pressure to start from (empty: none) and the work done on coarser grids for it.
 struct Start {
   std::vector<double> pressure;
+  std::vector<double> displacement;  // u = D pressure where known (NaN elsewhere), or empty
   int iterations = 0, products = 0;
   double approach = 0;  // the coarse solution's (nested start, prescribed force)
   bool nested = false;
@@ -177,6 +178,7 @@ Start make_start(const Grid& grid, std::span<const double> h, const NormalLoad& 
     }
   } else if (!options.initial_pressure.empty()) {
     start.pressure.assign(options.initial_pressure.begin(), options.initial_pressure.end());
+    start.displacement.assign(options.initial_displacement.begin(), options.initial_displacement.end());
   }
   return start;
 }
@@ -215,7 +217,7 @@ class ProjectedCg {
     ws_.previous_active.assign(n_, 0);
   }
 
-  void start(const std::vector<double>& pressure);
+  void start(const std::vector<double>& pressure, const std::vector<double>& displacement);
   // Iterates until the gap on the working set is within options.tolerance of the penetration hmax + approach
   // (confirmed on a fresh product unless the caller confirms it on its own); throws wrc::Error after the iteration
   // limit.
@@ -259,9 +261,17 @@ void ProjectedCg::rescale_to_force() {
   for (int k = 0; k < n_; ++k) p_[k] *= f, u_[k] *= f;
 }
 
-// The warm or nested start, else nothing (penetration) or a uniform pressure on {h > 0} (force).
-void ProjectedCg::start(const std::vector<double>& pressure) {
-  for (std::size_t k = 0; k < pressure.size(); ++k) p_[k] = std::max(0.0, pressure[k]);
+// The warm or nested start, else nothing (penetration) or a uniform pressure on {h > 0} (force). u = K p is the
+// start's own displacement where it is given for every element (a warm start's reuse), else a product.
+void ProjectedCg::start(const std::vector<double>& pressure, const std::vector<double>& displacement) {
+  bool given = false;
+  for (std::size_t k = 0; k < pressure.size(); ++k) p_[k] = std::max(0.0, pressure[k]), given |= p_[k] > 0;
+  if (given && displacement.size() == static_cast<std::size_t>(n_) &&
+      std::all_of(displacement.begin(), displacement.end(), [](double v) { return std::isfinite(v); })) {
+    std::copy(displacement.begin(), displacement.end(), u_.begin());
+    if (force_control_) rescale_to_force();
+    return;
+  }
   if (force_control_) {
     double sum = 0;
     for (double v : p_) sum += v;
@@ -505,7 +515,7 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
   const auto periodic = cache.get(grid, InfluenceSpectrum::Kind::periodic);
   FftOperator K{*spectrum, *periodic, grid, factor, ws.fft, ws.fft_periodic};
   ProjectedCg cg(K, grid, h, load, ws);
-  cg.start(start.pressure);
+  cg.start(start.pressure, start.displacement);
   cg.run(options, hmax, !window);
 
   NormalSolution s;
@@ -517,7 +527,10 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
   s.products = K.products;
   s.coarse_iterations = start.iterations;
   s.coarse_products = start.products;
-  if (!window) detail::finish_solution(s, ws.u, h);
+  if (!window) {
+    detail::finish_solution(s, ws.u, h);
+    s.displacement = ws.u;
+  }
   return s;
 }
 
@@ -536,8 +549,9 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
   NormalLoad sub_load = load;
   if (!load.weights.empty()) sub_load.weights = cut(grid, w, load.weights);
   if (!load.gap_weights.empty()) sub_load.gap_weights = cut(grid, w, load.gap_weights);
-  Start sub_start{start.pressure.empty() ? std::vector<double>{} : cut(grid, w, start.pressure), start.iterations,
-                  start.products};
+  Start sub_start{start.pressure.empty() ? std::vector<double>{} : cut(grid, w, start.pressure),
+                  start.displacement.empty() ? std::vector<double>{} : cut(grid, w, start.displacement),
+                  start.iterations, start.products};
   NormalSolution s;
   s.grid = grid;
   s.load = load;
@@ -576,10 +590,12 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
     if (!penetrating.empty()) return std::nullopt;
     if (drifted && attempt == 0) {
       sub_start.pressure = part.pressure;
+      sub_start.displacement = cut(grid, w, u);
       continue;
     }
     s.pressure = std::move(pressure);
     detail::finish_solution(s, u, h);
+    s.displacement = u;
     return s;
   }
 }
@@ -599,6 +615,7 @@ NormalSolution estimate(const InfluenceCache& cache, const Grid& grid, std::span
   ws.u.resize(grid.size());
   convolve(*cache.get(grid), grid, s.pressure.data(), ws.u.data(), ws.fft, factor);
   detail::finish_solution(s, ws.u, h);
+  s.displacement = ws.u;
   return s;
 }
 
@@ -627,6 +644,7 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
     for (int k : penetrating) w.extend(k % grid.nx, k / grid.nx);
     w.dilate(grid, kWindowMargin);
     start.pressure = found;
+    start.displacement = ws.u;  // the check's product: u of `found` on the whole grid
   }
   return solve_grid(*cache_, factor, grid, h, load, ws, options, start, hmax);
 }

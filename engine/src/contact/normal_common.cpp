@@ -38,6 +38,8 @@ void validate_normal_input(const Material& material, const Grid& grid, std::span
   if (!std::isfinite(options.tolerance) || !(options.tolerance > 0) || options.tolerance >= 1)
     fail("{}: tolerance {} must be in ]0, 1[", context, options.tolerance);
   if (options.max_iterations < 0) fail("{}: max_iterations {} must be >= 0", context, options.max_iterations);
+  if (!options.initial_displacement.empty() && options.initial_displacement.size() != h.size())
+    fail("{}: initial_displacement has {} values for {} elements", context, options.initial_displacement.size(), h.size());
   if (!options.initial_pressure.empty()) {
     if (options.initial_pressure.size() != h.size())
       fail("{}: initial_pressure has {} values for {} elements", context, options.initial_pressure.size(), h.size());

@@ -314,7 +314,8 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
     PhaseTimer t(ws, ws.times.sensitivity);
     conformal_sensitivity(model, st.pose(), pc, ws);
   }
-  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure});
+  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure,
+                           std::move(pc.solution.displacement)});
   return pc;
 }
 

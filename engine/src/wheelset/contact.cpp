@@ -294,9 +294,12 @@ struct OldGridMap {
   // pressure_at every element of a grid of the new plane (0 where it gives nothing) into out (zeroed). When the
   // planes share their axes and the grids their element size (the conformal path always, a plane that did not turn),
   // every element sits at one fractional offset (a, b) from the old elements: constant weights, row by row.
-  void fill(const contact::Grid& grid, double* out) const {
+  // u_out (optional): the old displacements on the new grid where the new elements are old ones (the grids shifted by
+  // whole elements, the conformal path's lattice), NaN elsewhere; all NaN otherwise.
+  void fill(const contact::Grid& grid, double* out, std::vector<double>* u_out = nullptr) const {
     const contact::Grid& g = old->grid;
     const bool shifted = uy == 0 && vx == 0 && std::abs(ux * grid.dx - 1) < 1e-12 && std::abs(vy * grid.dy - 1) < 1e-12;
+    if (u_out) u_out->assign(static_cast<std::size_t>(grid.size()), NAN);
     if (!shifted) {
       for (int j = 0; j < grid.ny; ++j)
         for (int i = 0; i < grid.nx; ++i)
@@ -306,6 +309,7 @@ struct OldGridMap {
     const double fu = u0 + ux * grid.x(0), fv = v0 + vy * grid.y(0);
     const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
     const double a = fu - iu, b = fv - iv;
+    if (u_out) shift_displacement(grid, fu, fv, u_out);
     const double w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
     const int i_lo = std::max(0, -iu), i_hi = std::min(grid.nx - 1, g.nx - 2 - iu);
     for (int j = 0; j < grid.ny; ++j) {
@@ -322,20 +326,40 @@ struct OldGridMap {
       }
     }
   }
+  // The old displacements at whole-element offsets (fu, fv: the new element (0, 0) in old element units), when
+  // within 1e-9 of whole: the pressures' copies then match them (to that fraction).
+  void shift_displacement(const contact::Grid& grid, double fu, double fv, std::vector<double>* u_out) const {
+    const contact::Grid& g = old->grid;
+    const double ru = std::round(fu), rv = std::round(fv);
+    if (old->displacement.size() != static_cast<std::size_t>(g.size()) || std::abs(fu - ru) > 1e-9 ||
+        std::abs(fv - rv) > 1e-9)
+      return;
+    const int du = static_cast<int>(ru), dv = static_cast<int>(rv);
+    for (int j = 0; j < grid.ny; ++j) {
+      const int jv = dv + j;
+      if (jv < 0 || jv >= g.ny) continue;
+      for (int i = std::max(0, -du); i < grid.nx && du + i < g.nx; ++i)
+        (*u_out)[static_cast<std::size_t>(grid.index(i, j))] = old->displacement[static_cast<std::size_t>(g.index(du + i, jv))];
+    }
+  }
 };
 
 // Start pressures for an area in the plane pl from the workspace's last evaluation of that side: the old pressure at
 // each new element centre (bilinear), extrapolated linearly in time with the evaluation before it where both were in
 // contact and the workspace extrapolates. False when there is no old area (or warm starts are off).
 bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const contact::Grid& grid,
-                std::vector<double>& start) {
+                std::vector<double>& start, std::vector<double>& displacement) {
   const auto* last = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
   if (!last) return false;
   const auto* before = ws.extrapolate ? previous_area(ws.before[side], pl) : nullptr;
   const OldGridMap now(*last, pl), then(before ? *before : *last, pl);
   start.assign(static_cast<std::size_t>(grid.size()), 0.0);
   if (!before) {
-    now.fill(grid, start.data());
+    now.fill(grid, start.data(), &displacement);
+    // The old displacements hold the whole old pressure's: reusable only if the new grid carries all of it.
+    const double carried = std::accumulate(start.begin(), start.end(), 0.0);
+    const double all = std::accumulate(last->pressure.begin(), last->pressure.end(), 0.0);
+    if (!(std::abs(carried - all) <= 1e-12 * all)) displacement.clear();
     return true;
   }
   for (int j = 0; j < grid.ny; ++j)
@@ -380,8 +404,11 @@ contact::NormalSolution solve_area_normal(const ContactModel& model, const Conta
   contact::NormalOptions nopt = opt.normal;
   if (request.tolerance > 0) nopt.tolerance = request.tolerance;
   nopt.estimate = request.estimate;
-  std::vector<double> start;
-  if (warm_start(ws, side, pl, grid, start)) nopt.initial_pressure = start;
+  std::vector<double> start, displacement;
+  if (warm_start(ws, side, pl, grid, start, displacement)) {
+    nopt.initial_pressure = start;
+    nopt.initial_displacement = displacement;
+  }
   const contact::NormalLoad load = area_load(request, grid, vertical, deepening);
   return opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
                    : model.solver().solve(grid, h, load, ws.normal, nopt);
@@ -559,7 +586,8 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
     PhaseTimer t(ws, ws.times.sensitivity);
     area_sensitivity(model, st.pose(), pc, ws);
   }
-  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure});
+  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure,
+                           std::move(pc.solution.displacement)});
   return pc;
 }
 

@@ -63,6 +63,10 @@ struct NormalOptions {
   bool estimate = false;
   // Optional warm start (Pa, one value per element), e.g. the previous pose's pressure; empty: none.
   std::span<const double> initial_pressure = {};
+  // Fast solver, optional: the displacements u = D p of initial_pressure (m, as NormalSolution::displacement) where
+  // known, NaN elsewhere; e.g. the last solution's on the elements two grids share. A start whose window they cover
+  // needs no product.
+  std::span<const double> initial_displacement = {};
 };
 
 // How well the final state satisfies the complementarity conditions (recomputed from scratch at the end).
@@ -93,6 +97,7 @@ struct NormalSolution {
   double approach = 0;           // m: solved rigid approach for a prescribed force, 0 for a penetration
   NormalLoad load;
   Complementarity residual;
+  std::vector<double> displacement;  // fast solver: u = D p per element (m), for a warm start's reuse; else empty
 };
 
 // Reference solver: the paper's active-set iteration (start from {h > 0}, drop elements with negative

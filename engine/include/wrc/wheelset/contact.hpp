@@ -175,6 +175,7 @@ class ContactWorkspace {
     Eigen::Vector3d origin, t1, t2, normal;
     contact::Grid grid;
     std::vector<double> pressure;
+    std::vector<double> displacement;  // the solver's u = D pressure (empty if it gave none)
   };
   std::array<std::vector<Previous>, 2> previous;  // per side, the areas of the last evaluation
   bool warm_start = true;                         // use them (off to measure what it gains)
