@@ -1,5 +1,6 @@
 // Building the discretised geometry (model.hpp) and the profile operations of the strategies.
 #include "wrc/geometry/model.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
 
 #include "wrc/core/error.hpp"
 
@@ -200,6 +201,12 @@ void finish_wheel(WheelCones& w) {
   w.r2.resize(w.y.size());
   for (std::size_t i = 0; i < w.y.size(); ++i) w.r2[i] = w.z[i] * w.z[i];
   w.r2_range.build(w.r2);
+  w.vertex_ny.resize(w.y.size());
+  w.vertex_nr.resize(w.y.size());
+  for (std::size_t i = 0; i < w.y.size(); ++i) {
+    const Eigen::Vector2d n = wheel_vertex_normal(w, static_cast<int>(i));
+    w.vertex_ny[i] = n.x(), w.vertex_nr[i] = n.y();
+  }
 }
 
 // The wheel profile placed in the wheelset frame, ordered by increasing y, closed by two points on the axle.

@@ -14,8 +14,9 @@ Eigen::Vector2d cone_normal(const WheelCones& w, int i) {
   return {ny, nr};
 }
 
-// Vertex normal at generatrix point i: the mean of the normals of the non-degenerate cones meeting there.
-Eigen::Vector2d vertex_normal(const WheelCones& w, int i) {
+}  // namespace
+
+Eigen::Vector2d wheel_vertex_normal(const WheelCones& w, int i) {
   const int n = w.cone_count();
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   // Cones i - 1 and i meet at point i; the end faces (cones 0 and n - 1) are not part of the running surface.
@@ -25,9 +26,12 @@ Eigen::Vector2d vertex_normal(const WheelCones& w, int i) {
   return sum.normalized();
 }
 
-}  // namespace
-
 namespace {
+
+Eigen::Vector2d vertex_normal(const WheelCones& w, int i) {
+  if (w.vertex_ny.size() == w.y.size()) return {w.vertex_ny[static_cast<std::size_t>(i)], w.vertex_nr[static_cast<std::size_t>(i)]};
+  return wheel_vertex_normal(w, i);
+}
 
 // The running-surface cone holding Y (clamped to the profile) and the position t in [0, 1] on it.
 int cone_holding(const WheelCones& w, double& Y, double& t) {

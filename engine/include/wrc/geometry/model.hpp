@@ -71,6 +71,9 @@ struct WheelCones {
   std::vector<double> y, z;  // generatrix points (m), the first and last on the axle (z = 0)
   std::vector<double> r2;    // radius squared of each point (m^2)
   RangeExtrema r2_range;     // extrema of r2 over point ranges
+  // Per point: the running surface's unit normal there (y and radial parts; wheel_vertex_normal), kept so that the
+  // smooth surface queries need not recompute it (empty: computed on demand).
+  std::vector<double> vertex_ny, vertex_nr;
   int cone_count() const { return static_cast<int>(y.size()) - 1; }  // cone w joins points w and w + 1
   Cone cone(int w) const { return {y[w], z[w], y[w + 1], z[w + 1]}; }
   bool is_end_face(int w) const { return w == 0 || w == cone_count() - 1; }

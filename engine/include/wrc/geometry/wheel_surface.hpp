@@ -29,6 +29,10 @@ WheelSurfacePoint wheel_surface_at(const WheelCones& wheel, double Y);
 // Its radius alone (m), without the normal: cheaper.
 double wheel_radius_at(const WheelCones& wheel, double Y);
 
+// The running surface's unit normal (y, radial) at generatrix point i: the mean of the normals of the non-degenerate
+// cones meeting there.
+Eigen::Vector2d wheel_vertex_normal(const WheelCones& wheel, int i);
+
 // Track-frame unit normal of the wheel surface, pointing INTO the wheel (the direction of the force of the
 // rail on the wheel), at the track-frame point p near the surface.
 Eigen::Vector3d wheel_inward_normal(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p);
