@@ -198,6 +198,19 @@ Start make_start(const Grid& grid, std::span<const double> h, const NormalLoad& 
   for (int k = 0; k < n; ++k) z[k] = S[k] ? z[k] : 0.0;
 }
 
+// In one pass: r.z (r is 0 off S) and w.z over S.
+[[gnu::noinline]] void dots_on_set(const double* r, const double* z, const double* w, const unsigned char* S, int n,
+                                   double& rz, double& wz) {
+  double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
+  int k = 0;
+  for (; k + 2 <= n; k += 2) {
+    a0 += r[k] * z[k], a1 += r[k + 1] * z[k + 1];
+    b0 += S[k] ? w[k] * z[k] : 0.0, b1 += S[k + 1] ? w[k + 1] * z[k + 1] : 0.0;
+  }
+  for (; k < n; ++k) a0 += r[k] * z[k], b0 += S[k] ? w[k] * z[k] : 0.0;
+  rz = a0 + a1, wz = b0 + b1;
+}
+
 // The projected CG on one grid (see the top of the file), on the workspace's vectors: p the pressure, u = K p,
 // r the residual, z the preconditioned residual, d the search direction, q = K d.
 class ProjectedCg {
@@ -359,14 +372,18 @@ bool ProjectedCg::find_direction(const Residual& res, bool precondition, double&
     K_.invert(r_, z_);
   else
     z_ = r_;
+  // z counts on S only: r is 0 off S, and the direction takes z on S.
   const unsigned char* S = ws_.active.data();
   double *z = z_.data(), *d = d_.data();
   const int n = n_;
-  mask(S, z, n);
-  rz = dot(r_.data(), z, n);
+  double wz = 0;
+  if (force_control_)
+    dots_on_set(r_.data(), z, w_.data(), S, n, rz, wz);
+  else
+    rz = dot(r_.data(), z, n);
   const double beta = have_direction_ && !res.changed ? rz / rz_previous_ : 0.0;
   if (force_control_) {  // z minus its part along w (r is orthogonal to w on S: rz is unchanged)
-    const double c = dot(w_.data(), z, n) / ww_, *w = w_.data();
+    const double c = wz / ww_, *w = w_.data();
     for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] - c * w[k] + beta * d[k] : 0.0;
   } else {
     for (int k = 0; k < n; ++k) d[k] = S[k] ? z[k] + beta * d[k] : 0.0;
