@@ -652,7 +652,8 @@ NormalSolution NormalSolver::solve_checked(const Grid& grid, std::span<const dou
     return solve_checked(coarse, hc, coarse_load, ws, coarse_options);
   });
   const double factor = material_.pair_compliance();
-  if (options.estimate && start.nested && !start.pressure.empty()) return estimate(*cache_, grid, h, load, ws, factor, start);
+  if (options.estimate && start.nested && !start.pressure.empty())
+    return estimate(*cache_, grid, h, load, ws, factor, start);
   // The contact lies where the start says, to a few elements: solve on that window, check the whole grid (one
   // product) and widen the window to the elements that would penetrate, starting from what was found.
   Window w = support(grid, start.pressure);
@@ -702,7 +703,8 @@ NormalResponse NormalSolver::response(const NormalSolution& solution, std::span<
   const NormalLoad& load = solution.load;
   double ww = 0, wg = 0;
   if (force_control)
-    for (int k = 0; k < n; ++k) ww += A[k] ? load.weight(k) * load.weight(k) : 0.0, wg += A[k] ? load.weight(k) * load.gap_weight(k) : 0.0;
+    for (int k = 0; k < n; ++k)
+      if (A[k]) ww += load.weight(k) * load.weight(k), wg += load.weight(k) * load.gap_weight(k);
   auto along_w = [&](const std::vector<double>& v) {
     if (!force_control) return 0.0;
     double s = 0;

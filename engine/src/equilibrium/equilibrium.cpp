@@ -527,8 +527,8 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   auto tolerance_for = [&](double error) { return error > 0.05 ? loose : error > 1e-3 ? tight : final_tolerance; };
   // A prediction: the wheel's area solved for Fz itself on the grid of approach a (its normals' vertical parts as
   // weights, the approach deepening h as it does), whose multiplier is the further approach that carries Fz there; a
-  // moves on by it. False when the wheel
-  // has several areas or steep normals (evaluate_contact then solved the penetration) or the step is unusable.
+  // moves on by it. False when the wheel has several areas or steep normals (evaluate_contact then solved the
+  // penetration) or the step is unusable.
   auto predict = [&](double& a, double tol, bool estimate = false) {
     evaluate(a, tol, Fz, estimate);
     const auto& patches = cur.wheel[side].patches;

@@ -29,7 +29,8 @@ Eigen::Vector2d wheel_vertex_normal(const WheelCones& w, int i) {
 namespace {
 
 Eigen::Vector2d vertex_normal(const WheelCones& w, int i) {
-  if (w.vertex_ny.size() == w.y.size()) return {w.vertex_ny[static_cast<std::size_t>(i)], w.vertex_nr[static_cast<std::size_t>(i)]};
+  const auto k = static_cast<std::size_t>(i);
+  if (w.vertex_ny.size() == w.y.size()) return {w.vertex_ny[k], w.vertex_nr[k]};
   return wheel_vertex_normal(w, i);
 }
 

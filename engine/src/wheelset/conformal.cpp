@@ -52,10 +52,11 @@ Eigen::Vector2d surface_origin(const std::vector<SegmentInfo>& all, const std::v
 
 // The grid on the unrolled surface, covering the segments (x from their ends, s from their lines) plus the margin:
 // element centres on the rail's own lattice, x and s - s_lattice at integer multiples of the element
-// (ContactModel::rail_lattice_origin), in coordinates relative to the origin o. The rail does not move, so neither does the lattice: h at an element
-// changes only with the wheel's pose (continuously), a warm start finds the previous pressures on the same points,
-// and a deeper pose on the same lattice differs from the shallower one only by h (what the fixed-surface sensitivities
-// and ws:wheel's predictions assume). Anchored at a moving origin instead, the elements would slide with the pose.
+// (ContactModel::rail_lattice_origin), in coordinates relative to the origin o. The rail does not move, so neither
+// does the lattice: h at an element changes only with the wheel's pose (continuously), a warm start finds the
+// previous pressures on the same points, and a deeper pose on the same lattice differs from the shallower one only by
+// h (what the fixed-surface sensitivities and ws:wheel's predictions assume). Anchored at a moving origin instead,
+// the elements would slide with the pose.
 contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all,
                            const std::vector<double>& S_of_segment, const Eigen::Vector2d& o, double s_lattice,
                            int side, const Pose& pose) {

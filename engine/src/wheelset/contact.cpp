@@ -338,15 +338,19 @@ struct OldGridMap {
     for (int j = 0; j < grid.ny; ++j) {
       const int jv = dv + j;
       if (jv < 0 || jv >= g.ny) continue;
-      for (int i = std::max(0, -du); i < grid.nx && du + i < g.nx; ++i)
-        (*u_out)[static_cast<std::size_t>(grid.index(i, j))] = old->displacement[static_cast<std::size_t>(g.index(du + i, jv))];
+      for (int i = std::max(0, -du); i < grid.nx && du + i < g.nx; ++i) {
+        const auto k = static_cast<std::size_t>(grid.index(i, j)), l = static_cast<std::size_t>(g.index(du + i, jv));
+        (*u_out)[k] = old->displacement[l];
+      }
     }
   }
 };
 
 // Start pressures for an area in the plane pl from the workspace's last evaluation of that side: the old pressure at
 // each new element centre (bilinear), extrapolated linearly in time with the evaluation before it where both were in
-// contact and the workspace extrapolates. False when there is no old area (or warm starts are off).
+// contact and the workspace extrapolates. Without extrapolation, on a grid that is the old one shifted by whole
+// elements and carries all of the old pressure, also the old displacements (NaN where the grids do not overlap;
+// else empty). False when there is no old area (or warm starts are off).
 bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const contact::Grid& grid,
                 std::vector<double>& start, std::vector<double>& displacement) {
   const auto* last = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;

@@ -114,8 +114,8 @@ struct WheelResult {
 // load where the height does not); otherwise options.wheel_approach scaled to Fz. The approach is predicted by the
 // wheel's normal problem solved for Fz itself (ContactRequest::vertical_force), twice from afar (the first only
 // estimated on the coarse grid) and once from a close start, then confirmed (and corrected by secant steps) by
-// evaluations of the pose; the result is always such an evaluation, at the model's normal tolerance. A load that the wheel does not carry at an approach of options.max_penetration is out
-// of reach: not converged, with the reason.
+// evaluations of the pose; the result is always such an evaluation, at the model's normal tolerance. A load that the
+// wheel does not carry at an approach of options.max_penetration is out of reach: not converged, with the reason.
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
                         ContactWorkspace& ws, const EquilibriumOptions& options = {},
                         std::optional<double> start = std::nullopt,

@@ -11,11 +11,10 @@
 //    points, the potential contact area lies on it, and unrolling it is exact (no stretching).
 //  - Parameters: x (track x, m) along the track and s (m), the arc length along the rail profile (the chords between
 //    consecutive rail points, counted from the side's first rail line). The grid is regular in (x, s), its element
-//    centres on the rail's fixed lattice (x, s integer multiples of the element), so they do not slide with the pose;
-//    the normal
-//    solver and its half-space influence coefficients are those of the planar path, applied on the unrolled surface
-//    (the standard approximation of the conformal mode; a kernel corrected for the surface's turning would enter
-//    there).
+//    centres on the rail's fixed lattice (x and s - ContactModel::rail_lattice_origin integer multiples of the
+//    element), so they do not slide with the pose; the normal solver and its half-space influence coefficients are
+//    those of the planar path, applied on the unrolled surface (the standard approximation of the conformal mode; a
+//    kernel corrected for the surface's turning would enter there).
 //  - Local frame per grid row (one s): t1 = e_x; n = the normal of the surface midway between wheel and rail, where
 //    two bodies of one material meet when pressed together (each deforms by half the overlap): at each rail line
 //    the bisector of the rail's normal (across its neighbouring lines) and the wheel's inward normal at the line's
