@@ -761,6 +761,7 @@ void drop_grids(ContactResult& result) {
       pc.h = {};
       pc.solution.pressure = {};
       pc.solution.gap = {};
+      pc.solution.displacement = {};  // moved to the workspace already; kept empty whatever the path
       if (pc.rolling) drop_grids(*pc.rolling);
     }
 }
