@@ -192,8 +192,8 @@ do
     local what = string.format("yaw %g rad: ", psi)
     check.near(p.normal.z, 1, 1e-12, what .. "contact normal vertical")
     -- The axle's lowest line passes over the crown (track y = yc) at x = -yc tan(psi). The deepest element is the
-    -- crown's nearest to it (the elements lie on the rail's fixed lattice, one row on the crown): h = delta - a11 dx^2
-    -- there. The section's radius counts: with the unyawed one, h would be deeper by 1 / cos^2 psi (1e-4 at 0.01 rad).
+    -- crown's nearest to it (the elements lie on the rail's fixed lattice, one row on the crown): there
+    -- h = delta - a11 (x - x_apex)^2. The section's radius counts: with the unyawed one, h would be deeper by 1 / cos^2 psi (1e-4 at 0.01 rad).
     local yc = p.point.y
     local apex, g = -yc * math.tan(psi), p.grid
     local offset = math.huge
