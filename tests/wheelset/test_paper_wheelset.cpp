@@ -37,6 +37,15 @@ WheelsetProfiles paper_profiles() {
   return profiles;
 }
 
+// The paper's wheelset on the coarser 0.5 mm grid the wheel and warm-start tests use.
+constexpr double kCoarseElement = 0.5e-3;
+std::shared_ptr<const Wheelset> coarse_paper_wheelset(ContactSurface surface = ContactSurface::conformal) {
+  WheelsetParams params;
+  params.contact.element = kCoarseElement;
+  params.contact.surface = surface;
+  return build_wheelset(paper_profiles(), params);
+}
+
 // A number of the Lua global table `R` at a dotted path.
 double lua_number(lua::Session& s, const std::string& path) {
   auto* L = static_cast<lua_State*>(s.state());
@@ -119,10 +128,7 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
 // 6e-5 at the flange root (with elements aligned to the area's moving origin, and the approach deepening h by the
 // row normals' z part, it was 2e-4 and 1e-2).
 TEST_CASE("vertical_force: the multiplier is the further vertical approach that carries the force") {
-  const WheelsetProfiles profiles = paper_profiles();
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  const auto wheelset = build_wheelset(profiles, params);
+  const auto wheelset = coarse_paper_wheelset();
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
   ContactWorkspace& ws = *work;
@@ -167,10 +173,7 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
 // to 1e-6 on every single-area pose from the tread to the flange root (y = 0 .. 6.5 mm): 3 evaluations, the third
 // at the model's tolerance and equal to a fresh evaluation of the pose.
 TEST_CASE("solve_wheel: three evaluations from the tread to the flange root") {
-  const WheelsetProfiles profiles = paper_profiles();
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  const auto wheelset = build_wheelset(profiles, params);
+  const auto wheelset = coarse_paper_wheelset();
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
   for (int k = 0; k <= 13; ++k) {
@@ -193,13 +196,10 @@ TEST_CASE("solve_wheel: three evaluations from the tread to the flange root") {
 // origin are integer multiples of the element at every pose (here three heights and two lateral positions, both
 // wheels), and the two rails' lattice origins are mirror images (the point of each rail nearest its profile's origin).
 TEST_CASE("conformal grids: the elements lie on the rail's fixed lattice, mirrored between the rails") {
-  const WheelsetProfiles profiles = paper_profiles();
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  const auto wheelset = build_wheelset(profiles, params);
+  const auto wheelset = coarse_paper_wheelset();
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
-  const double e = params.contact.element;
+  const double e = kCoarseElement;
   auto on_lattice = [&](double v) { return std::abs(v / e - std::round(v / e)) < 1e-9; };
   for (double y : {1e-3, 6.3e-3})
     for (double dz : {0.0, 30e-6, 90e-6}) {
@@ -237,14 +237,10 @@ TEST_CASE("conformal grids: the elements lie on the rail's fixed lattice, mirror
 // iteration), at a pose 0.2 um away close to it (far fewer iterations than a cold solve, and the same answer).
 // Where the grids share the lattice and the new one carries the whole old pressure, the old displacements come too.
 TEST_CASE("warm starts: the same pose needs no CG iteration, a nearby pose few, with the cold solve's answer") {
-  const WheelsetProfiles profiles = paper_profiles();
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
   for (ContactSurface surface : {ContactSurface::conformal, ContactSurface::planar}) {
     const std::string name = surface_name(surface);
     CAPTURE(name);
-    params.contact.surface = surface;
-    const auto wheelset = build_wheelset(profiles, params);
+    const auto wheelset = coarse_paper_wheelset(surface);
     const ContactModel& model = wheelset->contact_model();
     const auto work = wheelset->make_workspace();
     ContactRequest left;

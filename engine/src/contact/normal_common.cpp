@@ -19,22 +19,16 @@ void validate_normal_input(const Material& material, const Grid& grid, std::span
       fail("{}: h is not finite at element {} (i = {}, j = {}): {}", context, k, k % grid.nx, k / grid.nx, h[k]);
   if (load.control == NormalLoad::Control::force && (!std::isfinite(load.force) || load.force < 0))
     fail("{}: prescribed normal force F = {} N must be finite and >= 0", context, load.force);
-  if (!load.weights.empty()) {
-    if (load.control != NormalLoad::Control::force) fail("{}: weights apply to a prescribed force only", context);
-    if (load.weights.size() != h.size())
-      fail("{}: weights has {} values for {} elements", context, load.weights.size(), h.size());
+  // The force's weights and the approach's gap weights: per element, finite and > 0, for a prescribed force only.
+  auto check_weights = [&](const std::vector<double>& w, const char* name, const char* one) {
+    if (w.empty()) return;
+    if (load.control != NormalLoad::Control::force) fail("{}: {} apply to a prescribed force only", context, name);
+    if (w.size() != h.size()) fail("{}: {} has {} values for {} elements", context, name, w.size(), h.size());
     for (std::size_t k = 0; k < h.size(); ++k)
-      if (!std::isfinite(load.weights[k]) || !(load.weights[k] > 0))
-        fail("{}: weight {} at element {} must be finite and > 0", context, load.weights[k], k);
-  }
-  if (!load.gap_weights.empty()) {
-    if (load.control != NormalLoad::Control::force) fail("{}: gap_weights apply to a prescribed force only", context);
-    if (load.gap_weights.size() != h.size())
-      fail("{}: gap_weights has {} values for {} elements", context, load.gap_weights.size(), h.size());
-    for (std::size_t k = 0; k < h.size(); ++k)
-      if (!std::isfinite(load.gap_weights[k]) || !(load.gap_weights[k] > 0))
-        fail("{}: gap weight {} at element {} must be finite and > 0", context, load.gap_weights[k], k);
-  }
+      if (!std::isfinite(w[k]) || !(w[k] > 0)) fail("{}: {} {} at element {} must be finite and > 0", context, one, w[k], k);
+  };
+  check_weights(load.weights, "weights", "weight");
+  check_weights(load.gap_weights, "gap_weights", "gap weight");
   if (!std::isfinite(options.tolerance) || !(options.tolerance > 0) || options.tolerance >= 1)
     fail("{}: tolerance {} must be in ]0, 1[", context, options.tolerance);
   if (options.max_iterations < 0) fail("{}: max_iterations {} must be >= 0", context, options.max_iterations);
