@@ -385,15 +385,19 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
 contact::NormalLoad area_load(const ContactRequest& request, const contact::Grid& grid,
                               const std::vector<double>& vertical, const std::vector<double>& deepening) {
   if (!request.vertical_force) return contact::NormalLoad::penetration();
-  std::vector<double> w(static_cast<std::size_t>(grid.size())), g(w.size());
-  for (int j = 0; j < grid.ny; ++j) {
-    const double v = vertical[static_cast<std::size_t>(j)], d = deepening[static_cast<std::size_t>(j)];
-    if (!(v >= kVerticalWeightMin) || !(d >= kVerticalWeightMin)) return contact::NormalLoad::penetration();
-    std::fill_n(w.begin() + grid.index(0, j), grid.nx, v);
-    std::fill_n(g.begin() + grid.index(0, j), grid.nx, d);
-  }
-  contact::NormalLoad load = contact::NormalLoad::normal_force(*request.vertical_force, std::move(w));
-  if (g != load.weights) load.gap_weights = std::move(g);
+  // Per element, its row's value (gap weights only where the deepening differs from the weights: the curved surface).
+  const bool own_gap = deepening != vertical;
+  auto per_element = [&](const std::vector<double>& rows) {
+    std::vector<double> e(static_cast<std::size_t>(grid.size()));
+    for (int j = 0; j < grid.ny; ++j) std::fill_n(e.begin() + grid.index(0, j), grid.nx, rows[static_cast<std::size_t>(j)]);
+    return e;
+  };
+  for (int j = 0; j < grid.ny; ++j)
+    if (!(vertical[static_cast<std::size_t>(j)] >= kVerticalWeightMin) ||
+        !(deepening[static_cast<std::size_t>(j)] >= kVerticalWeightMin))
+      return contact::NormalLoad::penetration();
+  contact::NormalLoad load = contact::NormalLoad::normal_force(*request.vertical_force, per_element(vertical));
+  if (own_gap) load.gap_weights = per_element(deepening);
   return load;
 }
 
