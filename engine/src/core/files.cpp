@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <random>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -19,31 +20,44 @@
 namespace wrc {
 namespace {
 
-std::string host_name() {
-  char buf[256] = {};
-  if (gethostname(buf, sizeof buf - 1) != 0) return "host";
-  std::string h(buf);
-  std::replace(h.begin(), h.end(), '/', '_');
-  return h.empty() ? "host" : h;
+// 64 random bits per call: a generator seeded once per process from the system's entropy, stepped by a counter
+// (splitmix64), so that two processes -- on one host or on two sharing a folder -- do not draw the same names.
+std::uint64_t random_bits() {
+  static const std::uint64_t seed = [] {
+    std::random_device rd;
+    return (std::uint64_t(rd()) << 32) ^ rd() ^ (std::uint64_t(getpid()) << 20);
+  }();
+  static std::atomic<std::uint64_t> step{0};
+  std::uint64_t z = seed + (step.fetch_add(1) + 1) * 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
 }
 
-// "<folder>/.<name>.tmp.<host>.<pid>.<n>": unique across processes and hosts writing to one shared folder.
-std::string temporary_name(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  const std::filesystem::path p(path);
-  const std::string name = "." + p.filename().string() + ".tmp." + host_name() + "." + std::to_string(getpid()) +
-                           "." + std::to_string(counter.fetch_add(1));
-  return (p.parent_path() / name).string();
+constexpr std::string_view kTemporaryMark = ".wrc-tmp-";
+
+bool all_of(std::string_view s, bool (*pred)(char)) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), pred);
 }
+bool lower_hex(char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); }
+bool digit(char c) { return c >= '0' && c <= '9'; }
 
 std::string reason() { return std::strerror(errno); }
 
 }  // namespace
 
+std::string temporary_path(const std::string& path) {
+  static std::atomic<unsigned> counter{0};
+  const std::filesystem::path p(path);
+  const std::string name = fmt::format(".{}{}{:016x}-{}-{}", p.filename().string(), kTemporaryMark, random_bits(),
+                                       getpid(), counter.fetch_add(1));
+  return (p.parent_path() / name).string();
+}
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (path_.empty() || std::filesystem::path(path_).filename().empty())
     fail("cannot write '{}': not a file name", path_);
-  temp_ = temporary_name(path_);
+  temp_ = temporary_path(path_);
   file_ = std::fopen(temp_.c_str(), "wb");
   if (file_ == nullptr) fail("cannot write '{}': {}", path_, reason());
 }
@@ -89,8 +103,15 @@ void write_file_atomic(const std::string& path, std::string_view content) {
   f.commit();
 }
 
+// ".<name>.wrc-tmp-<16 lower hex>-<digits>-<digits>", <name> not empty.
 bool is_temporary_name(std::string_view name) {
-  return name.size() > 1 && name.front() == '.' && name.find(".tmp.") != std::string_view::npos;
+  const auto mark = name.rfind(kTemporaryMark);
+  if (name.size() < 2 || name.front() != '.' || mark == std::string_view::npos || mark < 2) return false;
+  const std::string_view tail = name.substr(mark + kTemporaryMark.size());
+  const auto dash1 = tail.find('-'), dash2 = tail.rfind('-');
+  if (dash1 != 16 || dash2 == dash1) return false;
+  return all_of(tail.substr(0, 16), lower_hex) && all_of(tail.substr(dash1 + 1, dash2 - dash1 - 1), digit) &&
+         all_of(tail.substr(dash2 + 1), digit);
 }
 
 std::vector<std::string> list_folder(const std::string& folder) {
@@ -106,7 +127,7 @@ std::vector<std::string> list_folder(const std::string& folder) {
 void check_writable(const std::string& folder) {
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) fail("output folder '{}' does not exist or is not a folder", folder);
-  const std::string probe = temporary_name((std::filesystem::path(folder) / "wrc-writable").string());
+  const std::string probe = temporary_path((std::filesystem::path(folder) / "wrc-writable").string());
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
   if (fd < 0) fail("output folder '{}' is not writable: {}", folder, reason());
   const bool ok = ::write(fd, "x", 1) == 1;
@@ -131,17 +152,24 @@ std::string hash_text(std::string_view bytes) {
   return h.hex();
 }
 
-std::string hash_file(const std::string& path) {
+std::string hash_file(const std::string& path) { return digest_file(path).hash; }
+
+FileDigest digest_file(const std::string& path, std::uint64_t limit) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail("cannot read '{}': {}", path, reason());
   ContentHash h;
+  FileDigest d;
   char buf[1 << 16];
-  while (in) {
-    in.read(buf, sizeof buf);
-    h.add(std::string_view(buf, static_cast<std::size_t>(in.gcount())));
+  while (in && d.bytes < limit) {
+    in.read(buf, static_cast<std::streamsize>(std::min<std::uint64_t>(sizeof buf, limit - d.bytes)));
+    const std::string_view got(buf, static_cast<std::size_t>(in.gcount()));
+    h.add(got);
+    d.bytes += got.size();
+    d.lines += static_cast<std::uint64_t>(std::count(got.begin(), got.end(), '\n'));
   }
   if (in.bad()) fail("cannot read '{}': {}", path, reason());
-  return h.hex();
+  d.hash = h.hex();
+  return d;
 }
 
 int available_cores() {

@@ -14,6 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 const char* const kAtomicType = "wrc.AtomicFile";
+const char* const kLockType = "wrc.FileLock";
 
 // wrc.fs.mkdir(path): creates a folder and its parents (no error if it exists).
 int fs_mkdir(lua_State* L) {
@@ -101,6 +102,101 @@ int fs_remove_tree(lua_State* L) {
   return 0;
 }
 
+// wrc.fs.is_link(path) -> true when path is a symbolic link (not followed).
+int fs_is_link(lua_State* L) {
+  std::error_code ec;
+  lua_pushboolean(L, fs::is_symlink(fs::symlink_status(check_string(L, 1, "wrc.fs.is_link"), ec)));
+  return 1;
+}
+
+// wrc.fs.name_problem(name) -> nil, or why `name` cannot name an entry inside a folder (core/files).
+int fs_name_problem(lua_State* L) {
+  const std::string why = inside_name_problem(check_string(L, 1, "wrc.fs.name_problem"));
+  if (why.empty()) return 0;
+  lua_pushstring(L, why.c_str());
+  return 1;
+}
+
+// wrc.fs.mkdir_inside(root, name): mkdir -p of root/name through real folders only.
+int fs_mkdir_inside(lua_State* L) {
+  make_folders_inside(check_string(L, 1, "wrc.fs.mkdir_inside"), check_string(L, 2, "wrc.fs.mkdir_inside"));
+  return 0;
+}
+
+// wrc.fs.remove_inside(root, name [, hash]) -> "removed" or "missing", or nil and why the file was left in place.
+int fs_remove_inside(lua_State* L) {
+  const char* ctx = "wrc.fs.remove_inside";
+  const std::string hash = lua_isnoneornil(L, 3) ? std::string() : check_string(L, 3, ctx);
+  const RemoveResult r = remove_file_inside(check_string(L, 1, ctx), check_string(L, 2, ctx), hash);
+  if (r.what == Removal::refused) {
+    lua_pushnil(L);
+    lua_pushstring(L, r.why.c_str());
+    return 2;
+  }
+  lua_pushstring(L, r.what == Removal::removed ? "removed" : "missing");
+  return 1;
+}
+
+// wrc.fs.remove_tree_inside(root, name): the folder root/name and its content, no link followed.
+int fs_remove_tree_inside(lua_State* L) {
+  remove_tree_inside(check_string(L, 1, "wrc.fs.remove_tree_inside"), check_string(L, 2, "wrc.fs.remove_tree_inside"));
+  return 0;
+}
+
+// wrc.fs.lock(path) -> a lock (lock:release(), lock.locked; released when collected and at the process's end), or
+// nil and the note of the process that holds it.
+int fs_lock(lua_State* L) {
+  std::string holder;
+  std::unique_ptr<FileLock> lock = FileLock::try_acquire(check_string(L, 1, "wrc.fs.lock"), holder);
+  if (!lock) {
+    lua_pushnil(L);
+    lua_pushstring(L, holder.c_str());
+    return 2;
+  }
+  push_shared(L, std::shared_ptr<FileLock>(std::move(lock)), kLockType);
+  if (holder.empty()) return 1;
+  lua_pushstring(L, holder.c_str());  // a lock the file system does not enforce: why
+  return 2;
+}
+
+int lock_release(lua_State* L) {
+  auto* p = static_cast<std::shared_ptr<FileLock>*>(luaL_testudata(L, 1, kLockType));
+  if (p && *p) (*p)->release();
+  return 0;
+}
+
+int lock_index(lua_State* L) {
+  const std::shared_ptr<FileLock>& lock = check_shared<FileLock>(L, 1, kLockType, "wrc.FileLock");
+  const std::string key = check_string(L, 2, "wrc.FileLock");
+  if (key == "locked") lua_pushboolean(L, lock->locked());
+  else if (key == "release") lua_pushcfunction(L, guarded<lock_release>);
+  else lua_pushnil(L);
+  return 1;
+}
+
+// wrc.fs.temporary_name(path) -> a fresh temporary path next to `path` (the pattern fs.is_temporary recognises).
+int fs_temporary_name(lua_State* L) {
+  lua_pushstring(L, temporary_path(check_string(L, 1, "wrc.fs.temporary_name")).c_str());
+  return 1;
+}
+
+// wrc.fs.digest(path [, bytes]) -> the hash of the first `bytes` bytes (all by default), bytes read, line breaks.
+int fs_digest(lua_State* L) {
+  const char* ctx = "wrc.fs.digest";
+  const std::string path = check_string(L, 1, ctx);
+  std::uint64_t limit = UINT64_MAX;
+  if (!lua_isnoneornil(L, 2)) {
+    const double n = check_number(L, 2, ctx);
+    if (n < 0) fail("{}: bytes must be >= 0, got {}", ctx, n);
+    limit = static_cast<std::uint64_t>(n);
+  }
+  const FileDigest d = digest_file(path, limit);
+  lua_pushstring(L, d.hash.c_str());
+  lua_pushinteger(L, static_cast<lua_Integer>(d.bytes));
+  lua_pushinteger(L, static_cast<lua_Integer>(d.lines));
+  return 3;
+}
+
 int fs_check_writable(lua_State* L) {
   check_writable(check_string(L, 1, "wrc.fs.check_writable"));
   return 0;
@@ -169,6 +265,15 @@ void open_fs(lua_State* L) {
     lua_setfield(L, -2, "__gc");
   }
   lua_pop(L, 1);
+  if (luaL_newmetatable(L, kLockType)) {
+    lua_pushcfunction(L, guarded<lock_index>);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, guarded<lock_release>);
+    lua_setfield(L, -2, "__close");
+    lua_pushcfunction(L, gc_shared<FileLock>);
+    lua_setfield(L, -2, "__gc");
+  }
+  lua_pop(L, 1);
   const luaL_Reg fns[] = {{"mkdir", guarded<fs_mkdir>},
                           {"open_atomic", guarded<fs_open_atomic>},
                           {"write_file", guarded<fs_write_file>},
@@ -182,6 +287,14 @@ void open_fs(lua_State* L) {
                           {"size", guarded<fs_size>},
                           {"hash", guarded<fs_hash>},
                           {"hash_file", guarded<fs_hash_file>},
+                          {"digest", guarded<fs_digest>},
+                          {"is_link", guarded<fs_is_link>},
+                          {"name_problem", guarded<fs_name_problem>},
+                          {"mkdir_inside", guarded<fs_mkdir_inside>},
+                          {"remove_inside", guarded<fs_remove_inside>},
+                          {"remove_tree_inside", guarded<fs_remove_tree_inside>},
+                          {"lock", guarded<fs_lock>},
+                          {"temporary_name", guarded<fs_temporary_name>},
                           {nullptr, nullptr}};
   luaL_newlib(L, fns);
   lua_setfield(L, -2, "fs");

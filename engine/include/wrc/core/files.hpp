@@ -4,13 +4,14 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace wrc {
 
-// A file written under a temporary name in its own folder (".<name>.tmp.<host>.<pid>.<n>") and renamed over
+// A file written under a temporary name in its own folder (temporary_path) and renamed over
 // `path` by commit(), after its data reached the disk (fsync): a reader, or a run killed at any moment, sees the
 // old file or the new one, never a part. Destroyed without commit(), it removes the temporary file.
 class AtomicFile {
@@ -34,7 +35,12 @@ class AtomicFile {
 // Writes `content` to `path` through an AtomicFile.
 void write_file_atomic(const std::string& path, std::string_view content);
 
-// True for a name AtomicFile gives its temporary files (a run killed before commit() leaves them behind).
+// A fresh temporary name next to `path`: "<folder>/.<name>.wrc-tmp-<16 hex digits>-<pid>-<n>", the hex digits
+// random: unique across the processes and hosts writing into one shared folder, and a pattern that a user's file
+// does not match by chance (".notes.tmp.txt" does not).
+std::string temporary_path(const std::string& path);
+
+// True for a name that temporary_path gives, exactly (a run killed before commit() leaves such files behind).
 bool is_temporary_name(std::string_view name);
 
 // The names in a folder (no "." or ".."), sorted bytewise. Throws when it is not a readable folder.
@@ -55,6 +61,63 @@ class ContentHash {
 };
 std::string hash_text(std::string_view bytes);
 std::string hash_file(const std::string& path);  // throws when the file cannot be read
+
+// The hash of a file's first `limit` bytes (all when shorter), the bytes read and the line breaks among them.
+struct FileDigest {
+  std::string hash;
+  std::uint64_t bytes = 0, lines = 0;
+};
+FileDigest digest_file(const std::string& path, std::uint64_t limit = UINT64_MAX);  // throws when unreadable
+
+// ---- Inside an output folder (files_inside.cpp). A study's output folder may come from someone else, so what a run
+// creates, locks and removes in it is reached without following any symbolic link below the folder the user named
+// (folders opened one by one with O_NOFOLLOW, files removed with unlinkat in the last one): a link planted there,
+// even while the run goes on, leads nowhere outside it.
+
+// Why `name` cannot name an entry inside a folder, or "" when it can: a relative path of '/'-separated components,
+// none empty, "." or "..", with no control character (manifests list one name per line).
+std::string inside_name_problem(std::string_view name);
+
+// mkdir -p of `name` under `root`, as real folders: throws naming the component that is a symbolic link or not a
+// folder. `root` itself may be a link (the user named it).
+void make_folders_inside(const std::string& root, std::string_view name);
+
+// What remove_file_inside did; `why` says why a file was refused (left in place).
+enum class Removal { removed, missing, refused };
+struct RemoveResult {
+  Removal what;
+  std::string why;
+};
+
+// Removes `name` under `root` if it is a regular file reached through real folders; with `hash` (FNV-1a, as
+// hash_file gives it) only if its content still has that hash. Refuses (does not throw) an unsafe name, a link, a
+// folder, a changed file, or a removal the system denies.
+RemoveResult remove_file_inside(const std::string& root, std::string_view name, std::string_view hash = {});
+
+// Removes the folder `name` under `root` with everything in it: a symbolic link inside is removed, never followed;
+// nothing when missing. Throws when the name is unsafe, a folder on the way is a link, or a removal fails.
+void remove_tree_inside(const std::string& root, std::string_view name);
+
+// An exclusive lock (flock) on a file, held until release(), destruction or the end of the process, however it ends
+// (kill -9 too: the lock belongs to the open file). It serialises the runs that write one part of an output folder.
+class FileLock {
+ public:
+  // Takes the lock on `path` (created if missing; a symbolic link is refused) without waiting, and writes the holder's
+  // note into the file ("pid 12 on host h since 2024-05-01 10:00:00"). When another process holds it, returns null
+  // and sets `holder` to that process's note. On a file system without locks it returns a FileLock whose locked() is
+  // false, `holder` saying why. Throws when the file cannot be opened.
+  static std::unique_ptr<FileLock> try_acquire(const std::string& path, std::string& holder);
+  ~FileLock();
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+  bool locked() const { return locked_; }
+  void release();
+
+ private:
+  FileLock(int fd, bool locked) : fd_(fd), locked_(locked) {}
+  int fd_ = -1;
+  bool locked_ = false;
+};
 
 // The processors this process may run on (its CPU affinity mask, as a SLURM or taskset allocation restricts it;
 // at least 1).
