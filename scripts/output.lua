@@ -22,6 +22,20 @@ local function shell_quote(s) return "'" .. tostring(s):gsub("'", "'\\''") .. "'
 local function gp_string(s) return "'" .. tostring(s):gsub("[\r\n]", " "):gsub("'", "''") .. "'" end
 M.gnuplot_string = gp_string
 
+-- A file's path as gnuplot (and its command line) must get it: a relative path that starts with something else
+-- than a letter, a digit, '_', '.' or '/' gets "./" in front, since gnuplot reads a file name that starts with '<'
+-- or '|' as a shell command, with '$' as a datablock, and a first '-' on its command line as an option. A control
+-- character cannot be written in a gnuplot string (a line break ends the command): an error.
+local function plain_path(path)
+  path = tostring(path)
+  if path:find("%c") then
+    local shown = path:gsub("%c", "?")
+    error(("cannot make the figure '%s': a control character (a line break?) in its path"):format(shown), 0)
+  end
+  return path:match("^[%w_./]") and path or ("./" .. path)
+end
+local function gp_path(path) return gp_string(plain_path(path)) end
+
 -- mkdir -p
 function M.mkdir(path) return wrc.fs.mkdir(path) end
 
@@ -168,15 +182,14 @@ end
 -- temporary picture, renamed once gnuplot succeeded.
 local function gnuplot(file, script)
   local base = file:gsub("%.[^./]+$", "")
-  M.text(base .. ".gp", (script:gsub("@OUTPUT@", function() return gp_string(file) end)))
-  local tmp_dir, tmp_name = file:match("^(.*/)([^/]*)$")
-  tmp_dir, tmp_name = tmp_dir or "", tmp_name or file
-  local tmp_png = string.format("%s.%s.tmp.gnuplot.%d", tmp_dir, tmp_name, math.random(1, 1 << 30))
-  local tmp_gp, tmp_log = tmp_png .. ".gp", tmp_png .. ".log"
+  M.text(base .. ".gp", (script:gsub("@OUTPUT@", function() return gp_path(file) end)))
+  -- Temporary names of wrc's own pattern (wrc.fs.is_temporary): a killed run's are recognised and removed.
+  local tmp_png, tmp_gp, tmp_log = wrc.fs.temporary_name(file), wrc.fs.temporary_name(base .. ".gp"),
+                                   wrc.fs.temporary_name(base .. ".log")
   local f = assert(io.open(tmp_gp, "w"))
-  f:write((script:gsub("@OUTPUT@", function() return gp_string(tmp_png) end)))
+  f:write((script:gsub("@OUTPUT@", function() return gp_path(tmp_png) end)))
   f:close()
-  local ok = os.execute("gnuplot " .. shell_quote(tmp_gp) .. " 2>" .. shell_quote(tmp_log))
+  local ok = os.execute("gnuplot " .. shell_quote(plain_path(tmp_gp)) .. " 2>" .. shell_quote(tmp_log))
   local lf = io.open(tmp_log)
   local log = lf and lf:read("a") or ""
   if lf then lf:close() end
@@ -197,6 +210,7 @@ end
 -- The terminal by the file's extension (.png or .svg). Text is not "enhanced" (an underscore in a profile name stays
 -- an underscore) unless o.enhanced = true.
 local function header(o)
+  plain_path(o.file)  -- a path gnuplot cannot take fails before any file is written
   local s = {}
   local enh = o.enhanced and "enhanced" or "noenhanced"
   if o.file:match("%.svg$") then
@@ -235,7 +249,7 @@ function M.plot(o)
       end
     end
     f:write("\n\n")
-    parts[#parts + 1] = string.format("%s index %d using 1:2 with %s title %s", gp_string(data), k - 1,
+    parts[#parts + 1] = string.format("%s index %d using 1:2 with %s title %s", gp_path(data), k - 1,
                                       se.style or "lines", gp_string(se.title or ""))
   end
   f:close()
@@ -271,7 +285,7 @@ function M.map(o)
     s[#s + 1] = "set view map"
     s[#s + 1] = "set size ratio -1"
   end
-  s[#s + 1] = "splot " .. gp_string(data) .. " using 1:2:3 with pm3d notitle"
+  s[#s + 1] = "splot " .. gp_path(data) .. " using 1:2:3 with pm3d notitle"
   gnuplot(o.file, table.concat(s, "\n") .. "\n")
 end
 
@@ -296,7 +310,7 @@ function M.scatter3d(o)
   s[#s + 1] = "set palette rgbformulae 33,13,10"
   s[#s + 1] = "set view " .. (o.view or "65,35")
   s[#s + 1] = "set ticslevel 0"
-  s[#s + 1] = "splot " .. gp_string(data) .. " using 1:2:3:4 with points pt 7 ps 0.3 palette notitle"
+  s[#s + 1] = "splot " .. gp_path(data) .. " using 1:2:3:4 with points pt 7 ps 0.3 palette notitle"
   gnuplot(o.file, table.concat(s, "\n") .. "\n")
 end
 

@@ -3,7 +3,10 @@
 -- number of shards or threads); a shard computes a contiguous range of chunks and streams their rows into part
 -- files in DIR/parts, one atomic block file per batch of chunks (the checkpoint); a run again resumes after the last
 -- block; the merge concatenates the blocks into exactly the tables a single process writes, then the study makes its
--- figures and summary from those tables, and a manifest lists what the run produced.
+-- figures and summary from those tables, and a manifest lists what the run produced. Each block ends with a line of
+-- its line count, size and hash (checked on resume and before a merge); a shard's run and a merge hold a lock in
+-- DIR/parts. What an output folder holds is data from whoever made it: it names no script that is run, and no file
+-- outside it (or through a link in it) is ever removed (wrc.fs.remove_inside).
 --
 --   local study = require "wrc.study"
 --   local s = study.new{name =, help =, out = "results", options = {{"step_mm", "number", 0.1, "step (mm)"}, ...}}
@@ -15,13 +18,21 @@ local M = {}
 
 local PARTS, MANIFEST = "parts", "manifest.txt"
 
-local function exit(code) error({exit = code}, 0) end
+local function exit(code, message) error({exit = code, message = message}, 0) end
 local function say(fmt, ...) io.stderr:write("wrc: ", string.format(fmt, ...), "\n") end
 -- Stops the run with a message (no traceback: the input is wrong, not the program).
 local function refuse(code, fmt, ...)
-  say(fmt, ...)
-  exit(code)
+  local text = string.format(fmt, ...)
+  say("%s", text)
+  exit(code, text)
 end
+-- Text from a folder or a command line shown on one line: control characters escaped.
+local function printable(s)
+  return (tostring(s):gsub("%c", function(ch) return ch == "\n" and "\\n" or ("\\%03d"):format(ch:byte()) end))
+end
+local function shell_quote(s) return "'" .. printable(s):gsub("'", "'\\''") .. "'" end
+-- An engine error's message without the "file:line: " of the Lua line that made the call.
+local function plain(err) return (tostring(err):gsub("^[^\n]-:%d+: ", "", 1)) end
 local function finite(v) return v == v and v ~= math.huge and v ~= -math.huge end
 local function command() return wrc.command or {shard = 1, shards = 1, shard_from = "", script = arg and arg[0] or "?"} end
 
@@ -45,6 +56,8 @@ local function convert(d, raw)
   local v
   if d.type == "string" then
     v = tostring(raw)
+    -- state.txt and the manifest list options one per line
+    if v:find("%c") then return nil, "a control character (a line break?) in the value is refused" end
   elseif d.type == "boolean" then
     local s = tostring(raw)
     if s == "true" or s == "1" or s == "yes" or s == "on" then v = true
@@ -95,7 +108,8 @@ end
 
 local function usage(study)
   local cmd = command()
-  local lines = {("usage: wrc run %s [key=value ...] [--shard K/N] [--merge] [--fresh]"):format(cmd.script)}
+  local lines = {("usage: wrc run %s [key=value ...] [--shard K/N] [--merge] [--fresh]\n" ..
+                  "       wrc merge %s [out=DIR] [key=value ...]"):format(cmd.script, cmd.script)}
   if study.spec.help then lines[#lines + 1] = "\n" .. study.spec.help:gsub("%s+$", "") end
   lines[#lines + 1] = "\noptions (key=value):"
   local width = 0
@@ -117,7 +131,8 @@ local function usage(study)
 
 flags:
   --shard K/N  compute part K of N (in a SLURM array job: from SLURM_ARRAY_TASK_ID; --shard wins)
-  --merge      assemble the N parts into the outputs, then figures and summary (or: wrc merge OUT)
+  --merge      assemble the N parts into the outputs, then figures and summary (wrc merge: with the
+               options the shards ran with, read from OUT/parts)
   --fresh      discard the parts of an earlier run and start over (a run resumes otherwise)
 exit status: 0 done, 1 error, 2 bad options, 3 done with failed cases (OUT/failures.csv)]]
   return table.concat(lines, "\n") .. "\n"
@@ -130,18 +145,18 @@ local function parse_options(study)
   local values, given = {}, {}
   for k, v in pairs(arg or {}) do
     if math.type(k) == "integer" and k >= 1 then
-      refuse(2, "%s: unexpected argument '%s' (options are key=value; --help lists them)", cmd.script, tostring(v))
+      refuse(2, "%s: unexpected argument '%s' (options are key=value; --help lists them)", cmd.script, printable(v))
     elseif type(k) == "string" then
       local d = study.byname[k]
       if not d then
         local names = {}
         for _, e in ipairs(study.declared) do names[#names + 1] = e.name end
         local best = wrc.closest_name(k, names)
-        refuse(2, "%s: unknown option '%s'%s (options: %s; --help describes them)", cmd.script, k,
+        refuse(2, "%s: unknown option '%s'%s (options: %s; --help describes them)", cmd.script, printable(k),
                best and (" (did you mean '" .. best .. "'?)") or "", table.concat(names, ", "))
       end
       local x, why = convert(d, v)
-      if x == nil then refuse(2, "%s: option %s=%s: %s", cmd.script, k, tostring(v), why) end
+      if x == nil then refuse(2, "%s: option %s=%s: %s", cmd.script, k, printable(v), why) end
       values[k], given[#given + 1] = x, k
     end
   end
@@ -157,6 +172,7 @@ end
 
 local Study = {}
 Study.__index = Study
+local adopt_recorded_options  -- below, with the parts
 
 -- Declares a study: spec = {name =, help = "what it computes", out = "default folder", options = {...}}. Reads the
 -- options from the command line; with --help, prints them and ends the run.
@@ -168,6 +184,10 @@ function M.new(spec)
     io.write(usage(s))
     exit(0)
   end
+  if tostring(cmd.script):find("%c") then
+    refuse(2, "the study's path %s holds a control character (a line break?): rename it", printable(cmd.script))
+  end
+  if cmd.from_parts then adopt_recorded_options(s, cmd) end
   s.options, s.given = parse_options(s)
   s.script = fs.absolute(cmd.script)
   -- The output folder is checked before anything is computed (a read-only folder found after the sweep loses it).
@@ -176,7 +196,7 @@ function M.new(spec)
     fs.mkdir(s.dir)
     fs.check_writable(s.dir)
   end)
-  if not ok then refuse(1, "%s", (tostring(err):gsub("^[^\n]-:%d+: ", "", 1))) end
+  if not ok then refuse(1, "%s", plain(err)) end
   return s
 end
 
@@ -218,7 +238,7 @@ local function identity(study, r, layout)
   for _, k in ipairs(keys) do lines[#lines + 1] = "input " .. k .. "=" .. fingerprint(r.inputs[k], "inputs." .. k) end
   lines[#lines + 1] = "cases " .. r.cases
   lines[#lines + 1] = "chunks " .. layout
-  for _, t in ipairs(r.tables) do lines[#lines + 1] = "table " .. t.file .. " " .. table.concat(t.columns, ",") end
+  for _, t in ipairs(r.tables or {}) do lines[#lines + 1] = "table " .. t.file .. " " .. table.concat(t.columns, ",") end
   return fs.hash(table.concat(lines, "\n")), lines
 end
 
@@ -278,19 +298,71 @@ end
 -- Shard K of N computes chunks lo..hi: contiguous, the same for every machine.
 local function shard_range(k, n, chunks) return (k - 1) * chunks // n + 1, k * chunks // n end
 
-local function shard_folder(dir, k, n) return ("%s/%s/shard-%d-of-%d"):format(dir, PARTS, k, n) end
+local function shard_name(k, n) return ("shard-%d-of-%d"):format(k, n) end
 local function block_name(a, b) return ("chunks-%09d-%09d.txt"):format(a, b) end
 
--- The blocks a shard folder holds: sorted {a, b, name}.
+-- A word for a command shown to the user: as it is when the shell leaves it alone, else quoted.
+local function shell_word(s)
+  s = tostring(s)
+  return (s:match("^[%w_%./=,:+@%%][%w_%./=,:+@%%%-]*$") and s) or shell_quote(s)
+end
+
+-- The blocks a shard folder holds, sorted by their first chunk (the longest first): {a, b, name}.
 local function blocks_of(folder)
   local list = {}
   for _, name in ipairs(fs.list(folder)) do
     local a, b = name:match("^chunks%-(%d+)%-(%d+)%.txt$")
     if a then list[#list + 1] = {tonumber(a), tonumber(b), name} end
   end
-  table.sort(list, function(x, y) return x[1] < y[1] end)
+  table.sort(list, function(x, y) return x[1] < y[1] or (x[1] == y[1] and x[2] > y[2]) end)
   return list
 end
+
+-- The blocks that do not overlap, in order, and the others (left by an earlier run with another batch size).
+local function disjoint(blocks)
+  local kept, extra, last = {}, {}, 0
+  for _, b in ipairs(blocks) do
+    if b[1] > last and b[2] >= b[1] then
+      kept[#kept + 1], last = b, b[2]
+    else
+      extra[#extra + 1] = b
+    end
+  end
+  return kept, extra
+end
+
+-- A block's text: its lines, then an end line with their count, their bytes and their hash, by which a later run
+-- or the merge tells a whole block from one cut short or changed.
+local function block_text(lines)
+  local body = table.concat(lines, "\n") .. "\n"
+  return body .. ("# end of block: %d lines, %d bytes, hash %s\n"):format(#lines, #body, fs.hash(body))
+end
+
+-- Why the block file at `path` is damaged, or nil when its end line vouches for it.
+local function block_damage(path)
+  local f = io.open(path, "rb")
+  if not f then return "it cannot be read" end
+  local size = f:seek("end")
+  f:seek("set", math.max(0, size - 128))
+  local tail = f:read("a") or ""
+  f:close()
+  local trailer = ("\n" .. tail):match("\n(# end of block: [^\n]*\n)$")
+  local lines, bytes, hash = (trailer or ""):match("^# end of block: (%d+) lines, (%d+) bytes, hash (%x+)\n$")
+  if not lines then return "its end line is missing (cut short, or written by a wrc that did not check blocks)" end
+  if size ~= tonumber(bytes) + #trailer then return "its size is not the one its end line records" end
+  local h, _, n = fs.digest(path, tonumber(bytes))
+  if n ~= tonumber(lines) then return ("it holds %d lines where its end line records %s"):format(n, lines) end
+  if h ~= hash then return "its content does not match its checksum (a value changed)" end
+  return nil
+end
+
+-- A line of a block: "<tag> <text>", or "~<tag> <text>" with "\" and line breaks escaped when the text holds a line
+-- break (a quoted CSV cell may: a file name from a folder), so that every row stays one line of the block.
+local function part_line(tag, text)
+  if not text:find("\n", 1, true) then return tag .. " " .. text end
+  return "~" .. tag .. " " .. text:gsub("\\", "\\\\"):gsub("\n", "\\n")
+end
+local function unescape(text) return (text:gsub("\\(.)", function(ch) return ch == "n" and "\n" or ch end)) end
 
 local function read_lines(path)
   local f = io.open(path, "r")
@@ -329,22 +401,73 @@ local function read_state(folder)
   return st
 end
 
+-- The shard folders of DIR/parts that are real folders: {name =, k =, n =, path =} in the order of their names.
+local function shard_folders(dir)
+  local root, list = dir .. "/" .. PARTS, {}
+  if fs.kind(root) ~= "folder" or fs.is_link(root) then return list end
+  for _, name in ipairs(fs.list(root)) do
+    local k, n = name:match("^shard%-(%d+)%-of%-(%d+)$")
+    local path = root .. "/" .. name
+    if k and not fs.is_link(path) and fs.kind(path) == "folder" then
+      list[#list + 1] = {name = name, k = tonumber(k), n = tonumber(n), path = path}
+    end
+  end
+  return list
+end
+
+----------------------------------------------------------------------------------------------------------------
+-- Locks: one run at a time computes a shard, one merges a folder
+
+-- Locks DIR/parts/<name>.lock for the rest of the run (its process's end releases it, kill -9 too), or stops the run
+-- naming the process that holds it.
+local function take_lock(c, name, what)
+  c.locks = c.locks or {}
+  if c.locks[name] then return end
+  local ok, err = pcall(fs.mkdir_inside, c.dir, PARTS)
+  if not ok then refuse(1, "%s", plain(err)) end
+  local lock, note
+  ok, err = pcall(function() lock, note = fs.lock(c.dir .. "/" .. PARTS .. "/" .. name .. ".lock") end)
+  if not ok then refuse(1, "%s", plain(err)) end
+  if not lock then
+    refuse(1, "%s: %s is being written by another wrc run (%s): wait until it ends, or stop it (its lock ends with " ..
+           "its process)", c.dir, what, note)
+  end
+  if not lock.locked then say("%s: two runs into this folder at once are not kept apart", note) end
+  c.locks[name] = lock
+end
+local function shard_lock(c, k, n) take_lock(c, shard_name(k, n), ("shard %d of %d"):format(k, n)) end
+local function merge_lock(c)
+  take_lock(c, "merge", "the folder (a merge, or a run of the whole study in one process)")
+end
+
+-- Removes the temporary files a killed run left in `rel` ("" for the output folder itself): names of the exact
+-- pattern wrc gives them, plain files only. The lock this run holds says that no other run is writing them.
+local function remove_temporaries(c, rel)
+  local folder = rel == "" and c.dir or (c.dir .. "/" .. rel)
+  for _, name in ipairs(fs.list(folder)) do
+    if fs.is_temporary(name) then fs.remove_inside(c.dir, rel == "" and name or (rel .. "/" .. name)) end
+  end
+end
+
 ----------------------------------------------------------------------------------------------------------------
 -- The output folder: manifest, unknown files, stale files
 
+-- The manifest of DIR: its header fields (status, hash, ...) and known[name] = {size =, hash =} for every file it
+-- lists as written or possibly left by a run. Names that do not name a file inside DIR are left out (ignored).
 local function read_manifest(dir)
   local lines = read_lines(dir .. "/" .. MANIFEST)
   if not lines then return nil end
-  local m = {files = {}, previous = {}, known = {}}
+  local m = {known = {}, ignored = {}}
   for _, l in ipairs(lines) do
     local k, v = l:match("^(%S+) (.*)$")
-    if k == "file" then
-      local name = v:match("^(.-) %d+ %x+$") or v
-      m.files[#m.files + 1] = name
-      m.known[name] = true
-    elseif k == "previous" then
-      m.previous[#m.previous + 1] = v
-      m.known[v] = true
+    if k == "file" or k == "previous" then
+      local name, size, hash = v:match("^(.-) (%d+) (%x+)$")
+      name = name or v  -- a "previous" line of an earlier wrc: no size nor hash
+      if fs.name_problem(name) then
+        m.ignored[#m.ignored + 1] = name
+      else
+        m.known[name] = {size = tonumber(size), hash = hash}
+      end
     elseif k then
       m[k] = v
     end
@@ -353,10 +476,15 @@ local function read_manifest(dir)
 end
 
 -- Refuses a folder holding files that no wrc run listed: the run would mix its outputs with them.
-local function check_folder(dir)
+local function check_folder(dir, quiet)
   local m = read_manifest(dir)
   local known = {}
   for name in pairs(m and m.known or {}) do known[name:match("^[^/]+")] = true end
+  if m and #m.ignored > 0 and not quiet then
+    local many = #m.ignored > 1
+    say("%s/%s: ignored %d name%s that name%s no file inside the folder: %s", dir, MANIFEST, #m.ignored,
+        many and "s" or "", many and "" or "s", printable(table.concat(m.ignored, ", ")))
+  end
   local unknown = {}
   for _, name in ipairs(fs.list(dir)) do
     if name ~= MANIFEST and name ~= PARTS and not fs.is_temporary(name) and not known[name] then
@@ -367,12 +495,13 @@ local function check_folder(dir)
     local shown = {table.unpack(unknown, 1, math.min(#unknown, 6))}
     refuse(1, "output folder '%s' holds %s that no wrc run listed in %s (%s%s): remove %s or choose another folder " ..
            "(out=...); a run never mixes its outputs with unknown files", dir,
-           #unknown > 1 and (#unknown .. " files") or "a file", m and MANIFEST or "a manifest", table.concat(shown, ", "),
-           #unknown > #shown and ", ..." or "", #unknown > 1 and "them" or "it")
+           #unknown > 1 and (#unknown .. " files") or "a file", m and MANIFEST or "a manifest",
+           printable(table.concat(shown, ", ")), #unknown > #shown and ", ..." or "", #unknown > 1 and "them" or "it")
   end
   return m
 end
 
+-- previous = {{name =, rec = {size =, hash =} or nil}, ...}: files that are or may be in the folder.
 local function write_manifest(c, status, files, previous, extra)
   local t = {"# wrc study manifest: the files this run wrote into this folder (read by the next run into it)",
              "status " .. status, "study " .. c.study.script, "hash " .. c.hash, "engine wrc " .. wrc.version,
@@ -385,8 +514,41 @@ local function write_manifest(c, status, files, previous, extra)
     local path = c.dir .. "/" .. name
     t[#t + 1] = ("file %s %d %s"):format(name, fs.size(path), fs.hash_file(path))
   end
-  for _, name in ipairs(previous or {}) do t[#t + 1] = "previous " .. name end
+  for _, p in ipairs(previous or {}) do
+    local r = p.rec
+    t[#t + 1] = (r and r.hash) and ("previous %s %d %s"):format(p.name, r.size, r.hash) or ("previous " .. p.name)
+  end
   fs.write_file(c.dir .. "/" .. MANIFEST, table.concat(t, "\n") .. "\n")
+end
+
+-- The files of the previous run listed in m_old and not written by this one (seen): removed when each is still the
+-- file that run recorded (its hash), a plain file inside the folder; the others are left in place and named.
+local function remove_stale(c, m_old, known, seen)
+  local removed, left = {}, {}
+  for _, name in ipairs(known) do
+    if not seen[name] and name ~= MANIFEST then
+      local rec, r, why = m_old.known[name], nil, "no hash of it recorded"
+      if rec.hash then r, why = fs.remove_inside(c.dir, name, rec.hash) end
+      if r == "removed" then
+        removed[#removed + 1] = name
+      elseif not r then
+        left[#left + 1] = ("%s (%s)"):format(name, plain(why))
+      end
+    end
+  end
+  local function some(list)
+    local shown = {table.unpack(list, 1, math.min(#list, 8))}
+    return printable(table.concat(shown, ", ")) .. (#list > #shown and ", ..." or "")
+  end
+  if #removed > 0 then
+    say("removed %d file%s of the previous run into %s (listed in its manifest, not written by this one): %s", #removed,
+        #removed > 1 and "s" or "", c.dir, some(removed))
+  end
+  if #left > 0 then
+    say("left %d file%s of the previous run in %s (listed in its manifest, not written by this one, not removed): " ..
+        "%s; remove %s yourself: the next run into the folder refuses files no manifest lists", #left,
+        #left > 1 and "s" or "", c.dir, some(left), #left > 1 and "them" or "it")
+  end
 end
 
 ----------------------------------------------------------------------------------------------------------------
@@ -410,15 +572,15 @@ local function chunk_lines(c, k, first, last, results, stats)
       if rows and type(rows[1]) ~= "table" then rows = {rows} end
       for _, row in ipairs(rows or {}) do
         local ok, line = pcall(out.csv_line, tab.columns, row, tab.file .. " case " .. i)
-        if ok then lines[#lines + 1] = t .. " " .. line else err = err or first_line(line) end
+        if ok then lines[#lines + 1] = part_line(t, line) else err = err or first_line(line) end
       end
     end
     if err then
       stats.failed = stats.failed + 1
       local row = c.key and c.key(i) or {}
       row.case, row.error = i, first_line(err)
-      lines[#lines + 1] = "! " .. out.csv_line(c.failure_columns, row, "failures.csv case " .. i)
-      if stats.failed <= 5 then say("case %d failed: %s", i, first_line(err)) end
+      lines[#lines + 1] = part_line("!", out.csv_line(c.failure_columns, row, "failures.csv case " .. i))
+      if stats.failed <= 5 then say("case %d failed: %s", i, printable(first_line(err))) end
     end
   end
   return lines
@@ -441,9 +603,49 @@ local function compute_batch(c, batch)
   return all
 end
 
+-- Removes the shard folders that `drop(folder)` selects, each locked first (none is being computed).
+local function remove_shards(c, drop)
+  for _, s in ipairs(shard_folders(c.dir)) do
+    if drop(s) then
+      shard_lock(c, s.k, s.n)
+      fs.remove_tree_inside(c.dir, PARTS .. "/" .. s.name)
+    end
+  end
+end
+
+-- The chunks done in a shard folder: its blocks checked, a damaged one and one overlapping another removed (their
+-- chunks are computed again). Returns done[chunk] = true.
+local function usable_blocks(c, rel)
+  local folder = c.dir .. "/" .. rel
+  local kept, extra = disjoint(blocks_of(folder))
+  local done, damaged = {}, {}
+  for _, b in ipairs(kept) do
+    local why = block_damage(folder .. "/" .. b[3])
+    if why then
+      damaged[#damaged + 1] = ("%s: %s"):format(b[3], why)
+      fs.remove_inside(c.dir, rel .. "/" .. b[3])
+    else
+      for k = b[1], b[2] do done[k] = true end
+    end
+  end
+  for _, b in ipairs(extra) do fs.remove_inside(c.dir, rel .. "/" .. b[3]) end
+  if #damaged > 0 then
+    say("%d damaged block%s in %s, computed again: %s%s", #damaged, #damaged > 1 and "s" or "", folder,
+        table.concat(damaged, "; ", 1, math.min(#damaged, 3)), #damaged > 3 and "; ..." or "")
+  end
+  if #extra > 0 then
+    say("%d block%s in %s overlapped others (an earlier run's batches): removed", #extra, #extra > 1 and "s" or "",
+        folder)
+  end
+  return done
+end
+
 local function compute_shard(c)
-  local folder = shard_folder(c.dir, c.shard, c.shards)
-  local st = fs.kind(folder) == "folder" and read_state(folder) or nil
+  local rel = PARTS .. "/" .. shard_name(c.shard, c.shards)
+  local folder = c.dir .. "/" .. rel
+  local ok, err = pcall(fs.mkdir_inside, c.dir, rel)
+  if not ok then refuse(1, "%s", plain(err)) end
+  local st = read_state(folder)
   local done_run = c.m_old and c.m_old.status == "complete" and c.m_old.hash or nil  -- parts of a finished run
   if st and st.hash ~= c.hash and not c.fresh then
     if st.hash ~= done_run then
@@ -453,30 +655,21 @@ local function compute_shard(c)
     say("the previous run into %s was complete and had other inputs (%s): its parts are replaced", c.dir,
         differences(st.lines, c.lines))
   end
-  if done_run and done_run ~= c.hash and c.shards == 1 then  -- the one writer: the finished run's parts go
-    for _, name in ipairs(fs.kind(c.dir .. "/" .. PARTS) == "folder" and fs.list(c.dir .. "/" .. PARTS) or {}) do
-      local other = read_state(c.dir .. "/" .. PARTS .. "/" .. name)
-      if other and other.hash == done_run then fs.remove_tree(c.dir .. "/" .. PARTS .. "/" .. name) end
-    end
-    st = nil
-  elseif st and st.hash ~= c.hash then
-    fs.remove_tree(folder)
-    st = nil
-  end
   if c.fresh then
-    fs.remove_tree(c.shards == 1 and (c.dir .. "/" .. PARTS) or folder)
-    st = nil
+    remove_shards(c, function(s) return c.shards == 1 or s.name == shard_name(c.shard, c.shards) end)
+  elseif done_run and done_run ~= c.hash and c.shards == 1 then  -- the one writer: the finished run's parts go
+    remove_shards(c, function(s)
+      local other = read_state(s.path)
+      return other ~= nil and other.hash == done_run
+    end)
+  elseif st and st.hash ~= c.hash then
+    fs.remove_tree_inside(c.dir, rel)
   end
   if c.before_compute then c.before_compute() end
-  fs.mkdir(folder)
-  for _, name in ipairs(fs.list(folder)) do
-    if fs.is_temporary(name) then fs.remove(folder .. "/" .. name) end
-  end
+  fs.mkdir_inside(c.dir, rel)
+  remove_temporaries(c, rel)
   write_state(folder, c)
-  local done = {}
-  for _, b in ipairs(blocks_of(folder)) do
-    for k = b[1], b[2] do done[k] = true end
-  end
+  local done = usable_blocks(c, rel)
   local stats = {cases = 0, failed = 0, resumed = 0}
   for k = c.lo, c.hi do
     if done[k] then
@@ -512,7 +705,7 @@ local function compute_shard(c)
       lines[#lines + 1] = ("# time wall %d s, cpu %.3f s"):format(os.time() - w0, os.clock() - c0)
       results = nil
       fs.write_file(folder .. "/" .. block_name(batch.chunks[1].index, batch.chunks[#batch.chunks].index),
-                    table.concat(lines, "\n") .. "\n")
+                    block_text(lines))
       if os.time() - last_say >= 10 then
         last_say = os.time()
         say("%d of %d cases of this shard, %d failed, %d s", stats.cases + stats.resumed, c.shard_cases, stats.failed,
@@ -527,24 +720,32 @@ end
 ----------------------------------------------------------------------------------------------------------------
 -- Merging
 
--- The complete sets of shard folders of this study: {n = N, folders = {...}} with the smallest N, or nil and why not.
+-- The command that computes shard K of N of this run again (for messages).
+local function shard_command(c, k, n)
+  local words, has_out = {"wrc run", shell_word(c.cmd.script)}, false
+  for _, name in ipairs(c.study.given) do
+    words[#words + 1] = shell_word(name .. "=" .. canonical(c.study.options[name]))
+    has_out = has_out or name == "out"
+  end
+  if not has_out then words[#words + 1] = shell_word("out=" .. c.dir) end
+  words[#words + 1] = ("--shard %d/%d"):format(k, n)
+  return table.concat(words, " ")
+end
+
+-- The complete sets of shard folders of this study: {n = N, shards = {[k] = {folder =, rel =, blocks =}}} with the
+-- smallest N, each shard's blocks the chain that covers its chunks, or nil and why not.
 local function find_parts(c)
-  local root = c.dir .. "/" .. PARTS
-  if fs.kind(root) ~= "folder" then return nil, "there are no parts in " .. root end
   local sets, others = {}, {}
-  for _, name in ipairs(fs.list(root)) do
-    local k, n = name:match("^shard%-(%d+)%-of%-(%d+)$")
-    if k then
-      k, n = tonumber(k), tonumber(n)
-      local st = read_state(root .. "/" .. name)
-      if st and st.hash == c.hash then
-        sets[n] = sets[n] or {}
-        sets[n][k] = {folder = root .. "/" .. name, state = st}
-      else
-        others[#others + 1] = name
-      end
+  for _, s in ipairs(shard_folders(c.dir)) do
+    local st = read_state(s.path)
+    if st and st.hash == c.hash and s.k >= 1 and s.k <= s.n then
+      sets[s.n] = sets[s.n] or {}
+      sets[s.n][s.k] = {folder = s.path, rel = PARTS .. "/" .. s.name, state = st}
+    else
+      others[#others + 1] = s.name
     end
   end
+  if next(sets) == nil and #others == 0 then return nil, "there are no parts in " .. c.dir .. "/" .. PARTS end
   local why, best = {}, nil
   local ns = {}
   for n in pairs(sets) do ns[#ns + 1] = n end
@@ -558,10 +759,13 @@ local function find_parts(c)
         complete = false
         why[#why + 1] = ("shard %d of %d has not started"):format(k, n)
       else
-        p.blocks = blocks_of(p.folder)
+        p.blocks = {}
         local next_chunk = lo
-        for _, b in ipairs(p.blocks) do
-          if b[1] == next_chunk then next_chunk = b[2] + 1 end
+        for _, b in ipairs((disjoint(blocks_of(p.folder)))) do
+          if b[1] == next_chunk and b[2] <= hi then
+            p.blocks[#p.blocks + 1] = b
+            next_chunk = b[2] + 1
+          end
         end
         if next_chunk <= hi then
           complete = false
@@ -576,86 +780,139 @@ local function find_parts(c)
   return nil, table.concat(why, "; ")
 end
 
+-- The complete set of parts to merge, its shards locked (none is computed while it is merged) and every block
+-- checked; or the run stops saying what is missing or damaged and how to compute it.
+local function parts_to_merge(c)
+  for _ = 1, 10 do
+    local set, why = find_parts(c)
+    if not set then
+      refuse(1, "cannot merge into '%s': %s. Run the missing shards (a shard run again resumes), then merge again.",
+             c.dir, why)
+    end
+    local held = true
+    for k = 1, set.n do
+      held = held and c.locks[shard_name(k, set.n)] ~= nil
+      shard_lock(c, k, set.n)
+    end
+    if held then  -- found while its shards were locked: it stays as found
+      local damaged, shards = {}, {}
+      for k = 1, set.n do
+        for _, b in ipairs(set.shards[k].blocks) do
+          local bad = block_damage(set.shards[k].folder .. "/" .. b[3])
+          if bad then
+            damaged[#damaged + 1] = ("shard %d of %d, %s: %s"):format(k, set.n, b[3], bad)
+            if shards[#shards] ~= k then shards[#shards + 1] = k end
+          end
+        end
+      end
+      if #damaged > 0 then
+        local commands = {}
+        for _, k in ipairs(shards) do commands[#commands + 1] = "  " .. shard_command(c, k, set.n) end
+        refuse(1, "cannot merge into '%s': %d damaged block%s (%s%s). A shard's run checks its blocks and computes " ..
+               "the damaged ones again:\n%s\nthen merge again.", c.dir, #damaged, #damaged > 1 and "s" or "",
+               table.concat(damaged, "; ", 1, math.min(#damaged, 4)), #damaged > 4 and "; ..." or "",
+               table.concat(commands, "\n"))
+      end
+      return set
+    end
+  end
+  refuse(1, "cannot merge into '%s': its parts keep changing (shards are being computed); merge once they are done",
+         c.dir)
+end
+
 -- Streams the blocks of every shard, in chunk order, into the tables and failures.csv.
 local function merge_tables(c, set)
   local writers = {}
   for t, tab in ipairs(c.tables) do writers[t] = out.csv_writer(c.dir .. "/" .. tab.file, tab.columns) end
   local failures, failed = nil, 0
   local expect = 1
+  local function bad(where, fmt, ...)
+    for _, w in ipairs(writers) do w:discard() end
+    if failures then failures:discard() end
+    refuse(1, "cannot merge into '%s': %s: %s; compute that shard again with --fresh", c.dir, where,
+           string.format(fmt, ...))
+  end
   c.compute_cpu = 0
   for k = 1, set.n do
     local p = set.shards[k]
-    local _, hi = shard_range(k, set.n, c.nchunks)
     for _, b in ipairs(p.blocks) do
-      if b[1] <= hi then
-        for line in io.lines(p.folder .. "/" .. b[3]) do
-          local tag = line:byte(1)
-          if tag == 64 then  -- "@k"
-            local ch = tonumber(line:sub(2))
-            if ch ~= expect then error(("merge: %s/%s holds chunk %s where chunk %d was expected"):format(p.folder, b[3], line:sub(2), expect)) end
-            expect = expect + 1
-          elseif tag == 33 then  -- "! failure"
-            failures = failures or out.open(c.dir .. "/failures.csv")
-            if failed == 0 then failures:write(table.concat(c.failure_columns, ","), "\n") end
-            failures:write(line:sub(3), "\n")
-            failed = failed + 1
-          elseif tag == 35 then  -- "# time wall <s> s, cpu <s> s" of a block
-            local cpu = line:match("cpu ([%d.]+) s")
-            c.compute_cpu = c.compute_cpu + (tonumber(cpu) or 0)
-          else
-            local t, rest = line:match("^(%d+) (.*)$")
-            local w = writers[tonumber(t or "")]
-            if not w then error(("merge: %s/%s: a line of no table: %s"):format(p.folder, b[3], line:sub(1, 40))) end
-            w:append(rest)  -- the row's text as computed, byte for byte
-          end
+      local where = p.folder .. "/" .. b[3]
+      for line in io.lines(where) do
+        if line:byte(1) == 126 then line = unescape(line:sub(2)) end  -- "~": a row that holds a line break
+        local tag = line:byte(1)
+        if tag == 64 then  -- "@k"
+          local ch = tonumber(line:sub(2))
+          if ch ~= expect then bad(where, "it holds chunk %s where chunk %d was expected", line:sub(2, 20), expect) end
+          expect = expect + 1
+        elseif tag == 33 then  -- "! failure"
+          failures = failures or out.open(c.dir .. "/failures.csv")
+          if failed == 0 then failures:write(table.concat(c.failure_columns, ","), "\n") end
+          failures:write(line:sub(3), "\n")
+          failed = failed + 1
+        elseif tag == 35 then  -- "# time wall <s> s, cpu <s> s" of a block, or its end line
+          local cpu = line:match("^# time wall %d+ s, cpu ([%d.]+) s")
+          c.compute_cpu = c.compute_cpu + (tonumber(cpu) or 0)
+        else
+          local t, rest = line:match("^(%d+) (.*)$")
+          local w = writers[tonumber(t or "")]
+          if not w then bad(where, "a line of no table: %s", printable(line:sub(1, 40))) end
+          w:append(rest)  -- the row's text as computed, byte for byte
         end
       end
     end
   end
-  if expect ~= c.nchunks + 1 then error(("merge: the parts hold chunks 1..%d of %d"):format(expect - 1, c.nchunks)) end
+  if expect ~= c.nchunks + 1 then
+    bad(c.dir .. "/" .. PARTS, "the parts hold chunks 1..%d of %d", expect - 1, c.nchunks)
+  end
   for _, w in ipairs(writers) do w:close() end
   if failures then failures:close() end
   return failed
 end
 
 local function merge(c, m_old)
-  local set, why = find_parts(c)
-  if not set then
-    refuse(1, "cannot merge into '%s': %s. Run the missing shards (a shard run again resumes), then merge again.", c.dir, why)
-  end
-  -- The temporary files a killed merge left (the merge is the one writer of the folder; shards write in parts/).
-  for _, name in ipairs(fs.list(c.dir)) do
-    if fs.is_temporary(name) then fs.remove(c.dir .. "/" .. name) end
-  end
+  merge_lock(c)
+  local set = parts_to_merge(c)
+  remove_temporaries(c, "")  -- a killed merge's (the merge is the one writer of the folder; shards write in parts/)
   local known = {}
   for name in pairs(m_old and m_old.known or {}) do known[#known + 1] = name end
   table.sort(known)
   -- Until the end, the manifest says "incomplete" and lists every file that is or may be in the folder (the
   -- previous run's and each new one as it is written), so that a run killed now is marked and its files known.
-  local written, seen = {}, {}
+  local written, seen, records = {}, {}, {}
   local function mark_incomplete(why)
-    local names = {table.unpack(known)}
+    local previous = {}
+    for _, n in ipairs(known) do previous[#previous + 1] = {name = n, rec = records[n] or m_old.known[n]} end
     for _, n in ipairs(written) do
-      if not m_old or not m_old.known[n] then names[#names + 1] = n end
+      if not (m_old and m_old.known[n]) then previous[#previous + 1] = {name = n, rec = records[n]} end
     end
-    write_manifest(c, "incomplete (" .. why .. ")", {}, names)
+    write_manifest(c, "incomplete (" .. why .. ")", {}, previous)
   end
   mark_incomplete("merging; a run killed now leaves this mark")
   local prefix = c.dir .. "/"
   out.on_write = function(path)
     local name = path:sub(1, #prefix) == prefix and path:sub(#prefix + 1) or nil
-    if name and not seen[name] then
+    if not name then return end
+    local why = fs.name_problem(name)
+    if why then error(("%s: cannot list '%s' in %s: %s"):format(c.dir, printable(name), MANIFEST, why), 0) end
+    local hash, size = fs.digest(path)
+    records[name] = {size = size, hash = hash}
+    if not seen[name] then
       seen[name] = true
       written[#written + 1] = name
-      mark_incomplete("merging; a run killed now leaves this mark")
     end
+    mark_incomplete("merging; a run killed now leaves this mark")
   end
   local ok, err = pcall(function()
     local failed = merge_tables(c, set)
     local ctx = {dir = c.dir, options = c.study.options, cases = c.cases, failed = failed, shards = set.n}
-    function ctx.path(name) return c.dir .. "/" .. name end
-    function ctx.read(name) return out.read_csv(c.dir .. "/" .. name) end
-    function ctx.write(name, text) out.text(c.dir .. "/" .. name, text) end
+    local function inside(name)  -- a file of the folder, named on one line of the manifest
+      local why = fs.name_problem(tostring(name))
+      if why then error(("%s: cannot name a file '%s' in it: %s"):format(c.dir, printable(name), why), 3) end
+      return c.dir .. "/" .. name
+    end
+    function ctx.path(name) return inside(name) end
+    function ctx.read(name) return out.read_csv(inside(name)) end
+    function ctx.write(name, text) out.text(inside(name), text) end
     if c.finish then c.finish(ctx) end
     c.failed = failed
   end)
@@ -664,18 +921,7 @@ local function merge(c, m_old)
     mark_incomplete("failed: " .. first_line(err))
     error(err, 0)
   end
-  local stale = {}
-  for _, name in ipairs(known) do
-    if not seen[name] and name ~= MANIFEST then
-      fs.remove(c.dir .. "/" .. name)
-      stale[#stale + 1] = name
-    end
-  end
-  if #stale > 0 then
-    local shown = {table.unpack(stale, 1, math.min(#stale, 8))}
-    say("removed %d file%s of the previous run into %s (listed in its manifest, not written by this one): %s%s", #stale,
-        #stale > 1 and "s" or "", c.dir, table.concat(shown, ", "), #stale > #shown and ", ..." or "")
-  end
+  remove_stale(c, m_old, known, seen)
   table.sort(written)
   write_manifest(c, "complete", written, {},
                  {"shards " .. set.n, "failed " .. c.failed, ("compute_cpu %.2f s"):format(c.compute_cpu)})
@@ -703,7 +949,7 @@ function Study:run(r)
   assert(type(r.compute) == "function", "study:run: compute(batch) is required")
   local c = {study = self, cases = r.cases, tables = r.tables or {}, compute = r.compute, finish = r.finish, key = r.key,
              batch = math.max(1, r.batch or 1), cmd = cmd, shard = cmd.shard or 1, shards = cmd.shards or 1,
-             fresh = cmd.fresh}
+             fresh = cmd.fresh, locks = {}}
   c.failure_columns = {"case"}
   for _, k in ipairs(r.key_columns or {}) do c.failure_columns[#c.failure_columns + 1] = k end
   c.failure_columns[#c.failure_columns + 1] = "error"
@@ -711,7 +957,12 @@ function Study:run(r)
   c.nchunks, c.chunk, layout = chunk_layout(r)
   c.hash, c.lines = identity(self, r, layout)
   c.dir = self.dir
-  local m_old = check_folder(c.dir)
+  check_folder(c.dir)  -- before anything is created in a folder that is refused
+  -- One run at a time writes the folder (a merge, or the study in one process) and one computes each shard: locked
+  -- before the folder is read for good.
+  if cmd.merge or c.shards == 1 then merge_lock(c) end
+  if not cmd.merge then shard_lock(c, c.shard, c.shards) end
+  local m_old = check_folder(c.dir, true)
   c.m_old = m_old
   if not cmd.merge then
     c.lo, c.hi = shard_range(c.shard, c.shards, c.nchunks)
@@ -720,18 +971,18 @@ function Study:run(r)
     c.shard_cases = b - a + 1
     if c.shards == 1 then  -- the one writer of this folder: mark it (shards leave the manifest to the merge)
       c.before_compute = function()
-        local known = {}
-        for name in pairs(m_old and m_old.known or {}) do known[#known + 1] = name end
-        table.sort(known)
-        write_manifest(c, "incomplete (computing)", {}, known)
+        local previous = {}
+        for name, rec in pairs(m_old and m_old.known or {}) do previous[#previous + 1] = {name = name, rec = rec} end
+        table.sort(previous, function(x, y) return x.name < y.name end)
+        write_manifest(c, "incomplete (computing)", {}, previous)
       end
     end
     local stats = compute_shard(c)
     local msg = ("%d cases computed in %d s (%.1f s cpu), %d failed"):format(stats.cases, stats.wall, stats.cpu, stats.failed)
     if stats.resumed > 0 then msg = msg .. (", %d resumed from earlier parts"):format(stats.resumed) end
     if c.shards > 1 then
-      say("shard %d of %d done: %s. Once every shard is done: wrc merge %s (or this command with --merge)", c.shard,
-          c.shards, msg, c.dir)
+      say("shard %d of %d done: %s. Once every shard is done: wrc merge %s out=%s (or this command with --merge)",
+          c.shard, c.shards, msg, shell_word(cmd.script), shell_word(c.dir))
       if stats.failed > 0 then cmd.status = 3 end
       return
     end
@@ -746,51 +997,83 @@ function Study:run(r)
 end
 
 ----------------------------------------------------------------------------------------------------------------
--- wrc merge DIR
+-- wrc merge STUDY.lua: the options from the parts
 
--- Runs the study of DIR's parts again in merge mode, with the options recorded in the parts and `args` on top.
-function M.merge_folder(folder, args)
-  folder = folder:gsub("(.)/+$", "%1")
-  local root = folder .. "/" .. PARTS
-  if fs.kind(root) ~= "folder" then refuse(1, "'%s' holds no parts to merge (no folder %s)", folder, root) end
-  local studies, order = {}, {}
-  for _, name in ipairs(fs.list(root)) do
-    if name:match("^shard%-%d+%-of%-%d+$") then
-      local st = read_state(root .. "/" .. name)
-      if st and not studies[st.hash] then
-        studies[st.hash] = st
-        order[#order + 1] = st.hash
-      end
-    end
+-- The runs whose parts DIR holds: runs[hash] = state, and their hashes in the order of the shard folders.
+local function runs_in(dir)
+  local runs, order = {}, {}
+  for _, s in ipairs(shard_folders(dir)) do
+    local st = read_state(s.path)
+    if st and st.hash and not runs[st.hash] then runs[st.hash], order[#order + 1] = st, st.hash end
   end
-  if #order == 0 then refuse(1, "'%s' holds no shard parts (%s/shard-K-of-N/state.txt)", folder, root) end
-  if #order > 1 then
+  return runs, order
+end
+
+-- The hash of the script a run's parts came from (an identity line), "?" if none.
+local function script_hash(st)
+  for _, l in ipairs(st.lines) do
+    local h = l:match("^script (%x+)$")
+    if h then return h end
+  end
+  return "?"
+end
+
+local function describe(st)
+  local options = #st.args > 0 and (", options " .. printable(table.concat(st.args, " "))) or ""
+  return ("%s (script hash %s%s)"):format(printable(st.script or "?"), script_hash(st), options)
+end
+
+-- `wrc merge STUDY.lua`: the options the shards ran with, from the parts in the output folder, for those not given
+-- on the command line -- when the parts came from this very script (its content's hash); else the run stops, saying
+-- where they came from. The script named by the parts is never run.
+adopt_recorded_options = function(s, cmd)
+  local dir = tostring(arg.out or s.spec.out or "results"):gsub("(.)/+$", "%1")
+  local runs, order = runs_in(dir)
+  if #order == 0 then
+    refuse(1, "'%s' holds no parts to merge (no %s/%s/shard-K-of-N/state.txt)", printable(dir), printable(dir), PARTS)
+  end
+  local mine, match, others = fs.hash_file(cmd.script), {}, {}
+  for _, h in ipairs(order) do
+    if script_hash(runs[h]) == mine then match[#match + 1] = runs[h] else others[#others + 1] = describe(runs[h]) end
+  end
+  if #match == 0 then
+    refuse(1, "the parts in '%s' do not come from %s (script hash %s) but from %s: wrc merges parts only with the " ..
+           "study they came from", printable(dir), printable(cmd.script), mine, table.concat(others, "; "))
+  end
+  if #match > 1 then
     local list = {}
-    for _, h in ipairs(order) do
-      list[#list + 1] = studies[h].script .. " " .. table.concat(studies[h].args, " ")
-    end
-    refuse(1, "'%s' holds the parts of %d different runs (%s): merge with `wrc run STUDY.lua [options] --merge`, or " ..
-           "remove the parts you do not want", folder, #order, table.concat(list, " | "))
+    for _, st in ipairs(match) do list[#list + 1] = describe(st) end
+    refuse(1, "'%s' holds the parts of %d runs of this study with other options (%s): merge one with `wrc run %s " ..
+           "[its options] --merge`, or remove the parts you do not want", printable(dir), #match,
+           table.concat(list, "; "), shell_word(cmd.script))
   end
-  local st = studies[order[1]]
-  if fs.kind(st.script) ~= "file" then refuse(1, "the study script %s (recorded in %s) is gone", st.script, root) end
-  local new_arg = {[0] = st.script}
-  for _, a in ipairs(st.args) do
+  local adopted = {}
+  for _, a in ipairs(match[1].args) do
     local k, v = a:match("^([^=]+)=(.*)$")
-    new_arg[k] = v
+    if k and k ~= "out" and arg[k] == nil then arg[k], adopted[#adopted + 1] = v, a end
   end
-  for _, a in ipairs(args or {}) do
-    local k, v = a:match("^([^=]+)=(.*)$")
-    if not k then refuse(2, "wrc merge: unexpected argument '%s' (options are key=value)", a) end
-    new_arg[k] = v
+  if #adopted > 0 then
+    say("merging '%s' with the options its shards ran with: %s", printable(dir), printable(table.concat(adopted, " ")))
   end
-  new_arg.out = folder
-  arg = new_arg
-  wrc.command.script = st.script
-  wrc.command.merge = true
-  local chunk, err = loadfile(st.script)
-  if not chunk then error(err, 0) end
-  chunk()
+end
+
+-- `wrc merge DIR` (the form before wrc named the study): runs nothing, says where the parts came from and how to
+-- merge them.
+function M.refuse_folder_merge(folder)
+  folder = folder:gsub("(.)/+$", "%1")
+  local runs, order = runs_in(folder)
+  local lines = {}
+  for _, h in ipairs(order) do
+    local st = runs[h]
+    lines[#lines + 1] = ("  wrc merge %s %s    # parts of %s"):format(shell_word(st.script or "?"),
+                                                                     shell_word("out=" .. folder), describe(st))
+  end
+  refuse(2, "wrc merge takes the study, not the folder: wrc merge STUDY.lua %s. wrc runs no script that a folder " ..
+         "names (a folder from someone else could name any). %s", shell_word("out=" .. folder),
+         #lines == 0 and ("'" .. printable(folder) .. "' holds no parts of a study either.") or
+         ("Its parts come from:\n" .. table.concat(lines, "\n") ..
+          "\nIf a script is yours, its command above merges its parts (it checks the script's content against the " ..
+          "hash)."))
 end
 
 return M

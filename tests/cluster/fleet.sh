@@ -12,7 +12,7 @@ for k in 1 2 3 4; do
   "$WRC" run "$FLEET" count=24 threads=1 plots=false out=four --shard $k/4 >/dev/null 2>"shard$k.err" &
 done
 wait
-expect_status 0 "$WRC" merge four
+expect_status 0 "$WRC" merge "$FLEET" out=four
 same_outputs one two fleet.csv delta_r.csv summary.txt
 same_outputs one four fleet.csv delta_r.csv summary.txt
 [ "$(wc -l < one/fleet.csv)" -eq 25 ] || fail "one/fleet.csv should hold 24 wheels"

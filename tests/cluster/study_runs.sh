@@ -18,8 +18,12 @@ same_outputs t1 t8 sweep.csv rigid.csv summary.txt
 "$WRC" run "$PAPER" "${COARSE[@]}" threads=1 out=one 2>/dev/null >/dev/null
 for k in 1 2 3 4; do "$WRC" run "$PAPER" "${COARSE[@]}" threads=1 out=four --shard $k/4 2>"shard$k.err" >/dev/null & done
 wait
-expect_status 1 "$WRC" merge four/parts  # not an output folder
-expect_status 0 "$WRC" merge four
+expect_status 2 "$WRC" merge four  # the folder alone: wrc says which study the parts came from, runs none
+expect_err "wrc runs no script that a folder names"
+expect_err "paper_study.lua"
+expect_status 1 "$WRC" merge "$PAPER" out=four/parts  # not an output folder
+expect_status 0 "$WRC" merge "$PAPER" out=four  # the options from the parts
+expect_err "with the options its shards ran with: grid_mm=0.4 plots=false step_mm=2 threads=1"
 same_outputs one four sweep.csv rigid.csv summary.txt
 grep -q "^status complete" four/manifest.txt || fail "four/manifest.txt is not complete"
 grep -q "^shards 4" four/manifest.txt || fail "four/manifest.txt does not say 4 shards"
@@ -80,6 +84,15 @@ expect_status 2 "$WRC" run plain.lua --shard 1/2
 expect_err "runs no study through wrc.study"
 expect_status 2 "$WRC" run "$PAPER" --shard 1/2 --merge
 expect_err "takes no --shard"
+# Given twice: refused, never the last one silently.
+expect_status 2 "$WRC" run "$CASES" cases=10 cases=20
+expect_err "option cases is given twice (cases=10 and cases=20)"
+expect_status 2 "$WRC" run "$PAPER" --shard 1/2 --shard 2/2
+expect_err "--shard is given twice"
+expect_status 2 "$WRC" run "$PAPER" --fresh --merge
+expect_err "give one of the two"
+expect_status 2 "$WRC" merge "$PAPER" --fresh
+expect_err "--fresh does not apply"
 
 echo "== the output folder: writable before computing, unknown files refused, stale files removed, a kill marked"
 expect_status 1 "$WRC" run "$CASES" cases=5 out=/proc/self

@@ -1,4 +1,4 @@
-// The flags of `wrc run` (--shard, --merge, --fresh, --help) and the shard of a SLURM array task.
+// The flags of `wrc run` (--shard, --merge, --fresh, --help) and of `wrc merge`, and the shard of a SLURM array task.
 #include "wrc/core/error.hpp"
 #include "wrc/lua/host.hpp"
 
@@ -48,6 +48,34 @@ TEST_CASE("host flags: --shard K/N, --merge, --fresh, --help are taken out; key=
   CHECK_THROWS_WITH_AS(flags_of({"--shard"}), doctest::Contains("--shard needs K/N"), Error);
   CHECK_THROWS_WITH_AS(flags_of({"--shrad", "1/2"}), doctest::Contains("did you mean '--shard'"), Error);
   CHECK_THROWS_WITH_AS(flags_of({"--merge", "--shard", "1/2"}), doctest::Contains("takes no --shard"), Error);
+}
+
+TEST_CASE("host flags: a flag or an option given twice, and --fresh with --merge, are refused") {
+  CHECK_THROWS_WITH_AS(flags_of({"--shard", "1/2", "--shard", "2/2"}), doctest::Contains("--shard is given twice"),
+                       Error);
+  CHECK_THROWS_WITH_AS(flags_of({"--shard=1/2", "--shard", "1/2"}), doctest::Contains("--shard is given twice"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"--fresh", "--fresh"}), doctest::Contains("--fresh is given twice"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"cases=10", "x=1", "cases=20"}),
+                       doctest::Contains("option cases is given twice (cases=10 and cases=20)"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"--fresh", "--merge"}), doctest::Contains("give one of the two"), Error);
+  CHECK(flags_of({"a=1", "b=1", "word", "word"}).shards == 1);  // other words may repeat (a plain script's arg[i])
+}
+
+TEST_CASE("host flags: wrc merge STUDY.lua takes options and --help, no --shard, --merge or --fresh") {
+  std::vector<std::string> args{"out=x", "plots=false"};
+  const RunFlags f = wrc::lua::take_merge_flags(args);
+  CHECK(f.merge);
+  CHECK(f.from_parts);
+  CHECK(args == std::vector<std::string>{"out=x", "plots=false"});
+  std::vector<std::string> help{"--help"};
+  CHECK(wrc::lua::take_merge_flags(help).help);
+  std::vector<std::string> fresh{"--fresh"}, merge{"--merge"};
+  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(fresh), doctest::Contains("--fresh does not apply"), Error);
+  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(merge), doctest::Contains("--merge does not apply"), Error);
+  std::vector<std::string> shard{"--shard", "1/2"};
+  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(shard), doctest::Contains("--shard does not apply"), Error);
+  std::vector<std::string> twice{"out=a", "out=b"};
+  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(twice), doctest::Contains("option out is given twice"), Error);
 }
 
 TEST_CASE("host flags: the shard of a SLURM array task, and --shard winning over it") {

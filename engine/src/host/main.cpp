@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace {
@@ -13,7 +15,7 @@ namespace {
 void usage(std::FILE* out) {
   std::fputs(
       "usage: wrc run STUDY.lua [key=value ...] [--shard K/N] [--merge] [--fresh] [--help]\n"
-      "       wrc merge DIR [key=value ...]\n"
+      "       wrc merge STUDY.lua [out=DIR] [key=value ...]\n"
       "       wrc --help | --version\n"
       "\n"
       "Runs a wheel-rail contact study written in Lua. The `wrc` module is preloaded as the global\n"
@@ -23,8 +25,10 @@ void usage(std::FILE* out) {
       "A study that declares its options (wrc.study.new) lists them with --help and runs in parts:\n"
       "  --shard K/N   compute part K of N (inside a SLURM array job the part comes from\n"
       "                SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT; --shard wins)\n"
-      "  --merge       assemble the parts of all N shards into the outputs (or: wrc merge DIR)\n"
+      "  --merge       assemble the parts of all N shards into the outputs\n"
       "  --fresh       discard the parts of an earlier run and start over (a run resumes otherwise)\n"
+      "wrc merge STUDY.lua assembles them with the options the shards ran with (read from DIR/parts, where\n"
+      "DIR is out=, or the study's default), if the parts came from this script (its content hash).\n"
       "Exit status: 0 done, 1 error, 2 usage, 3 done with failed cases (listed in DIR/failures.csv).\n"
       "\n"
       "environment: WRC_HOME (folder with scripts/ and profiles/), WRC_PLUGIN_PATH (extra plugin\n"
@@ -51,16 +55,20 @@ int main(int argc, char** argv) {
   if (cmd == "run" || cmd == "merge") {
     if (argc < 3) {
       std::fprintf(stderr, "wrc %s: missing the %s\n", cmd.c_str(),
-                   cmd == "run" ? "study script (wrc run STUDY.lua [key=value ...])" : "output folder (wrc merge DIR)");
+                   cmd == "run" ? "study script (wrc run STUDY.lua [key=value ...])"
+                                : "study script (wrc merge STUDY.lua [out=DIR] [key=value ...])");
       return 2;
     }
     std::vector<std::string> args(argv + 3, argv + argc);
-    if (cmd == "merge") return wrc::lua::merge_folder(argv[2], args);
+    std::error_code ec;
+    if (cmd == "merge" && std::filesystem::is_directory(argv[2], ec)) return wrc::lua::refuse_folder_merge(argv[2]);
     try {
-      const wrc::lua::RunFlags flags = wrc::lua::take_run_flags(args, [](const char* name) { return std::getenv(name); });
+      const auto env = [](const char* name) { return std::getenv(name); };
+      const wrc::lua::RunFlags flags =
+          cmd == "merge" ? wrc::lua::take_merge_flags(args) : wrc::lua::take_run_flags(args, env);
       return wrc::lua::run_file(argv[2], args, flags);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "wrc run: %s\n", e.what());
+      std::fprintf(stderr, "wrc %s: %s\n", cmd.c_str(), e.what());
       return 2;
     }
   }

@@ -8,10 +8,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -147,6 +149,7 @@ void push_command(lua_State* L, const std::string& script, const RunFlags& flags
   set_bool(L, "merge", flags.merge);
   set_bool(L, "fresh", flags.fresh);
   set_bool(L, "help", flags.help);
+  set_bool(L, "from_parts", flags.from_parts);
   lua_setfield(L, -2, "command");
   lua_pop(L, 1);
 }
@@ -209,25 +212,18 @@ int run_file(const std::string& path, const std::vector<std::string>& args, cons
   return code;
 }
 
-int merge_folder(const std::string& folder, const std::vector<std::string>& args) {
+int refuse_folder_merge(const std::string& folder) {
   lua_State* L = open_or_report();
   if (L == nullptr) return 1;
-  RunFlags flags;
-  flags.merge = true;
-  push_command(L, "", flags);
-  int status = luaL_loadstring(L, "local folder, args = ...\nreturn require('wrc.study.run').merge_folder(folder, args)");
+  push_command(L, "", RunFlags{});
+  int status = luaL_loadstring(L, "return require('wrc.study.run').refuse_folder_merge(...)");
   if (status == LUA_OK) {
     lua_pushstring(L, folder.c_str());
-    lua_createtable(L, static_cast<int>(args.size()), 0);
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      lua_pushstring(L, args[i].c_str());
-      lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-    }
-    status = pcall_traceback(L, 2, 0);
+    status = pcall_traceback(L, 1, 0);
   }
   const int code = exit_code(L, status);
   lua_close(L);
-  return code;
+  return code == 0 ? 2 : code;
 }
 
 namespace {
@@ -275,27 +271,38 @@ void shard_from_slurm(const std::function<const char*(const char*)>& env, RunFla
   f.shard_from = fmt::format("SLURM_ARRAY_TASK_ID={} of the array {}-{} ({} tasks)", id, *min, *min + (n - 1) * step, n);
 }
 
-}  // namespace
-
-RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env) {
+// The flags of a command line taken out of `args`; each flag and each key=value key at most once.
+RunFlags parse_flags(std::vector<std::string>& args) {
   RunFlags f;
-  std::vector<std::string> rest;
-  bool shard_given = false;
+  std::vector<std::string> rest, seen;
+  std::map<std::string, std::string> keys;
+  auto once = [&](const std::string& flag) {
+    if (std::find(seen.begin(), seen.end(), flag) != seen.end()) fail("{} is given twice: give it once", flag);
+    seen.push_back(flag);
+  };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) != 0 && a != "-h") {
+      const auto eq = a.find('=');
+      if (eq != std::string::npos && eq > 0) {
+        const auto [it, fresh] = keys.emplace(a.substr(0, eq), a);
+        if (!fresh) fail("option {} is given twice ({} and {}): give it once", it->first, it->second, a);
+      }
       rest.push_back(a);
     } else if (a == "--help" || a == "-h") {
+      once("--help");
       f.help = true;
     } else if (a == "--merge") {
+      once("--merge");
       f.merge = true;
     } else if (a == "--fresh") {
+      once("--fresh");
       f.fresh = true;
     } else if (a == "--shard" || a.rfind("--shard=", 0) == 0) {
+      once("--shard");
       if (a == "--shard" && i + 1 >= args.size()) fail("--shard needs K/N (e.g. --shard 2/4)");
       const std::string v = a == "--shard" ? args[++i] : a.substr(8);
       parse_shard(v, f);
-      shard_given = true;
       f.shard_from = "--shard " + v;
     } else {
       const std::string best = closest_name(a, {"--shard", "--merge", "--fresh", "--help"});
@@ -304,7 +311,16 @@ RunFlags take_run_flags(std::vector<std::string>& args, const std::function<cons
     }
   }
   args = std::move(rest);
+  return f;
+}
+
+}  // namespace
+
+RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env) {
+  RunFlags f = parse_flags(args);
+  const bool shard_given = !f.shard_from.empty();
   if (f.merge && shard_given) fail("--merge assembles the parts of every shard: it takes no --shard");
+  if (f.merge && f.fresh) fail("--merge assembles the parts there are, --fresh discards them: give one of the two");
   const char* id = env("SLURM_ARRAY_TASK_ID");
   if (id != nullptr && *id != 0 && !f.merge && !f.help) {
     if (shard_given)
@@ -312,6 +328,15 @@ RunFlags take_run_flags(std::vector<std::string>& args, const std::function<cons
     else
       shard_from_slurm(env, f);
   }
+  return f;
+}
+
+RunFlags take_merge_flags(std::vector<std::string>& args) {
+  RunFlags f = parse_flags(args);
+  if (!f.shard_from.empty() || f.merge || f.fresh)
+    fail("wrc merge STUDY.lua assembles the parts of every shard: {} does not apply to it",
+         !f.shard_from.empty() ? "--shard" : f.merge ? "--merge" : "--fresh");
+  f.merge = f.from_parts = true;
   return f;
 }
 

@@ -21,6 +21,7 @@ struct RunFlags {
   bool merge = false;         // --merge: assemble the shards' parts, then figures and summary
   bool fresh = false;         // --fresh: discard earlier parts and start over
   bool help = false;          // --help: list the study's options
+  bool from_parts = false;    // `wrc merge STUDY.lua`: a merge with the options the shards ran with (from the parts)
   std::vector<std::string> notes;  // said once on stderr (e.g. SLURM's array variables overridden by --shard)
 };
 
@@ -28,8 +29,13 @@ struct RunFlags {
 // a SLURM array job (SLURM_ARRAY_TASK_ID set), the split comes from SLURM: shard = (ID - MIN) / STEP + 1 of
 // SLURM_ARRAY_TASK_COUNT (or (MAX - MIN) / STEP + 1); --shard wins over SLURM (a note says so), and --merge
 // ignores SLURM. `env` reads an environment variable (nullptr when unset). Throws wrc::Error naming a malformed
-// flag or an array whose task ids do not number the shards (a list with gaps).
+// flag, a flag or a key=value option given twice, --merge with --shard or --fresh, or an array whose task ids do
+// not number the shards (a list with gaps).
 RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env);
+
+// The flags of `wrc merge STUDY.lua [key=value ...]`: merge and from_parts set, --help allowed; --shard, --merge and
+// --fresh are errors, and so is a key given twice.
+RunFlags take_merge_flags(std::vector<std::string>& args);
 
 // Runs a study script. `args` are the command-line words after the script: `key=value` pairs land in
 // the global table `arg` as arg.key (numbers converted), other words as arg[1], arg[2], ...; arg[0] is
@@ -42,9 +48,10 @@ RunFlags take_run_flags(std::vector<std::string>& args, const std::function<cons
 // message.
 int run_file(const std::string& path, const std::vector<std::string>& args, const RunFlags& flags = {});
 
-// `wrc merge DIR [key=value ...]`: runs the study whose parts are in DIR/parts again in merge mode, with the
-// options it was run with (and `args` on top, e.g. plots=false). Exit code as run_file.
-int merge_folder(const std::string& folder, const std::vector<std::string>& args);
+// `wrc merge DIR`, the form before wrc named the study: runs nothing (a folder from someone else could name any
+// script in its parts), says which script and options the parts in DIR came from, with that script's hash, and
+// the command that merges them with it. Returns 2.
+int refuse_folder_merge(const std::string& folder);
 
 // Loads a profile as wrc.profile.load(path, options) does -- a Lua definition or a file through the readers -- in a
 // Lua state of its own, closed before returning (for callers without a Lua state: the C API). Throws wrc::Error.
