@@ -24,6 +24,7 @@ while getopts "n:j:S:h" o; do
   esac
 done
 shift $((OPTIND - 1))
+[[ $shards =~ ^[1-9][0-9]*$ ]] || { echo "parallel.sh: -n $shards: expected a number >= 1" >&2; exit 2; }
 if [ $# -lt 1 ]; then
   sed -n '2,16p' "$0" >&2
   exit 2
@@ -33,13 +34,19 @@ shift
 wrc=${WRC:-wrc}
 command -v parallel >/dev/null || { echo "parallel.sh: GNU parallel is not installed (Debian: apt install parallel)" >&2; exit 2; }
 
+# The shard command's words reach the jobs in an environment variable (shell-quoted by printf %q), not on GNU
+# parallel's command line, where {}, {.}, {= perl =} and the like in the study's arguments would be replaced or run.
+printf -v WRC_SHARD_WORDS '%q ' "$wrc" run "$study" "$@"
+export WRC_SHARD_WORDS
 opts=(--will-cite --halt never --line-buffer --tagstring "shard {}/$shards")
 [ -n "$jobs" ] && opts+=(--jobs "$jobs")
-[ -n "$hosts" ] && opts+=(--sshlogin "$hosts" --workdir "$PWD")
+[ -n "$hosts" ] && opts+=(--sshlogin "$hosts" --workdir "$PWD" --env WRC_SHARD_WORDS)
 
 start=$(date +%s%N)
-# -q: the words of the command are quoted for the shell (on remote hosts too); a failed shard does not stop the others.
-parallel "${opts[@]}" -q "$wrc" run "$study" "$@" --shard "{}/$shards" ::: $(seq 1 "$shards") || true
+# -q: the words of the command are quoted for the shell (on remote hosts too); its only replacement string is the
+# shard's {}. A failed shard does not stop the others.
+parallel "${opts[@]}" -q bash -c 'shard=$1; eval "set -- $WRC_SHARD_WORDS"; exec "$@" --shard "$shard"' wrc-shard \
+  "{}/$shards" ::: $(seq 1 "$shards") || true
 shards_done=$(date +%s%N)
 status=0
 "$wrc" run "$study" "$@" --merge || status=$?

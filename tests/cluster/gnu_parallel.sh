@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # examples/cluster/parallel.sh: the paper's study (coarse) in 4 shards under GNU parallel on this machine, merged,
-# byte-identical to the study run in one process.
+# byte-identical to the study run in one process; arguments that hold GNU parallel's replacement strings pass as given.
 source "$(dirname "$0")/common.sh"
 command -v parallel >/dev/null || fail "GNU parallel is not installed (.ci/deps installs the Debian package 'parallel')"
 
@@ -13,4 +13,14 @@ for k in 1 2 3 4; do
 done
 same_outputs single sharded sweep.csv rigid.csv summary.txt
 grep -q "^shards 4" sharded/manifest.txt || fail "the merged manifest does not say 4 shards"
+
+echo "== the study's arguments reach wrc as given: GNU parallel's replacement strings in them are neither replaced nor run"
+for out in 'pr_{}' 'pe{= system("touch ran_perl") =}'; do
+  WRC="$WRC" timeout 600 "$SRC/examples/cluster/parallel.sh" -n 2 -j 2 "$CASES" cases=6 plots=false "out=$out" \
+    >parallel.out 2>parallel.err || { cat parallel.err >&2; fail "parallel.sh failed with out=$out"; }
+  [ "$(wc -l < "$out/rigid.csv")" -eq 7 ] || fail "out=$out: $(ls)"
+done
+[ ! -e ran_perl ] || fail "GNU parallel ran Perl code from an argument"
+ls -d pr_1 pr_2 2>/dev/null && fail "out=pr_{} was split by shard"
+expect_status 2 "$SRC/examples/cluster/parallel.sh" -n 0 "$CASES"
 echo "GNU parallel ok"
