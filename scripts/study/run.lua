@@ -603,14 +603,17 @@ local function compute_batch(c, batch)
   return all
 end
 
--- Removes the shard folders that `drop(folder)` selects, each locked first (none is being computed).
+-- Removes the shard folders that `drop(folder)` selects, all of them locked first (none is being computed; if one
+-- is, the run stops before removing any).
 local function remove_shards(c, drop)
+  local chosen = {}
   for _, s in ipairs(shard_folders(c.dir)) do
     if drop(s) then
       shard_lock(c, s.k, s.n)
-      fs.remove_tree_inside(c.dir, PARTS .. "/" .. s.name)
+      chosen[#chosen + 1] = s
     end
   end
+  for _, s in ipairs(chosen) do fs.remove_tree_inside(c.dir, PARTS .. "/" .. s.name) end
 end
 
 -- The chunks done in a shard folder: its blocks checked, a damaged one and one overlapping another removed (their
@@ -1040,11 +1043,23 @@ adopt_recorded_options = function(s, cmd)
     refuse(1, "the parts in '%s' do not come from %s (script hash %s) but from %s: wrc merges parts only with the " ..
            "study they came from", printable(dir), printable(cmd.script), mine, table.concat(others, "; "))
   end
+  if #match > 1 then  -- runs with other options: those that agree with the options given
+    local agree = {}
+    for _, st in ipairs(match) do
+      local ok = true
+      for _, a in ipairs(st.args) do
+        local k, v = a:match("^([^=]+)=(.*)$")
+        if k and arg[k] ~= nil and tostring(arg[k]) ~= v then ok = false end
+      end
+      if ok then agree[#agree + 1] = st end
+    end
+    if #agree >= 1 then match = agree end
+  end
   if #match > 1 then
     local list = {}
     for _, st in ipairs(match) do list[#list + 1] = describe(st) end
-    refuse(1, "'%s' holds the parts of %d runs of this study with other options (%s): merge one with `wrc run %s " ..
-           "[its options] --merge`, or remove the parts you do not want", printable(dir), #match,
+    refuse(1, "'%s' holds the parts of %d runs of this study with other options (%s): give the options of the one " ..
+           "to merge (wrc merge %s out=DIR key=value ...), or remove the parts you do not want", printable(dir), #match,
            table.concat(list, "; "), shell_word(cmd.script))
   end
   local adopted = {}

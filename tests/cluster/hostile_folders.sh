@@ -80,6 +80,12 @@ expect_err "do not come from changed.lua (script hash $(fnv changed.lua))"
 expect_status 0 "$WRC" merge "$CASES" out=merged  # the study of the parts (by content), with their options
 [ ! -e ran_evil ] || fail "wrc merge ran the script that the parts named"
 [ "$(wc -l < merged/rigid.csv)" -eq 7 ] || fail "the merge of 6 cases: $(cat merged/rigid.csv)"
+# Two runs of the study in one folder (other options, other shard counts): the options given choose one.
+for k in 1 2 3; do expect_status 0 "$WRC" run "$CASES" cases=8 plots=false out=merged --shard $k/3; done
+expect_status 1 "$WRC" merge "$CASES" out=merged
+expect_err "holds the parts of 2 runs of this study with other options"
+expect_status 0 "$WRC" merge "$CASES" out=merged cases=8
+[ "$(wc -l < merged/rigid.csv)" -eq 9 ] || fail "the merge of 8 cases: $(cat merged/rigid.csv)"
 
 echo "== a wheel file named with a line break: one row in every table, the same in shards"
 mkdir wheels

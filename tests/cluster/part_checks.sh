@@ -50,12 +50,27 @@ expect_err "damaged blocks in cut/parts/shard-1-of-2, computed again"
 expect_status 0 "$WRC" run "$CASES" "${RUN[@]}" batch=4 out=cut --merge
 same_outputs single cut rigid.csv summary.txt
 
+echo "== blocks that overlap (left by two runs of a shard at once, before wrc locked shards): merged once, removed"
+for k in 1 2; do expect_status 0 "$WRC" run "$CASES" "${RUN[@]}" batch=4 out=overlap --shard $k/2; done
+blocks=(overlap/parts/shard-1-of-2/chunks-*.txt)
+cp "${blocks[1]}" overlap/parts/shard-1-of-2/chunks-000000003-000000006.txt  # chunks 5..8, named 3..6
+expect_status 0 "$WRC" merge "$CASES" out=overlap
+same_outputs single overlap rigid.csv summary.txt
+expect_status 0 "$WRC" run "$CASES" "${RUN[@]}" batch=4 out=overlap --shard 1/2
+expect_err "1 block in overlap/parts/shard-1-of-2 overlapped others (an earlier run's batches): removed"
+[ ! -e overlap/parts/shard-1-of-2/chunks-000000003-000000006.txt ] || fail "the overlapping block is still there"
+
 echo "== one shard run twice at once with other batch sizes: the second stops, naming the first"
 "$WRC" run "$CASES" "${RUN[@]}" batch=1 pause=0.2 out=twice --shard 1/2 >/dev/null 2>first.err &
 pid=$!
 wait_for_block twice/parts/shard-1-of-2
 expect_status 1 "$WRC" run "$CASES" "${RUN[@]}" batch=5 out=twice --shard 1/2
 expect_err "twice: shard 1 of 2 is being written by another wrc run (pid $pid on host "
+# A run of the whole study with --fresh would discard every shard's parts: it stops before removing any.
+blocks_before=$(ls twice/parts/shard-1-of-2 | grep -c '^chunks-')
+expect_status 1 "$WRC" run "$CASES" "${RUN[@]}" out=twice --fresh
+expect_err "twice: shard 1 of 2 is being written by another wrc run (pid $pid on host "
+[ "$(ls twice/parts/shard-1-of-2 | grep -c '^chunks-')" -ge "$blocks_before" ] || fail "--fresh removed a running shard"
 wait $pid || fail "the first run of shard 1 failed: $(cat first.err)"
 expect_status 0 "$WRC" run "$CASES" "${RUN[@]}" out=twice --shard 2/2
 expect_status 0 "$WRC" merge "$CASES" out=twice
