@@ -155,3 +155,4 @@ expect_status 2 "$WRC" run "$CASES" cases=3 $'out=nl\nx'
 expect_err "option out=nl\\nx: a control character (a line break?) in the value is refused"
 [ ! -e nl ] || fail "a refused folder name was created"
 echo "hostile folders ok"
+cd "$TMPBASE" && rm -rf "$WORK"  # kept when a check failed, for a look

@@ -112,3 +112,4 @@ same_outputs single three rigid.csv summary.txt
 grep -q "^status complete" three/manifest.txt || fail "three/manifest.txt is not complete"
 ls -A three | grep -q "wrc-tmp" && fail "temporary files left in three/: $(ls -A three)"
 echo "part checks ok"
+cd "$TMPBASE" && rm -rf "$WORK"  # kept when a check failed, for a look
