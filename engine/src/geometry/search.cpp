@@ -260,7 +260,8 @@ private:
       x.cone = c;
       x.x = roots[i].x;
       x.alpha = roots[i].alpha;
-      x.vertex = roots[i].alpha <= kAlphaSlack ? c : (roots[i].alpha > 1 - kAlphaSlack ? c + 1 : -1);
+      const double band = roots[i].alpha_band;  // kAlphaSlack, or the root's own rounding near a circle
+      x.vertex = roots[i].alpha <= band ? c : (roots[i].alpha > 1 - band ? c + 1 : -1);
       x.branch = roots[i].x >= line_.xstar ? 1 : -1;
       x.root = static_cast<signed char>(i);
       out_.push_back(x);

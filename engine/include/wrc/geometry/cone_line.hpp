@@ -44,6 +44,9 @@ struct ConeLineRoot {
   double alpha = 0;    // position on the generatrix (0 at point w, 1 at point w+1)
   double cos_eps = 1;  // angular position eps of the crossing around the wheel (eq. 1)
   double sin_eps = 0;
+  // The rounding band of alpha at the shared circles this root was accepted with: alpha_slack, widened near a circle
+  // to the root's own rounding bound, which near a tangency far exceeds any fixed slack (up to 1e-3; 0 without slack).
+  double alpha_band = 0;
 };
 
 // The terms of A.1-A.4 for one cone and line (m^2 scale); exposed for tests and plots.
@@ -57,7 +60,9 @@ ConeLineTerms cone_line_terms(const PoseFrame& f, double y_r, double z_r, double
 // signs of sqrt(d)), kept when d >= 0 and alpha is in ]0, 1] (the paper's conditions; half-open so that a
 // crossing through the circle shared by cones w-1 and w is counted once, on cone w-1). `alpha_slack` >= 0 widens
 // the interval to ]-slack, 1 + slack] (used by the line assembly to see crossings that rounding put just past a
-// shared circle; see location.cpp). Writes up to two roots to `out` in increasing x and returns their number.
+// shared circle; see location.cpp); with a slack, a root within 1e-3 of a circle gets the band of its own rounding
+// when that is wider (a line that grazes the circle; ConeLineRoot::alpha_band). Writes up to two roots to `out` in
+// increasing x and returns their number.
 //
 // Degenerate cases, each handled explicitly:
 //  - d < 0: no crossing. d = 0 (tangency): both roots are returned, at the same x.
