@@ -29,10 +29,11 @@ class Trajectory {
  public:
   explicit Trajectory(std::shared_ptr<const Wheelset> wheelset, const TrajectoryOptions& options = {});
   // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step; with `rolling`, the
-  // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed).
+  // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed). A step
+  // that fails warm is evaluated again cold before it throws.
   ContactResult contact(const Pose& pose, const std::optional<RollingRequest>& rolling = std::nullopt);
   // One wheel with its vertical force Fz (N) prescribed (as solve_wheel, `rolling` included), from the previous
-  // steps' approach.
+  // steps' approach; a step that fails (or throws) so is solved again from a cold start, whose result it returns.
   WheelResult wheel(int side, double y, double yaw, double roll, double Fz,
                     const std::optional<RollingRequest>& rolling = std::nullopt);
   // Forget the previous steps.
