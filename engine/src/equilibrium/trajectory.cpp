@@ -10,6 +10,7 @@ TrajectoryOptions read_trajectory_options(OptionReader& r) {
   o.tolerance = r.number("tolerance", o.tolerance);
   o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
   o.extrapolate = r.boolean("extrapolate").value_or(o.extrapolate);
+  o.max_penetration = read_max_penetration(r, o.max_penetration);
   return o;
 }
 
@@ -26,6 +27,7 @@ ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingR
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
   req.rolling = rolling;
+  req.max_penetration = options_.max_penetration;
   workspace_->extrapolate = options_.extrapolate;
   try {
     return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
@@ -42,6 +44,7 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   EquilibriumOptions opt;
   opt.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
+  opt.max_penetration = options_.max_penetration;
   // The secant's iterates are no time steps: start each from the last alone (the evaluations then keep no older
   // areas, so a later contact() step cannot extrapolate across them either).
   workspace_->extrapolate = false;

@@ -20,9 +20,11 @@ struct TrajectoryOptions {
   // contact(): start each step from the linear extrapolation of the last two steps (2 p_k - p_k-1, where both were in
   // contact), as for a fixed time step; false: from the last step alone (steps of varying size or direction).
   bool extrapolate = true;
+  // A step deeper than this (m) is an error (contact) or not converged (wheel), as ContactRequest::max_penetration.
+  double max_penetration = kMaxPenetration;
 };
 
-// Reads {tolerance =, grids =, extrapolate =} (the keys of ws:trajectory{} and wrc_trajectory_new).
+// Reads {tolerance =, grids =, extrapolate =, max_penetration =} (the keys of ws:trajectory{} and wrc_trajectory_new).
 TrajectoryOptions read_trajectory_options(OptionReader& options);
 
 class Trajectory {
