@@ -18,6 +18,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -74,46 +75,6 @@ inline ConeLineTerms terms(const PoseFrame& f, const Shifted& h, double z_w) {
   return t;
 }
 
-// How far rounding may have moved alpha of a root (a bound, up to a small factor): the eliminant g(eps) = R cos eps -
-// S sin eps + T carries an absolute error dg (the roundings of the shifted line offsets, of R, S, T and of g's own
-// sum), and its root moves by dg / |g'| with |g'| = sqrt(d) at a root -- or, near a tangency, where g' vanishes, by
-// sqrt(2 dg / |g''|) with |g''| = |T| there (the double root splits). alpha moves by |d alpha / d eps| times that. For a
-// line crossing the wheel at a clear angle this is ~1e-13; for one that grazes a shared circle (a line ~30 pm inside
-// the wheel) it reaches 1e-8, far beyond a fixed band, and one cone of the circle reported the crossing while its
-// neighbour did not (an odd count on a line that merely touches the circle).
-double alpha_error(const PoseFrame& f, const Shifted& h, double z_w, const ConeLineTerms& k, double y_r, double z_r,
-                   double y_w, double c, double s, double alpha, bool use3) {
-  constexpr double eps = std::numeric_limits<double>::epsilon();
-  const double cross = std::abs(h.dy_w * z_w);
-  // Absolute errors of the shifted offsets (a cancellation of metre-scale numbers), then of R, S, T.
-  const double e_dyp = eps * (std::abs(y_r - f.y) + std::abs(f.a22 * y_w));
-  const double e_dzp = eps * (std::abs(z_r - f.z) + std::abs(f.a32 * y_w));
-  const double mag_R = (std::abs(h.dyp * f.a33) + std::abs(h.dzp * f.a23)) * std::abs(h.dz_w) +
-                       (std::abs(f.a23 * f.a32) + std::abs(f.a22 * f.a33)) * cross;
-  const double mag_S = (std::abs(h.dzp * h.dz_w) + cross * std::abs(f.a32)) * std::abs(f.a21);
-  const double mag_T = (std::abs(h.dzp * f.a22) + std::abs(h.dyp * f.a32)) * std::abs(h.dy_w);
-  const double carried = (std::abs(f.a33) + std::abs(f.a23) + std::abs(f.a21)) * std::abs(h.dz_w) * (e_dyp + e_dzp) +
-                         (std::abs(f.a22) + std::abs(f.a32)) * std::abs(h.dy_w) * (e_dyp + e_dzp);
-  const double dg = 8 * eps * (mag_R + mag_S + mag_T + std::abs(k.R) + std::abs(k.S) + std::abs(k.T)) + carried;
-  double deps = std::sqrt(k.d) > 0 ? dg / std::sqrt(k.d) : INFINITY;
-  if (k.T != 0) deps = std::min(deps, std::sqrt(2 * dg / std::abs(k.T)));
-  // d alpha / d eps = (a' - alpha b') / b for the row alpha was taken from (a_i = alpha b_i).
-  double da, db, b;
-  if (use3) {
-    da = f.a33 * z_w * s;
-    db = -f.a33 * h.dz_w * s;
-    b = f.a32 * h.dy_w + f.a33 * h.dz_w * c;
-  } else {
-    da = f.a21 * z_w * c + f.a23 * z_w * s;
-    db = -f.a21 * h.dz_w * c - f.a23 * h.dz_w * s;
-    b = f.a22 * h.dy_w - f.a21 * h.dz_w * s + f.a23 * h.dz_w * c;
-  }
-  return std::abs((da - alpha * db) / b) * deps;
-}
-
-// Roots this close to a shared circle (in alpha) get their rounding bound computed (alpha_error).
-constexpr double kNearCircle = 1e-3;
-
 }  // namespace
 
 ConeLineTerms cone_line_terms(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
@@ -163,22 +124,47 @@ int cone_line_intersections(const PoseFrame& f, double y_r, double z_r, double y
     const double b = use3 ? b3 : b2, a = use3 ? a3 : a2;
     if (!(std::abs(b) > 1e-12 * len)) continue;  // both alpha equations degenerate (header)
     const double alpha = a / b;
-    // The band around the shared circles: the caller's slack, widened to the root's own rounding where it lies near
-    // one (alpha_error; only when the caller asks for a band at all).
-    double band = alpha_slack;
-    if (alpha_slack > 0 && (std::abs(alpha) < kNearCircle || std::abs(alpha - 1) < kNearCircle))
-      band = std::min(std::max(band, alpha_error(f, h, z_w, k, y_r, z_r, y_w, c, s, alpha, use3)), kNearCircle);
-    if (!(alpha > -band && alpha <= 1.0 + band)) continue;
+    if (!(alpha > -alpha_slack && alpha <= 1.0 + alpha_slack)) continue;
     const double Y = y_w + alpha * h.dy_w, Z = z_w + alpha * h.dz_w;
     ConeLineRoot& r = out[found++];
     r.x = Z * (f.a13 * c - f.a11 * s) + Y * f.a12;  // A.7
     r.alpha = alpha;
     r.cos_eps = c;
     r.sin_eps = s;
-    r.alpha_band = band;
   }
   if (found == 2 && out[1].x < out[0].x) std::swap(out[0], out[1]);
   return found;
+}
+
+// How far rounding may have moved alpha of a root (a bound, up to a small factor): the eliminant g(eps) = R cos eps -
+// S sin eps + T carries an absolute error dg (the roundings of the shifted line offsets, of R, S, T and of g's own sum),
+// and its root moves by dg / |g'| with |g'| = sqrt(d) at a root -- or, near a tangency, where g' vanishes, by
+// sqrt(2 dg / |g''|) with |g''| = |T| there (the double root splits). alpha moves by |d alpha / d eps| times that, with
+// d alpha / d eps = (a' - alpha b') / b for the row alpha was taken from (a_i = alpha b_i).
+double cone_line_alpha_error(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
+                             double z_w1, const ConeLineRoot& root) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const Shifted h = shift(f, y_r, z_r, y_w, z_w, y_w1, z_w1);
+  const ConeLineTerms k = terms(f, h, z_w);
+  const double cross = std::abs(h.dy_w * z_w);
+  // Absolute errors of the shifted offsets (a cancellation of metre-scale numbers), then of R, S, T.
+  const double e_off = eps * (std::abs(y_r - f.y) + std::abs(f.a22 * y_w) + std::abs(z_r - f.z) + std::abs(f.a32 * y_w));
+  const double mag_R = (std::abs(h.dyp * f.a33) + std::abs(h.dzp * f.a23)) * std::abs(h.dz_w) +
+                       (std::abs(f.a23 * f.a32) + std::abs(f.a22 * f.a33)) * cross;
+  const double mag_S = (std::abs(h.dzp * h.dz_w) + cross * std::abs(f.a32)) * std::abs(f.a21);
+  const double mag_T = (std::abs(h.dzp * f.a22) + std::abs(h.dyp * f.a32)) * std::abs(h.dy_w);
+  const double carried = ((std::abs(f.a33) + std::abs(f.a23) + std::abs(f.a21)) * std::abs(h.dz_w) +
+                          (std::abs(f.a22) + std::abs(f.a32)) * std::abs(h.dy_w)) * e_off;
+  const double dg = 8 * eps * (mag_R + mag_S + mag_T + std::abs(k.R) + std::abs(k.S) + std::abs(k.T)) + carried;
+  double deps = k.d > 0 ? dg / std::sqrt(k.d) : INFINITY;
+  if (k.T != 0) deps = std::min(deps, std::sqrt(2 * dg / std::abs(k.T)));
+  const double c = root.cos_eps, s = root.sin_eps, alpha = root.alpha;
+  const double b3 = f.a32 * h.dy_w + f.a33 * h.dz_w * c;
+  const double b2 = f.a22 * h.dy_w - f.a21 * h.dz_w * s + f.a23 * h.dz_w * c;
+  const bool use3 = std::abs(b3) >= std::abs(b2);  // the row cone_line_intersections took alpha from
+  const double da = use3 ? f.a33 * z_w * s : f.a21 * z_w * c + f.a23 * z_w * s;
+  const double db = use3 ? -f.a33 * h.dz_w * s : -f.a21 * h.dz_w * c - f.a23 * h.dz_w * s;
+  return std::abs((da - alpha * db) / (use3 ? b3 : b2)) * deps;
 }
 
 }  // namespace wrc

@@ -44,9 +44,6 @@ struct ConeLineRoot {
   double alpha = 0;    // position on the generatrix (0 at point w, 1 at point w+1)
   double cos_eps = 1;  // angular position eps of the crossing around the wheel (eq. 1)
   double sin_eps = 0;
-  // The rounding band of alpha at the shared circles this root was accepted with: alpha_slack, widened near a circle
-  // to the root's own rounding bound, which near a tangency far exceeds any fixed slack (up to 1e-3; 0 without slack).
-  double alpha_band = 0;
 };
 
 // The terms of A.1-A.4 for one cone and line (m^2 scale); exposed for tests and plots.
@@ -60,9 +57,7 @@ ConeLineTerms cone_line_terms(const PoseFrame& f, double y_r, double z_r, double
 // signs of sqrt(d)), kept when d >= 0 and alpha is in ]0, 1] (the paper's conditions; half-open so that a
 // crossing through the circle shared by cones w-1 and w is counted once, on cone w-1). `alpha_slack` >= 0 widens
 // the interval to ]-slack, 1 + slack] (used by the line assembly to see crossings that rounding put just past a
-// shared circle; see location.cpp); with a slack, a root within 1e-3 of a circle gets the band of its own rounding
-// when that is wider (a line that grazes the circle; ConeLineRoot::alpha_band). Writes up to two roots to `out` in
-// increasing x and returns their number.
+// shared circle; see location.cpp). Writes up to two roots to `out` in increasing x and returns their number.
 //
 // Degenerate cases, each handled explicitly:
 //  - d < 0: no crossing. d = 0 (tangency): both roots are returned, at the same x.
@@ -77,5 +72,12 @@ ConeLineTerms cone_line_terms(const PoseFrame& f, double y_r, double z_r, double
 //  - Zero yaw: S = 0, the roots are +-eps with the same alpha.
 int cone_line_intersections(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
                             double z_w1, ConeLineRoot out[2], double alpha_slack = 0.0);
+
+// A bound on how far rounding may have moved `root`'s alpha (a root of the same cone and line): ~1e-13 for a line that
+// crosses the wheel at a clear angle, up to 1e-8 and more for one that grazes a shared circle (near a tangency the
+// roots are ill-conditioned), where a fixed band made one cone of the circle report the crossing and its neighbour not.
+// For the line assembly's band at the shared circles (search.cpp); not on the hot path.
+double cone_line_alpha_error(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
+                             double z_w1, const ConeLineRoot& root);
 
 }  // namespace wrc
