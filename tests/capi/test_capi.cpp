@@ -225,6 +225,10 @@ TEST_CASE("an error inside a Lua profile definition: its message, without the Lu
   CHECK(last().find("stack traceback") == std::string::npos);
   CHECK(last().find('\n') == std::string::npos);
   std::filesystem::remove(path);
+  // A file no reader takes: the loader's own error, which passes through Lua too.
+  CHECK(wrc_profile_load(WRC_SAMPLES "/README.md", nullptr, &p) == WRC_ERROR);
+  CHECK(last().find("no reader for the extension '.md'") != std::string::npos);
+  CHECK(last().find("stack traceback") == std::string::npos);
 }
 
 TEST_CASE("freed handles are refused, and handles are independent") {
