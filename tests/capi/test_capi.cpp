@@ -6,7 +6,10 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -150,6 +153,82 @@ TEST_CASE("issue 14's options through the C API: check_strategy, max_elements, m
   CHECK(number(r, "flange_climb") == 0);
   CHECK(number(r, "left.flange_climb") == 0);
   wrc_result_free(r);
+}
+
+// Input a C caller may pass that the engine cannot honour: an error status and a message that names the value (never
+// OK with numbers, never "internal error", never a NaN or a Lua traceback in the message).
+TEST_CASE("poses far too deep: an error naming the depth, max_penetration and the option") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  // 17.5 mm of inter-penetration at y = 20 mm, z = 0 (was OK with 120 MN), and poses through the rails.
+  CHECK(wrc_contact(f.ws, 20e-3, 0, 0, 0, nullptr, &r) == WRC_ERROR);
+  CHECK(last().find("more than max_penetration = 1 mm") != std::string::npos);
+  CHECK(last().find("option max_penetration") != std::string::npos);
+  CHECK(r == nullptr);
+  for (double z : {-0.3, -0.5, -1.0, -1e308}) {
+    CAPTURE(z);
+    CHECK(wrc_contact(f.ws, 0, z, 0, 0, nullptr, &r) == WRC_ERROR);
+    CHECK(last().find("nan") == std::string::npos);
+  }
+  CHECK(wrc_contact(f.ws, 0, -1e308, 0, 0, nullptr, &r) == WRC_ERROR);
+  CHECK(last().find("z = -1e+308 m is more than the wheels' largest radius") != std::string::npos);
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -2e-3, 0, 0, "grids=false max_penetration=3e-3", &r) == WRC_OK, last());
+  CHECK(number(r, "left.force.z") > 0);
+  wrc_result_free(r);
+  wrc_trajectory* tr = nullptr;
+  REQUIRE(wrc_trajectory_new(f.ws, "max_penetration=0.5e-3", &tr) == WRC_OK);
+  CHECK(wrc_trajectory_contact(tr, 0, -1e-3, 0, 0, &r) == WRC_ERROR);
+  CHECK(last().find("more than max_penetration = 0.5 mm") != std::string::npos);
+  wrc_trajectory_free(tr);
+}
+
+TEST_CASE("grid sizes out of range are refused with the range (1e-30 overflowed the element count)") {
+  Fixture f;
+  // grid = 1e-30 overflowed the element count and solved to 1.2e-22 N.
+  wrc_wheelset* w2 = nullptr;
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=1e-30", &w2) == WRC_ERROR);
+  CHECK(last().find("grid = 1e-30 m must be in [1e-06, 0.01] m") != std::string::npos);
+  CHECK(w2 == nullptr);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=1e-6", &w2) == WRC_ERROR);  // 1 um: in range, too fine for the cap
+  CHECK(last().find("grid = 0.001 mm is too fine for max_elements = 4194304") != std::string::npos);
+}
+
+TEST_CASE("loads and friction coefficients beyond any wheel: a range, no NaN, no internal error") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e308, nullptr, &r) == WRC_ERROR);
+  CHECK(last().find("Fz = 1e+308 N must be a positive number of at most") != std::string::npos);
+  CHECK(last().find("nan") == std::string::npos);
+  CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage.xi=1e-3 mu=1e-300", &r) == WRC_ERROR);
+  CHECK(last().find("mu = 1e-300 must be in") != std::string::npos);
+  CHECK(last().find("internal error") == std::string::npos);
+}
+
+TEST_CASE("array sizes no caller can have: WRC_INVALID_ARGUMENT, not an internal error") {
+  wrc_result* r = nullptr;
+  const double y[3] = {0, 1e-3, 2e-3}, z[3] = {0, 0, 0};
+  wrc_profile* p = nullptr;
+  CHECK(wrc_profile_from_points("rail", y, z, SIZE_MAX, nullptr, &p) == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("n = 18446744073709551615 points is more than any profile") != std::string::npos);
+  CHECK(wrc_conicity(y, z, SIZE_MAX, nullptr, &r) == WRC_INVALID_ARGUMENT);
+}
+
+TEST_CASE("an error inside a Lua profile definition: its message, without the Lua traceback") {
+  wrc_profile* p = nullptr;
+  const std::string path = (std::filesystem::temp_directory_path() / "wrc_capi_failing_definition.lua").string();
+  {
+    std::ofstream out(path);
+    out << "local opt = ...\nerror(\"my_wheel: this definition fails on purpose\")\n";
+  }
+  CHECK(wrc_profile_load(path.c_str(), nullptr, &p) == WRC_ERROR);
+  CHECK(last().find("this definition fails on purpose") != std::string::npos);
+  CHECK(last().find("stack traceback") == std::string::npos);
+  CHECK(last().find('\n') == std::string::npos);
+  std::filesystem::remove(path);
+  // A file no reader takes: the loader's own error, which passes through Lua too.
+  CHECK(wrc_profile_load(WRC_SAMPLES "/README.md", nullptr, &p) == WRC_ERROR);
+  CHECK(last().find("no reader for the extension '.md'") != std::string::npos);
+  CHECK(last().find("stack traceback") == std::string::npos);
 }
 
 TEST_CASE("freed handles are refused, and handles are independent") {

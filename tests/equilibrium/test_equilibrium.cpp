@@ -8,6 +8,8 @@
 #include "geometry/geometry_fixtures.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/wheelset/wheelset.hpp"
 
 #include <Eigen/Geometry>
 #include <doctest/doctest.h>
@@ -347,4 +349,41 @@ TEST_CASE("solve_equilibrium: tolerances honoured, a far start converges to the 
   CHECK_THROWS_AS(solve_equilibrium(model, 0, 1.0, kQ, ws), Error);
   CHECK_THROWS_AS(solve_wheel(model, kLeft, 0, 0, 0, 0, ws), Error);
   CHECK_THROWS_AS(solve_rigid(model.geometry(), 0.5, 0, kQ), Error);
+}
+
+// A trajectory step that fails from its warm start is solved again cold before it fails (issue: a wheel step whose
+// normal solve did not converge from the previous step's state, where a cold solve did). Here the kept pressures are
+// made unusable (infinite), so that the warm start itself is refused by the normal solver.
+TEST_CASE("trajectory: a step that fails warm is solved cold, with the result of a cold call") {
+  WheelsetProfiles p;
+  const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
+  p.wheel = {wheel, wheel};
+  p.rail = {rail, rail};
+  WheelsetParams params;
+  params.contact.element = 0.5e-3;
+  params.check_setup = false;  // a synthetic pair
+  const auto ws = build_wheelset(p, params);
+  Trajectory tr(ws);
+  auto poison = [&] {
+    for (auto& side : tr.workspace().previous)
+      for (auto& area : side) std::fill(area.pressure.begin(), area.pressure.end(), INFINITY);
+  };
+  const Pose pose{1e-3, -0.08e-3, 0, 0.002};
+  REQUIRE(tr.contact(pose).force.z() > 0);
+  poison();
+  ContactResult warm;
+  REQUIRE_NOTHROW(warm = tr.contact({pose.y, pose.z - 1e-6, pose.roll, pose.yaw}));
+  auto cold_ws = ws->make_workspace();
+  ContactRequest req;
+  req.tolerance = tr.options().tolerance;
+  const ContactResult cold = evaluate_contact(ws->contact_model(), {pose.y, pose.z - 1e-6, pose.roll, pose.yaw}, *cold_ws, req);
+  CHECK(warm.force.z() == doctest::Approx(cold.force.z()).epsilon(1e-9));
+
+  REQUIRE(tr.wheel(kLeft, 1e-3, 0.002, 0, 80e3).converged);
+  poison();
+  WheelResult w;
+  REQUIRE_NOTHROW(w = tr.wheel(kLeft, 1.2e-3, 0.002, 0, 85e3));
+  CHECK(w.converged);
+  const WheelResult c = solve_wheel(ws->contact_model(), kLeft, 1.2e-3, 0.002, 0, 85e3, *cold_ws);
+  CHECK(w.z == doctest::Approx(c.z).epsilon(1e-6));
 }

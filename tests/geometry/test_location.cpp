@@ -2,6 +2,7 @@
 // line-level degenerate cases, patches, threads and errors. (S1002 / 60E1 themselves are Lua definitions: see
 // tests/scripts/strategy_*.lua and geometry_rigid.lua; bench_contact_location checks them at 0.1 mm.)
 #include "geometry_fixtures.hpp"
+#include "reference_solid.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/location.hpp"
 
@@ -82,65 +83,6 @@ Coverage compare_with_brute(const GeometryModel& m, int poses, unsigned seed) {
   return cov;
 }
 
-// Independent reference for one line: where the line is inside the closed solid of revolution of the generatrix
-// polyline (radius r(Y) = upper envelope, linear between points; outside beyond the end faces), found by a grid in
-// x and bisection. Uses only the definitions (frames, radius), not the closed form.
-struct RefSolid {
-  const WheelCones& w;
-  int first, last;  // profile points (without the closing points on the axle)
-  double radius(double Y) const {
-    if (Y < w.y[first] || Y > w.y[last]) return -1;
-    // The points with y in a small bracket of Y (a vertical run shares one y).
-    const auto lo = std::lower_bound(w.y.begin() + first, w.y.begin() + last + 1, Y) - w.y.begin();
-    double r = -1;
-    for (long i = std::max<long>(first, lo - 2); i < std::min<long>(last, lo + 2); ++i) {
-      const double y0 = w.y[i], y1 = w.y[i + 1];
-      if (Y < y0 || Y > y1) continue;
-      if (y1 == y0) r = std::max({r, -w.z[i], -w.z[i + 1]});
-      else r = std::max(r, -w.z[i] + (Y - y0) / (y1 - y0) * (w.z[i] - w.z[i + 1]));
-    }
-    return r;
-  }
-  // > 0 outside, < 0 inside.
-  double outside(const PoseFrame& f, double x, double y_r, double z_r) const {
-    const Eigen::Vector3d p = f.to_wheelset({x, y_r, z_r});
-    const double R = radius(p.y());
-    const double rho = std::hypot(p.x(), p.z());
-    return R < 0 ? 1.0 : rho - R;
-  }
-};
-
-std::vector<std::pair<double, double>> reference_segments(const RefSolid& solid, const PoseFrame& f, double y_r,
-                                                          double z_r) {
-  std::vector<std::pair<double, double>> out;
-  const double X = 0.08, h = 1e-4;  // segments reach |x| ~ 55 mm at 1 mm depth and 30 mrad yaw
-  const int n = static_cast<int>(2 * X / h);
-  auto g = [&](double x) { return solid.outside(f, x, y_r, z_r); };
-  auto root = [&](double a, double b) {
-    const bool ina = g(a) < 0;
-    for (int i = 0; i < 80; ++i) {
-      const double m = 0.5 * (a + b);
-      if ((g(m) < 0) == ina) a = m; else b = m;
-    }
-    return 0.5 * (a + b);
-  };
-  double prev_x = -X;
-  bool prev_in = g(prev_x) < 0;
-  double enter = 0;
-  for (int i = 1; i <= n; ++i) {
-    const double x = -X + i * h;
-    const bool in = g(x) < 0;
-    if (in != prev_in) {
-      const double r = root(prev_x, x);
-      if (in) enter = r;
-      else out.emplace_back(enter, r);
-    }
-    prev_x = x;
-    prev_in = in;
-  }
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("every search finds what brute force finds: synthetic S1002-like pair, 2000 poses") {
@@ -180,13 +122,13 @@ TEST_CASE("segments agree with an independent numerical reference (grid + bisect
       const PoseFrame f(p);
       for (int s : {kLeft, kRight}) {
         const WheelCones& w = m.side[s].wheel;
-        const RefSolid solid{w, 1, static_cast<int>(w.y.size()) - 2};
+        const test::RefSolid solid{w, 1, static_cast<int>(w.y.size()) - 2};
         // The engine's segments by line.
         std::vector<std::vector<std::pair<double, double>>> by_line(m.side[s].rail.count());
         for (const Segment& g : st.segments(s)) by_line[g.line].emplace_back(g.x_t, g.x_l);
         for (int r = 0; r < m.side[s].rail.count(); ++r) {
           if (by_line[r].empty() && (r % 8)) continue;  // lines without segments: a sample of them
-          const auto ref = reference_segments(solid, f, m.side[s].rail.y[r], m.side[s].rail.z[r]);
+          const auto ref = test::reference_segments(solid, f, m.side[s].rail.y[r], m.side[s].rail.z[r]);
           // Segments shorter than the grid step can hide from the reference; compare the others.
           std::vector<std::pair<double, double>> eng;
           for (auto e : by_line[r])

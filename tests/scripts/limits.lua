@@ -29,7 +29,10 @@ check.ok(err:find("MB", 1, true), "the message gives the memory")
 local capped = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3, max_elements = n}
 err = check.fails(function() capped:contact{y = 0, z = -0.2e-3} end, "is too fine for the cap", "a deeper pose, too fine")
 check.ok(err:find("more than max_elements = " .. n, 1, true), err)
-err = check.fails(function() capped:contact{y = 0, z = -3e-3} end, "the pose is far too deep", "a pose 3 mm deep")
+-- A pose 3 mm deep is refused by max_penetration (1 mm) before it is gridded; allowed deeper, the cap names the depth.
+check.fails(function() capped:contact{y = 0, z = -3e-3} end, "more than max_penetration = 1 mm", "a pose 3 mm deep")
+err = check.fails(function() capped:contact{y = 0, z = -3e-3, max_penetration = 5e-3} end, "the pose is far too deep",
+                  "a pose 3 mm deep, max_penetration = 5 mm")
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, grid = 0.01e-3} end, "is too fine for max_elements",
             "grid = 0.01 mm with the default cap")
 check.ok(wrc.wheelset{wheel = wheel, rail = rail, grid = 0.02e-3}, "grid = 0.02 mm builds with the default cap")

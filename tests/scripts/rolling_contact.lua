@@ -261,8 +261,11 @@ end
 do
   local p = pose(e0, {})
   local function with(extra) local t = pose(e0, extra); return function() return ws:contact(t) end end
-  check.fails(with{V = V, mu = 0}, "must be > 0", "mu = 0")
-  check.fails(with{V = V, mu = -0.1}, "must be > 0", "mu < 0")
+  check.fails(with{V = V, mu = 0}, "mu = 0 must be in [0.0001, 1e+12]", "mu = 0")
+  check.fails(with{V = V, mu = -0.1}, "must be in [0.0001, 1e+12]", "mu < 0")
+  -- A coefficient far below any friction underflowed the traction bound: "internal error; inputs were finite".
+  check.fails(with{V = V, mu = 1e-300}, "mu = 1e-300 must be in [0.0001, 1e+12]", "mu = 1e-300")
+  check.fails(with{V = V, mu_static = 1e300, mu_kinetic = 0.3}, "mu_static = 1e+300 must be in", "mu_static = 1e300")
   check.fails(with{V = V, mu = 0 / 0}, "'mu' must be finite", "mu NaN")
   check.fails(with{V = 0, mu = 0.3}, "V = 0", "V = 0 with kinematics")
   check.fails(with{V = V}, "'mu'", "no mu")

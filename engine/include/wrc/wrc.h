@@ -9,8 +9,9 @@
  * moments about the wheelset centre.
  *
  * Errors: every function returns a wrc_status. On anything but WRC_OK, wrc_last_error() gives a message that names
- * what is wrong. No C++ exception and no Lua state crosses this interface; bad input (a null or freed handle, NaN, an
- * unknown option, an array too small) gives a status and a message, never a crash.
+ * what is wrong (one line: an error inside a Lua profile definition comes without its Lua traceback). No C++ exception
+ * and no Lua state crosses this interface; bad input (a null or freed handle, NaN, an unknown option, an array too
+ * small or a size no array has) gives a status and a message, never a crash.
  *
  * Handles: opaque pointers made by the *_new / *_load / solve functions and released by the matching *_free. A
  * handle that was freed (or never made) is detected and refused with WRC_INVALID_ARGUMENT (until its address is
@@ -69,7 +70,7 @@ const char* wrc_last_error(void);
  * reader, the reader's own options; a Lua definition's own options such as step). The caller owns *out. */
 wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out);
 /* A profile from n points (m, left-side frame; docs/design.md section 2); kind is "wheel" or "rail"; name may be
- * NULL. The arrays are copied. The caller owns *out. */
+ * NULL. The arrays are copied; n above 10,000,000 is WRC_INVALID_ARGUMENT. The caller owns *out. */
 wrc_status wrc_profile_from_points(const char* kind, const double* y, const double* z, size_t n, const char* name,
                                    wrc_profile** out);
 /* Copies the points into caller-owned arrays of `capacity` values; *n = the number of points (WRC_TOO_SMALL when
@@ -96,15 +97,18 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 
 /* ---- solves; each makes a result the caller owns (*out), also when it returns WRC_NOT_CONVERGED ---- */
 
-/* Contact at a prescribed pose (m, rad). Options: grids (keep pressure and h grids, default true), sensitivity; with
+/* Contact at a prescribed pose (m, rad). WRC_ERROR for a pose far too deep: a wheel and its rail inter-penetrating
+ * deeper than max_penetration (m, default 1e-3; an option), or |y|, |z| beyond the wheel radius, |roll|, |yaw| beyond
+ * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity, max_penetration; with
  * friction (rolling contact, README "Rolling contact"): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
  * vy (m/s), yaw_rate (rad/s), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
  * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
-/* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N) prescribed at y, yaw, roll. Options:
- * force_tolerance, max_iterations, max_evaluations, max_penetration (m; deeper and still short of Fz: out of reach),
+/* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N, at most 1e10) prescribed at y, yaw, roll.
+ * Options: force_tolerance, max_iterations, max_evaluations, max_penetration (m; deeper and still short of Fz: out of
+ * reach; a solution deeper: not converged),
  * and the rolling options of wrc_contact (Fz then includes the vertical part of the creep forces). */
 wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz,
                      const char* options, wrc_result** out);
@@ -122,7 +126,8 @@ wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc
 
 /* Options: tolerance (relative gap of the normal problems, default 1e-6), grids (default false), extrapolate
  * (default true: wrc_trajectory_contact starts each step from the linear extrapolation of the last two, as for a
- * fixed time step; false: from the last step alone). The caller owns *out. */
+ * fixed time step; false: from the last step alone), max_penetration (m, default 1e-3, as wrc_contact's). A step that
+ * fails from the previous steps' state is solved again from a cold start before it fails. The caller owns *out. */
 wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_trajectory** out);
 /* Contact at a prescribed pose (m, rad), as wrc_contact without options (frictionless). */
 wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
@@ -156,7 +161,8 @@ wrc_status wrc_rigid_contact(wrc_wheelset* wheelset, double y, double yaw, const
  * roll, Q, two_point_tolerance, threads, jump_threshold, csv=<path>, file=<path> (the multibody table), progress.
  * Fields: "rows.<i>.<field of wrc_rigid_contact>", "jumps.<i>.side|y_before|y_after|wheel_jump|rail_jump", "seconds". */
 wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_result** out);
-/* Equivalent conicity (EN 15302) of a Δr table of n points: y (m, increasing) and dr = r_left - r_right (m). Options:
+/* Equivalent conicity (EN 15302) of a Δr table of n points (at most 10,000,000): y (m, increasing) and
+ * dr = r_left - r_right (m). Options:
  * yhat (amplitudes, m: "yhat=0.001,0.003"), method (integral, harmonic, regression, simple), r0, contact_distance.
  * Fields: "tan_gamma" (an array, one per amplitude), "yhat", "y_min", "y_max", "wavelength", "centre", "method". */
 wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char* options, wrc_result** out);

@@ -62,6 +62,15 @@ struct Failure {
 
 [[noreturn]] void invalid(std::string message) { throw Failure{WRC_INVALID_ARGUMENT, std::move(message)}; }
 
+// An engine message for a C caller: without the Lua traceback that an error inside a Lua profile definition carries
+// (the message is its first part; the frames name the host's internals, not the caller's input).
+std::string without_traceback(std::string message) {
+  const std::size_t at = message.find("\nstack traceback:");
+  if (at != std::string::npos) message.erase(at);
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  return message;
+}
+
 template <class F>
 wrc_status guard(const char* function, F&& body) {
   try {
@@ -71,7 +80,7 @@ wrc_status guard(const char* function, F&& body) {
     last_error = std::string(function) + ": " + f.message;
     return f.status;
   } catch (const wrc::Error& e) {
-    last_error = std::string(function) + ": " + e.what();
+    last_error = std::string(function) + ": " + without_traceback(e.what());
     return WRC_ERROR;
   } catch (const std::bad_alloc&) {
     last_error = std::string(function) + ": out of memory";
@@ -138,6 +147,12 @@ void check_side(int side) {
 
 void finite(const char* name, double v) {
   if (!std::isfinite(v)) invalid(fmt::format("{} = {} must be a finite number", name, v));
+}
+
+// A caller's array of n points: no array that size holds a profile or a table (and y + n would not be an address).
+void check_count(std::size_t n, const char* what) {
+  if (n > wrc::kMaxProfilePoints)
+    invalid(fmt::format("n = {} {} is more than any profile or table has (at most {})", n, what, wrc::kMaxProfilePoints));
 }
 
 wrc::OptionTable options_of(const char* text, const char* context) {
@@ -274,6 +289,7 @@ wrc_status wrc_profile_from_points(const char* kind, const double* y, const doub
   return guard("wrc_profile_from_points", [&] {
     set_out(out, "profile");
     if (!kind) invalid("the kind is NULL (\"wheel\" or \"rail\")");
+    check_count(n, "points");
     if (n > 0 && (!y || !z)) invalid("the point arrays are NULL");
     const wrc::ProfileKind k = wrc::parse_profile_kind(kind, "wrc_profile_from_points");
     auto p = std::make_shared<wrc_profile>();
@@ -349,10 +365,7 @@ wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, 
     for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
     const wrc::OptionTable t = options_of(options, "wrc_contact: options");
     wrc::OptionReader r(t, "wrc_contact");
-    wrc::ContactRequest req;
-    req.keep_grids = r.boolean("grids").value_or(true);
-    req.sensitivity = r.boolean("sensitivity").value_or(false);
-    req.rolling = wrc::read_rolling_request(r);
+    const wrc::ContactRequest req = wrc::read_contact_request(r);
     r.finish();
     Lease ws(*w);
     const wrc::ContactResult c = evaluate_contact(w->model->contact_model(), {y, z, roll, yaw}, *ws, req);
@@ -506,6 +519,7 @@ wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_r
 wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char* options, wrc_result** out) {
   return guard("wrc_conicity", [&] {
     set_out(out, "result");
+    check_count(n, "rows");
     if (n > 0 && (!y || !dr)) invalid("the y or dr array is NULL");
     wrc::DeltaRFunction d;
     d.y.assign(y, y + n);

@@ -231,7 +231,7 @@ class ProjectedCg {
   }
 
   void start(const std::vector<double>& pressure, const std::vector<double>& displacement);
-  // Iterates until the gap on the working set is within options.tolerance of the penetration hmax + approach
+  // Iterates until the gap on the working set is within options.tolerance of the penetration max(h + approach gw)
   // (confirmed on a fresh product unless the caller confirms it on its own); throws wrc::Error after the iteration
   // limit.
   void run(const NormalOptions& options, double hmax, bool confirm);
@@ -262,6 +262,11 @@ class ProjectedCg {
   std::vector<double> w_, g_;  // the force's weights and the approach's on the gap (force control)
   double ww_ = 0;              // sum of w^2 on S
   double delta_ = 0;  // the approach
+  // max(h + approach gw): the penetration the convergence test scales with. Not max h + approach: where the deepest
+  // element's gap weight is below 1 (a flange row's n_z under a vertical force), that is negative once the approach
+  // lifts the wheel by more than max h, and no gap could ever meet the test (a trajectory's wheel step from the last
+  // step's deeper approach ran into the iteration limit so).
+  double penetration_ = 0;
   double rz_previous_ = 0;
   bool have_direction_ = false, fresh_ = true;  // fresh: u = K p by a product, not by updates
   int iterations_ = 0;
@@ -356,10 +361,13 @@ ProjectedCg::Residual ProjectedCg::update_working_set() {
   const double shift = we / wg - delta_;
   delta_ += shift;
   ww_ = ww;
+  double reach = -INFINITY;
   for (int k = 0; k < n; ++k) {
     r[k] += S[k] ? shift * gw[k] : 0.0;
     error = std::max(error, std::abs(r[k]));
+    reach = std::max(reach, hp[k] + delta_ * gw[k]);
   }
+  penetration_ = reach;
   res.changed = changed;
   res.error = error;
   return res;
@@ -419,7 +427,7 @@ void ProjectedCg::run(const NormalOptions& options, double hmax, bool confirm) {
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 2000;
   for (;;) {
     const Residual res = update_working_set();
-    const double scale = hmax + delta_;
+    const double scale = force_control_ ? penetration_ : hmax;
     if (res.error <= options.tolerance * scale) {
       if (fresh_ || !confirm) break;
       K_.apply(p_, u_);  // incremental updates may have drifted: confirm with a fresh product
@@ -554,8 +562,16 @@ NormalSolution solve_grid(const InfluenceCache& cache, double factor, const Grid
   return s;
 }
 
+// max(h + approach gw) over the grid: the penetration the convergence tests scale with (ProjectedCg::penetration_).
+double penetration(std::span<const double> h, const NormalLoad& load, double approach, double hmax) {
+  if (load.control != NormalLoad::Control::force) return hmax;
+  double reach = -INFINITY;
+  for (std::size_t k = 0; k < h.size(); ++k) reach = std::max(reach, h[k] + approach * load.gap_weight(k));
+  return reach;
+}
+
 // The solve on a window of the grid, checked on the whole grid by one product: the solution of the whole grid
-// when no element outside the window penetrates (its gap below -tolerance x (hmax + approach), the condition the
+// when no element outside the window penetrates (its gap below -tolerance x max(h + approach gw), the condition the
 // CG itself enforces), else nothing, those elements in `penetrating` and the window's solution on the whole grid in
 // `pressure` (the start of the next attempt). The same product confirms the CG's convergence inside the window,
 // which its incremental updates of K p may have drifted from (then it is solved again from there, confirming on its
@@ -587,7 +603,7 @@ std::optional<NormalSolution> solve_window(const InfluenceCache& cache, double f
     u.resize(grid.size());
     convolve(*cache.get(grid), grid, pressure.data(), u.data(), ws.fft, factor);
     penetrating.clear();
-    const double bound = options.tolerance * (hmax + s.approach);
+    const double bound = options.tolerance * penetration(h, load, s.approach, hmax);
     bool drifted = false;
     auto gap = [&](int k) { return u[k] - h[k] - s.approach * load.gap_weight(static_cast<std::size_t>(k)); };
     auto outside = [&](int k0, int k1) {  // elements [k0, k1) outside the window: those that penetrate

@@ -31,10 +31,10 @@ void validate(const TangentialProblem& pb, std::string_view context) {
     if (!std::isfinite(pb.extra_x[k]) || !std::isfinite(pb.extra_y[k]))
       fail("{}: the extra rigid slip is not finite at element {}", context, k);
   const Friction& f = pb.friction;
-  if (!std::isfinite(f.static_coefficient) || !(f.static_coefficient > 0) || !std::isfinite(f.kinetic_coefficient) ||
-      !(f.kinetic_coefficient > 0))
-    fail("{}: friction coefficients mu_static = {}, mu_kinetic = {} must be finite and > 0", context,
-         f.static_coefficient, f.kinetic_coefficient);
+  for (double mu : {f.static_coefficient, f.kinetic_coefficient})
+    if (!(mu >= kFrictionMin && mu <= kFrictionMax))
+      fail("{}: friction coefficients mu_static = {}, mu_kinetic = {} must be in [{:g}, {:g}]", context,
+           f.static_coefficient, f.kinetic_coefficient, kFrictionMin, kFrictionMax);
   if (f.kinetic_coefficient > f.static_coefficient)
     fail("{}: the kinetic friction coefficient {} exceeds the static one {}", context, f.kinetic_coefficient,
          f.static_coefficient);

@@ -16,10 +16,27 @@
 namespace wrc {
 namespace {
 
+// The largest load a solve accepts (N): far beyond any wheel (1e9 N is a load out of reach, refused after a few
+// evaluations), small enough that the solvers' powers of it stay finite.
+constexpr double kMaxLoad = 1e10;
+
+void check_load(const char* name, double load, const char* what) {
+  if (!std::isfinite(load) || !(load > 0) || load > kMaxLoad)
+    fail("{}: {} = {:.6g} N must be a positive number of at most {:.0e} N (loads are in N: 100 kN is 1e5)", what, name,
+         load, kMaxLoad);
+}
+
 void check_case(double y, double yaw, double Q, const char* what) {
   if (!std::isfinite(y) || std::abs(y) > 0.1) fail("{}: y = {} m must be finite and within +-0.1 m", what, y);
   if (!std::isfinite(yaw) || std::abs(yaw) > 0.3) fail("{}: yaw = {} rad must be finite and within +-0.3 rad", what, yaw);
-  if (!std::isfinite(Q) || !(Q > 0)) fail("{}: Q = {} N must be a positive number", what, Q);
+  check_load("Q", Q, what);
+}
+
+// A solution deeper than max_penetration is no solution of the model (see EquilibriumOptions::max_penetration).
+std::string too_deep(double depth, double limit) {
+  return fmt::format("the solution's contacts are {:.4g} mm deep, more than max_penetration = {:.4g} mm (wheel-rail "
+                     "contacts at realistic loads are 0.05-0.3 mm deep; beyond ~1 mm the half-space model no longer "
+                     "holds); raise the option max_penetration to accept it", depth * 1e3, limit * 1e3);
 }
 
 // Thrown when a solve has used its evaluation budget (EquilibriumOptions::max_evaluations).
@@ -69,6 +86,7 @@ class EquilibriumSolver {
     req_ = request;
     req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
     req_.keep_grids = true;
+    req_.max_penetration = INFINITY;  // an iterate may overshoot; the solve's own checks use opt.max_penetration
     // Inexact solves a tenth of the residual tolerance asked for (their force error is of the order of their
     // tolerance), so that the confirmation at the model's tolerance (confirm) rarely moves a solution out.
     inexact_ = std::max(std::min({opt.normal_tolerance, 0.1 * opt.force_tolerance, 0.1 * opt.moment_tolerance}),
@@ -395,9 +413,14 @@ void flag_flange_climb(const ContactModel& model, EquilibriumResult& res) {
 }
 
 // The result of a solve from its last iterate.
-void finish_result(const ContactModel& model, ContactWorkspace& ws, const ContactRequest& request, bool ok,
-                   const std::vector<std::string>& why, EquilibriumSolver& solver, Iterate& cur, EquilibriumResult& res) {
+void finish_result(const ContactModel& model, ContactWorkspace& ws, const ContactRequest& request,
+                   const EquilibriumOptions& opt, bool ok, std::vector<std::string>& why, EquilibriumSolver& solver,
+                   Iterate& cur, EquilibriumResult& res) {
   res.converged = ok && solver.converged(cur);
+  if (res.converged && deepest(cur.contact) > opt.max_penetration) {
+    res.converged = false;
+    why.assign(1, too_deep(deepest(cur.contact), opt.max_penetration));
+  }
   if (!res.converged) {
     std::string m;
     for (const auto& s : why) m += (m.empty() ? "" : "; ") + s;
@@ -459,7 +482,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, double y, double 
     why.assign(1, e.what());
     if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
   }
-  finish_result(model, ws, request, ok, why, solver, cur, res);
+  finish_result(model, ws, request, opt, ok, why, solver, cur, res);
   return res;
 }
 
@@ -480,9 +503,9 @@ double touch_height(const GeometryModel& g, int side, double y, double yaw, doub
 WheelResult solve_wheel(const ContactModel& model, int side, double y, double yaw, double roll, double Fz,
                         ContactWorkspace& ws, const EquilibriumOptions& opt, std::optional<double> start,
                         const std::optional<RollingRequest>& rolling) {
-  check_case(y, yaw, std::max(Fz, 1.0), "wheel");
+  check_case(y, yaw, 1.0, "wheel");
   if (!std::isfinite(roll) || std::abs(roll) > 0.3) fail("wheel: roll = {} rad must be finite and within +-0.3", roll);
-  if (!std::isfinite(Fz) || !(Fz > 0)) fail("wheel: Fz = {} N must be a positive number", Fz);
+  check_load("Fz", Fz, "wheel");
   WheelResult res;
   res.side = side;
   res.Fz = Fz;
@@ -515,6 +538,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   auto evaluate = [&](double a, double tol, std::optional<double> vertical = std::nullopt, bool estimate = false) {
     ContactRequest req;
     req.only_side = side;
+    req.max_penetration = INFINITY;  // the approach is held within opt.max_penetration, the result checked below
     req.tolerance = tolerance = tol;
     req.vertical_force = vertical;
     req.estimate = estimate;
@@ -550,6 +574,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
     ContactRequest fr;
     fr.only_side = side;
     fr.rolling = rolling;
+    fr.max_penetration = INFINITY;
     auto error = [&](double at) {
       evaluate_at(at, fr);
       return cur.wheel[side].force.z() - Fz;
@@ -619,6 +644,10 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   res.iterations = evaluations;
   res.residual = cur.wheel[side].force.z() - Fz;
   res.converged = res.converged && std::abs(res.residual) <= opt.force_tolerance * Fz;
+  if (res.converged && deepest(cur, side) > opt.max_penetration) {  // the creep forces' steps are not held within it
+    res.converged = false;
+    res.message = too_deep(deepest(cur, side), opt.max_penetration);
+  }
   if (!res.converged && res.message.empty())
     res.message = fmt::format("the last evaluation is {:.4g} N off, beyond force_tolerance x Fz = {:.4g} N", res.residual,
                               opt.force_tolerance * Fz);
@@ -635,9 +664,7 @@ EquilibriumOptions read_equilibrium_options(OptionReader& r) {
   if (!(o.force_tolerance > 0) || !(o.moment_tolerance > 0)) fail("{}: tolerances must be > 0", r.context());
   o.max_iterations = r.integer("max_iterations", 1, 1 << 20).value_or(o.max_iterations);
   o.max_evaluations = r.integer("max_evaluations", 1, 1 << 20).value_or(o.max_evaluations);
-  o.max_penetration = r.number("max_penetration", o.max_penetration);
-  if (!(o.max_penetration > 0) || !std::isfinite(o.max_penetration))
-    fail("{}: max_penetration = {} m must be a positive number", r.context(), o.max_penetration);
+  o.max_penetration = read_max_penetration(r, o.max_penetration);
   if (r.boolean("trace").value_or(false)) {
     o.trace = [](int it, double z, double roll, const ContactResult& c) {
       std::fprintf(stderr, "  newton %2d: z = %+.6f mm, roll = %+.6f mrad, Fz = %.3f kN (left %.3f, right %.3f), Mx = %+.3f N m\n",

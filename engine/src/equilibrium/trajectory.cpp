@@ -1,6 +1,8 @@
 // A wheelset followed along a trajectory (wheelset/trajectory.hpp).
 #include "wrc/equilibrium/trajectory.hpp"
 
+#include "wrc/core/error.hpp"
+
 namespace wrc {
 
 TrajectoryOptions read_trajectory_options(OptionReader& r) {
@@ -8,6 +10,7 @@ TrajectoryOptions read_trajectory_options(OptionReader& r) {
   o.tolerance = r.number("tolerance", o.tolerance);
   o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
   o.extrapolate = r.boolean("extrapolate").value_or(o.extrapolate);
+  o.max_penetration = read_max_penetration(r, o.max_penetration);
   return o;
 }
 
@@ -24,8 +27,16 @@ ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingR
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
   req.rolling = rolling;
+  req.max_penetration = options_.max_penetration;
   workspace_->extrapolate = options_.extrapolate;
-  return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
+  try {
+    return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
+  } catch (const Error&) {
+    // A cold start before failing: whatever the previous steps left (pressures, their displacements, the windows they
+    // give) must not make a step fail that a top-level call solves. A bad pose fails again, as it should.
+    workspace_->forget();
+    return evaluate_contact(wheelset_->contact_model(), pose, *workspace_, req);
+  }
 }
 
 WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, double Fz,
@@ -33,6 +44,7 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   EquilibriumOptions opt;
   opt.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
+  opt.max_penetration = options_.max_penetration;
   // The secant's iterates are no time steps: start each from the last alone (the evaluations then keep no older
   // areas, so a later contact() step cannot extrapolate across them either).
   workspace_->extrapolate = false;
@@ -40,7 +52,16 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   // (extrapolate): it follows the load, where the height follows the rail.
   std::optional<double> start = last_approach_[side];
   if (start && before_approach_[side] && options_.extrapolate) start = 2 * *start - *before_approach_[side];
-  WheelResult r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, start, rolling);
+  WheelResult r;
+  try {
+    r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, start, rolling);
+  } catch (const Error&) {
+    r.converged = false;
+  }
+  if (!r.converged) {  // a cold start before failing, as contact() (the result is then the cold solve's)
+    workspace_->forget();
+    r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, std::nullopt, rolling);
+  }
   before_approach_[side] = r.converged ? last_approach_[side] : std::nullopt;
   last_approach_[side] = r.converged ? std::optional<double>(r.approach) : std::nullopt;
   return r;

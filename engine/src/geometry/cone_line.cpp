@@ -18,7 +18,9 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace wrc {
@@ -132,6 +134,37 @@ int cone_line_intersections(const PoseFrame& f, double y_r, double z_r, double y
   }
   if (found == 2 && out[1].x < out[0].x) std::swap(out[0], out[1]);
   return found;
+}
+
+// How far rounding may have moved alpha of a root (a bound, up to a small factor): the eliminant g(eps) = R cos eps -
+// S sin eps + T carries an absolute error dg (the roundings of the shifted line offsets, of R, S, T and of g's own sum),
+// and its root moves by dg / |g'| with |g'| = sqrt(d) at a root -- or, near a tangency, where g' vanishes, by
+// sqrt(2 dg / |g''|) with |g''| = |T| there (the double root splits). alpha moves by |d alpha / d eps| times that, with
+// d alpha / d eps = (a' - alpha b') / b for the row alpha was taken from (a_i = alpha b_i).
+double cone_line_alpha_error(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
+                             double z_w1, const ConeLineRoot& root) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const Shifted h = shift(f, y_r, z_r, y_w, z_w, y_w1, z_w1);
+  const ConeLineTerms k = terms(f, h, z_w);
+  const double cross = std::abs(h.dy_w * z_w);
+  // Absolute errors of the shifted offsets (a cancellation of metre-scale numbers), then of R, S, T.
+  const double e_off = eps * (std::abs(y_r - f.y) + std::abs(f.a22 * y_w) + std::abs(z_r - f.z) + std::abs(f.a32 * y_w));
+  const double mag_R = (std::abs(h.dyp * f.a33) + std::abs(h.dzp * f.a23)) * std::abs(h.dz_w) +
+                       (std::abs(f.a23 * f.a32) + std::abs(f.a22 * f.a33)) * cross;
+  const double mag_S = (std::abs(h.dzp * h.dz_w) + cross * std::abs(f.a32)) * std::abs(f.a21);
+  const double mag_T = (std::abs(h.dzp * f.a22) + std::abs(h.dyp * f.a32)) * std::abs(h.dy_w);
+  const double carried = ((std::abs(f.a33) + std::abs(f.a23) + std::abs(f.a21)) * std::abs(h.dz_w) +
+                          (std::abs(f.a22) + std::abs(f.a32)) * std::abs(h.dy_w)) * e_off;
+  const double dg = 8 * eps * (mag_R + mag_S + mag_T + std::abs(k.R) + std::abs(k.S) + std::abs(k.T)) + carried;
+  double deps = k.d > 0 ? dg / std::sqrt(k.d) : INFINITY;
+  if (k.T != 0) deps = std::min(deps, std::sqrt(2 * dg / std::abs(k.T)));
+  const double c = root.cos_eps, s = root.sin_eps, alpha = root.alpha;
+  const double b3 = f.a32 * h.dy_w + f.a33 * h.dz_w * c;
+  const double b2 = f.a22 * h.dy_w - f.a21 * h.dz_w * s + f.a23 * h.dz_w * c;
+  const bool use3 = std::abs(b3) >= std::abs(b2);  // the row cone_line_intersections took alpha from
+  const double da = use3 ? f.a33 * z_w * s : f.a21 * z_w * c + f.a23 * z_w * s;
+  const double db = use3 ? -f.a33 * h.dz_w * s : -f.a21 * h.dz_w * c - f.a23 * h.dz_w * s;
+  return std::abs((da - alpha * db) / (use3 ? b3 : b2)) * deps;
 }
 
 }  // namespace wrc

@@ -84,11 +84,23 @@ bool clean_line(std::vector<Crossing>& v, std::size_t a, std::size_t& b, int& gr
 
 }  // namespace detail
 
-void LocationState::reset(const Pose& pose) {
+void check_pose(const GeometryModel& model, const Pose& pose) {
   if (!std::isfinite(pose.y) || !std::isfinite(pose.z) || !std::isfinite(pose.roll) || !std::isfinite(pose.yaw))
     fail("contact: the pose must be finite (y = {}, z = {}, roll = {}, yaw = {})", pose.y, pose.z, pose.roll, pose.yaw);
   if (std::abs(pose.roll) > 0.5 || std::abs(pose.yaw) > 0.5)
     fail("contact: |roll| and |yaw| must stay below 0.5 rad (roll = {}, yaw = {})", pose.roll, pose.yaw);
+  const double radius = std::sqrt(std::max(model.side[kLeft].wheel_r2_max, model.side[kRight].wheel_r2_max));
+  if (!(radius > 0)) return;  // a model without wheels (tests)
+  if (std::abs(pose.z) > radius)
+    fail("contact: z = {:.6g} m is more than the wheels' largest radius ({:.4g} m) from the track: the wheelset would {} (z is "
+         "the height in m, 0 where the centred wheelset first touches, < 0 pressed in; realistic contacts are "
+         "0.05-0.3 mm deep)", pose.z, radius, pose.z < 0 ? "have passed through its rails" : "hang in the air above them");
+  if (std::abs(pose.y) > radius)
+    fail("contact: y = {:.6g} m is more than the wheels' largest radius ({:.4g} m) off the track centre: the wheelset would "
+         "stand beside its track (y is the lateral shift in m; flange contact begins within about 10 mm)", pose.y, radius);
+}
+
+void LocationState::reset(const Pose& pose) {
   pose_ = pose;
   frame_ = PoseFrame(pose);
   for (auto& s : side_) {
@@ -251,6 +263,7 @@ void assemble_side(const GeometryModel& model, const PoseFrame& frame, int side,
 }  // namespace
 
 void locate_crossings(const GeometryModel& model, const Pose& pose, LocationState& state, PoseSearch& search) {
+  check_pose(model, pose);  // before any geometry: absurd numbers never reach the closed form
   state.reset(pose);
   SearchContext ctx(model, state);
   for (int side : {kLeft, kRight}) search.search(ctx, side);

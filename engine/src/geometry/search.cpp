@@ -27,7 +27,8 @@ namespace wrc {
 namespace {
 
 constexpr double kSkipMargin = 1e-12;  // m^2 on squared radii (~1e-12 m of radius)
-constexpr double kAlphaSlack = 1e-10;  // rounding band of alpha around shared circles (see location.cpp)
+constexpr double kAlphaSlack = 1e-10;  // rounding band of alpha around shared circles (see location.cpp) ...
+constexpr double kNearCircle = 1e-3;   // ... widened, within this of a circle, to a root's own rounding bound
 constexpr int kProbe = 1;              // cones probed on each side of the previous line's crossings
 
 // What every line of a pose shares (see the file comment).
@@ -252,20 +253,30 @@ private:
   void closed_form(int c) {
     ++tests_;
     ConeLineRoot roots[2];
-    const int n = cone_line_intersections(f_, line_.y_r, line_.z_r, w_.y[c], w_.z[c], w_.y[c + 1], w_.z[c + 1], roots,
-                                          kAlphaSlack);
+    const double *wy = w_.y.data() + c, *wz = w_.z.data() + c;
+    const int n = cone_line_intersections(f_, line_.y_r, line_.z_r, wy[0], wz[0], wy[1], wz[1], roots, kNearCircle);
+    bool found = false;
     for (int i = 0; i < n; ++i) {
+      // The band at the circles: kAlphaSlack, or a root's own rounding bound, which far exceeds it where the line
+      // grazes a circle (cone_line_alpha_error; computed only for roots this near a circle, a few per line at most).
+      const double alpha = roots[i].alpha;
+      double band = kAlphaSlack;
+      if (alpha < kNearCircle || alpha > 1 - kNearCircle)
+        band = std::clamp(cone_line_alpha_error(f_, line_.y_r, line_.z_r, wy[0], wz[0], wy[1], wz[1], roots[i]),
+                          kAlphaSlack, kNearCircle);
+      if (!(alpha > -band && alpha <= 1 + band)) continue;
+      found = true;
       Crossing x;
       x.line = r_;
       x.cone = c;
       x.x = roots[i].x;
-      x.alpha = roots[i].alpha;
-      x.vertex = roots[i].alpha <= kAlphaSlack ? c : (roots[i].alpha > 1 - kAlphaSlack ? c + 1 : -1);
+      x.alpha = alpha;
+      x.vertex = alpha <= band ? c : (alpha > 1 - band ? c + 1 : -1);
       x.branch = roots[i].x >= line_.xstar ? 1 : -1;
       x.root = static_cast<signed char>(i);
       out_.push_back(x);
     }
-    if (n > 0 && cur_) cur_->push_back(c);
+    if (found && cur_) cur_->push_back(c);
   }
 
   const PoseFrame& f_;

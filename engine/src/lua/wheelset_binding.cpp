@@ -73,17 +73,15 @@ int wheelset_locate(lua_State* L) {
   return 1;
 }
 
-// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, search = "strategy" | "brute", and the rolling
-// keys: V=, omega=, vy=, yaw_rate= or creepage = {xi=, eta=, phi=}, mu= (or mu_static=, mu_kinetic=), method=}
+// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, max_penetration = 1e-3, search = "strategy" |
+// "brute", and the rolling keys: V=, omega=, vy=, yaw_rate= or creepage = {xi=, eta=, phi=}, mu= (or mu_static=,
+// mu_kinetic=), method=}
 int wheelset_contact(lua_State* L) {
   const char* ctx = "wheelset:contact";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
   const Pose pose = read_pose(a.reader);
-  ContactRequest req;
-  req.keep_grids = a.reader.boolean("grids").value_or(true);
-  req.sensitivity = a.reader.boolean("sensitivity").value_or(false);
-  req.rolling = read_rolling_request(a.reader);
+  const ContactRequest req = read_contact_request(a.reader);
   const bool brute = a.reader.choice("search", {"strategy", "brute"}).value_or("strategy") == "brute";
   a.reader.finish();
   const ContactModel& m = w.model->contact_model();

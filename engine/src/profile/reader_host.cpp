@@ -31,9 +31,6 @@ bool valid_extension(const std::string& ext) {
   return std::all_of(ext.begin() + 1, ext.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; });
 }
 
-// Largest number of points a reader may hand over (a guard against runaway input).
-constexpr std::size_t kMaxPoints = 10'000'000;
-
 // Host side of one `read` call: the sink's context.
 struct SinkState {
   RawProfile raw;
@@ -61,8 +58,8 @@ int sink_point(void* host, double y, double z, int32_t line) {
       s.error(line, fmt::format("coordinate is not a finite number (y = {}, z = {})", y, z));
       return 1;
     }
-    if (s.raw.y.size() >= kMaxPoints) {
-      s.error(line, fmt::format("more than {} points; this is not a profile", kMaxPoints));
+    if (s.raw.y.size() >= kMaxProfilePoints) {
+      s.error(line, fmt::format("more than {} points; this is not a profile", kMaxProfilePoints));
       return 1;
     }
     s.raw.y.push_back(y);

@@ -68,18 +68,10 @@ contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentI
     smax = std::max(smax, S_of_segment[k]);
   }
   const double e = opt.element;
-  const long i0 = static_cast<long>(std::floor(xmin / e)) - opt.margin;
-  const long i1 = static_cast<long>(std::ceil(xmax / e)) + opt.margin;
-  const long j0 = static_cast<long>(std::floor((smin - s_lattice) / e)) - opt.margin;
-  const long j1 = static_cast<long>(std::ceil((smax - s_lattice) / e)) + opt.margin;
-  const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
-  if (nx * ny > opt.max_elements) too_many_elements(opt, all, side, pose, nx, ny);
-  contact::Grid grid;
-  grid.nx = static_cast<int>(nx);
-  grid.ny = static_cast<int>(ny);
-  grid.dx = grid.dy = e;
-  grid.x0 = static_cast<double>(i0) * e - o.x();
-  grid.y0 = static_cast<double>(j0) * e + s_lattice - o.y();
+  contact::Grid grid = span_grid(opt, index_span(xmin, xmax, e, opt.margin),
+                                 index_span(smin - s_lattice, smax - s_lattice, e, opt.margin), all, side, pose);
+  grid.x0 = grid.x0 - o.x();
+  grid.y0 = grid.y0 + s_lattice - o.y();
   return grid;
 }
 

@@ -58,8 +58,10 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
       rail_lattice_[static_cast<std::size_t>(s)] = nearest_arc(rail, S, geometry_->track->place[s].rail(0.0, 0.0));
   }
   contact::validate(material, "contact model");
-  if (!(options.element > 0) || !std::isfinite(options.element) || options.element > 0.01)
-    fail("contact model: the element size (grid) must be in ]0, 0.01] m, got {}", options.element);
+  if (!(options.element >= kElementMin && options.element <= kElementMax))
+    fail("contact model: the element size grid = {:.6g} m must be in [{}, {}] m ({} um .. {} mm)", options.element,
+         kElementMin, kElementMax, kElementMin * 1e6, kElementMax * 1e3);
+  if (options.max_elements < 1) fail("contact model: max_elements = {} must be >= 1", options.max_elements);
   if (options.margin < 1 || options.margin > 100) fail("contact model: margin must be 1..100 elements, got {}", options.margin);
   if (!(options.merge_tolerance > 0) || !std::isfinite(options.merge_tolerance))
     fail("contact model: merge_tolerance must be > 0, got {}", options.merge_tolerance);
@@ -425,14 +427,15 @@ contact::NormalSolution solve_area_normal(const ContactModel& model, const Conta
 // The potential contact area of a pose exceeds max_elements: either the grid is too fine for the cap or the pose is
 // far deeper than any elastic approach (a solve that lost its way, an unreachable load).
 [[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,
-                                    const Pose& pose, long nx, long ny) {
+                                    const Pose& pose, double nx, double ny) {
   double depth = 0;
   for (const auto& s : all) depth = std::max(depth, s.sagitta);
-  const double n = static_cast<double>(nx) * static_cast<double>(ny);
+  const double n = nx * ny;
   const std::string area = fmt::format(
       "the {} wheel's potential contact area at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad, yaw = {:.4f} mrad "
-      "needs {} x {} = {} elements (about {:.0f} MB), more than max_elements = {}", side_name(side), pose.y * 1e3,
-      pose.z * 1e3, pose.roll * 1e3, pose.yaw * 1e3, nx, ny, nx * ny, n * kBytesPerElement / 1e6, opt.max_elements);
+      "needs {:.0f} x {:.0f} = {:.0f} elements (about {:.0f} MB), more than max_elements = {}", side_name(side),
+      pose.y * 1e3, pose.z * 1e3, pose.roll * 1e3, pose.yaw * 1e3, nx, ny, n, n * kBytesPerElement / 1e6,
+      opt.max_elements);
   if (depth > 1e-3)
     fail("contact: {}: the pose is far too deep ({:.2f} mm of inter-penetration; elastic approaches are a fraction of "
          "a mm)", area, depth * 1e3);
@@ -440,22 +443,24 @@ contact::NormalSolution solve_area_normal(const ContactModel& model, const Conta
        "element) or use a coarser grid", area, opt.element * 1e3, kBytesPerElement);
 }
 
+contact::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
+                        const std::vector<SegmentInfo>& all, int side, const Pose& pose) {
+  if (!(x.count * y.count <= opt.max_elements)) too_many_elements(opt, all, side, pose, x.count, y.count);
+  contact::Grid grid;
+  grid.nx = static_cast<int>(x.count);  // each at most max_elements (an int) now
+  grid.ny = static_cast<int>(y.count);
+  grid.dx = grid.dy = opt.element;
+  grid.x0 = x.first * opt.element;
+  grid.y0 = y.first * opt.element;
+  return grid;
+}
+
 // The potential contact area: a grid aligned with the plane origin covering the projected segments plus the margin.
 contact::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all, const Plane& pl, int side,
                         const Pose& pose) {
-  const double e = opt.element;
   const auto [umin, umax, vmin, vmax] = projected_bounds(all, pl);
-  const long i0 = static_cast<long>(std::floor(umin / e)) - opt.margin, i1 = static_cast<long>(std::ceil(umax / e)) + opt.margin;
-  const long j0 = static_cast<long>(std::floor(vmin / e)) - opt.margin, j1 = static_cast<long>(std::ceil(vmax / e)) + opt.margin;
-  const long nx = i1 - i0 + 1, ny = j1 - j0 + 1;
-  if (nx * ny > opt.max_elements) too_many_elements(opt, all, side, pose, nx, ny);
-  contact::Grid grid;
-  grid.nx = static_cast<int>(nx);
-  grid.ny = static_cast<int>(ny);
-  grid.dx = grid.dy = e;
-  grid.x0 = static_cast<double>(i0) * e;
-  grid.y0 = static_cast<double>(j0) * e;
-  return grid;
+  return span_grid(opt, index_span(umin, umax, opt.element, opt.margin), index_span(vmin, vmax, opt.element, opt.margin),
+                   all, side, pose);
 }
 
 // The rail lines across the grid's lateral range (one beyond each side when the rail has it), projected on the
@@ -621,6 +626,15 @@ std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::
   return out;
 }
 
+// A wheel deeper in its rail than max_penetration (ContactRequest): the pose is a mistake, or the option must be raised.
+[[noreturn]] void too_deep(const Pose& pose, int side, double depth, double limit) {
+  fail("contact: at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad, yaw = {:.4f} mrad the {} wheel and its rail "
+       "inter-penetrate {:.4g} mm deep (undeformed profiles), more than max_penetration = {:.4g} mm: wheel-rail contacts "
+       "at realistic loads are 0.05-0.3 mm deep and beyond ~1 mm the half-space model no longer holds; check the pose "
+       "(z in m, 0 where the centred wheelset first touches, < 0 pressed in) or raise the option max_penetration",
+       pose.y * 1e3, pose.z * 1e3, pose.roll * 1e3, pose.yaw * 1e3, side_name(side), depth * 1e3, limit * 1e3);
+}
+
 // Why a loaded wheel is past flange climb (plausibility.hpp), or "".
 std::string flange_climb(const ContactModel& model, const PoseFrame& f, int side, const WheelContact& wc) {
   const Flange& flange = model.flange(side);
@@ -640,10 +654,13 @@ WheelContact solve_wheel_areas(const ContactModel& model, const LocationState& s
   std::vector<std::vector<int>> groups;
   {
     PhaseTimer t(ws, ws.times.geometry);
+    double depth = 0;
     for (std::size_t p = 0; p < np; ++p) {
       collect_segments(model.geometry(), st, side, patches[p], infos[p]);
+      for (const SegmentInfo& s : infos[p]) depth = std::max(depth, s.sagitta);
       planes.push_back(plane_of(infos[p], patches[p]));
     }
+    if (depth > request.max_penetration) too_deep(st.pose(), side, depth, request.max_penetration);
     groups = area_groups(model, infos, planes);
   }
   WheelContact wc;
@@ -679,6 +696,21 @@ void ContactWorkspace::forget() {
   for (auto& p : before) p.clear();
 }
 
+double read_max_penetration(OptionReader& r, double fallback) {
+  const double v = r.number("max_penetration", fallback);
+  if (!(v > 0) || !std::isfinite(v)) fail("{}: max_penetration = {} m must be a positive number", r.context(), v);
+  return v;
+}
+
+ContactRequest read_contact_request(OptionReader& r) {
+  ContactRequest req;
+  req.keep_grids = r.boolean("grids").value_or(req.keep_grids);
+  req.sensitivity = r.boolean("sensitivity").value_or(req.sensitivity);
+  req.max_penetration = read_max_penetration(r, req.max_penetration);
+  req.rolling = read_rolling_request(r);
+  return req;
+}
+
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& ws,
                                const ContactRequest& request) {
   if (request.vertical_force) {
@@ -687,6 +719,7 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
     if (request.only_side < 0 || request.sensitivity || request.rolling)
       fail("contact: a vertical force is prescribed to one wheel (only_side), without sensitivities or rolling");
   }
+  if (!(request.max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", request.max_penetration);
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);
@@ -707,18 +740,17 @@ ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, Cont
   return res;
 }
 
-long long largest_potential_area(const ContactModel& model, const LocationState& st) {
+double largest_potential_area(const ContactModel& model, const LocationState& st) {
   const ContactOptions& opt = model.options();
-  long long largest = 0;
+  double largest = 0;
   for (int side : {kLeft, kRight})
     for (const Patch& p : st.patches(side)) {
       std::vector<SegmentInfo> infos;
       collect_segments(model.geometry(), st, side, p, infos);
       const auto [umin, umax, vmin, vmax] = projected_bounds(infos, plane_of(infos, p));
-      const double e = opt.element;
-      const long long nx = static_cast<long long>(std::ceil(umax / e) - std::floor(umin / e)) + 2 * opt.margin + 1;
-      const long long ny = static_cast<long long>(std::ceil(vmax / e) - std::floor(vmin / e)) + 2 * opt.margin + 1;
-      largest = std::max(largest, nx * ny);
+      const double n = index_span(umin, umax, opt.element, opt.margin).count *
+                       index_span(vmin, vmax, opt.element, opt.margin).count;
+      largest = std::max(largest, n);
     }
   return largest;
 }

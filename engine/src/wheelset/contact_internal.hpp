@@ -96,10 +96,24 @@ contact::NormalSolution solve_area_normal(const ContactModel& model, const Conta
                                           const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
                                           const std::vector<double>& vertical, const std::vector<double>& deepening,
                                           ContactWorkspace& ws);
+// The element indices of a lattice of element e that cover [lo, hi] (m) plus `margin` elements on each side: the
+// first index and the count, in double -- a grid of 1e-30 m would overflow any integer type, and the count must be
+// compared with max_elements before it is converted.
+struct IndexSpan {
+  double first = 0, count = 0;
+};
+inline IndexSpan index_span(double lo, double hi, double e, int margin) {
+  const double first = std::floor(lo / e) - margin;
+  return {first, std::ceil(hi / e) + margin - first + 1};
+}
 // A potential contact area of nx x ny elements exceeds max_elements (contact.cpp): an error that says whether the
 // grid is too fine for the cap or the pose far too deep.
 [[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,
-                                    const Pose& pose, long nx, long ny);
+                                    const Pose& pose, double nx, double ny);
+// The grid of two index spans (x along the first axis, y along the second) of element e, or too_many_elements when it
+// holds more than max_elements.
+contact::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
+                        const std::vector<SegmentInfo>& all, int side, const Pose& pose);
 // The located patches of a group and their segments, copied into the result.
 void copy_located(const LocationState& st, int side, const std::vector<int>& group, PatchContact& pc);
 

@@ -314,7 +314,9 @@ contact::Friction read_friction(OptionReader& r) {
   f.static_coefficient = mus.value_or(mu.value_or(0));
   f.kinetic_coefficient = muk.value_or(mu.value_or(f.static_coefficient));
   for (auto [name, v] : {std::pair{"mu_static", f.static_coefficient}, {"mu_kinetic", f.kinetic_coefficient}})
-    if (!(v > 0)) fail("{}: the friction coefficient ({} = {}) must be > 0", r.context(), mu && !mus ? "mu" : name, v);
+    if (!(v >= contact::kFrictionMin && v <= contact::kFrictionMax))
+      fail("{}: the friction coefficient {} = {} must be in [{:g}, {:g}] (wheel on rail: 0.05 .. 0.6)", r.context(),
+           mu && !mus ? "mu" : name, v, contact::kFrictionMin, contact::kFrictionMax);
   if (f.kinetic_coefficient > f.static_coefficient)
     fail("{}: mu_kinetic = {} exceeds mu_static = {}", r.context(), f.kinetic_coefficient, f.static_coefficient);
   return f;

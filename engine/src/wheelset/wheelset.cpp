@@ -92,14 +92,13 @@ void check_grid_cap(const ContactModel& model) {
   NativeSearch walk({false, NativePlan::Scan::walk});  // exact on any discretisation; not the user's strategy
   LocationState st;
   locate_contact(model.geometry(), {0, -kReferenceApproach, 0, 0}, st, walk);
-  const long long n = largest_potential_area(model, st);
+  const double n = largest_potential_area(model, st);
   const ContactOptions& o = model.options();
-  if (n > o.max_elements)
+  if (!(n <= o.max_elements))
     fail("wrc.wheelset: grid = {:.4g} mm is too fine for max_elements = {}: the centred wheelset pressed {:.2f} mm into "
-         "the rails (about what 100 kN per wheel does on S1002/60E1) already needs {} elements in one potential "
+         "the rails (about what 100 kN per wheel does on S1002/60E1) already needs {:.0f} elements in one potential "
          "contact area (about {:.0f} MB); raise max_elements (about {:.0f} bytes per element) or use a coarser grid",
-         o.element * 1e3, o.max_elements, kReferenceApproach * 1e3, n,
-         static_cast<double>(n) * kBytesPerElement / 1e6, kBytesPerElement);
+         o.element * 1e3, o.max_elements, kReferenceApproach * 1e3, n, n * kBytesPerElement / 1e6, kBytesPerElement);
 }
 
 }  // namespace

@@ -30,8 +30,13 @@
 
 namespace wrc::contact {
 
+// The range of a friction coefficient: wheel on rail 0.05 .. 0.6. Far below it the traction bound mu p_n underflows
+// (mu = 1e-300 made the exact solver's result not finite); a huge coefficient is the no-slip limit (Kalker's linear
+// theory, e.g. mu = 1e9), up to where mu p_n stays a number the solvers can square.
+inline constexpr double kFrictionMin = 1e-4, kFrictionMax = 1e12;
+
 // Coulomb friction; kinetic <= static (a static coefficient above the kinetic one allows adhesion up to mu_s p_n
-// and slides at mu_k p_n).
+// and slides at mu_k p_n), both in [kFrictionMin, kFrictionMax].
 struct Friction {
   double static_coefficient = 0;   // mu_s (-)
   double kinetic_coefficient = 0;  // mu_k (-)
@@ -129,7 +134,8 @@ TangentialSolution solve_fastsim(const Material& material, const TangentialProbl
 void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
 
 // Throws wrc::Error naming `context` on a bad problem: grid, sizes, non-finite or negative pressure, non-finite
-// creepages or rigid slip, friction coefficients not finite and > 0 or kinetic > static, direction not +-1.
+// creepages or rigid slip, friction coefficients outside [kFrictionMin, kFrictionMax] or kinetic > static, direction
+// not +-1.
 void validate(const TangentialProblem& problem, std::string_view context);
 
 // The rigid slip per |V| of the problem at every element (x and y components).

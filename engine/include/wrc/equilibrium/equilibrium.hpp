@@ -40,10 +40,9 @@ struct EquilibriumOptions {
   // the first prediction's grid, which covers the rigid overlap at this approach, holds most of the contact.
   double wheel_approach = 0.08e-3;
   // An iterate whose contacts are deeper than this (m) and still carry less than the load ends the solve at once: the
-  // load is out of reach. Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075 mm at 100 kN
-  // per wheel, 0.24 mm for 367 kN on the flange root); at 1 mm the contact is tens of mm long on a 0.45 m wheel,
-  // where the half-space model no longer holds (Hertz: ~5 MN).
-  double max_penetration = 1e-3;
+  // load is out of reach; a solution deeper than this is not converged (the reason says why). The default and why:
+  // kMaxPenetration (wheelset/contact.hpp). The iterates themselves may pass deeper (a Newton step overshooting).
+  double max_penetration = kMaxPenetration;
   // Tolerance of the normal problems while Newton iterates (inexact steps, from warm starts: a few CG iterations
   // each); a solution found so is confirmed by an evaluation at the model's tolerance, and Newton goes on from it
   // if the residuals moved out of tolerance, so the forces reported are those evaluate_contact gives at the pose.

@@ -20,19 +20,22 @@ struct TrajectoryOptions {
   // contact(): start each step from the linear extrapolation of the last two steps (2 p_k - p_k-1, where both were in
   // contact), as for a fixed time step; false: from the last step alone (steps of varying size or direction).
   bool extrapolate = true;
+  // A step deeper than this (m) is an error (contact) or not converged (wheel), as ContactRequest::max_penetration.
+  double max_penetration = kMaxPenetration;
 };
 
-// Reads {tolerance =, grids =, extrapolate =} (the keys of ws:trajectory{} and wrc_trajectory_new).
+// Reads {tolerance =, grids =, extrapolate =, max_penetration =} (the keys of ws:trajectory{} and wrc_trajectory_new).
 TrajectoryOptions read_trajectory_options(OptionReader& options);
 
 class Trajectory {
  public:
   explicit Trajectory(std::shared_ptr<const Wheelset> wheelset, const TrajectoryOptions& options = {});
   // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step; with `rolling`, the
-  // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed).
+  // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed). A step
+  // that fails warm is evaluated again cold before it throws.
   ContactResult contact(const Pose& pose, const std::optional<RollingRequest>& rolling = std::nullopt);
   // One wheel with its vertical force Fz (N) prescribed (as solve_wheel, `rolling` included), from the previous
-  // steps' approach.
+  // steps' approach; a step that fails (or throws) so is solved again from a cold start, whose result it returns.
   WheelResult wheel(int side, double y, double yaw, double roll, double Fz,
                     const std::optional<RollingRequest>& rolling = std::nullopt);
   // Forget the previous steps.

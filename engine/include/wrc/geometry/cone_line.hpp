@@ -73,4 +73,11 @@ ConeLineTerms cone_line_terms(const PoseFrame& f, double y_r, double z_r, double
 int cone_line_intersections(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
                             double z_w1, ConeLineRoot out[2], double alpha_slack = 0.0);
 
+// A bound on how far rounding may have moved `root`'s alpha (a root of the same cone and line): ~1e-13 for a line that
+// crosses the wheel at a clear angle, up to 1e-8 and more for one that grazes a shared circle (near a tangency the
+// roots are ill-conditioned), where a fixed band made one cone of the circle report the crossing and its neighbour not.
+// For the line assembly's band at the shared circles (search.cpp); not on the hot path.
+double cone_line_alpha_error(const PoseFrame& f, double y_r, double z_r, double y_w, double z_w, double y_w1,
+                             double z_w1, const ConeLineRoot& root);
+
 }  // namespace wrc

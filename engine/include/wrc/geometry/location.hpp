@@ -181,8 +181,13 @@ class LocationState {
   std::array<PerSide, 2> side_;
 };
 
+// Throws wrc::Error naming the value if `pose` is no pose of a wheelset on its track: not finite, |roll| or |yaw| above
+// 0.5 rad, or |y| or |z| more than the wheels' largest radius (m) -- a wheelset lowered that far has passed through its
+// rails, where no rail line crosses the wheel any more and the location would find nothing.
+void check_pose(const GeometryModel& model, const Pose& pose);
+
 // Locates the contact at `pose`: runs `search` on both sides, then forms segments and patches in `state`.
-// Throws wrc::Error if the pose is not finite or a line ends with an odd number of crossings that no graze
+// Throws wrc::Error if the pose fails check_pose or a line ends with an odd number of crossings that no graze
 // explains (a strategy whose windows cut a segment).
 void locate_contact(const GeometryModel& model, const Pose& pose, LocationState& state, PoseSearch& search);
 // The two halves of locate_contact (benchmarks time them apart).

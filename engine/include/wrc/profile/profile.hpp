@@ -42,6 +42,10 @@ struct Profile {
 // Points closer than this (m) to their predecessor are duplicates.
 inline constexpr double kDuplicateTolerance = 1e-9;
 
+// The most points a profile may come with (a reader's output, the C API's arrays): a guard against runaway input; a
+// profile sampled every micrometre over 250 mm has 250,000.
+inline constexpr std::size_t kMaxProfilePoints = 10'000'000;
+
 // Builds a validated profile. Checks: at least 3 points, all finite, consecutive duplicates dropped and
 // counted, no fold-back: y must be monotone along the profile (vertical runs allowed, but a vertical run
 // must keep one z direction). A profile given in decreasing y is reversed (noted in `transforms`).

@@ -30,6 +30,7 @@
 #include "wrc/contact/normal.hpp"
 #include "wrc/contact/rolling.hpp"
 #include "wrc/core/fields.hpp"
+#include "wrc/core/options.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/wheelset/plausibility.hpp"
 #include "wrc/wheelset/conformal.hpp"
@@ -44,8 +45,17 @@
 
 namespace wrc {
 
+// The element size's range (m): finer than 1 um no wheel-rail area fits any memory, coarser than 10 mm is no grid.
+inline constexpr double kElementMin = 1e-6, kElementMax = 0.01;
+
+// The deepest inter-penetration of the undeformed profiles an evaluation accepts by default (m; ContactRequest and
+// EquilibriumOptions::max_penetration). Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075
+// mm at 100 kN per wheel, 0.24 mm for 367 kN on the flange root); at 1 mm the contact is tens of mm long on a 0.45 m
+// wheel, where the half-space model no longer holds (Hertz: ~5 MN).
+inline constexpr double kMaxPenetration = 1e-3;
+
 struct ContactOptions {
-  double element = 0.2e-3;        // element size of the potential contact area (m)
+  double element = 0.2e-3;        // element size of the potential contact area (m), [kElementMin, kElementMax]
   int margin = 2;                 // elements around the projected inter-penetration area
   double merge_tolerance = 0.01;  // relative force error of solving two areas apart that triggers a merge
   double merge_angle = 0.26;      // rad (15 deg): areas whose normals differ more are never merged
@@ -215,19 +225,32 @@ struct ContactRequest {
   // The normal problems without a warm start only estimated (NormalOptions::estimate: the coarse grid's solution,
   // interpolated): a predictor's cheap first step; such a result is not the pose's contact either.
   bool estimate = false;
+  // A wheel whose undeformed profiles inter-penetrate deeper than this (m) is an error naming the depth, the limit and
+  // the option max_penetration, before its areas are gridded (a pose far too deep is a mistake: 17.5 mm gave 120 MN
+  // and 68 GPa). The solvers that search a pose (solve_equilibrium, solve_wheel) pass infinity for their iterates and
+  // check their solution against their own EquilibriumOptions::max_penetration.
+  double max_penetration = kMaxPenetration;
 };
+
+// Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),
+// max_penetration (m, > 0; default kMaxPenetration) and the rolling keys (read_rolling_request).
+ContactRequest read_contact_request(OptionReader& options);
+// Reads max_penetration (m, finite and > 0) over `fallback`.
+double read_max_penetration(OptionReader& options, double fallback = kMaxPenetration);
 
 // The least vertical part of the normals (their cosine to the vertical) over an area solved for a vertical force.
 inline constexpr double kVerticalWeightMin = 0.05;
 
-// Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input
-// or a potential contact area beyond options.max_elements.
+// Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input (a pose
+// that check_pose refuses), a wheel deeper than request.max_penetration, or a potential contact area beyond
+// options.max_elements.
 ContactResult evaluate_contact(const ContactModel& model, const Pose& pose, ContactWorkspace& workspace,
                                const ContactRequest& request = {});
 
 // The largest potential contact area (elements) that evaluate_contact would grid for the inter-penetration areas of
-// `location` (each area alone, before any merging): the estimate of a grid's cost.
-long long largest_potential_area(const ContactModel& model, const LocationState& location);
+// `location` (each area alone, before any merging): the estimate of a grid's cost. A double: a grid far too fine
+// counts beyond any integer type.
+double largest_potential_area(const ContactModel& model, const LocationState& location);
 
 // Fills the sensitivities of a result evaluated without them (its grids must have been kept).
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& workspace);
