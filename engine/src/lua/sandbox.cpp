@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <memory>
 
 namespace wrc::lua {
@@ -181,8 +182,11 @@ int nested_load(lua_State* L) {
   const std::string given = check_string(L, 1, ctx);
   if (!lua_isnoneornil(L, 2) && !lua_istable(L, 2)) fail("{}: options must be a table, got {}", ctx, type_name(L, 2));
   const OptionTable options = to_options(L, 2, ctx);
-  const std::string path = resolve_profile_path(given);
-  if (!is_shipped_profile(path))
+  // Decided before anything outside the shipped folder is looked at (a definition learns nothing of other files).
+  const std::filesystem::path name(given);
+  const bool shipped_name = name.is_relative() && !name.empty() && *name.begin() == "profiles";
+  const std::string path = shipped_name || is_shipped_profile(given) ? resolve_profile_path(given) : std::string();
+  if (path.empty() || !is_shipped_profile(path))
     fail("{}: {}: a profile definition may load only the profiles shipped with wrc (profiles/NAME, in {})", ctx, given,
          paths().profiles);
   if (s.depth + 1 > kMaxNesting) fail("{}: {}: profile definitions nest more than {} levels", ctx, given, kMaxNesting);

@@ -1,4 +1,4 @@
-// Profile definitions are data, not code (docs/design.md section 8): a Lua definition, wherever it comes from (a
+// Profile definitions are data, not code (docs/design.md section 9): a Lua definition, wherever it comes from (a
 // study, the C API, a folder of wheels), runs in a Lua state of its own that cannot reach the system, within a
 // budget of instructions, memory and profile points shared with the definitions it loads.
 //

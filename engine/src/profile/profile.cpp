@@ -137,7 +137,7 @@ Profile resample_spline_arc(const Profile& p, double step) {
     }
   const double L = len.back();
   const double intervals = std::max(1.0, std::ceil(L / step - 1e-9));
-  check_point_count(intervals + 1, fmt::format("resample: step {} m over {} m of arc", step, L));
+  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, L));
   const auto m = static_cast<std::size_t>(intervals);
   std::vector<double> y(m + 1), z(m + 1);
   std::size_t k = 0;
@@ -167,7 +167,7 @@ Profile resample_arc(const Profile& p, double step) {
   for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
   const double L = s.back();
   const double intervals = std::max(1.0, std::ceil(L / step - 1e-9));
-  check_point_count(intervals + 1, fmt::format("resample: step {} m over {} m of arc", step, L));
+  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, L));
   const auto m = static_cast<std::size_t>(intervals);
   std::vector<double> y(m + 1), z(m + 1);
   std::size_t k = 0;
@@ -202,7 +202,7 @@ Profile resample_y(const Profile& p, double step) {
   if (!(step > 0) || !std::isfinite(step)) fail("resample: step must be a positive number of metres, got {}", step);
   const double y0 = p.y.front(), y1 = p.y.back();
   const double intervals = std::floor((y1 - y0) / step + 1e-9);
-  check_point_count(intervals + 2, fmt::format("resample: step {} m over {} m", step, y1 - y0));
+  check_point_count(intervals + 2, fmt::format("resample: step {:.6g} m over {:.6g} m", step, y1 - y0));
   const auto m = static_cast<std::size_t>(intervals);
   std::vector<double> y, z;
   y.reserve(m + 2);
