@@ -28,7 +28,8 @@ local s1002 = wrc.profile.load("profiles/s1002.lua")
 local e60 = wrc.profile.load("profiles/60e1.lua")
 -- The worn wheel is a measurement-like file (0.2 mm points, +-3 um noise): smoothed on load (smooth = 0.5 mm halves
 -- waviness of 3 mm wavelength and removes the noise; README "Profiles as smooth curves").
-local worn = wrc.profile.load("examples/data/s1002_hollow_worn.whl", {smooth = 0.5e-3})
+-- Its file ships with the examples (wrc.paths.root/examples), found so from any working directory.
+local worn = wrc.profile.load(wrc.paths.root .. "/examples/data/s1002_hollow_worn.whl", {smooth = 0.5e-3})
 local pairs_ = {
   {key = "s1002_60e1_1in40", name = "S1002 / 60E1 1:40", wheel = s1002, cant = 1 / 40, colour = "#1f77b4"},
   {key = "s1002_60e1_1in20", name = "S1002 / 60E1 1:20", wheel = s1002, cant = 1 / 20, colour = "#2ca02c"},

@@ -3,7 +3,8 @@
 -- (EN 15313); for the fleet a summary, a histogram of tan(gamma_e) and a scatter of tan(gamma_e) against the flange
 -- thickness. Out of the box it generates a synthetic fleet of worn S1002 wheels (profiles/worn_s1002.lua: a hollow
 -- tread and a thinned flange, each of a random depth, uniform in [0, hollow_max_mm] and [0, flange_max_mm], drawn
--- per wheel from `seed`); given a folder (wheels=DIR) it reads every wheel profile in it, in any format wrc reads.
+-- per wheel from `seed`); given a folder (wheels=DIR) it reads every wheel profile file in it that a reader takes
+-- (MiniProf, Simpack, text; Lua definitions only with definitions=true, and then sandboxed).
 --
 --   wrc run examples/fleet_conicity.lua [count=1000] [out=results/fleet]          (--help lists the options)
 --   wrc run examples/fleet_conicity.lua wheels=measured/ rail=measured/rail.ban rail_mirror_y=true
@@ -25,7 +26,8 @@ local s = study.new{
          "synthetic fleet of worn S1002 wheels by default, or every wheel profile in a folder (wheels=DIR).",
   out = "results/fleet",
   options = {
-    {"wheels", "string", "", "folder of wheel profiles (any format wrc reads); empty: the synthetic fleet"},
+    {"wheels", "string", "", "folder of wheel profiles (the formats of the readers); empty: the synthetic fleet"},
+    {"definitions", "boolean", false, "with wheels=DIR, also the Lua profile definitions (.lua) in it (run sandboxed)"},
     {"count", "integer", 1000, "wheels of the synthetic fleet", min = 1},
     {"seed", "integer", 1, "random seed of the synthetic fleet", min = 0},
     {"hollow_max_mm", "number", 2, "largest hollow tread depth of the synthetic fleet (mm)", min = 0, max = 5},
@@ -59,10 +61,14 @@ local function tan_column(a) return ("tan_ge_%smm"):format((("%g"):format(a):gsu
 
 local rail = wrc.profile.load(opt.rail, opt.rail_mirror_y and {mirror_y = true} or {})
 
--- The wheels: files of a folder (those a reader or a definition takes, sorted by name), or the synthetic fleet.
+-- The wheels: files of a folder (those a reader takes, and Lua definitions when asked for; sorted by name), or the
+-- synthetic fleet. A .lua file in a data folder is not taken unless definitions=true: the folder is data.
 local files = {}
+if opt.definitions and opt.wheels == "" then error("definitions=true applies to a folder of wheels (wheels=DIR)", 0) end
+-- The folder as a path of the file system: a name "profiles/..." alone means the shipped profiles.
+local wheel_dir = (opt.wheels == "profiles" or opt.wheels:match("^profiles/")) and "./" .. opt.wheels or opt.wheels
 if opt.wheels ~= "" then
-  local known = {[".lua"] = true}
+  local known = {[".lua"] = opt.definitions or nil}
   for _, r in ipairs(wrc.profile.readers()) do
     for _, e in ipairs(r.extensions) do known[e:lower()] = true end
   end
@@ -70,7 +76,10 @@ if opt.wheels ~= "" then
     local ext = name:match("(%.[^./]+)$")
     if ext and known[ext:lower()] and wrc.fs.kind(opt.wheels .. "/" .. name) == "file" then files[#files + 1] = name end
   end
-  if #files == 0 then error(("wheels=%s: no wheel profile in it (extensions wrc reads)"):format(opt.wheels), 0) end
+  if #files == 0 then
+    error(("wheels=%s: no wheel profile in it (extensions of the readers%s)"):format(opt.wheels,
+          opt.definitions and ", .lua" or "; definitions=true takes .lua definitions too"), 0)
+  end
 end
 local count = opt.wheels ~= "" and #files or opt.count
 
@@ -80,7 +89,7 @@ local function wheel(i)
   if opt.wheels ~= "" then
     local name = files[i]
     local options = {kind = "wheel", smooth = opt.smooth_mm > 0 and opt.smooth_mm * 1e-3 or nil}
-    return {name = name, source = name, profile = wrc.profile.load(opt.wheels .. "/" .. name, options)}
+    return {name = name, source = name, profile = wrc.profile.load(wheel_dir .. "/" .. name, options)}
   end
   math.randomseed(opt.seed, i)
   local hollow, flange = opt.hollow_max_mm * math.random() * 1e-3, opt.flange_max_mm * math.random() * 1e-3

@@ -60,6 +60,8 @@ local function point_at(u)  -- arc length u (mm) from the crown
 end
 
 local n = math.max(1, math.ceil(total / (step * 1e3) - 1e-9))
+assert(2 * n + 1 <= wrc.profile.max_points, ("60e1: step = %g m gives %.0f points, more than a profile may have " ..
+       "(wrc.profile.max_points = %d)"):format(step, 2 * n + 1, wrc.profile.max_points))
 local hy, hz = {}, {}
 for i = 0, n do hy[i], hz[i] = point_at(total * i / n) end
 

@@ -46,6 +46,8 @@ local function F(s)
 end
 
 local n = math.floor((s_to - s_from) / step + 0.5)
+assert(n + 2 <= wrc.profile.max_points, ("s1002: step = %g m gives %.0f points, more than a profile may have " ..
+       "(wrc.profile.max_points = %d)"):format(step, n + 2, wrc.profile.max_points))
 local y, z = {}, {}
 for i = 0, n do
   local s = math.min(s_from + i * step, s_to)

@@ -18,7 +18,7 @@ local opt = ... or {}
 local hollow, flange = opt.hollow or 0, opt.flange or 0
 assert(type(hollow) == "number" and hollow >= 0 and hollow <= 5e-3, "worn_s1002: hollow must be in [0, 5e-3] m")
 assert(type(flange) == "number" and flange >= 0 and flange <= 10e-3, "worn_s1002: flange must be in [0, 10e-3] m")
-local base = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua", {step = opt.step or 0.1e-3})
+local base = wrc.profile.load("profiles/s1002.lua", {step = opt.step or 0.1e-3})  -- the shipped S1002
 local y, z = base:points()
 
 local function smoothstep(a, b, s)  -- 0 at a, 1 at b, C1

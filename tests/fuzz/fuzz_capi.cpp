@@ -242,7 +242,7 @@ void run(Handles& h, const Line& l, int& solves) {
       wrc_profile*& p = h.profile[Handles::slot(l.id(0))];
       h.release(p, wrc_profile_free);
       std::size_t n = l.size(2);
-      if (n > 4096 && n <= 10'000'000) n = 4096;  // a caller's array holds n values; beyond the limit: refused first
+      if (n > 4096 && n <= 1'000'000) n = 4096;  // a caller's array holds n values; beyond the limit: refused first
       const int kind = static_cast<int>(((l.id(1) % 4) + 4) % 4);
       curve(kind % 2, std::min<std::size_t>(n, 4096), l.number(3), l.number(4), y, z);
       if (check(wrc_profile_from_points(kinds[kind], y.data(), z.data(), n, l.options(), &p)) == WRC_OK) require(p);
@@ -270,7 +270,7 @@ void run(Handles& h, const Line& l, int& solves) {
       return;
     case 'K': {
       std::size_t n = l.size(0);
-      if (n > 4096 && n <= 10'000'000) n = 4096;
+      if (n > 4096 && n <= 1'000'000) n = 4096;
       curve(1, std::min<std::size_t>(n, 4096), 1.0, l.number(1), y, z);
       for (std::size_t i = 0; i < std::min<std::size_t>(n, 4096); ++i) z[i] *= 1e-2;  // a Δr-like function
       check(wrc_conicity(y.data(), z.data(), n, l.options(), h.out()));

@@ -63,8 +63,10 @@ local def = H.write(tmp .. "def.lua", "local o = ... \nreturn 42\n")
 check.fails(function() wrc.profile.load(def) end, "returned a number, expected a wrc.Profile", "definition returning a number")
 local broken = H.write(tmp .. "broken.lua", "local x = \n")
 check.fails(function() wrc.profile.load(broken) end, "profile_lua_api_broken.lua:2", "definition with a syntax error")
-check.fails(function() wrc.profile.load("profiles/no_such.lua") end, "no such file (looked in the working directory and in wrc.paths.root",
-            "missing definition")
+check.fails(function() wrc.profile.load("profiles/no_such.lua") end, "profiles/no_such.lua: not a shipped profile",
+            "missing shipped definition")
+check.fails(function() wrc.profile.load("no_such_folder/w.lua") end, "no_such_folder/w.lua: no such file (relative to " ..
+            "the working directory", "missing file")
 local s = wrc.profile.load("profiles/s1002.lua", {mirror_y = true, shift = {z = 0.001}})
 check.near(s:bounds().y_max, 0.070, 1e-12, "mirror_y applied to a definition")
 check.near(s:interpolate(0), 0.001, 1e-12, "shift applied to a definition")

@@ -24,7 +24,8 @@
  *
  * Options: a string of "key=value" pairs separated by blanks or ';' (NULL or "" for none). A value is a number, true
  * or false, a list of numbers "a,b" or a word; dotted keys make nested tables ("shift.y=1e-3"). The keys are those of
- * the Lua API (README): an unknown key is an error naming the closest known one.
+ * the Lua API (README): an unknown key is an error naming the closest known one. A key given twice, a key of more
+ * than 256 characters or 16 dotted levels and a string of more than 32 MB are errors too (WRC_ERROR).
  */
 #ifndef WRC_WRC_H
 #define WRC_WRC_H
@@ -65,9 +66,14 @@ const char* wrc_last_error(void);
 /* ---- profiles ---- */
 
 /* Loads a profile: a Lua definition (.lua, e.g. "profiles/s1002.lua") or a file read by a reader plugin (.txt, .csv,
- * .prr, .prw, .ban, .whl, ...). A relative path is looked up in the working directory, then in the installed data
- * folder. Options: those of wrc.profile.load (units, mirror_y, mirror_z, crop.y, crop.z, shift.y, shift.z, kind, name,
- * reader, the reader's own options; a Lua definition's own options such as step). The caller owns *out. */
+ * .prr, .prw, .ban, .whl, ...). "profiles/NAME" is the profile NAME shipped with wrc (in its installed data folder),
+ * never a file of the working directory; any other path, "./profiles/NAME" included, is a file (a relative one in the
+ * working directory). A Lua definition is data, whoever wrote it: it runs in a sandbox of its own, without os, io,
+ * package, require, dofile, loadfile, debug or binary chunks, so that it cannot reach the file system, run programs or
+ * load libraries, within budgets of 1e9 Lua instructions and 256 MB; past one it fails with WRC_ERROR and a message
+ * (README "What is code and what is data"). A profile has at most 1000000 points. Options: those of wrc.profile.load
+ * (units, mirror_y, mirror_z, crop.y, crop.z, shift.y, shift.z, kind, name, reader, the reader's own options; a Lua
+ * definition's own options such as step). The caller owns *out. */
 wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out);
 /* A profile from n points (m, left-side frame; docs/design.md section 2); kind is "wheel" or "rail"; name may be
  * NULL. The arrays are copied; n above 10,000,000 is WRC_INVALID_ARGUMENT. The caller owns *out. */

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
+#include <unordered_map>
 
 namespace wrc {
 
@@ -106,27 +108,64 @@ OptionValue parse_scalar_or_list(std::string_view text) {
   return OptionValue::of(std::string(text));
 }
 
-// Sets a dotted key ("shift.y") in nested tables.
-void set_path(OptionTable& t, std::string_view key, OptionValue v, std::string_view context) {
-  const std::size_t dot = key.find('.');
-  if (dot == std::string_view::npos) {
-    t.set(std::string(key), std::move(v));
-    return;
+// A table while the text is parsed: its entries in the order given, found by key in constant time; a sub-table
+// stays mutable until the end (OptionValue's tables are shared and immutable: copying one per key made the parse
+// quadratic).
+struct TableBuilder {
+  std::vector<std::string> keys;
+  std::vector<OptionValue> values;                    // the entry's value (unused for a sub-table)
+  std::vector<std::unique_ptr<TableBuilder>> tables;  // the entry's sub-table, or null for a value
+  std::unordered_map<std::string, std::size_t> index; // key -> entry
+
+  // The entry `key` and whether it was there before; a new entry is a sub-table when `table`.
+  std::pair<std::size_t, bool> entry(std::string_view key, bool table) {
+    const auto [it, added] = index.emplace(std::string(key), keys.size());
+    if (added) {
+      keys.emplace_back(key);
+      values.emplace_back();
+      tables.push_back(table ? std::make_unique<TableBuilder>() : nullptr);
+    }
+    return {it->second, !added};
   }
-  const std::string head(key.substr(0, dot));
-  OptionTable sub;
-  if (const OptionValue* old = t.find(head)) {
-    if (old->type != OptionValue::Type::table) fail("{}: '{}' is both a value and a table", context, head);
-    sub = *old->table;
+
+  // The finished table (recursion bounded by kMaxOptionDepth).
+  OptionTable finish() {
+    OptionTable t;
+    t.entries.reserve(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      t.entries.emplace_back(std::move(keys[i]), tables[i] ? OptionValue::of(tables[i]->finish()) : std::move(values[i]));
+    return t;
   }
-  set_path(sub, key.substr(dot + 1), std::move(v), context);
-  t.set(head, OptionValue::of(std::move(sub)));
+};
+
+// Sets a dotted key ("shift.y") in nested tables: a name is a value or a table, not both, and a key is given once.
+void set_path(TableBuilder& root, std::string_view key, OptionValue v, std::string_view context) {
+  if (key.size() > kMaxOptionKeyLength)
+    fail("{}: the key '{:.40}...' is {} characters long (at most {})", context, key, key.size(), kMaxOptionKeyLength);
+  TableBuilder* t = &root;
+  for (std::size_t start = 0, level = 1;; ++level) {
+    const std::size_t dot = std::min(key.find('.', start), key.size());
+    const bool last = dot == key.size();
+    if (dot == start) fail("{}: the key '{}' has an empty name between its dots", context, key);
+    if (level > kMaxOptionDepth) fail("{}: the key '{:.40}...' nests more than {} levels", context, key, kMaxOptionDepth);
+    const auto [i, existed] = t->entry(key.substr(start, dot - start), !last);
+    if (existed && last && !t->tables[i]) fail("{}: '{}' is given twice", context, key);
+    if (existed && (last || !t->tables[i])) fail("{}: '{}' is both a value and a table", context, key.substr(0, dot));
+    if (last) {
+      t->values[i] = std::move(v);
+      return;
+    }
+    t = t->tables[i].get();
+    start = dot + 1;
+  }
 }
 
 }  // namespace
 
 OptionTable parse_option_text(std::string_view text, std::string_view context) {
-  OptionTable t;
+  if (text.size() > kMaxOptionTextLength)
+    fail("{}: the option text is {} bytes long (at most {})", context, text.size(), kMaxOptionTextLength);
+  TableBuilder root;
   std::size_t i = 0;
   auto is_sep = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ';'; };
   while (i < text.size()) {
@@ -136,12 +175,11 @@ OptionTable parse_option_text(std::string_view text, std::string_view context) {
     while (j < text.size() && !is_sep(text[j])) ++j;
     const std::string_view pair = text.substr(i, j - i);
     const std::size_t eq = pair.find('=');
-    if (eq == std::string_view::npos || eq == 0 || pair.front() == '.' || pair[eq - 1] == '.')
-      fail("{}: '{}' is not a key=value pair", context, pair);
-    set_path(t, pair.substr(0, eq), parse_scalar_or_list(pair.substr(eq + 1)), context);
+    if (eq == std::string_view::npos || eq == 0) fail("{}: '{:.80}' is not a key=value pair", context, pair);
+    set_path(root, pair.substr(0, eq), parse_scalar_or_list(pair.substr(eq + 1)), context);
     i = j;
   }
-  return t;
+  return root.finish();
 }
 
 std::string closest_name(std::string_view key, const std::vector<std::string>& known) {

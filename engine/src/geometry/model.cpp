@@ -288,8 +288,9 @@ Profile offset_outward(const Profile& p, double distance, double step) {
   if (!(step > 0) || !std::isfinite(step)) fail("offset_outward: step must be > 0 m, got {}", step);
   const UV f = to_uv(p);
   const double u0 = f.u.front() - distance, u1 = f.u.back() + distance;
-  const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil((u1 - u0) / step - 1e-9)));
-  if (m > 1'000'000) fail("offset_outward: step {} m gives {} points", step, m);
+  const double intervals = std::max(1.0, std::ceil((u1 - u0) / step - 1e-9));
+  check_point_count(intervals + 1, fmt::format("offset_outward: step {:.6g} m over {:.6g} m", step, u1 - u0));
+  const auto m = static_cast<std::size_t>(intervals);
   // Each coarse segment starts as the chord of the envelope, lifted until the bound of required_lift holds: then
   // every disc of the dilation lies under the lifted chord's whole line. A vertex takes the higher of the two
   // lifted chords meeting there; the coarse segment between two such vertices lies above its own lifted chord, so

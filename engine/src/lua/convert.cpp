@@ -62,7 +62,7 @@ void set_bool(lua_State* L, const char* key, bool v) {
 namespace {
 
 OptionValue table_option(lua_State* L, int idx, std::string_view context, int depth) {
-  if (depth > 16) fail("{}: tables nested too deeply", context);
+  if (depth > kMaxOptionDepth) fail("{}: tables nested more than {} levels deep", context, kMaxOptionDepth);
   std::vector<OptionValue> array;
   OptionTable table;
   // Raw access only: a metamethod that raised would longjmp past the C++ objects being built here.

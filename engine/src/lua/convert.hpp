@@ -60,10 +60,15 @@ void push_shared(lua_State* L, std::shared_ptr<T> p, const char* tname) {
   luaL_setmetatable(L, tname);
 }
 
+// __gc: releases the object and leaves an empty pointer, so that a second call (a script calling the metamethod
+// itself) releases nothing twice.
 template <class T>
 int gc_shared(lua_State* L) {
   auto* p = static_cast<std::shared_ptr<T>*>(lua_touserdata(L, 1));
-  if (p) p->~shared_ptr<T>();
+  if (p) {
+    p->~shared_ptr<T>();
+    new (p) std::shared_ptr<T>();
+  }
   return 0;
 }
 

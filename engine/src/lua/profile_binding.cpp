@@ -5,6 +5,7 @@
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"
+#include "lua/sandbox.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/load.hpp"
 #include "wrc/profile/orientation.hpp"
@@ -69,58 +70,27 @@ LoadOptions read_options(lua_State* L, int idx, std::string_view ctx, bool geome
   return read_load_options(r, geometric_only);
 }
 
-bool has_geometric_options(const LoadOptions& o) {
-  return o.mirror_y || o.mirror_z || o.crop || o.shift_y != 0 || o.shift_z != 0 || o.name || o.kind || o.smooth;
-}
-
-// Relative paths: the working directory first, then wrc.paths.root.
-std::string resolve_path(const std::string& path) {
-  std::error_code ec;
-  if (fs::exists(path, ec)) return path;
-  const fs::path p(path);
-  if (p.is_relative()) {
-    const fs::path alt = fs::path(paths().root) / p;
-    if (fs::exists(alt, ec)) return alt.string();
-  }
-  if (p.is_relative())
-    fail("{}: no such file (looked in the working directory and in wrc.paths.root = {})", path, paths().root);
-  fail("{}: no such file", path);
-}
-
-// A Lua definition: the file's chunk runs with the options table as `...` and returns a wrc.Profile.
-Profile load_definition(lua_State* L, const std::string& path, int options_idx, const LoadOptions& o) {
-  if (lua_isnoneornil(L, options_idx)) lua_newtable(L);
-  else lua_pushvalue(L, options_idx);
-  const int options_copy = lua_gettop(L);
-  if (luaL_loadfile(L, path.c_str()) != LUA_OK) {
-    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "cannot load";
-    lua_pop(L, 2);
-    fail("wrc.profile.load: {}", msg);
-  }
-  lua_insert(L, options_copy);  // chunk below its argument
-  if (pcall_traceback(L, 1, 1) != LUA_OK) {
-    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "error object is not a string";
-    lua_pop(L, 1);
-    fail("wrc.profile.load: the definition {} failed: {}", path, msg);
-  }
-  auto* ud = static_cast<std::shared_ptr<const Profile>*>(luaL_testudata(L, -1, kProfileType));
-  if (!ud || !*ud) {
-    const char* tn = type_name(L, -1);
-    lua_pop(L, 1);
-    fail("wrc.profile.load: the definition {} returned a {}, expected a wrc.Profile (return wrc.profile.points{{...}})", path, tn);
-  }
-  Profile p = **ud;
-  lua_pop(L, 1);
-  p.source = path;
-  if (!has_geometric_options(o)) return p;
-  return transform_profile(p, o);
-}
-
 // ---- wrc.profile functions ----
 
+// The length of t[key] when it is a table (raw access, no metamethod), else 0.
+std::size_t raw_length(lua_State* L, int t, const char* key) {
+  if (!lua_istable(L, t)) return 0;
+  lua_pushstring(L, key);
+  lua_rawget(L, t);
+  const std::size_t n = lua_istable(L, -1) ? lua_rawlen(L, -1) : 0;
+  lua_pop(L, 1);
+  return n;
+}
+
+}  // namespace
+
+namespace profile_api {
+
 // wrc.profile.points{kind=, y={...}, z={...}, name=}: metres, left-side frame.
-int profile_points(lua_State* L) {
+int points(lua_State* L) {
   const char* ctx = "wrc.profile.points";
+  // Counted before the arrays are converted (each number would become an option value first).
+  check_point_count(static_cast<double>(std::max(raw_length(L, 1, "y"), raw_length(L, 1, "z"))), ctx);
   const OptionTable t = table_options(L, 1, ctx);
   OptionReader r(t, ctx);
   const auto kind_text = r.string("kind");
@@ -134,17 +104,20 @@ int profile_points(lua_State* L) {
   return 1;
 }
 
-// wrc.profile.load(path [, options]) -> wrc.Profile
+}  // namespace profile_api
+
+namespace {
+
+// wrc.profile.load(path [, options]) -> wrc.Profile: a Lua definition runs in a sandbox (sandbox.hpp), a file goes
+// to the readers (those registered from this state first).
 int profile_load(lua_State* L) {
   const char* ctx = "wrc.profile.load";
   const std::string given = check_string(L, 1, ctx);
   const LoadOptions o = read_options(L, 2, ctx, false);
-  const std::string path = resolve_path(given);
+  const std::string path = resolve_profile_path(given);
   std::shared_ptr<Profile> p;
-  if (file_extension(path) == ".lua" && !o.reader) {
-    if (o.metres_per_unit) fail("{}: {}: 'units' does not apply to a Lua definition (it returns metres)", ctx, path);
-    p = std::make_shared<Profile>(load_definition(L, path, 2, o));
-    p->warnings = orientation_warnings(*p);
+  if (is_definition(path, o)) {
+    p = std::make_shared<Profile>(load_definition(path, to_options(L, 2, ctx)));
   } else {
     LuaReaders& lr = lua_readers(L);
     CurrentState cs(lr, L);
@@ -264,10 +237,14 @@ int profile_readers(lua_State* L) {
   return 2;
 }
 
+}  // namespace
+
 // ---- wrc.Profile methods ----
 
+namespace profile_api {
+
 // p:points() -> y, z (two Lua arrays, metres)
-int profile_method_points(lua_State* L) {
+int method_points(lua_State* L) {
   const auto& p = check_profile(L, 1, "profile:points");
   push_array(L, p->y);
   push_array(L, p->z);
@@ -275,7 +252,7 @@ int profile_method_points(lua_State* L) {
 }
 
 // p:resample{step=, along="arc"|"y"} -> a new profile
-int profile_method_resample(lua_State* L) {
+int method_resample(lua_State* L) {
   const char* ctx = "profile:resample";
   const auto& p = check_profile(L, 1, ctx);
   const OptionTable t = table_options(L, 2, ctx);
@@ -290,7 +267,7 @@ int profile_method_resample(lua_State* L) {
 }
 
 // p:interpolate(y) -> z at y (linear between the points); y must lie within the profile.
-int profile_method_interpolate(lua_State* L) {
+int method_interpolate(lua_State* L) {
   const char* ctx = "profile:interpolate";
   const auto& p = check_profile(L, 1, ctx);
   const double y = check_number(L, 2, ctx);
@@ -301,13 +278,13 @@ int profile_method_interpolate(lua_State* L) {
 }
 
 // p:arc_length() -> metres
-int profile_method_arc_length(lua_State* L) {
+int method_arc_length(lua_State* L) {
   lua_pushnumber(L, arc_length(*check_profile(L, 1, "profile:arc_length")));
   return 1;
 }
 
 // p:bounds() -> {y_min=, y_max=, z_min=, z_max=} (metres)
-int profile_method_bounds(lua_State* L) {
+int method_bounds(lua_State* L) {
   const auto& p = check_profile(L, 1, "profile:bounds");
   const auto [zmin, zmax] = std::minmax_element(p->z.begin(), p->z.end());
   lua_createtable(L, 0, 4);
@@ -319,7 +296,7 @@ int profile_method_bounds(lua_State* L) {
 }
 
 // p:transform{mirror_y=, mirror_z=, crop=, shift=, name=} -> a new profile
-int profile_method_transform(lua_State* L) {
+int method_transform(lua_State* L) {
   const char* ctx = "profile:transform";
   const auto& p = check_profile(L, 1, ctx);
   check_table(L, 2, ctx);
@@ -328,12 +305,12 @@ int profile_method_transform(lua_State* L) {
   return 1;
 }
 
-int profile_len(lua_State* L) {
+int len(lua_State* L) {
   lua_pushinteger(L, static_cast<lua_Integer>(check_profile(L, 1, "#profile")->size()));
   return 1;
 }
 
-int profile_tostring(lua_State* L) {
+int tostring(lua_State* L) {
   const auto& p = check_profile(L, 1, "tostring(profile)");
   lua_pushstring(L, fmt::format("wrc.Profile({} '{}', {} points, y {:.4f}..{:.4f} m, from {})", to_string(p->kind),
                                 p->name, p->size(), p->y.front(), p->y.back(), p->source)
@@ -341,7 +318,7 @@ int profile_tostring(lua_State* L) {
   return 1;
 }
 
-int profile_index(lua_State* L) {
+int index(lua_State* L) {
   const auto& p = check_profile(L, 1, "profile");
   if (lua_type(L, 2) == LUA_TSTRING) {
     const std::string_view key = lua_tostring(L, 2);
@@ -366,7 +343,7 @@ int profile_index(lua_State* L) {
   return 1;
 }
 
-}  // namespace
+}  // namespace profile_api
 
 void register_profile_methods(lua_State* L, const luaL_Reg* methods) {
   luaL_getmetatable(L, kProfileType);
@@ -378,9 +355,9 @@ void register_profile_methods(lua_State* L, const luaL_Reg* methods) {
 void open_profile(lua_State* L) {
   if (luaL_newmetatable(L, kProfileType)) {
     const luaL_Reg meta[] = {{"__gc", gc_shared<const Profile>},
-                             {"__len", guarded<profile_len>},
-                             {"__tostring", guarded<profile_tostring>},
-                             {"__index", guarded<profile_index>},
+                             {"__len", guarded<profile_api::len>},
+                             {"__tostring", guarded<profile_api::tostring>},
+                             {"__index", guarded<profile_api::index>},
                              {nullptr, nullptr}};
     luaL_setfuncs(L, meta, 0);
     lua_newtable(L);
@@ -392,35 +369,36 @@ void open_profile(lua_State* L) {
     lua_setfield(L, -2, "__gc");
   }
   lua_pop(L, 1);
-  const luaL_Reg methods[] = {{"points", guarded<profile_method_points>},
-                              {"resample", guarded<profile_method_resample>},
-                              {"interpolate", guarded<profile_method_interpolate>},
-                              {"arc_length", guarded<profile_method_arc_length>},
-                              {"bounds", guarded<profile_method_bounds>},
-                              {"transform", guarded<profile_method_transform>},
+  const luaL_Reg methods[] = {{"points", guarded<profile_api::method_points>},
+                              {"resample", guarded<profile_api::method_resample>},
+                              {"interpolate", guarded<profile_api::method_interpolate>},
+                              {"arc_length", guarded<profile_api::method_arc_length>},
+                              {"bounds", guarded<profile_api::method_bounds>},
+                              {"transform", guarded<profile_api::method_transform>},
                               {nullptr, nullptr}};
   register_profile_methods(L, methods);
 
   lua_newtable(L);  // wrc.profile
-  const luaL_Reg funcs[] = {{"points", guarded<profile_points>},
+  const luaL_Reg funcs[] = {{"points", guarded<profile_api::points>},
                             {"load", guarded<profile_load>},
                             {"register_reader", guarded<profile_register_reader>},
                             {"readers", guarded<profile_readers>},
                             {nullptr, nullptr}};
   luaL_setfuncs(L, funcs, 0);
+  lua_pushinteger(L, static_cast<lua_Integer>(kMaxProfilePoints));
+  lua_setfield(L, -2, "max_points");
   lua_setfield(L, -2, "profile");
 }
 
-std::shared_ptr<const Profile> load_profile(const std::string& path, const OptionTable& options) {
-  const std::unique_ptr<lua_State, void (*)(lua_State*)> state(new_state(), lua_close);
-  lua_State* L = state.get();
-  lua_getglobal(L, "wrc");
-  lua_getfield(L, -1, "profile");
-  lua_getfield(L, -1, "load");
-  lua_pushstring(L, path.c_str());
-  push_option(L, OptionValue::of(options));
-  if (pcall_traceback(L, 2, 1) != LUA_OK) throw Error(lua_tostring(L, -1) ? lua_tostring(L, -1) : "wrc.profile.load failed");
-  return check_profile(L, -1, "wrc.profile.load");
+std::shared_ptr<const Profile> load_profile(const std::string& name, const OptionTable& options) {
+  const char* ctx = "wrc.profile.load";
+  OptionReader r(options, ctx);
+  const LoadOptions o = read_load_options(r, false);
+  const std::string path = resolve_profile_path(name);
+  auto p = std::make_shared<Profile>(is_definition(path, o) ? load_definition(path, options)
+                                                            : load_profile_file(path, o, {&ReaderRegistry::plugins()}));
+  for (const std::string& w : p->warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+  return p;
 }
 
 }  // namespace wrc::lua

@@ -18,4 +18,20 @@ const std::shared_ptr<const Profile>& check_profile(lua_State* L, int idx, std::
 void register_profile_methods(lua_State* L, const luaL_Reg* methods);
 
 void open_profile(lua_State* L);  // wrc.profile and the wrc.Profile metatable
+
+// The functions behind wrc.profile.points and the wrc.Profile methods and metamethods, as they are: they throw
+// wrc::Error, so Lua calls them through a wrapper that turns the exception into a Lua error (guarded<>, or the
+// sandbox's own for profile definitions, sandbox.cpp).
+namespace profile_api {
+int points(lua_State* L);              // wrc.profile.points{kind =, y =, z =, name =}
+int method_points(lua_State* L);       // p:points()
+int method_resample(lua_State* L);     // p:resample{step =, along =}
+int method_interpolate(lua_State* L);  // p:interpolate(y)
+int method_arc_length(lua_State* L);   // p:arc_length()
+int method_bounds(lua_State* L);       // p:bounds()
+int method_transform(lua_State* L);    // p:transform{...}
+int len(lua_State* L);                 // #p
+int tostring(lua_State* L);            // tostring(p)
+int index(lua_State* L);               // p.kind, p.name, ... and the methods
+}  // namespace profile_api
 }  // namespace wrc::lua

@@ -1,6 +1,7 @@
 #include "wrc/profile/load.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/core/paths.hpp"
 #include "wrc/profile/orientation.hpp"
 #include "wrc/profile/spline.hpp"
 
@@ -9,8 +10,52 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <system_error>
 
 namespace wrc {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string shipped_names() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::directory_iterator it(paths().profiles, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) names.push_back(it->path().filename().string());
+  std::sort(names.begin(), names.end());
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
+}  // namespace
+
+std::string resolve_profile_path(const std::string& name) {
+  const fs::path p(name);
+  std::error_code ec;
+  if (p.is_relative() && !p.empty() && *p.begin() == "profiles") {
+    const fs::path rest = p.lexically_relative("profiles").lexically_normal();
+    const fs::path shipped = fs::path(paths().profiles) / rest;
+    if (!rest.empty() && rest != "." && *rest.begin() != ".." && fs::is_regular_file(shipped, ec)) return shipped.string();
+    fail("{}: not a shipped profile (a name profiles/NAME means a profile shipped with wrc, in {}: {}); a file of "
+         "the working directory is named with a path: ./{}", name, paths().profiles, shipped_names(), name);
+  }
+  if (!fs::exists(p, ec)) {
+    if (p.is_relative())
+      fail("{}: no such file (relative to the working directory {})", name, fs::current_path(ec).string());
+    fail("{}: no such file", name);
+  }
+  return name;
+}
+
+bool is_shipped_profile(const std::string& path) {
+  std::error_code ec;
+  const fs::path file = fs::canonical(path, ec);
+  if (ec || !fs::is_regular_file(file, ec)) return false;
+  const fs::path folder = fs::canonical(paths().profiles, ec);
+  return !ec && file.parent_path() == folder;
+}
 
 std::string file_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 

@@ -25,10 +25,17 @@ std::string where(const std::string& source, const std::vector<int>& lines, std:
 
 }  // namespace
 
+void check_point_count(double n, std::string_view what) {
+  if (!(n <= static_cast<double>(kMaxProfilePoints)))
+    fail("{} gives {:.0f} points, more than a profile may have (at most {}; is the step in metres?)", what, n,
+         kMaxProfilePoints);
+}
+
 Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double> z, std::string name,
                      std::string source, const std::vector<int>& lines) {
   if (y.size() != z.size())
     fail("{}: y has {} values but z has {}", source, y.size(), z.size());
+  check_point_count(static_cast<double>(y.size()), source);
   for (std::size_t i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i]) || !std::isfinite(z[i]))
       fail("{}: coordinate is not a finite number (y = {}, z = {})", where(source, lines, i), y[i], z[i]);
@@ -129,8 +136,9 @@ Profile resample_spline_arc(const Profile& p, double step) {
       prev = q;
     }
   const double L = len.back();
-  const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil(L / step - 1e-9)));
-  if (m > 50'000'000) fail("resample: step {} m gives {} points over {} m of arc", step, m, L);
+  const double intervals = std::max(1.0, std::ceil(L / step - 1e-9));
+  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, L));
+  const auto m = static_cast<std::size_t>(intervals);
   std::vector<double> y(m + 1), z(m + 1);
   std::size_t k = 0;
   for (std::size_t j = 0; j <= m; ++j) {
@@ -158,8 +166,9 @@ Profile resample_arc(const Profile& p, double step) {
   std::vector<double> s(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
   const double L = s.back();
-  const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil(L / step - 1e-9)));
-  if (m > 50'000'000) fail("resample: step {} m gives {} points over {} m of arc", step, m, L);
+  const double intervals = std::max(1.0, std::ceil(L / step - 1e-9));
+  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, L));
+  const auto m = static_cast<std::size_t>(intervals);
   std::vector<double> y(m + 1), z(m + 1);
   std::size_t k = 0;
   for (std::size_t j = 0; j <= m; ++j) {
@@ -192,8 +201,9 @@ double interpolate_z(const Profile& p, double yq) { return interpolate(p.y, p.z,
 Profile resample_y(const Profile& p, double step) {
   if (!(step > 0) || !std::isfinite(step)) fail("resample: step must be a positive number of metres, got {}", step);
   const double y0 = p.y.front(), y1 = p.y.back();
-  const auto m = static_cast<std::size_t>(std::floor((y1 - y0) / step + 1e-9));
-  if (m > 50'000'000) fail("resample: step {} m gives {} points over {} m", step, m, y1 - y0);
+  const double intervals = std::floor((y1 - y0) / step + 1e-9);
+  check_point_count(intervals + 2, fmt::format("resample: step {:.6g} m over {:.6g} m", step, y1 - y0));
+  const auto m = static_cast<std::size_t>(intervals);
   std::vector<double> y, z;
   y.reserve(m + 2);
   z.reserve(m + 2);

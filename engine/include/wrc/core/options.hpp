@@ -5,6 +5,7 @@
 
 #include "wrc/core/error.hpp"
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,8 +46,17 @@ struct OptionTable {
   bool empty() const { return entries.empty(); }
 };
 
+// Bounds of option input, whoever supplies it: tables nest at most kMaxOptionDepth levels (a dotted key has at most
+// that many names; a Lua table as deep), a key of an option text has at most kMaxOptionKeyLength characters and the
+// text at most kMaxOptionTextLength bytes (a million numbers of a list fit).
+inline constexpr int kMaxOptionDepth = 16;
+inline constexpr std::size_t kMaxOptionKeyLength = 256;
+inline constexpr std::size_t kMaxOptionTextLength = std::size_t{32} << 20;
+
 // Parses "key=value key2=value2" (blanks or ';' between pairs; a value is a number, true/false, a list of numbers
-// "a,b,c", or a string; dotted keys "shift.y=1e-3" make nested tables). Errors name `context` and the pair.
+// "a,b,c", or a string; dotted keys "shift.y=1e-3" make nested tables), in time linear in the text. A key given
+// twice, a name that is both a value and a table, an empty name ("a..b") and input past the bounds above are errors
+// that name `context` and the key.
 OptionTable parse_option_text(std::string_view text, std::string_view context);
 
 // Reads an OptionTable, remembering which keys were asked for; finish() rejects the others, naming the closest

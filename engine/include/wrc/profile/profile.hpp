@@ -39,14 +39,16 @@ struct Profile {
   std::size_t size() const { return y.size(); }
 };
 
+// The most points a profile may have, however it is made (points, files, definitions, resampling): a step of 0.13 um
+// over the S1002's 130 mm, finer than any measurement; more is a step given in the wrong unit, and would take memory
+// in proportion (a definition's tables, the geometry built from the profile). check_point_count names `what`.
+inline constexpr std::size_t kMaxProfilePoints = 1'000'000;
+void check_point_count(double n, std::string_view what);
+
 // Points closer than this (m) to their predecessor are duplicates.
 inline constexpr double kDuplicateTolerance = 1e-9;
 
-// The most points a profile may come with (a reader's output, the C API's arrays): a guard against runaway input; a
-// profile sampled every micrometre over 250 mm has 250,000.
-inline constexpr std::size_t kMaxProfilePoints = 10'000'000;
-
-// Builds a validated profile. Checks: at least 3 points, all finite, consecutive duplicates dropped and
+// Builds a validated profile. Checks: at least 3 and at most kMaxProfilePoints points, all finite, consecutive duplicates dropped and
 // counted, no fold-back: y must be monotone along the profile (vertical runs allowed, but a vertical run
 // must keep one z direction). A profile given in decreasing y is reversed (noted in `transforms`).
 // `lines` (optional, one per point) are source line numbers used in messages ("file:line: ...").
@@ -58,10 +60,11 @@ Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double
 double arc_length(const Profile& p);
 
 // Resampled along the arc: end points kept, interior points every `step` metres of arc (the step is
-// shrunk so that it divides the length evenly). step > 0.
+// shrunk so that it divides the length evenly). step > 0; at most kMaxProfilePoints points.
 Profile resample_arc(const Profile& p, double step);
 
-// Resampled along y: points at y_min + k*step (and y_max), z interpolated linearly. step > 0.
+// Resampled along y: points at y_min + k*step (and y_max), z interpolated linearly. step > 0; at most
+// kMaxProfilePoints points.
 Profile resample_y(const Profile& p, double step);
 
 // Linear interpolation of z at y (y clamped to the profile's range). On a vertical run, the first z.

@@ -1,0 +1,103 @@
+// Option texts (parse_option_text, wrc/core/options.hpp), as the C API receives them from any caller: nested tables
+// from dotted keys, and hostile input (keys nested thousands of levels, very long keys and texts, tens of thousands
+// of keys) refused with a message or parsed, never a crash. The time of large parses is printed by
+// tests/bench/bench_options.
+#include "wrc/core/error.hpp"
+#include "wrc/core/options.hpp"
+
+#include <doctest/doctest.h>
+
+#include <fmt/format.h>
+
+#include <string>
+
+using namespace wrc;
+
+namespace {
+
+// The message of the error parse_option_text throws for `text` ("" when it parses).
+std::string error_of(const std::string& text) {
+  try {
+    parse_option_text(text, "ctx");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// `levels` names joined by dots ("a.a.a").
+std::string dotted(int levels) {
+  std::string key = "a";
+  for (int i = 1; i < levels; ++i) key += ".a";
+  return key;
+}
+
+}  // namespace
+
+TEST_CASE("option text: values, lists and dotted keys make nested tables in the order given") {
+  const OptionTable t = parse_option_text("grid=0.5e-3; crop.y=-0.07,0.06 check_setup=false crop.z=1 name=w1", "ctx");
+  REQUIRE(t.entries.size() == 4);
+  CHECK(t.entries[0].first == "grid");
+  CHECK(t.entries[0].second.number == 0.5e-3);
+  CHECK(t.entries[1].first == "crop");
+  REQUIRE(t.entries[1].second.type == OptionValue::Type::table);
+  const OptionTable& crop = *t.entries[1].second.table;
+  REQUIRE(crop.entries.size() == 2);
+  CHECK(crop.entries[0].first == "y");
+  REQUIRE(crop.entries[0].second.array.size() == 2);
+  CHECK(crop.entries[0].second.array[1].number == 0.06);
+  CHECK(crop.entries[1].first == "z");
+  CHECK(t.entries[2].second.type == OptionValue::Type::boolean);
+  CHECK(t.entries[3].second.string == "w1");
+}
+
+TEST_CASE("option text: a key 30000 levels deep is refused with the limit, not a stack overflow") {
+  const std::string msg = error_of(dotted(30000) + "=1");
+  CHECK(msg.find("ctx: the key 'a.a.a.a") != std::string::npos);
+  CHECK(msg.find("characters long (at most 256)") != std::string::npos);
+  // Within the length, the depth is the bound: 16 levels parse, 17 do not.
+  const OptionTable t = parse_option_text(dotted(kMaxOptionDepth) + "=7", "ctx");
+  const OptionTable* level = &t;
+  for (int i = 1; i < kMaxOptionDepth; ++i) {
+    REQUIRE(level->entries.size() == 1);
+    REQUIRE(level->entries[0].second.type == OptionValue::Type::table);
+    level = level->entries[0].second.table.get();
+  }
+  CHECK(level->entries[0].second.number == 7);
+  CHECK(error_of(dotted(kMaxOptionDepth + 1) + "=1").find("nests more than 16 levels") != std::string::npos);
+}
+
+TEST_CASE("option text: keys given twice, a name both a value and a table, empty names and oversized text") {
+  CHECK(error_of("grid=1 grid=2") == "ctx: 'grid' is given twice");
+  CHECK(error_of("crop.y=1 crop.y=2") == "ctx: 'crop.y' is given twice");
+  CHECK(error_of("crop=1 crop.y=2") == "ctx: 'crop' is both a value and a table");
+  CHECK(error_of("crop.y=2 crop=1") == "ctx: 'crop' is both a value and a table");
+  CHECK(error_of("crop.y.z=2 crop.y=1") == "ctx: 'crop.y' is both a value and a table");
+  CHECK(error_of("a..b=1") == "ctx: the key 'a..b' has an empty name between its dots");
+  CHECK(error_of(".a=1") == "ctx: the key '.a' has an empty name between its dots");
+  CHECK(error_of("a.=1") == "ctx: the key 'a.' has an empty name between its dots");
+  CHECK(error_of("=1") == "ctx: '=1' is not a key=value pair");
+  CHECK(error_of("novalue") == "ctx: 'novalue' is not a key=value pair");
+  const std::string big(kMaxOptionTextLength + 1, ' ');
+  CHECK(error_of(big) == fmt::format("ctx: the option text is {} bytes long (at most {})", big.size(), kMaxOptionTextLength));
+}
+
+TEST_CASE("option text: 40000 keys, flat and in one nested table, all kept in order") {
+  std::string flat, nested;
+  for (int i = 0; i < 40000; ++i) {
+    flat += fmt::format("k{}={} ", i, i);
+    nested += fmt::format("t.k{}={};", i, i);
+  }
+  const OptionTable f = parse_option_text(flat, "ctx");
+  REQUIRE(f.entries.size() == 40000);
+  const OptionTable n = parse_option_text(nested, "ctx");
+  REQUIRE(n.entries.size() == 1);
+  const OptionTable& t = *n.entries[0].second.table;
+  REQUIRE(t.entries.size() == 40000);
+  for (int i = 0; i < 40000; i += 997) {
+    CHECK(f.entries[i].first == fmt::format("k{}", i));
+    CHECK(f.entries[i].second.number == i);
+    CHECK(t.entries[i].first == fmt::format("k{}", i));
+    CHECK(t.entries[i].second.number == i);
+  }
+}
