@@ -3,7 +3,7 @@
 // the descriptor/entry point built from a ReaderSpec (reader_entry.cpp).
 #pragma once
 
-#include "wrc_reader.h"
+#include "wrc/reader.h"
 
 #include <fmt/format.h>
 

@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   lua_getglobal(L, "bench_ws");
   const auto lws = wrc::lua::check_wheelset(L, -1, "bench");
   const auto geometry = lws->geometry_ptr();
-  const wrc::contact::Material material = lws->contact_model().material();
+  const wrc::halfspace::Material material = lws->contact_model().material();
   fmt::print("S1002 / 60E1, strategy '{}', cant 1/40; the left wheel at ~100 kN vertical; CPU ms per pose (best of {})\n",
              geometry->strategy.name, reps);
 

@@ -1,7 +1,7 @@
 // Cost of FFTW's transforms per length, as the normal solver's FFT products run them (PrunedFft: real row transforms
 // r2c + c2r, one plan run on each row, and batched complex column transforms forward + backward, strided across the
 // columns; FFTW_ESTIMATE plans). Prints one line per length: the length, ns per row (both directions), ns per column (both
-// directions), in the form of the table kLengthCosts in engine/src/contact/convolution.cpp, which chooses the
+// directions), in the form of the table kLengthCosts in engine/src/halfspace/convolution.cpp, which chooses the
 // periodic sizes of the FFT products by these costs.
 //
 // FFTW's speed is far from smooth in the length: lengths with a direct SIMD codelet (up to 16, 20, 25, 32, 64, 128)

@@ -2,10 +2,10 @@
 // vs fast in the same run, CG iteration counts, what the preconditioner and the nested start gain, the FFT
 // library choice, and the Hertz convergence table. Times are CPU time of the calling thread (one core),
 // best of several repetitions (the machine is shared); `quick` as first argument runs a shorter version.
-#include "contact/hertz_reference.hpp"
-#include "contact/normal_cases.hpp"
-#include "wrc/contact/convolution.hpp"
-#include "wrc/contact/normal.hpp"
+#include "halfspace/hertz_reference.hpp"
+#include "halfspace/normal_cases.hpp"
+#include "wrc/halfspace/convolution.hpp"
+#include "wrc/halfspace/normal.hpp"
 
 #include <fftw3.h>
 #include <fmt/format.h>
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-using namespace wrc::contact;
+using namespace wrc::halfspace;
 using namespace wrc::test;
 
 namespace {

@@ -303,7 +303,7 @@ int main(int argc, char** argv) {
         const HuntingStep h = hunting(k);
         wrc::RollingRequest rolling;
         rolling.kinematics = wrc::Kinematics{kHuntingSpeed, std::nullopt, h.vy, h.yaw_rate};
-        rolling.friction = wrc::contact::Friction::coulomb(0.3);
+        rolling.friction = wrc::halfspace::Friction::coulomb(0.3);
         rolling.method = wrc::RollingMethod::fastsim;
         const double z = wrc::interpolate(ty, tz, h.y), roll = wrc::interpolate(ty, troll, h.y);
         const double c0 = thread_cpu();

@@ -1,4 +1,4 @@
-// Benchmark and convergence study of the tangential solvers (contact/rolling.hpp):
+// Benchmark and convergence study of the tangential solvers (halfspace/rolling.hpp):
 //   1. the S1002 / 60E1 contact area at y = 0 (the paper's wheelset under 200 kN, 0.2 mm elements): the normal solve
 //      of that area, the exact steady-rolling solve and FASTSIM on the same grid, at 100 km/h (pure rolling at the
 //      nominal radius: the creepages of the wide patch) and braking (xi = 2e-3 more, partial slip);
@@ -13,12 +13,12 @@
 //   bench_rolling [reps=7] [quick] [only=1..5]   (only: that section)
 //
 // Times are CPU time of the calling thread (one core), the median of `reps` runs (the machine is shared).
-#include "contact/rolling_cases.hpp"
+#include "halfspace/rolling_cases.hpp"
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/wheelset_binding.hpp"
-#include "wrc/contact/normal.hpp"
-#include "wrc/contact/rolling.hpp"
+#include "wrc/halfspace/normal.hpp"
+#include "wrc/halfspace/rolling.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
 #include <fmt/format.h>
@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-using namespace wrc::contact;
+using namespace wrc::halfspace;
 
 namespace {
 

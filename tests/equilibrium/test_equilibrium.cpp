@@ -37,7 +37,7 @@ const ContactModel& synthetic_model() {
   static const ContactModel model = [] {
     ContactOptions o;
     o.element = 0.5e-3;  // coarse: fast tests; the physics does not change
-    return ContactModel(synthetic_geometry(), contact::Material{2.1e11, 0.3}, o);
+    return ContactModel(synthetic_geometry(), halfspace::Material{2.1e11, 0.3}, o);
   }();
   return model;
 }
@@ -287,7 +287,7 @@ TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on"
   g->strategy.make_search = [] { return std::make_unique<NativeSearch>(NativePlan{}); };
   ContactOptions co;
   co.element = 1e-3;
-  const ContactModel model(g, contact::Material{2.1e11, 0.3}, co);
+  const ContactModel model(g, halfspace::Material{2.1e11, 0.3}, co);
   SweepOptions o;
   o.threads = 1;
   o.Q = kQ;

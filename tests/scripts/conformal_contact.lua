@@ -1,6 +1,6 @@
 -- Conformal contact areas (surface = "conformal", wrc/wheelset/conformal.hpp):
 --  1. The flat limit: a nearly flat curved patch (a cylindrical wheel on a crowned rail, transverse radius 90 and
---     450 mm, 100 kN) gives the Hertz solution (elliptic integrals, tests/contact/hertz_reference.lua) and the
+--     450 mm, 100 kN) gives the Hertz solution (elliptic integrals, tests/halfspace/hertz_reference.lua) and the
 --     planar solution of the same pose: the surface (midway between the flat wheel and the crown) turns by at most
 --     0.05 rad across these patches.
 --  2. The results follow from the grids: on S1002/60E1 at the flange root (y = 6.3 mm, where one area turns through
@@ -15,7 +15,7 @@
 --     conformal_persson.lua and equilibrium_jacobian.lua).
 local check = require "wrc.check"
 local here = arg[0]:match("(.*/)") or "./"
-local H = dofile(here .. "../contact/hertz_reference.lua")
+local H = dofile(here .. "../halfspace/hertz_reference.lua")
 
 local E, nu = 2.1e11, 0.3
 local Estar = E / (2 * (1 - nu * nu))

@@ -1,6 +1,6 @@
 -- Hertz through the whole pipeline (issue 5): real profile pairs built with wrc.profile.points, located, turned
 -- into a contact plane and h by the engine, solved, and compared with the analytic Hertz solution computed here
--- (tests/contact/hertz_reference.lua: elliptic integrals by the AGM, the axis ratio by bisection).
+-- (tests/halfspace/hertz_reference.lua: elliptic integrals by the AGM, the axis ratio by bisection).
 --
 -- The pair: a cylindrical wheel (flat profile, radius r0) on a crowned rail (a circular arc of transverse radius
 -- R, cant 0). Relative curvatures: A = 1/(2 r0) along the track, B = 1/(2 R) across; R = r0 / q gives B/A = q.
@@ -14,7 +14,7 @@
 -- line_step=5e-6 for rail lines finer than those elements, q=5 for one curvature ratio.
 local check = require "wrc.check"
 local here = arg[0]:match("(.*/)") or "./"
-local H = dofile(here .. "../contact/hertz_reference.lua")
+local H = dofile(here .. "../halfspace/hertz_reference.lua")
 local C = dofile(here .. "contact_helpers.lua")
 
 local levels = math.tointeger(tonumber(arg.levels or 4))

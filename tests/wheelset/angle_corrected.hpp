@@ -1,12 +1,12 @@
 // A conformal area (wrc/wheelset/conformal.hpp) solved with half-space coefficients corrected for the turning of the
 // surface, for tests and benchmarks: D_kl (n_k . n_l) instead of D_kl. A half-space pushes the far field of an
 // element's pressure along that element's own normal; a body's far field is a translation, of which an element
-// whose normal is turned by a sees cos(a). (Persson's exact kernel, tests/contact/persson_reference.hpp, has this
+// whose normal is turned by a sees cos(a). (Persson's exact kernel, tests/halfspace/persson_reference.hpp, has this
 // cos factor on its log term.) With n = (0, n_y, n_z) per row, K p = f (n_y o I (n_y o p) + n_z o I (n_z o p)),
 // f = 1/(pi E*): two convolutions per product, symmetric positive definite.
 #pragma once
 
-#include "wrc/contact/convolution.hpp"
+#include "wrc/halfspace/convolution.hpp"
 #include "wrc/wheelset/contact.hpp"
 
 #include <algorithm>
@@ -20,19 +20,19 @@ namespace wrc::test {
 // the same grid and h: an active set (drop negative pressures, add penetrated elements) started from the engine's
 // contact set, preconditioned CG inside (the grid's periodic circulant inverse of I, as the engine's solver).
 inline std::vector<double> angle_corrected(const ContactModel& model, const PatchContact& pc) {
-  const contact::Grid& g = pc.solution.grid;
+  const halfspace::Grid& g = pc.solution.grid;
   const ConformalSurface& surf = *pc.conformal;
   const int n = g.size();
   const double f = model.material().pair_compliance();
   const auto linear = model.solver().cache().get(g);
-  const auto periodic = model.solver().cache().get(g, contact::InfluenceSpectrum::Kind::periodic);
-  contact::ConvolutionWorkspace ws;
+  const auto periodic = model.solver().cache().get(g, halfspace::InfluenceSpectrum::Kind::periodic);
+  halfspace::ConvolutionWorkspace ws;
   std::vector<double> ny(n), nz(n), a(n), b(n);
   for (int k = 0; k < n; ++k) ny[k] = surf.normal_y[k / g.nx], nz[k] = surf.normal_z[k / g.nx];
   auto K = [&](const std::vector<double>& x, std::vector<double>& y) {
     for (int k = 0; k < n; ++k) a[k] = ny[k] * x[k], b[k] = nz[k] * x[k];
-    contact::convolve(*linear, g, a.data(), a.data(), ws, f);
-    contact::convolve(*linear, g, b.data(), b.data(), ws, f);
+    halfspace::convolve(*linear, g, a.data(), a.data(), ws, f);
+    halfspace::convolve(*linear, g, b.data(), b.data(), ws, f);
     y.resize(n);
     for (int k = 0; k < n; ++k) y[k] = ny[k] * a[k] + nz[k] * b[k];
   };
@@ -44,7 +44,7 @@ inline std::vector<double> angle_corrected(const ContactModel& model, const Patc
     K(p, Kp);
     for (int k = 0; k < n; ++k) r[k] = active[k] ? pc.h[k] - Kp[k] : 0.0;
     auto precondition = [&] {
-      contact::deconvolve(*periodic, g, r.data(), z.data(), ws, 1 / f);
+      halfspace::deconvolve(*periodic, g, r.data(), z.data(), ws, 1 / f);
       for (int k = 0; k < n; ++k) z[k] = active[k] ? z[k] : 0.0;
     };
     precondition();

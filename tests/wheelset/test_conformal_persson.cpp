@@ -1,5 +1,5 @@
 // The conformal surface against Persson's problem (issue 15): a cylinder in a cylindrical seat of slightly larger
-// radius, the two-dimensional conformal contact with a known solution (tests/contact/persson_reference.hpp: exact
+// radius, the two-dimensional conformal contact with a known solution (tests/halfspace/persson_reference.hpp: exact
 // plane-strain elasticity of the pin and the plate, independent of the engine).
 //
 // Made with the wheelset engine: the wheel's profile is a circular arc of radius R = 1 mm (the pin's section), the
@@ -20,7 +20,7 @@
 //    cos factor on its log term), solved here by an active-set conjugate gradient with FFT products: it must match
 //    Persson's semi-angle within 6 % and the pressure across within 8 % of its peak up to 45 deg -- which checks the
 //    conformal geometry itself (surface, h along the normals, rows, forces), apart from the coefficients.
-#include "contact/persson_reference.hpp"
+#include "halfspace/persson_reference.hpp"
 #include "wheelset/angle_corrected.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 
@@ -84,7 +84,7 @@ struct Strip {
 // A planar area: its plane is horizontal here (the pose is symmetric), row j at v_j across, at the seat's angle
 // asin(v_j / (R + dR)), pushing vertically.
 Strip strip(const PatchContact& pc, const std::vector<double>& pressure) {
-  const contact::Grid& g = pc.solution.grid;
+  const halfspace::Grid& g = pc.solution.grid;
   REQUIRE(std::abs(pc.origin.x()) < 1e-9);  // the pose is symmetric: the grid's origin at x = 0
   const int i0 = static_cast<int>(std::lround(-g.x0 / g.dx));
   Strip s;

@@ -12,8 +12,8 @@ using namespace wrc;
 
 namespace {
 
-int flood_fill_regions(const contact::NormalSolution& s) {
-  const contact::Grid& g = s.grid;
+int flood_fill_regions(const halfspace::NormalSolution& s) {
+  const halfspace::Grid& g = s.grid;
   std::vector<int> seen(static_cast<std::size_t>(g.size()), 0);
   int regions = 0;
   for (int k = 0; k < g.size(); ++k) {
@@ -45,9 +45,9 @@ TEST_CASE("contact_regions = an 8-connected flood fill with the force share, on 
   std::uniform_real_distribution<double> U(0, 1);
   int several = 0, small_dropped = 0;
   for (int t = 0; t < 400; ++t) {
-    contact::NormalSolution s;
-    s.grid = contact::Grid::square(1 + static_cast<int>(U(rng) * 40), 1 + static_cast<int>(U(rng) * 40), 0.2e-3);
-    const contact::Grid& g = s.grid;
+    halfspace::NormalSolution s;
+    s.grid = halfspace::Grid::square(1 + static_cast<int>(U(rng) * 40), 1 + static_cast<int>(U(rng) * 40), 0.2e-3);
+    const halfspace::Grid& g = s.grid;
     s.pressure.assign(static_cast<std::size_t>(g.size()), 0.0);
     const double density = U(rng) * 0.6;
     for (int k = 0; k < g.size(); ++k)
@@ -59,7 +59,7 @@ TEST_CASE("contact_regions = an 8-connected flood fill with the force share, on 
     CHECK(contact_detail::contact_regions(s) == expected);
     several += expected > 1;
     int all = 0;  // regions without the force share
-    contact::NormalSolution any = s;
+    halfspace::NormalSolution any = s;
     any.force = 1e-300;
     all = flood_fill_regions(any);
     small_dropped += all > expected;

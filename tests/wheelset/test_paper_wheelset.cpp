@@ -145,8 +145,8 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
       fc.vertical_force = F;
       const ContactResult c = evaluate_contact(model, {y, w.z, 0.0, 0.0}, ws, fc);
       REQUIRE(c.wheel[kLeft].patches.size() == 1);
-      const contact::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
-      REQUIRE(s.load.control == contact::NormalLoad::Control::force);
+      const halfspace::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
+      REQUIRE(s.load.control == halfspace::NormalLoad::Control::force);
       CHECK(c.wheel[kLeft].force.z() == doctest::Approx(F).epsilon(1e-9));
       return s.approach;
     };
@@ -212,7 +212,7 @@ TEST_CASE("conformal grids: the elements lie on the rail's fixed lattice, mirror
           CAPTURE(dz);
           CAPTURE(side);
           REQUIRE(pc.conformal);
-          const contact::Grid& g = pc.solution.grid;
+          const halfspace::Grid& g = pc.solution.grid;
           const double s_lattice = model.rail_lattice_origin(side);
           for (int i : {0, g.nx - 1}) CHECK(on_lattice(pc.conformal->x0 + g.x(i)));
           for (int j : {0, g.ny / 2, g.ny - 1}) CHECK(on_lattice(pc.conformal->s0 + g.y(j) - s_lattice));
@@ -248,7 +248,7 @@ TEST_CASE("warm starts: the same pose needs no CG iteration, a nearby pose few, 
     const Pose pose{3e-3, -0.1e-3, 0.164e-3, 0.002}, near{3.0002e-3, -0.10005e-3, 0.164e-3, 0.002};
     auto iterations = [](const ContactResult& c) {
       REQUIRE(c.wheel[kLeft].patches.size() == 1);
-      const contact::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
+      const halfspace::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
       return s.iterations + s.coarse_iterations;
     };
     const ContactResult first = evaluate_contact(model, pose, *work, left);

@@ -556,7 +556,7 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   auto predict = [&](double& a, double tol, bool estimate = false) {
     evaluate(a, tol, Fz, estimate);
     const auto& patches = cur.wheel[side].patches;
-    if (patches.size() != 1 || patches[0].solution.load.control != contact::NormalLoad::Control::force) return false;
+    if (patches.size() != 1 || patches[0].solution.load.control != halfspace::NormalLoad::Control::force) return false;
     const double next = a + patches[0].solution.approach;
     if (!(next > 0)) return false;
     a = std::min(next, opt.max_penetration);

@@ -3,7 +3,7 @@
 
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
-#include "wrc_reader.h"
+#include "wrc/reader.h"
 
 #include "plugin_file.hpp"
 
@@ -210,7 +210,7 @@ std::optional<std::string> ReaderRegistry::load_plugin(const std::string& librar
   if (!d) return reject("the entry point returned no descriptor (the plugin declined to load)");
   if (d->abi_major != WRC_READER_ABI_MAJOR)
     return reject(fmt::format("reader ABI version {}.{}, but this host implements {}.{} (major versions must match); "
-                              "rebuild the plugin against this wrc's plugins/wrc_reader.h",
+                              "rebuild the plugin against this wrc's wrc/reader.h",
                               d->abi_major, d->abi_minor, WRC_READER_ABI_MAJOR, WRC_READER_ABI_MINOR));
   if (d->struct_size < sizeof(wrc_reader_descriptor))
     return reject(fmt::format("descriptor struct_size {} is smaller than the {} bytes of ABI {}.{}", d->struct_size,

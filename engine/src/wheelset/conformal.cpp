@@ -57,7 +57,7 @@ Eigen::Vector2d surface_origin(const std::vector<SegmentInfo>& all, const std::v
 // previous pressures on the same points, and a deeper pose on the same lattice differs from the shallower one only by
 // h (what the fixed-surface sensitivities and ws:wheel's predictions assume). Anchored at a moving origin instead,
 // the elements would slide with the pose.
-contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all,
+halfspace::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all,
                            const std::vector<double>& S_of_segment, const Eigen::Vector2d& o, double s_lattice,
                            int side, const Pose& pose) {
   double xmin = INFINITY, xmax = -INFINITY, smin = INFINITY, smax = -INFINITY;
@@ -68,7 +68,7 @@ contact::Grid surface_grid(const ContactOptions& opt, const std::vector<SegmentI
     smax = std::max(smax, S_of_segment[k]);
   }
   const double e = opt.element;
-  contact::Grid grid = span_grid(opt, index_span(xmin, xmax, e, opt.margin),
+  halfspace::Grid grid = span_grid(opt, index_span(xmin, xmax, e, opt.margin),
                                  index_span(smin - s_lattice, smax - s_lattice, e, opt.margin), all, side, pose);
   grid.x0 = grid.x0 - o.x();
   grid.y0 = grid.y0 + s_lattice - o.y();
@@ -146,7 +146,7 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
 
 // Rows of the grid on the lines: per row its point, normal, dh/dz and the h of its elements (linear in s between the
 // two lines bracketing the row; the nearest line's beyond the rail's ends).
-void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, const Eigen::Vector2d& o,
+void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid, const Eigen::Vector2d& o,
               ConformalSurface& surf, std::vector<double>& deepening, std::vector<double>& h) {
   const int ny = grid.ny;
   surf.y.resize(static_cast<std::size_t>(ny));
@@ -191,7 +191,7 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const contact::Grid& grid, 
 }
 
 // Per row of a pressure (or pressure response) field: its integral sum p dA and first moment sum p x dA (x: track x).
-void row_sums(const contact::Grid& grid, const std::vector<double>& p, double x0, std::vector<double>& P,
+void row_sums(const halfspace::Grid& grid, const std::vector<double>& p, double x0, std::vector<double>& P,
               std::vector<double>& Q) {
   P.assign(static_cast<std::size_t>(grid.ny), 0.0);
   Q.assign(static_cast<std::size_t>(grid.ny), 0.0);
@@ -224,7 +224,7 @@ void row_wrench(const ConformalSurface& surf, const std::vector<double>& P, cons
 }
 
 // The surface point at arc coordinate s (grid y) between the rows.
-Eigen::Vector3d surface_point(const ConformalSurface& surf, const contact::Grid& grid, double x, double s) {
+Eigen::Vector3d surface_point(const ConformalSurface& surf, const halfspace::Grid& grid, double x, double s) {
   const double f = std::clamp((s - grid.y0) / grid.dy, 0.0, static_cast<double>(grid.ny - 1));
   const int j = std::min(static_cast<int>(f), std::max(0, grid.ny - 2));
   const int k = std::min(j + 1, grid.ny - 1);
@@ -235,7 +235,7 @@ Eigen::Vector3d surface_point(const ConformalSurface& surf, const contact::Grid&
 
 // Forces, moment, directions and measures of a solved conformal area.
 void conformal_results(const WheelCones& wheel, const PoseFrame& f, PatchContact& pc) {
-  const contact::NormalSolution& sol = pc.solution;
+  const halfspace::NormalSolution& sol = pc.solution;
   ConformalSurface& surf = *pc.conformal;
   pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
   pc.regions = contact_regions(sol);
@@ -274,7 +274,7 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
   pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
   pc.conformal.emplace();
   ConformalSurface& surf = *pc.conformal;
-  contact::Grid grid;
+  halfspace::Grid grid;
   Plane pl;  // the area in unrolled coordinates (x, s, 0): the warm-start helpers' plane
   std::vector<double> deepening;  // per row, dh/dz
   {
@@ -318,12 +318,12 @@ PatchContact solve_conformal_area(const ContactModel& model, const LocationState
 // response on the contact set gives each row's dP and dQ, whose wrench (row_wrench) is the response; the moment
 // about the centre also changes because the centre moves with z: - e_z x F.
 void conformal_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
-  const contact::NormalSolution& sol = pc.solution;
+  const halfspace::NormalSolution& sol = pc.solution;
   const ConformalSurface& surf = *pc.conformal;
   pc.sensitivity.setZero();
   if (!(sol.force > 0)) return;
   if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
-  const contact::Grid& grid = sol.grid;
+  const halfspace::Grid& grid = sol.grid;
   const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
   std::vector<double> dh(static_cast<std::size_t>(grid.size())), P, Q;
   for (int col = 0; col < 2; ++col) {
@@ -336,8 +336,8 @@ void conformal_sensitivity(const ContactModel& model, const Pose& pose, PatchCon
         dh[static_cast<std::size_t>(grid.index(i, j))] = -(k0 + k1 * (surf.x0 + grid.x(i)));
     }
     // A Jacobian for Newton steps needs a few digits (as the planar path's).
-    const contact::NormalResponse r = model.options().dense
-                                          ? contact::normal_response_dense(model.material(), sol, dh)
+    const halfspace::NormalResponse r = model.options().dense
+                                          ? halfspace::normal_response_dense(model.material(), sol, dh)
                                           : model.solver().response(sol, dh, ws.normal, 1e-2);
     row_sums(grid, r.pressure, surf.x0, P, Q);
     Eigen::Vector3d dF, dM;
@@ -352,7 +352,7 @@ void conformal_sensitivity(const ContactModel& model, const Pose& pose, PatchCon
 // elements) and, with the grids, the contact angle of every element.
 void describe_conformal(const PatchContact& pc, FieldSink& out) {
   const ConformalSurface& surf = *pc.conformal;
-  const contact::Grid& grid = pc.solution.grid;
+  const halfspace::Grid& grid = pc.solution.grid;
   std::vector<double> s(static_cast<std::size_t>(surf.rows())), angle(s.size());
   for (int j = 0; j < surf.rows(); ++j) {
     s[static_cast<std::size_t>(j)] = surf.s0 + grid.y(j);

@@ -2,9 +2,9 @@
 #include "wrc/wheelset/contact.hpp"
 
 #include "contact_internal.hpp"
-#include "rolling_step.hpp"
+#include "tangential_step.hpp"
 
-#include "wrc/contact/interaction.hpp"
+#include "wrc/halfspace/interaction.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/core/union_find.hpp"
@@ -40,7 +40,7 @@ double nearest_arc(const RailLines& rail, const std::vector<double>& S, const Ei
 
 }  // namespace
 
-ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
+ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const halfspace::Material& material,
                            const ContactOptions& options)
     : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
   if (!geometry_) fail("contact model: no geometry");
@@ -57,7 +57,7 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     if (geometry_->track)
       rail_lattice_[static_cast<std::size_t>(s)] = nearest_arc(rail, S, geometry_->track->place[s].rail(0.0, 0.0));
   }
-  contact::validate(material, "contact model");
+  halfspace::validate(material, "contact model");
   if (!(options.element >= kElementMin && options.element <= kElementMax))
     fail("contact model: the element size grid = {:.6g} m must be in [{}, {}] m ({} um .. {} mm)", options.element,
          kElementMin, kElementMax, kElementMin * 1e6, kElementMax * 1e3);
@@ -162,12 +162,12 @@ Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) 
 }
 
 // Footprint of a patch for the interaction criterion, in the frame of `ref`.
-contact::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const Plane& own, const Plane& ref,
+halfspace::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const Plane& own, const Plane& ref,
                                   double element) {
   const auto [umin, umax, vmin, vmax] = projected_bounds(infos, own);
   double depth = 0;
   for (const auto& s : infos) depth = std::max(depth, s.sagitta);
-  contact::PatchFootprint fp;
+  halfspace::PatchFootprint fp;
   const Eigen::Vector3d c = own.O - ref.O;
   fp.x = c.dot(ref.t1);
   fp.y = c.dot(ref.t2);
@@ -184,11 +184,11 @@ contact::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const P
 // order for the elastic stiffness, which dominates while the contact does not slide along a curved profile.
 void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
   if (pc.conformal) return conformal_sensitivity(model, pose, pc, ws);
-  const contact::NormalSolution& sol = pc.solution;
+  const halfspace::NormalSolution& sol = pc.solution;
   pc.sensitivity.setZero();
   if (!(sol.force > 0)) return;
   if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
-  const contact::Grid& grid = sol.grid;
+  const halfspace::Grid& grid = sol.grid;
   const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
   const Eigen::Vector3d& n = pc.normal;
   const Eigen::Vector3d oc = (pc.origin - c).cross(n), t1n = pc.t1.cross(n), t2n = pc.t2.cross(n);
@@ -199,8 +199,8 @@ void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact&
       for (int i = 0; i < grid.nx; ++i)
         dh[static_cast<std::size_t>(grid.index(i, j))] = col == 0 ? -n.z() : -(k0 + ku * grid.x(i) + kv * grid.y(j));
     // A Jacobian for Newton steps needs a few digits: at 1e-2 the response agrees with a 1e-8 one to ~1e-5.
-    const contact::NormalResponse r = model.options().dense
-                                          ? contact::normal_response_dense(model.material(), sol, dh)
+    const halfspace::NormalResponse r = model.options().dense
+                                          ? halfspace::normal_response_dense(model.material(), sol, dh)
                                           : model.solver().response(sol, dh, ws.normal, 1e-2);
     Eigen::Vector3d dM = oc * r.force + t1n * r.moment_x + t2n * r.moment_y;
     if (col == 0) dM -= Eigen::Vector3d::UnitZ().cross(n) * sol.force;  // the centre moves with z
@@ -212,8 +212,8 @@ void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact&
 // Separate contact regions of a solution: 8-connected components of {p > 0} carrying >= 0.1 % of the force. The
 // contact is cut into runs (maximal intervals of a row in contact); runs of neighbouring rows whose columns touch or
 // overlap diagonally are one region.
-int contact_regions(const contact::NormalSolution& sol) {
-  const contact::Grid& g = sol.grid;
+int contact_regions(const halfspace::NormalSolution& sol) {
+  const halfspace::Grid& g = sol.grid;
   if (sol.pressure.empty() || !(sol.force > 0)) return 0;
   struct Run {
     int i0, i1;    // columns
@@ -275,7 +275,7 @@ struct OldGridMap {
   const ContactWorkspace::Previous* old;
   double u0, ux, uy, v0, vx, vy;
   OldGridMap(const ContactWorkspace::Previous& p, const Plane& pl) : old(&p) {
-    const contact::Grid& g = p.grid;
+    const halfspace::Grid& g = p.grid;
     const Eigen::Vector3d d = pl.O - p.origin;
     u0 = (d.dot(p.t1) - g.x0) / g.dx, ux = pl.t1.dot(p.t1) / g.dx, uy = pl.t2.dot(p.t1) / g.dx;
     v0 = (d.dot(p.t2) - g.y0) / g.dy, vx = pl.t1.dot(p.t2) / g.dy, vy = pl.t2.dot(p.t2) / g.dy;
@@ -284,7 +284,7 @@ struct OldGridMap {
   // contact: interpolation alone smears the contact edge outward, and each element started in contact that is not
   // costs the CG a clipping step (as prolong does).
   std::optional<double> pressure_at(double x, double y) const {
-    const contact::Grid& g = old->grid;
+    const halfspace::Grid& g = old->grid;
     const double fu = u0 + ux * x + uy * y, fv = v0 + vx * x + vy * y;
     const int iu = static_cast<int>(std::floor(fu)), iv = static_cast<int>(std::floor(fv));
     if (iu < 0 || iv < 0 || iu + 1 >= g.nx || iv + 1 >= g.ny) return std::nullopt;
@@ -298,8 +298,8 @@ struct OldGridMap {
   // every element sits at one fractional offset (a, b) from the old elements: constant weights, row by row.
   // u_out (optional): the old displacements on the new grid where the new elements are old ones (the grids shifted by
   // whole elements, the conformal path's lattice), NaN elsewhere; all NaN otherwise.
-  void fill(const contact::Grid& grid, double* out, std::vector<double>* u_out = nullptr) const {
-    const contact::Grid& g = old->grid;
+  void fill(const halfspace::Grid& grid, double* out, std::vector<double>* u_out = nullptr) const {
+    const halfspace::Grid& g = old->grid;
     const bool shifted = uy == 0 && vx == 0 && std::abs(ux * grid.dx - 1) < 1e-12 && std::abs(vy * grid.dy - 1) < 1e-12;
     if (u_out) u_out->assign(static_cast<std::size_t>(grid.size()), NAN);
     if (!shifted) {
@@ -330,8 +330,8 @@ struct OldGridMap {
   }
   // The old displacements at whole-element offsets (fu, fv: the new element (0, 0) in old element units), when
   // within 1e-9 of whole: the pressures' copies then match them (to that fraction).
-  void shift_displacement(const contact::Grid& grid, double fu, double fv, std::vector<double>* u_out) const {
-    const contact::Grid& g = old->grid;
+  void shift_displacement(const halfspace::Grid& grid, double fu, double fv, std::vector<double>* u_out) const {
+    const halfspace::Grid& g = old->grid;
     const double ru = std::round(fu), rv = std::round(fv);
     if (old->displacement.size() != static_cast<std::size_t>(g.size()) || std::abs(fu - ru) > 1e-9 ||
         std::abs(fv - rv) > 1e-9)
@@ -353,7 +353,7 @@ struct OldGridMap {
 // contact and the workspace extrapolates. Without extrapolation, on a grid that is the old one shifted by whole
 // elements and carries all of the old pressure, also the old displacements (NaN where the grids do not overlap;
 // else empty). False when there is no old area (or warm starts are off).
-bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const contact::Grid& grid,
+bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const halfspace::Grid& grid,
                 std::vector<double>& start, std::vector<double>& displacement) {
   const auto* last = ws.warm_start ? previous_area(ws.previous[side], pl) : nullptr;
   if (!last) return false;
@@ -384,9 +384,9 @@ bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const con
 // order; on a plane n_z itself; on the curved surface the z part of the wheel's normal, along which h is measured,
 // up to a few per mille from the row's bisector normal at the flange root): the solution is the pose's penetration
 // problem with h + a deepening, a the multiplier. Rows less upright than kVerticalWeightMin: the penetration.
-contact::NormalLoad area_load(const ContactRequest& request, const contact::Grid& grid,
+halfspace::NormalLoad area_load(const ContactRequest& request, const halfspace::Grid& grid,
                               const std::vector<double>& vertical, const std::vector<double>& deepening) {
-  if (!request.vertical_force) return contact::NormalLoad::penetration();
+  if (!request.vertical_force) return halfspace::NormalLoad::penetration();
   // Per element, its row's value (gap weights only where the deepening differs from the weights: the curved surface).
   const bool own_gap = deepening != vertical;
   auto per_element = [&](const std::vector<double>& rows) {
@@ -397,21 +397,21 @@ contact::NormalLoad area_load(const ContactRequest& request, const contact::Grid
   for (int j = 0; j < grid.ny; ++j)
     if (!(vertical[static_cast<std::size_t>(j)] >= kVerticalWeightMin) ||
         !(deepening[static_cast<std::size_t>(j)] >= kVerticalWeightMin))
-      return contact::NormalLoad::penetration();
-  contact::NormalLoad load = contact::NormalLoad::normal_force(*request.vertical_force, per_element(vertical));
+      return halfspace::NormalLoad::penetration();
+  halfspace::NormalLoad load = halfspace::NormalLoad::normal_force(*request.vertical_force, per_element(vertical));
   if (own_gap) load.gap_weights = per_element(deepening);
   return load;
 }
 
 }  // namespace
 
-contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
-                                          const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
+halfspace::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
+                                          const Plane& pl, const halfspace::Grid& grid, const std::vector<double>& h,
                                           const std::vector<double>& vertical, const std::vector<double>& deepening,
                                           ContactWorkspace& ws) {
   PhaseTimer t(ws, ws.times.solve);
   const ContactOptions& opt = model.options();
-  contact::NormalOptions nopt = opt.normal;
+  halfspace::NormalOptions nopt = opt.normal;
   if (request.tolerance > 0) nopt.tolerance = request.tolerance;
   nopt.estimate = request.estimate;
   std::vector<double> start, displacement;
@@ -419,8 +419,8 @@ contact::NormalSolution solve_area_normal(const ContactModel& model, const Conta
     nopt.initial_pressure = start;
     nopt.initial_displacement = displacement;
   }
-  const contact::NormalLoad load = area_load(request, grid, vertical, deepening);
-  return opt.dense ? contact::solve_normal_dense(model.material(), grid, h, load, nopt)
+  const halfspace::NormalLoad load = area_load(request, grid, vertical, deepening);
+  return opt.dense ? halfspace::solve_normal_dense(model.material(), grid, h, load, nopt)
                    : model.solver().solve(grid, h, load, ws.normal, nopt);
 }
 
@@ -443,10 +443,10 @@ contact::NormalSolution solve_area_normal(const ContactModel& model, const Conta
        "element) or use a coarser grid", area, opt.element * 1e3, kBytesPerElement);
 }
 
-contact::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
+halfspace::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
                         const std::vector<SegmentInfo>& all, int side, const Pose& pose) {
   if (!(x.count * y.count <= opt.max_elements)) too_many_elements(opt, all, side, pose, x.count, y.count);
-  contact::Grid grid;
+  halfspace::Grid grid;
   grid.nx = static_cast<int>(x.count);  // each at most max_elements (an int) now
   grid.ny = static_cast<int>(y.count);
   grid.dx = grid.dy = opt.element;
@@ -456,7 +456,7 @@ contact::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const Ind
 }
 
 // The potential contact area: a grid aligned with the plane origin covering the projected segments plus the margin.
-contact::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all, const Plane& pl, int side,
+halfspace::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo>& all, const Plane& pl, int side,
                         const Pose& pose) {
   const auto [umin, umax, vmin, vmax] = projected_bounds(all, pl);
   return span_grid(opt, index_span(umin, umax, opt.element, opt.margin), index_span(vmin, vmax, opt.element, opt.margin),
@@ -466,7 +466,7 @@ contact::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentInfo
 // The rail lines across the grid's lateral range (one beyond each side when the rail has it), projected on the
 // plane and ordered across it, each with its h(x): the arcs of its segments, or the arc through its deepest point.
 std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationState& st, int side,
-                                       const std::vector<SegmentInfo>& all, const Plane& pl, const contact::Grid& grid) {
+                                       const std::vector<SegmentInfo>& all, const Plane& pl, const halfspace::Grid& grid) {
   const WheelCones& wheel = g.side[side].wheel;
   const RailLines& rail = g.side[side].rail;
   int rmin = rail.count(), rmax = -1;
@@ -502,7 +502,7 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
 
 // h at the element centres: along each projected line its arcs, linear in v between the two lines bracketing
 // the element.
-std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, const Plane& pl, const contact::Grid& grid) {
+std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, const Plane& pl, const halfspace::Grid& grid) {
   std::vector<double> vs(lines.size());
   for (std::size_t k = 0; k < lines.size(); ++k) vs[k] = lines[k].v;
   const double t1x = pl.t1.x();  // u = x t1x + u0 along a line
@@ -543,7 +543,7 @@ void copy_located(const LocationState& st, int side, const std::vector<int>& gro
 
 // Forces, moments and the measures of a solved area.
 void area_results(const WheelCones& wheel, const PoseFrame& f, PatchContact& pc) {
-  const contact::NormalSolution& sol = pc.solution;
+  const halfspace::NormalSolution& sol = pc.solution;
   pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
   pc.regions = contact_regions(sol);
   const Eigen::Vector3d c(0, f.y, f.z);
@@ -573,7 +573,7 @@ PatchContact solve_area(const ContactModel& model, const LocationState& st, int 
 
   PatchContact pc;
   pc.side = side;
-  contact::Grid grid;
+  halfspace::Grid grid;
   {
     PhaseTimer t(ws, ws.times.geometry);
     pc.origin = pl.O;
@@ -617,7 +617,7 @@ std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::
       if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > opt.merge_angle) continue;
       const auto fa = footprint(infos[a], planes[a], planes[a], opt.element);
       const auto fb = footprint(infos[b], planes[b], planes[a], opt.element);
-      if (contact::patches_interact(model.material(), fa, fb, opt.merge_tolerance)) sets.unite(a, b);
+      if (halfspace::patches_interact(model.material(), fa, fb, opt.merge_tolerance)) sets.unite(a, b);
     }
   std::map<int, std::vector<int>> groups;
   for (int p = 0; p < np; ++p) groups[sets.find(p)].push_back(p);
@@ -814,7 +814,7 @@ void describe(const PatchContact& pc, FieldSink& out) {
     out.end();
   }
   out.end();
-  const contact::NormalSolution& s = pc.solution;
+  const halfspace::NormalSolution& s = pc.solution;
   out.integer("merged", static_cast<long long>(pc.located.size()));
   out.number("normal_force", pc.normal_force);
   out.number("pressure_integral", s.force);  // sum p dA: the normal force, or more where the normals turn

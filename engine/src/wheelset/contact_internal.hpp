@@ -86,14 +86,14 @@ struct LineProfile {
 };
 
 // Separate contact regions of a solution (8-connected, each >= 0.1 % of the force).
-int contact_regions(const contact::NormalSolution& sol);
+int contact_regions(const halfspace::NormalSolution& sol);
 // The normal problem of one area on its grid (contact.cpp), at the request's tolerance, warm-started from the
 // workspace's last evaluation of that side (extrapolated with the one before when the workspace extrapolates). A
 // conformal area passes its unrolled coordinates as the plane (origin (x, s, 0), axes e_x, e_y, normal e_z).
 // vertical: per grid row, the vertical part of its normal (for the request's vertical_force); deepening: per row,
 // dh/dz (h's growth as the wheel moves down; the request's vertical approach enters the gap so).
-contact::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
-                                          const Plane& pl, const contact::Grid& grid, const std::vector<double>& h,
+halfspace::NormalSolution solve_area_normal(const ContactModel& model, const ContactRequest& request, int side,
+                                          const Plane& pl, const halfspace::Grid& grid, const std::vector<double>& h,
                                           const std::vector<double>& vertical, const std::vector<double>& deepening,
                                           ContactWorkspace& ws);
 // The element indices of a lattice of element e that cover [lo, hi] (m) plus `margin` elements on each side: the
@@ -112,7 +112,7 @@ inline IndexSpan index_span(double lo, double hi, double e, int margin) {
                                     const Pose& pose, double nx, double ny);
 // The grid of two index spans (x along the first axis, y along the second) of element e, or too_many_elements when it
 // holds more than max_elements.
-contact::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
+halfspace::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
                         const std::vector<SegmentInfo>& all, int side, const Pose& pose);
 // The located patches of a group and their segments, copied into the result.
 void copy_located(const LocationState& st, int side, const std::vector<int>& group, PatchContact& pc);

@@ -6,7 +6,7 @@
  *   WRC_TEST_NULL          the entry point returns NULL
  *   WRC_TEST_SMALL_STRUCT  declares a descriptor smaller than the host's
  */
-#include "wrc_reader.h"
+#include "wrc/reader.h"
 
 #include <stdio.h>
 #include <string.h>

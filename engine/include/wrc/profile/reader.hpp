@@ -1,5 +1,5 @@
 // Profile readers as the host sees them (docs/design.md, section 6): a plugin loaded from a shared library
-// (ABI: plugins/wrc_reader.h) and a reader registered from Lua look the same, an id, extensions, the
+// (ABI: engine/include/wrc/reader.h) and a reader registered from Lua look the same, an id, extensions, the
 // reader's own option keys and a read function producing a RawProfile.
 #pragma once
 

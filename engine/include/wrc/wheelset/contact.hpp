@@ -18,7 +18,7 @@
 // along a line without a segment (the margin), the same arc through the line's deepest point, whose (negative)
 // height is the exact radial gap times cos(conicity); between lines h is interpolated linearly.
 //
-// Areas of one wheel are solved together when contact::patches_interact says the separate solutions differ
+// Areas of one wheel are solved together when halfspace::patches_interact says the separate solutions differ
 // by more than `merge_tolerance` and their normals differ by less than `merge_angle` (one plane must serve
 // both); otherwise each alone.
 //
@@ -27,14 +27,14 @@
 // (wheelset/conformal.hpp); location, merging, solvers and results are shared.
 #pragma once
 
-#include "wrc/contact/normal.hpp"
-#include "wrc/contact/rolling.hpp"
+#include "wrc/halfspace/normal.hpp"
+#include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/fields.hpp"
 #include "wrc/core/options.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/wheelset/plausibility.hpp"
 #include "wrc/wheelset/conformal.hpp"
-#include "wrc/wheelset/rolling.hpp"
+#include "wrc/wheelset/tangential.hpp"
 
 #include <Eigen/Core>
 
@@ -64,7 +64,7 @@ struct ContactOptions {
   // fine for the cap, or the pose as far too deep. 2^22: the paper's poses (S1002/60E1, Q = 200 kN, y = -8 .. 8 mm,
   // yaw 0 and 1 deg) need up to ~2.4e6 elements at grid = 0.02 mm (conformal areas; tests/scripts/limits.lua).
   int max_elements = 1 << 22;
-  contact::NormalOptions normal;  // tolerance etc. of the normal solver
+  halfspace::NormalOptions normal;  // tolerance etc. of the normal solver
   // The potential contact area: the curved surface along the rail's profile (CONTACT's conformal mode;
   // wheelset/conformal.hpp) or one plane per area (the paper's, CONTACT's planar mode). Conformal by default: it
   // agrees with the plane where the patch is flat and satisfies virtual work where the plane does not (README,
@@ -94,7 +94,7 @@ struct PatchContact {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit, from the rail into the wheel
   Eigen::Vector3d nominal = Eigen::Vector3d::Zero(); // the paper's nominal point of the first patch (m)
   double nominal_angle = 0;            // contact angle of the wheel's normal there (rad): the paper's plane
-  contact::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
+  halfspace::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
   std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
   std::optional<ConformalSurface> conformal;  // the curved surface of a conformal area (rows, normals); none: planar
   double normal_force = 0;             // N
@@ -143,16 +143,16 @@ struct ContactResult {
 // The immutable contact model: discretised geometry, material, normal solver (with its FFT caches) and options.
 class ContactModel {
  public:
-  ContactModel(std::shared_ptr<const GeometryModel> geometry, const contact::Material& material,
+  ContactModel(std::shared_ptr<const GeometryModel> geometry, const halfspace::Material& material,
                const ContactOptions& options);
   const GeometryModel& geometry() const { return *geometry_; }
   const std::shared_ptr<const GeometryModel>& geometry_ptr() const { return geometry_; }
-  const contact::Material& material() const { return solver_.material(); }
+  const halfspace::Material& material() const { return solver_.material(); }
   const ContactOptions& options() const { return options_; }
-  const contact::NormalSolver& solver() const { return solver_; }
+  const halfspace::NormalSolver& solver() const { return solver_; }
   // The flange of each side's wheel profile (for the flange-climb flags of the results).
   const Flange& flange(int side) const { return flange_[static_cast<std::size_t>(side)]; }
-  const contact::RollingSolver& rolling_solver() const { return rolling_; }
+  const halfspace::RollingSolver& rolling_solver() const { return rolling_; }
   // Arc length of each of a side's rail lines along the rail profile from its first line (m): the conformal
   // surface's coordinate s (chords between neighbouring lines summed once, here).
   const std::vector<double>& rail_arc(int side) const { return rail_arc_[static_cast<std::size_t>(side)]; }
@@ -167,8 +167,8 @@ class ContactModel {
   std::array<double, 2> rail_lattice_{0.0, 0.0};
   std::array<Flange, 2> flange_;
   ContactOptions options_;
-  contact::NormalSolver solver_;
-  contact::RollingSolver rolling_;
+  halfspace::NormalSolver solver_;
+  halfspace::RollingSolver rolling_;
 };
 
 // Per-thread state: the locator (the model's strategy bound to this thread), the solver's buffers and the
@@ -179,11 +179,11 @@ class ContactWorkspace {
   explicit ContactWorkspace(const ContactModel& model);  // the strategy's own per-thread search
   ContactWorkspace(const ContactModel& model, std::unique_ptr<PoseSearch> search);
   Locator locator;
-  contact::NormalWorkspace normal;
-  contact::RollingWorkspace rolling;
+  halfspace::NormalWorkspace normal;
+  halfspace::RollingWorkspace rolling;
   struct Previous {
     Eigen::Vector3d origin, t1, t2, normal;
-    contact::Grid grid;
+    halfspace::Grid grid;
     std::vector<double> pressure;
     std::vector<double> displacement;  // the solver's u = D pressure (empty if it gave none)
   };
@@ -215,7 +215,7 @@ struct ContactRequest {
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
   double tolerance = 0;      // > 0: the normal solver's tolerance for this evaluation (inexact Newton steps)
-  std::optional<RollingRequest> rolling;  // also solve the tangential problem of every area (wheelset/rolling.hpp)
+  std::optional<RollingRequest> rolling;  // also solve the tangential problem of every area (wheelset/tangential.hpp)
   // With only_side: solve that wheel's area for this vertical force (N) rather than for the pose's penetration, each
   // element weighted by the vertical part of its normal (normal.hpp's weighted force). Its solution's approach is
   // then the further vertical approach (m, the wheel moving down) that carries the force on the pose's own grid:
@@ -265,7 +265,7 @@ void drop_grids(ContactResult& result);
 // flange_climb_reason when true), force, moment, angle, rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
 // iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
-// also its fields (wheelset/rolling.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
+// also its fields (wheelset/tangential.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
 void describe(const PatchContact& area, FieldSink& out);
 void describe(const WheelContact& wheel, FieldSink& out);
 // With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.

@@ -11,7 +11,7 @@
 #include "wrc/core/options.hpp"
 #include "wrc/geometry/strategy.hpp"
 #include "wrc/wheelset/contact.hpp"
-#include "wrc/wheelset/strategy_check.hpp"
+#include "wrc/geometry/strategy_check.hpp"
 
 #include <array>
 #include <memory>
@@ -25,7 +25,7 @@ namespace wrc {
 struct WheelsetParams {
   TrackParams track;            // radius 0.45 m, back_to_back 1.360 m, tape_offset 0.070 m, gauge 1.435 m,
                                 // gauge_depth 0.014 m, cant 1/40 (track.hpp)
-  contact::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (contact/material.hpp)
+  halfspace::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (halfspace/material.hpp)
   ContactOptions contact;       // grid 0.2 mm, margin 2 elements, tolerance 1e-8, merge_tolerance 0.01,
                                 // merge_angle 0.26 rad, the fast solver, the conformal surface (wheelset/contact.hpp)
   // The location strategy: "accurate" (the profiles every 0.1 mm along the arc, coarse pre-search, topology walk).
@@ -33,7 +33,7 @@ struct WheelsetParams {
   // the search is a small part of an evaluation beside the normal problems.
   std::string strategy = "accurate";
   // Random poses located with the strategy and with brute force when the wheelset is built (0: none): an error names
-  // the first pose that differs (wheelset/strategy_check.hpp; range |y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad,
+  // the first pose that differs (geometry/strategy_check.hpp; range |y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad,
   // 1 um .. 1 mm deep). Opt-in: ~50 ms of brute force per pose at the paper's 0.1 mm discretisation.
   int check_strategy = 0;
   // The set-up's plausibility for a railway wheelset, checked when it is built (wheelset/plausibility.hpp: sizes and

@@ -1,0 +1,27 @@
+// The wheelset's pose on its track and the rotation it stands for (docs/design.md, section 2: frames and signs).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace wrc {
+
+// Wheelset pose in the track frame: lateral y (m), vertical z (m, z < 0 pressed into the rails), roll phi
+// about x (rad), yaw psi about z (rad).
+struct Pose {
+  double y = 0, z = 0, roll = 0, yaw = 0;
+};
+
+// A = Rz(yaw) Rx(roll) (dimensionless), with the pose's translation; the form every line-cone test uses.
+struct PoseFrame {
+  double y = 0, z = 0;                                       // wheelset centre (m)
+  double a11 = 1, a12 = 0, a13 = 0, a21 = 0, a22 = 1, a23 = 0, a32 = 0, a33 = 1;  // A31 = 0
+  PoseFrame() = default;
+  explicit PoseFrame(const Pose& p);
+  Eigen::Matrix3d matrix() const;
+  // Track-frame point of the wheelset-frame point p_w.
+  Eigen::Vector3d to_track(const Eigen::Vector3d& p_w) const;
+  // Wheelset-frame point of the track-frame point p.
+  Eigen::Vector3d to_wheelset(const Eigen::Vector3d& p) const;
+};
+
+}  // namespace wrc

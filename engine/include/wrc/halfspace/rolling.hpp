@@ -1,0 +1,144 @@
+// The tangential problem of steady rolling with Coulomb friction on the grid of a solved normal problem
+// (Kalker's exact theory, as CONTACT solves it; docs/design.md sections 2 and 3), and FASTSIM, Kalker's simplified
+// theory, on the same grid.
+//
+// Identical materials (quasi-identity, influence.hpp): the tangential tractions do not change the normal gap, so the
+// normal problem is solved first and its pressure p_n sets the traction bound; this file solves the tangential
+// problem alone. (Dissimilar materials would couple them; the solution would then alternate between the two
+// solvers -- CONTACT's Panagiotopoulos process -- with the normal solver taking the tangential tractions' normal
+// displacement as a correction of h. Nothing here assumes more than the one-way order.)
+//
+// The steady-state problem (grid frame: x the rolling direction t1, y = t2, the normal into body 1, the wheel). The
+// bodies roll with speed |V| in the direction `direction` (+1: toward +x): material enters the contact at its
+// leading edge (the +x side for +1) and leaves it at the trailing edge. The traction p on body 1 (Pa, the force of
+// the rail on the wheel per area) and the displacement difference u = B p (influence.hpp) give the slip of body 1
+// relative to body 2, per |V|, at element I:
+//   s_I = w_I - (u_{I+} - u_I) / dx,   I+ = the element upstream of I (at x + direction dx),
+// with w the rigid slip per |V| (creep.hpp: w = (xi - phi y, eta + phi x) for creepages about a reference point).
+// Coulomb's law with the traction bound g = mu p_n: adhesion |p| <= mu_s p_n and s = 0, or slip |p| = mu_k p_n
+// and p = -mu_k p_n s / |s|: the traction opposes the slip. The upwind difference is Kalker's discretisation of the
+// material derivative (CONTACT with the rolling step dq = dx).
+#pragma once
+
+#include "wrc/halfspace/creep.hpp"
+#include "wrc/halfspace/grid.hpp"
+#include "wrc/halfspace/shear.hpp"
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace wrc::halfspace {
+
+// The range of a friction coefficient: wheel on rail 0.05 .. 0.6. Far below it the traction bound mu p_n underflows
+// (mu = 1e-300 made the exact solver's result not finite); a huge coefficient is the no-slip limit (Kalker's linear
+// theory, e.g. mu = 1e9), up to where mu p_n stays a number the solvers can square.
+inline constexpr double kFrictionMin = 1e-4, kFrictionMax = 1e12;
+
+// Coulomb friction; kinetic <= static (a static coefficient above the kinetic one allows adhesion up to mu_s p_n
+// and slides at mu_k p_n), both in [kFrictionMin, kFrictionMax].
+struct Friction {
+  double static_coefficient = 0;   // mu_s (-)
+  double kinetic_coefficient = 0;  // mu_k (-)
+  static Friction coulomb(double mu) { return {mu, mu}; }
+};
+
+struct TangentialProblem {
+  Grid grid;
+  std::span<const double> pressure;  // Pa per element (index i + nx j), >= 0; p > 0 is the contact area
+  // The rigid slip per |V| at the elements: `creepages` about the reference point (ref_x, ref_y) of the grid
+  // frame (m), plus, when given, the per-element difference `extra_x`, `extra_y` from that linear field (e.g. the
+  // varying rolling radius across a wide, curved patch). Dimensionless.
+  Creepages creepages;
+  double ref_x = 0, ref_y = 0;
+  std::span<const double> extra_x = {}, extra_y = {};
+  int direction = +1;  // rolling toward +x (+1) or -x (-1)
+  Friction friction;
+};
+
+struct TangentialOptions {
+  // Convergence: max |slip| of the adhesion elements and max slip across the traction of the slip elements
+  // <= tolerance * max |w| over the contact (the rigid slip scale), with the adhesion / slip split unchanged.
+  double tolerance = 1e-6;
+  int max_iterations = 100;  // Newton (active-set) iterations on the finest grid
+  // Start from the solution on a grid twice as coarse (recursively, above coarse_limit contact elements).
+  bool nested = true;
+  int coarse_limit = 400;
+  // Optional warm start (Pa per element, both or neither), e.g. the previous point of a creep curve.
+  std::span<const double> initial_x = {}, initial_y = {};
+};
+
+enum ElementState : unsigned char { kExterior = 0, kAdhesion = 1, kSlip = 2 };
+
+struct TangentialSolution {
+  Grid grid;
+  std::vector<double> px, py;         // traction on body 1 (Pa) per element; 0 outside the contact
+  std::vector<double> sx, sy;         // slip per |V| (-); 0 in adhesion and outside
+  std::vector<unsigned char> state;   // ElementState per element
+  double fx = 0, fy = 0;              // N: sum p dA
+  double mz = 0;                      // N m about the reference point: sum (x p_y - y p_x) dA (x, y from it)
+  double contact_area = 0;            // m^2 (elements with p_n > 0)
+  double adhesion_area = 0;           // m^2
+  // Frictional power per unit rolling speed, sum -(p . s) dA (N; W per m/s): >= 0, the work of the traction against
+  // the slip.
+  double power_per_speed = 0;
+  double residual = 0;                // the convergence measure at the end (relative, see TangentialOptions)
+  int iterations = 0;                 // Newton iterations on this grid (exact) / 0 (FASTSIM)
+  int linear_iterations = 0;          // GMRES iterations on this grid
+  int coarse_iterations = 0;          // GMRES iterations on the coarser grids of the nested start
+  int products = 0;                   // FFT products with B on this grid
+  double adhesion_fraction() const { return contact_area > 0 ? adhesion_area / contact_area : 0.0; }
+};
+
+// Buffers of one thread for RollingSolver (not shareable; reused across solves).
+class RollingWorkspace {
+ public:
+  // FFT buffers of the products with B and of the preconditioner's circulant inverse: apart, because a buffer
+  // changing shape is cleared (the padded one is four times the periodic one).
+  ShearWorkspace fft, fft_periodic;
+  std::vector<double> qx, qy, ux, uy;  // grid vectors of the cropped grid
+  std::vector<double> basis, precond;  // GMRES: Krylov vectors and their preconditioned images
+};
+
+// The exact steady-rolling solver: semi-smooth Newton on the adhesion / slip split (an active-set method: adhesion
+// elements carry the equations s = 0; slip elements the direction of their traction, whose magnitude is the
+// bound), each linearisation solved by restarted GMRES with FFT products. Preconditioner: on adhesion elements the
+// exact inverse of the upwind difference (a sum along the row from the upstream end of the adhesion run) followed
+// by the inverse of B's periodic circulant (FFT); on slip elements a sweep from the leading edge with the element's
+// own and upstream coupling. Started from the solution on a grid twice as coarse. The problem is cropped to the
+// contact's bounding box plus the upstream column before the FFTs. Part of an immutable model: one instance serves
+// many threads, each with its own workspace.
+class RollingSolver {
+ public:
+  explicit RollingSolver(const Material& material, FftPlanning planning = FftPlanning::estimate);
+  const Material& material() const { return cache_.material(); }
+  TangentialSolution solve(const TangentialProblem& problem, RollingWorkspace& workspace,
+                           const TangentialOptions& options = {}) const;
+  TangentialSolution solve(const TangentialProblem& problem, const TangentialOptions& options = {}) const;
+
+ private:
+  ShearCache cache_;
+};
+
+// FASTSIM (Kalker, Vehicle System Dynamics 11, 1982) on the same grid and pressure, strip by strip: every run of
+// contact elements along a grid row starts from zero traction at its leading edge and integrates the simplified
+// theory's u = L p toward the trailing edge, with the traction bound mu p_n of the actual pressure, so that it
+// applies to non-elliptic patches (each contact region gets the flexibilities of its equivalent ellipse: the
+// region's length and width in the grid directions and its area). Kalker's three flexibilities (creep.hpp) enter as
+// an anisotropic layer diag(L1, L2) with the spin scaled by L1/L3 and L2/L3, which reproduces the linear theory's
+// Fx, Fy for any creepages; in slip the predicted traction is projected onto the bound in the layer's energy norm,
+// so that the traction opposes the slip of that layer (for L1 = L2 Kalker's radial scaling) and full sliding gives
+// |F| = mu N opposite to the translational slip. Mz is not matched to C33 (a known limit of the simplified theory).
+TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& problem);
+// The same into `solution`, reusing its grids' storage (a dynamics code calling it at every step).
+void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
+
+// Throws wrc::Error naming `context` on a bad problem: grid, sizes, non-finite or negative pressure, non-finite
+// creepages or rigid slip, friction coefficients outside [kFrictionMin, kFrictionMax] or kinetic > static, direction
+// not +-1.
+void validate(const TangentialProblem& problem, std::string_view context);
+
+// The rigid slip per |V| of the problem at every element (x and y components).
+void rigid_slip(const TangentialProblem& problem, std::vector<double>& wx, std::vector<double>& wy);
+
+}  // namespace wrc::halfspace

@@ -1,0 +1,87 @@
+// Rolling contact with friction on the wheelset's contact areas (docs/design.md sections 2 and 3): the kinematics of
+// the wheelset, the request a call makes, and the tangential results of an area.
+//
+// Kinematics (track frame, section 2): the wheelset centre moves with velocity (V, vy, 0), the wheelset turns with
+// angular velocity omega a + yaw_rate z, a = Rz(yaw) Rx(roll) y the axle's direction (omega > 0: forward rolling for
+// V > 0). The rails are at rest. The rigid slip of the wheel relative to the rail at a point X is the wheel's
+// material velocity there, v(X) = (V, vy, 0) + (omega a + yaw_rate z) x (X - centre); per |V| and in the area's
+// contact frame (t1, t2, n of PatchContact; t1 the rolling direction) it is the w of halfspace/creep.hpp. It is
+// evaluated at every element's contact point: the element's position in the plane moved along n to midway between
+// the wheel's and the rail's undeformed surfaces, so that the rolling radius varying across a wide or curved patch
+// (and the spin varying with the surface's slope) enters the slip of each element. The area's creepages (xi, eta,
+// phi) are this slip at the plane's origin (the reference point) and the spin omega . n / |V|. Materials roll through
+// the contact toward -t1 when V > 0 (rolling direction +1), toward +t1 when V < 0.
+//
+// On a conformal area (wheelset/conformal.hpp) every element has its row's frame (e_x, t2(j), n(j)) and its contact
+// point is its point on the rail's surface moved along -n(j) by h / 2; the reference point is the grid's origin (at
+// a row, j0), its frame (e_x, t2(j0), n(j0)); the slip and traction components are along e_x and each row's t2, on
+// the unrolled grid (x, s), with the flat half-space's coefficients as for the normal problem (docs/design.md
+// section 2).
+//
+// Or the creepages are prescribed (`creepage`), the same at every area's reference point, with the linear field
+// w = (xi - phi y, eta + phi x) over the area; V then only scales the slip velocities and the power (1 m/s when not
+// given).
+#pragma once
+
+#include "wrc/halfspace/rolling.hpp"
+#include "wrc/core/fields.hpp"
+#include "wrc/core/options.hpp"
+
+#include <Eigen/Core>
+
+#include <optional>
+
+namespace wrc {
+
+struct Kinematics {
+  double V = 0;                  // forward speed of the wheelset centre along track x (m/s), != 0
+  std::optional<double> omega;   // axle angular velocity about the wheelset's y axis (rad/s); none: V / r0, pure
+                                 // rolling at the nominal radius
+  double vy = 0;                 // lateral velocity of the centre (m/s)
+  double yaw_rate = 0;           // rad/s, about track z
+};
+
+enum class RollingMethod { exact, fastsim };
+
+struct RollingRequest {
+  std::optional<Kinematics> kinematics;          // either the wheelset's velocities
+  std::optional<halfspace::Creepages> creepage;    // or creepages prescribed at every area's reference point
+  double V = 1;                                  // m/s: with `creepage`, the speed of the slip velocities and power
+  halfspace::Friction friction;                    // mu (static = kinetic) or mu_static and mu_kinetic
+  RollingMethod method = RollingMethod::exact;
+  double tolerance = 1e-6;                       // the exact solver's (halfspace/rolling.hpp)
+};
+
+// Reads a call's rolling keys: V, omega, vy, yaw_rate (kinematics) or creepage = {xi, eta, phi} (with V optional),
+// and mu or mu_static and mu_kinetic, method ("exact" | "fastsim"), rolling_tolerance. Returns nothing when none of
+// V, omega, vy, yaw_rate, creepage, mu, mu_static, mu_kinetic, method is given (a frictionless call). Throws
+// wrc::Error naming the key on: V = 0 (the creepages are slip velocities divided by V: undefined), kinematics keys
+// without V, creepage together with omega, vy or yaw_rate, a missing, zero, negative or non-finite mu, a kinetic
+// coefficient above the static one, an unknown method, a creepage that is not a finite number.
+std::optional<RollingRequest> read_rolling_request(OptionReader& options);
+
+// The tangential solution of one contact area.
+struct PatchRolling {
+  RollingMethod method = RollingMethod::exact;
+  halfspace::Friction friction;
+  double V = 0;                        // m/s, the speed that scales slip velocities and power
+  halfspace::Creepages creepage;         // at the reference point (the grid's origin): -, -, 1/m
+  double fx = 0, fy = 0;               // N, contact frame (t1, t2), on the wheel (conformal: sums along e_x and
+                                       // along each row's t2)
+  double mz = 0;                       // N m, about the reference point along n (conformal: in the unrolled (x, s))
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, track frame: fx t1 + fy t2 (conformal: sum over the rows)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, of the tangential tractions about the wheelset centre
+  double adhesion = 0;                 // fraction of the contact area in adhesion
+  double power = 0;                    // W: frictional power, |V| sum -(p . s) dA >= 0
+  halfspace::TangentialSolution solution;  // grids on the area's grid: px, py (Pa), sx, sy (slip per |V|), state
+  std::vector<double> rigid_x, rigid_y;  // the rigid slip per |V| of the contact elements (0 outside), per element
+};
+
+// The fields of an area's tangential solution (Lua and C): method, mu = {static, kinetic}, V, creepage = {xi, eta,
+// phi}, Fx, Fy, Mz, creep_force, creep_moment, adhesion, power, iterations; with the grids: px, py (Pa), slip_x,
+// slip_y (slip velocity, m/s), adhesion_map (0 outside the contact, 1 adhesion, 2 slip), power_density (W/m^2),
+// rigid_slip_x, rigid_slip_y (the rigid slip velocity, m/s, of the contact elements).
+void describe(const PatchRolling& rolling, FieldSink& out);
+const char* method_name(RollingMethod method);
+
+}  // namespace wrc

@@ -1,0 +1,236 @@
+// Love's influence coefficients and the FFT products built on them.
+#include "wrc/halfspace/convolution.hpp"
+#include "wrc/halfspace/influence.hpp"
+#include "wrc/core/error.hpp"
+
+#include "ray_integral.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <thread>
+#include <vector>
+
+using namespace wrc::halfspace;
+
+namespace {
+
+// Direct product u_k = sum_l I(x_k - x_l, y_k - y_l) p_l with rectangle_potential itself.
+std::vector<double> direct_product(const Grid& g, const std::vector<double>& p) {
+  std::vector<double> u(g.size(), 0.0);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      for (int l = 0; l < g.ny; ++l)
+        for (int k = 0; k < g.nx; ++k)
+          u[g.index(i, j)] +=
+              rectangle_potential((i - k) * g.dx, (j - l) * g.dy, 0.5 * g.dx, 0.5 * g.dy) * p[g.index(k, l)];
+  return u;
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("centre displacement of a uniformly loaded square: 8 a ln(1 + sqrt 2) (1 - nu^2) p / (pi E)") {
+  const Material m{2.1e11, 0.3};
+  for (double a : {1e-4, 2.5e-3, 1.0}) {
+    const double p = 1e9;
+    const double expected = 8 * a * std::log(1 + std::sqrt(2.0)) * (1 - m.nu * m.nu) * p / (std::numbers::pi * m.E);
+    CHECK(rectangle_displacement(m, 0, 0, a, a, p) == doctest::Approx(expected).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("Love's closed form agrees with an independent quadrature inside, on edges, at corners, outside") {
+  const double a = 0.7e-3, b = 0.3e-3;
+  const double points[][2] = {{0, 0},         {0.2e-3, -0.1e-3}, {a, 0},        {0, -b},       {a, b},
+                              {-a, b},        {1.5e-3, 0.2e-3},  {-3e-3, 4e-3}, {0.69e-3, 0},  {2e-2, -1e-2},
+                              {0.5e-3, 0.3e-3}};
+  for (const auto& pt : points) {
+    const double exact = rectangle_potential(pt[0], pt[1], a, b);
+    const double quad = wrc::test::ray_integral(pt[0], pt[1], a, b, [](double) { return 1.0; });  // 1 / r
+    CAPTURE(pt[0]);
+    CAPTURE(pt[1]);
+    CHECK(exact == doctest::Approx(quad).epsilon(1e-11));
+  }
+}
+
+TEST_CASE("influence function symmetries") {
+  const double a = 0.4e-3, b = 0.25e-3;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-3e-3, 3e-3);
+  for (int t = 0; t < 100; ++t) {
+    const double x = U(rng), y = U(rng);
+    const double v = rectangle_potential(x, y, a, b);
+    CHECK(v > 0);
+    CHECK(rectangle_potential(-x, y, a, b) == doctest::Approx(v).epsilon(1e-13));
+    CHECK(rectangle_potential(x, -y, a, b) == doctest::Approx(v).epsilon(1e-13));
+    CHECK(rectangle_potential(y, x, b, a) == doctest::Approx(v).epsilon(1e-13));  // transpose
+  }
+  // Superposition: the 2a x 2b rectangle is the sum of its four quarters.
+  for (int t = 0; t < 20; ++t) {
+    const double x = U(rng), y = U(rng);
+    const double whole = rectangle_potential(x, y, a, b);
+    const double quarters = rectangle_potential(x - a / 2, y - b / 2, a / 2, b / 2) +
+                            rectangle_potential(x + a / 2, y - b / 2, a / 2, b / 2) +
+                            rectangle_potential(x - a / 2, y + b / 2, a / 2, b / 2) +
+                            rectangle_potential(x + a / 2, y + b / 2, a / 2, b / 2);
+    CHECK(whole == doctest::Approx(quarters).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("far field tends to Boussinesq's point load, with the quadrupole correction") {
+  const Material m{2.1e11, 0.3};
+  const double a = 0.1e-3, b = 0.1e-3, p = 1e9;
+  const double F = 4 * a * b * p;
+  double previous = INFINITY;
+  for (double r : {5 * a, 20 * a, 80 * a, 320 * a}) {
+    const double x = 0.6 * r, y = 0.8 * r;
+    const double boussinesq = (1 - m.nu * m.nu) * F / (std::numbers::pi * m.E * r);
+    const double u = rectangle_displacement(m, x, y, a, b, p);
+    const double relative = std::abs(u / boussinesq - 1);
+    CHECK(relative < previous / 10);  // decays like (a/r)^2: 16x per step of 4x
+    previous = relative;
+    // Second-order multipole term of 1/|r - s| integrated over the rectangle.
+    const double quad = (x * x * a * a + y * y * b * b - r * r * (a * a + b * b) / 3) / (2 * std::pow(r, 4));
+    CHECK(std::abs(u / boussinesq - 1 - quad) < 10 * std::pow(a / r, 4));
+  }
+}
+
+TEST_CASE("InfluenceTable holds the coefficients of the grid offsets") {
+  const InfluenceTable t(0.2e-3, 0.3e-3, 9, 7);
+  for (int n = -6; n <= 6; ++n)
+    for (int m = -8; m <= 8; ++m)
+      CHECK(t(m, n) == doctest::Approx(rectangle_potential(m * 0.2e-3, n * 0.3e-3, 0.1e-3, 0.15e-3)).epsilon(1e-13));
+  CHECK_THROWS_AS(InfluenceTable(0, 1e-3, 3, 3), wrc::Error);
+  CHECK_THROWS_AS(InfluenceTable(1e-3, NAN, 3, 3), wrc::Error);
+}
+
+TEST_CASE("FFT sizes: fft_size, and the shapes of least cost") {
+  const auto smooth = [](int v) {
+    for (int f : {2, 3, 5, 7})
+      while (v % f == 0) v /= f;
+    return v == 1;
+  };
+  for (int n = 1; n < 3000; ++n) {
+    const int P = fft_size(n);
+    CHECK(P >= n);
+    CHECK(smooth(P));
+    CHECK(P <= std::max(16, n * 6 / 5 + 1));  // at most 1/5 larger
+  }
+  // fft_shape: at least the sizes asked for, 7-smooth, never more than twice as large (plus 16), and the same for the
+  // same question (a fixed table, not a timing).
+  for (int nx = 1; nx < 400; nx += 7)
+    for (int ny = 1; ny < 400; ny += 11)
+      for (bool pruned : {true, false}) {
+        const FftShape s = fft_shape(nx, ny, pruned);
+        CAPTURE(nx);
+        CAPTURE(ny);
+        CHECK(s.Mx >= nx);
+        CHECK(s.My >= ny);
+        CHECK(smooth(s.Mx));
+        CHECK(smooth(s.My));
+        CHECK(s.Mx <= 2 * nx + 16);
+        CHECK(s.My <= 2 * ny + 16);
+        const FftShape again = fft_shape(nx, ny, pruned);
+        CHECK((again.Mx == s.Mx && again.My == s.My));
+      }
+  const FftShape big = fft_shape(5000, 3, true);  // beyond the measured lengths: fft_size
+  CHECK(big.Mx == fft_size(5000));
+  CHECK_THROWS_AS(fft_shape(0, 5, true), wrc::Error);
+}
+
+TEST_CASE("FFT product equals the direct product with the influence coefficients") {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-1, 1);
+  InfluenceCache cache;
+  ConvolutionWorkspace ws;  // one workspace across shapes: stale data must not leak between them
+  const int shapes[][2] = {{1, 1}, {1, 9}, {9, 1}, {2, 2}, {7, 5}, {16, 16}, {13, 4}, {5, 17}, {24, 11}, {3, 3}};
+  for (const auto& sh : shapes) {
+    for (double dy : {0.2e-3, 0.35e-3}) {
+      Grid g;
+      g.nx = sh[0];
+      g.ny = sh[1];
+      g.dx = 0.2e-3;
+      g.dy = dy;
+      std::vector<double> p(g.size()), u(g.size());
+      for (double& v : p) v = U(rng);
+      const auto spectrum = cache.get(g);
+      REQUIRE(spectrum->serves(g));
+      convolve(*spectrum, g, p.data(), u.data(), ws);
+      const auto direct = direct_product(g, p);
+      std::vector<double> diff(g.size());
+      for (int k = 0; k < g.size(); ++k) diff[k] = u[k] - direct[k];
+      CAPTURE(g.nx);
+      CAPTURE(g.ny);
+      CHECK(max_abs(diff) < 1e-12 * max_abs(direct));
+    }
+  }
+}
+
+TEST_CASE("the circulants are positive definite (the preconditioner needs it)") {
+  InfluenceCache cache;
+  for (double ratio : {1.0, 0.5, 2.0, 0.1, 10.0})
+    for (int n : {1, 2, 5, 16, 33, 100}) {
+      Grid g;
+      g.nx = n;
+      g.ny = std::max(1, n / 2);
+      g.dx = 0.2e-3;
+      g.dy = 0.2e-3 * ratio;
+      for (auto kind : {InfluenceSpectrum::Kind::linear, InfluenceSpectrum::Kind::periodic}) {
+        const auto s = cache.get(g, kind);
+        CAPTURE(n);
+        CAPTURE(ratio);
+        CHECK(s->min_eigenvalue() > 0);
+      }
+    }
+}
+
+TEST_CASE("cache: spectra shared by shape, products identical from several threads") {
+  InfluenceCache cache;
+  Grid a = Grid::square(30, 20, 0.2e-3), b = Grid::square(32, 19 + 1, 0.2e-3), c = Grid::square(30, 20, 0.25e-3);
+  const FftShape sa = fft_shape(2 * 30 - 2, 2 * 20 - 2, true), sb = fft_shape(2 * 32 - 2, 2 * 20 - 2, true);
+  REQUIRE((sa.Mx == sb.Mx && sa.My == sb.My));
+  CHECK(cache.get(a) == cache.get(b));  // same padded shape
+  CHECK(cache.get(a) != cache.get(c));  // another element size
+  CHECK(cache.size() == 2);
+  CHECK_THROWS_AS(cache.get(Grid{}), wrc::Error);
+
+  std::vector<Grid> grids;
+  for (int k = 0; k < 6; ++k) grids.push_back(Grid::square(10 + 7 * k, 30 - 3 * k, 0.2e-3));
+  std::vector<std::vector<double>> inputs, expected;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  {
+    ConvolutionWorkspace ws;
+    for (const Grid& g : grids) {
+      std::vector<double> p(g.size()), u(g.size());
+      for (double& v : p) v = U(rng);
+      convolve(*cache.get(g), g, p.data(), u.data(), ws);
+      inputs.push_back(p);
+      expected.push_back(u);
+    }
+  }
+  InfluenceCache shared;  // fresh: the threads also race to build the spectra
+  std::vector<int> mismatches(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      ConvolutionWorkspace ws;
+      for (int rep = 0; rep < 20; ++rep)
+        for (std::size_t k = 0; k < grids.size(); ++k) {
+          const std::size_t which = (k + t + rep) % grids.size();
+          std::vector<double> u(grids[which].size());
+          convolve(*shared.get(grids[which]), grids[which], inputs[which].data(), u.data(), ws);
+          if (u != expected[which]) ++mismatches[t];
+        }
+    });
+  for (auto& th : threads) th.join();
+  for (int m : mismatches) CHECK(m == 0);
+}
