@@ -8,7 +8,8 @@ local M = {}
 -- Ends the run with an exit status; the host prints nothing more (a study's --help, a refused input).
 function M.exit(code, message) error({exit = code, message = message}, 0) end
 
-function M.say(fmt, ...) io.stderr:write("wrc: ", string.format(fmt, ...), "\n") end
+-- One write per line, so that lines of shards run at once (GNU parallel's --line-buffer) never mix.
+function M.say(fmt, ...) io.stderr:write("wrc: " .. string.format(fmt, ...) .. "\n") end
 
 -- Stops the run with a message (no traceback: the input is wrong, not the program).
 function M.refuse(code, fmt, ...)
