@@ -13,6 +13,7 @@
 -- (fig4_z_roll, fig5_YQ_Mz, fig6_pressure_*, fig7_h_*, fig8_rail_*, rigid_vs_elastic) with their data, and
 -- summary.txt (the numbers quoted in the README), all made from the two tables; manifest.txt lists them.
 local study = require "wrc.study"
+local sweep = require "wrc.sweep"
 
 local s = study.new{
   name = "paper_study",
@@ -52,26 +53,26 @@ local yaws = {0, math.rad(1)}
 local function finish(ctx)
   local _, rows = ctx.read("sweep.csv")
   local _, rigid_rows = ctx.read("rigid.csv")
-  local summary = study.summary(rows, 0, Q)
+  local summary = sweep.summary(rows, 0, Q)
   ctx.write("summary.txt", summary)
   io.write(summary)
   if not opt.plots then return end
-  study.plot_sweep(ctx.dir, rows, rigid_rows, {0, 1})
+  sweep.plot_sweep(ctx.dir, rows, rigid_rows, {0, 1})
   -- Single equilibria with their pressure grids, started from the sweep's neighbouring solution.
   local function equilibrium(y, yaw)
-    return ws:equilibrium{y = y, yaw = yaw, Q = Q, start = study.nearest_start(rows, y, yaw)}
+    return ws:equilibrium{y = y, yaw = yaw, Q = Q, start = sweep.nearest_start(rows, y, yaw)}
   end
   -- Pressure and h for several lateral positions at yaw 0 (figures 6 and 7).
   for _, y_mm in ipairs{-4, 0, 3, 5, 6, 6.3} do
-    study.plot_patches(ctx.dir, string.format("y%+.1fmm_yaw0", y_mm), equilibrium(y_mm * 1e-3, 0))
+    sweep.plot_patches(ctx.dir, string.format("y%+.1fmm_yaw0", y_mm), equilibrium(y_mm * 1e-3, 0))
   end
   -- Pressure on the rail surface for the three poses of figure 8.
   for _, c in ipairs{{6.3, 1, "a"}, {0, 0, "b"}, {-6.3, -1, "c"}} do
-    study.plot_rail_pressure(ctx.dir, "fig8" .. c[3], string.format("y = %.1f mm, yaw = %g deg", c[1], c[2]),
+    sweep.plot_rail_pressure(ctx.dir, "fig8" .. c[3], string.format("y = %.1f mm, yaw = %g deg", c[1], c[2]),
                              equilibrium(c[1] * 1e-3, math.rad(c[2])))
   end
   print("results in " .. ctx.dir)
 end
 
-study.run_sweep(s, ws, {y = ys, yaw = yaws, Q = Q, rigid = true, threads = opt.threads, chain = opt.chain,
+sweep.run_sweep(s, ws, {y = ys, yaw = yaws, Q = Q, rigid = true, threads = opt.threads, chain = opt.chain,
                         inputs = {wheel = wheel, rail = rail}, finish = finish})

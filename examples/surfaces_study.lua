@@ -12,6 +12,7 @@
 -- largest difference of Y/Q between the surfaces.
 local out = require "wrc.output"
 local study = require "wrc.study"
+local paper = require "wrc.sweep"  -- the paper study's rows, series and ranges
 
 local opt = study.new{
   name = "surfaces_study", out = "results/surfaces",
@@ -56,7 +57,7 @@ end
 
 local sweeps, lines = {}, {}
 local columns = {}
-for _, c in ipairs(study.sweep_columns) do columns[#columns + 1] = c end
+for _, c in ipairs(paper.sweep_columns) do columns[#columns + 1] = c end
 columns[#columns + 1] = "left_min_row_angle_deg"
 columns[#columns + 1] = "left_max_row_angle_deg"
 for _, surface in ipairs{"planar", "conformal"} do
@@ -65,7 +66,7 @@ for _, surface in ipairs{"planar", "conformal"} do
   sweeps[surface] = sweep
   local rows = {}
   for _, r in ipairs(sweep) do
-    local row = study.sweep_row(r)
+    local row = paper.sweep_row(r)
     if r.converged then
       local lo, hi = row_angles(r)
       row.left_min_row_angle_deg, row.left_max_row_angle_deg = lo and lo * deg, hi and hi * deg
@@ -75,17 +76,17 @@ for _, surface in ipairs{"planar", "conformal"} do
   out.csv(string.format("%s/sweep_%s.csv", dir, surface), columns, rows)
   lines[#lines + 1] = string.format("%s: %d cases, %d failed, %.1f s on %d threads", surface, #sweep, sweep.failed,
                                     sweep.seconds, sweep.threads)
-  for _, yaw in ipairs(yaws) do  -- on the table's rows, as the paper study's summary (wrc.study)
-    local s = study.series(rows, yaw * deg)
-    local y08 = study.first_crossing(s, 0.8)
+  for _, yaw in ipairs(yaws) do  -- on the table's rows, as the paper study's summary (wrc.sweep)
+    local s = paper.series(rows, yaw * deg)
+    local y08 = paper.first_crossing(s, 0.8)
     lines[#lines + 1] = string.format("  yaw %g deg: Y/Q first exceeds 0.8 at y = %s mm", yaw * deg,
                                       y08 and string.format("%.2f", y08) or "(never)")
     lines[#lines + 1] = "    left contact angle > 60 deg, the resultant:          y = " ..
-                            study.ranges(s, function(r) return r.left_angle_deg > 60 end) .. " mm"
+                            paper.ranges(s, function(r) return r.left_angle_deg > 60 end) .. " mm"
     lines[#lines + 1] = "    left contact angle > 60 deg, the steepest loaded row: y = " ..
-                            study.ranges(s, function(r) return (r.left_max_row_angle_deg or 0) > 60 end) .. " mm"
+                            paper.ranges(s, function(r) return (r.left_max_row_angle_deg or 0) > 60 end) .. " mm"
     lines[#lines + 1] = "    right wheel lifted:                                   y = " ..
-                            study.ranges(s, function(r) return not (r.right_Fz_kN > 0) end) .. " mm"
+                            paper.ranges(s, function(r) return not (r.right_Fz_kN > 0) end) .. " mm"
   end
 end
 

@@ -1,384 +1,178 @@
--- wrc.study: studies with declared options that run in one process or in shards (study.new, from wrc.study.run),
--- and helpers for sweep studies -- table rows with units in the column names, a sweep as a study (run_sweep), the
--- summary of contact ranges and the plots of the paper's figures, made from the tables (sweep.csv, rigid.csv).
-local out = require "wrc.output"
-local run = require "wrc.study.run"
+-- wrc.study: the study runner. A study declares its options and its cases, and runs in one process or in shards on
+-- many machines (README "Studies: declared options, safe outputs, shards and clusters"). Its cases are cut into
+-- chunks (fixed by the study, never by the number of shards or threads); a shard computes a contiguous range of
+-- chunks and streams their rows into checkpoint blocks in OUT/parts; a run again resumes after the last whole block;
+-- the merge concatenates the blocks into exactly the tables one process writes, then the study makes its figures and
+-- summary from those tables, and OUT/manifest.txt lists what the run produced. What an output folder holds is data
+-- from whoever made it: it names no script that is run, and no file outside it (or through a link in it) is removed.
+--
+--   local study = require "wrc.study"
+--   local s = study.new{name =, help =, out = "results", options = {{"step_mm", "number", 0.1, "step (mm)"}, ...}}
+--   local opt = s.options                      -- checked: an unknown key names the closest declared one
+--   s:run{cases =, chunks =, tables =, compute =, finish =, inputs =, key =, key_columns =, batch =}
+--
+-- This module is the runner's entry and its orchestration: new, Study:run, and refuse_folder_merge (the host's
+-- `wrc merge DIR`). Each concern is a module of its own in scripts/study/:
+--   options   declared options, key=value, --help        identity  what makes two runs the same study (hash)
+--   layout    chunks and shards (arithmetic)               parts     OUT/parts: blocks, state.txt, shard folders
+--   locks     one run per shard, one per folder            manifest  OUT/manifest.txt; unknown and stale files
+--   shard     computing a shard, resuming                  merge     the tables and finish(ctx) from the parts
+--   origin    where a folder's parts came from (merge)     common    messages, the command, text forms
+-- The sweep tables and the paper's figures (wrc.sweep) are one user of the runner.
+local common = require "wrc.study.common"
+local identity = require "wrc.study.identity"
+local layout = require "wrc.study.layout"
+local locks = require "wrc.study.locks"
+local manifest = require "wrc.study.manifest"
+local merge = require "wrc.study.merge"
+local options = require "wrc.study.options"
+local origin = require "wrc.study.origin"
+local shard = require "wrc.study.shard"
+local fs = wrc.fs
 local M = {}
 
-M.new = run.new
+local say = common.say
 
-local deg = 180 / math.pi
+local Study = {}
+Study.__index = Study
 
-local function patch_count(wheel)
-  local n = 0
-  for _, p in ipairs(wheel.patches) do
-    if p.normal_force > 0 then n = n + 1 end
+-- An output folder's name without trailing slashes.
+local function folder_name(out) return (tostring(out):gsub("(.)/+$", "%1")) end
+
+-- Declares a study: spec = {name =, help = "what it computes", out = "default folder", options = {...}} (the
+-- options: wrc.study.options). Reads the options from the command line (with `wrc merge STUDY.lua`, those its
+-- parts ran with for the others); with --help, prints them and ends the run. The output folder is made and checked
+-- writable before anything is computed (a read-only folder found after the sweep loses it).
+-- The study: s.options (the values), s.given (names given), s.dir, s.script (absolute), s.spec, s.name.
+function M.new(spec)
+  local cmd = common.command()
+  local s = setmetatable({spec = spec, name = spec.name}, Study)
+  s.declared, s.byname = options.declare(spec)
+  if cmd.help then
+    io.write(options.usage(spec, s.declared))
+    common.exit(0)
   end
-  return n
-end
-
--- Separate contact regions of a wheel (an inter-penetration area may hold two, e.g. tread and flange root).
-local function region_count(wheel)
-  local n = 0
-  for _, p in ipairs(wheel.patches) do n = n + (p.regions or 0) end
-  return n
-end
-
--- Largest contact angle over the loaded areas of a wheel: of the contact plane (`angle`, the direction of the
--- force), or of the wheel normal at the paper's nominal point (`nominal_angle`).
-local function max_angle(wheel, field)
-  local a = nil
-  for _, p in ipairs(wheel.patches) do
-    local v = p[field or "angle"]
-    if p.normal_force > 0 and (a == nil or v > a) then a = v end
+  if tostring(cmd.script):find("%c") then
+    common.refuse(2, "the study's path %s holds a control character (a line break?): rename it",
+                  common.printable(cmd.script))
   end
-  return a
-end
-
-M.sweep_columns = {
-  "yaw_deg", "y_mm", "converged", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "My_kNm", "Mz_kNm",
-  "left_patches", "left_contact_regions", "left_Fy_kN", "left_Fz_kN", "left_angle_deg", "left_max_patch_angle_deg",
-  "left_max_nominal_angle_deg", "left_rolling_radius_mm",
-  "right_patches", "right_contact_regions", "right_Fy_kN", "right_Fz_kN", "right_angle_deg", "right_rolling_radius_mm",
-  "rolling_radius_difference_mm", "iterations", "residual_force_N", "residual_moment_Nm",
-  "flange_climb",
-}
-
--- Columns of a sweep run with kinematics (ws:sweep{..., V =, mu =}): the creep forces of each wheel in the track
--- frame and the frictional power at the equilibrium's pose, and their totals. sweep_row fills them when present.
-M.creep_columns = {
-  "left_creep_Fx_kN", "left_creep_Fy_kN", "left_creep_Fz_kN", "left_power_W",
-  "right_creep_Fx_kN", "right_creep_Fy_kN", "right_creep_Fz_kN", "right_power_W",
-  "creep_Fx_kN", "creep_Fy_kN", "creep_Mz_kNm", "power_W",
-}
-
--- The columns of a sweep's table: sweep_columns, and creep_columns when the sweep solved the tangential problems.
-function M.columns(sweep)
-  for _, r in ipairs(sweep) do
-    if r.creep_force then
-      local c = {table.unpack(M.sweep_columns)}
-      for _, name in ipairs(M.creep_columns) do c[#c + 1] = name end
-      return c
-    end
-  end
-  return M.sweep_columns
-end
-
-local function creep_cells(row, r)
-  if not r.creep_force then return end
-  for _, side in ipairs{"left", "right"} do
-    local w = r[side]
-    if w.creep_force then
-      row[side .. "_creep_Fx_kN"] = w.creep_force.x / 1e3
-      row[side .. "_creep_Fy_kN"] = w.creep_force.y / 1e3
-      row[side .. "_creep_Fz_kN"] = w.creep_force.z / 1e3
-      row[side .. "_power_W"] = w.power
-    end
-  end
-  row.creep_Fx_kN, row.creep_Fy_kN = r.creep_force.x / 1e3, r.creep_force.y / 1e3
-  row.creep_Mz_kNm, row.power_W = r.creep_moment.z / 1e3, r.power
-end
-
--- One row of sweep.csv from a sweep (or equilibrium) result.
-function M.sweep_row(r)
-  local row = {yaw_deg = r.yaw * deg, y_mm = r.y * 1e3, converged = r.converged and 1 or 0}
-  if not r.converged then return row end
-  row.z_mm, row.roll_mrad = r.z * 1e3, r.roll * 1e3
-  row.Y_kN, row.Y_Q, row.My_kNm, row.Mz_kNm = r.Y / 1e3, r.Y_Q, r.My / 1e3, r.Mz / 1e3
-  for _, side in ipairs{"left", "right"} do
-    local w = r[side]
-    row[side .. "_patches"] = patch_count(w)
-    row[side .. "_contact_regions"] = region_count(w)
-    row[side .. "_Fy_kN"] = w.force.y / 1e3
-    row[side .. "_Fz_kN"] = w.force.z / 1e3
-    row[side .. "_angle_deg"] = w.angle * deg
-    row[side .. "_rolling_radius_mm"] = w.rolling_radius * 1e3
-  end
-  local a, an = max_angle(r.left), max_angle(r.left, "nominal_angle")
-  row.left_max_patch_angle_deg = a and a * deg
-  row.left_max_nominal_angle_deg = an and an * deg
-  row.rolling_radius_difference_mm = r.rolling_radius_difference and r.rolling_radius_difference * 1e3  -- nil: a wheel lifted
-  row.iterations = r.iterations
-  row.residual_force_N, row.residual_moment_Nm = r.residual.force, r.residual.moment
-  row.flange_climb = r.flange_climb and 1 or 0
-  creep_cells(row, r)
-  return row
-end
-
-M.rigid_columns = {
-  "yaw_deg", "y_mm", "converged", "tension", "z_mm", "roll_mrad", "Y_kN", "Y_Q", "Mz_kNm",
-  "left_y_mm", "left_angle_deg", "left_N_kN", "right_y_mm", "right_angle_deg", "right_N_kN",
-  "rolling_radius_difference_mm",
-}
-
-function M.rigid_row(r)
-  local g = r.rigid
-  local row = {yaw_deg = r.yaw * deg, y_mm = r.y * 1e3, converged = (g and g.converged) and 1 or 0}
-  if not (g and g.converged) then return row end
-  row.tension = g.tension and 1 or 0
-  row.z_mm, row.roll_mrad = g.z * 1e3, g.roll * 1e3
-  for _, side in ipairs{"left", "right"} do
-    row[side .. "_y_mm"] = g[side].point.y * 1e3
-    row[side .. "_angle_deg"] = g[side].angle * deg
-  end
-  if not g.tension then  -- forces only where both wheels push (else no rigid equilibrium on the rails)
-    row.Y_kN, row.Y_Q, row.Mz_kNm = g.Y / 1e3, g.Y_Q, g.Mz / 1e3
-    row.left_N_kN, row.right_N_kN = g.left.normal_force / 1e3, g.right.normal_force / 1e3
-  end
-  row.rolling_radius_difference_mm = (g.left.rolling_radius - g.right.rolling_radius) * 1e3
-  return row
-end
-
--- Rows (of sweep.csv or rigid.csv, as wrc.output.read_csv returns them) of one yaw (deg), ordered by y.
-function M.series(rows, yaw_deg)
-  local s = {}
-  for _, r in ipairs(rows) do
-    if math.abs(r.yaw_deg - yaw_deg) < 1e-9 then s[#s + 1] = r end
-  end
-  table.sort(s, function(a, b) return a.y_mm < b.y_mm end)
+  if cmd.from_parts then origin.adopt_options(folder_name(arg.out or spec.out or "results"), cmd.script) end
+  s.options, s.given = options.read(s.declared, s.byname)
+  s.script = fs.absolute(cmd.script)
+  s.dir = folder_name(s.options.out)
+  local ok, err = pcall(function()
+    fs.mkdir(s.dir)
+    fs.check_writable(s.dir)
+  end)
+  if not ok then common.refuse(1, "%s", common.plain(err)) end
   return s
 end
 
--- {z =, roll =} (m, rad) of the converged row nearest to (y, yaw) (m, rad; nil if none): a start for
--- ws:equilibrium. A case at yaw -psi is the mirror of one at +psi (y -> -y, roll -> -roll).
-function M.nearest_start(rows, y, yaw)
-  local best, dist = nil, math.huge
-  for _, r in ipairs(rows) do
-    if r.converged == 1 then
-      for _, m in ipairs{1, -1} do
-        if math.abs(m * math.rad(r.yaw_deg) - yaw) < 1e-9 then
-          local d = math.abs(m * r.y_mm * 1e-3 - y)
-          if d < dist then best, dist = {z = r.z_mm * 1e-3, roll = m * r.roll_mrad * 1e-3}, d end
-        end
-      end
-    end
+-- The options given as "key=value" (sorted by key): all of them, and those that are not `out`.
+local function given_args(s)
+  local all, args = {}, {}
+  for _, k in ipairs(s.given) do
+    local a = k .. "=" .. common.canonical(s.options[k])
+    all[#all + 1] = a
+    if k ~= "out" then args[#args + 1] = a end
   end
-  return best
+  return all, args
 end
 
--- Ranges of y (mm) where pred(row) holds, as text "a .. b, c .. d" (consecutive sweep points).
-local function ranges(series, pred)
-  local parts, first, last = {}, nil, nil
-  for _, r in ipairs(series) do
-    if r.converged == 1 and pred(r) then
-      first = first or r.y_mm
-      last = r.y_mm
-    elseif first then
-      parts[#parts + 1] = string.format("%.1f .. %.1f", first, last)
-      first = nil
-    end
-  end
-  if first then parts[#parts + 1] = string.format("%.1f .. %.1f", first, last) end
-  return #parts > 0 and table.concat(parts, ", ") or "none"
-end
-M.ranges = ranges
-
--- The y (mm) where Y/Q first exceeds `limit` going from y = 0 toward +y (linear between sweep points).
-function M.first_crossing(series, limit)
-  local prev = nil
-  for _, r in ipairs(series) do
-    if r.converged == 1 and r.y_mm >= 0 then
-      if prev and prev.Y_Q <= limit and r.Y_Q > limit then
-        return prev.y_mm + (limit - prev.Y_Q) * (r.y_mm - prev.y_mm) / (r.Y_Q - prev.Y_Q)
-      end
-      prev = r
-    end
-  end
-  return nil
+-- The run that Study:run hands to the modules (shard, merge, manifest); they read it, and only Study:run and
+-- compute_shard below set its fields:
+--   dir, script (absolute), command_script (as given), options, args ({"key=value"} given, out aside), command_args
+--   (all given), hash, lines (identity), cases, nchunks, chunk(k) -> first, last, tables, compute, key,
+--   failure_columns ({"case", key columns..., "error"}), finish, batch, shard, shards, shard_from, fresh, locks;
+--   m_old (the manifest found); lo, hi, shard_cases (the shard's chunks and cases, when it computes).
+local function new_run(s, r, cmd, nchunks, chunk)
+  local run = {dir = s.dir, script = s.script, command_script = cmd.script, options = s.options, cases = r.cases,
+               nchunks = nchunks, chunk = chunk, tables = r.tables or {}, compute = r.compute, key = r.key,
+               finish = r.finish, batch = math.max(1, r.batch or 1), shard = cmd.shard or 1, shards = cmd.shards or 1,
+               shard_from = cmd.shard_from, fresh = cmd.fresh, locks = locks.new(s.dir)}
+  run.command_args, run.args = given_args(s)
+  run.failure_columns = {"case"}
+  for _, k in ipairs(r.key_columns or {}) do run.failure_columns[#run.failure_columns + 1] = k end
+  run.failure_columns[#run.failure_columns + 1] = "error"
+  return run
 end
 
--- The summary of a sweep table (rows of sweep.csv) at one yaw (deg), Q in N: failed cases, residuals, Y/Q = 0.8
--- and the contact ranges of the left wheel.
-function M.summary(rows, yaw_deg, Q)
-  local s = M.series(rows, yaw_deg)
-  local lines = {}
-  local failed, worst_f, worst_m = 0, 0, 0
-  for _, r in ipairs(rows) do
-    if r.converged == 1 then
-      worst_f = math.max(worst_f, math.abs(r.residual_force_N) / Q)
-      worst_m = math.max(worst_m, math.abs(r.residual_moment_Nm) / Q)
-    else
-      failed = failed + 1
-    end
+-- Computes this run's shard. False when it is one of several: they are merged later, by a run of their own.
+local function compute_shard(run, cmd)
+  run.lo, run.hi = layout.shard_range(run.shard, run.shards, run.nchunks)
+  local a = run.lo <= run.hi and run.chunk(run.lo) or 1
+  local b = run.lo <= run.hi and select(2, run.chunk(run.hi)) or 0
+  run.shard_cases = b - a + 1
+  local before = nil
+  if run.shards == 1 then  -- the one writer of this folder: mark it (shards leave the manifest to the merge)
+    before = function() manifest.recorder(run, run.m_old):incomplete("computing") end
   end
-  lines[#lines + 1] = string.format("cases: %d, failed: %d", #rows, failed)
-  lines[#lines + 1] = string.format("largest residuals: force %.2e Q, moment %.2e Q m", worst_f, worst_m)
-  local y08 = M.first_crossing(s, 0.8)
-  lines[#lines + 1] = string.format("yaw %g deg: Y/Q first exceeds 0.8 at y = %s mm", yaw_deg,
-                                    y08 and string.format("%.2f", y08) or "(never)")
-  local function over60(v) return v ~= nil and v > 60 end
-  lines[#lines + 1] = "  left wheel, one inter-penetration area:   y = " .. ranges(s, function(r) return r.left_patches == 1 end) .. " mm"
-  lines[#lines + 1] = "  left wheel, two inter-penetration areas:  y = " .. ranges(s, function(r) return r.left_patches == 2 end) .. " mm"
-  lines[#lines + 1] = "  left wheel, one contact region:  y = " .. ranges(s, function(r) return r.left_contact_regions == 1 end) .. " mm"
-  lines[#lines + 1] = "  left wheel, two contact regions: y = " .. ranges(s, function(r) return r.left_contact_regions >= 2 end) .. " mm"
-  lines[#lines + 1] = "  left wheel, no contact:          y = " .. ranges(s, function(r) return r.left_patches == 0 end) .. " mm"
-  lines[#lines + 1] = "  left contact angle > 60 deg:    y = " ..
-                          ranges(s, function(r) return over60(r.left_max_patch_angle_deg) end) ..
-                          " mm (contact plane: the force direction)"
-  lines[#lines + 1] = "                                  y = " ..
-                          ranges(s, function(r) return over60(r.left_max_nominal_angle_deg) end) ..
-                          " mm (wheel normal at the paper's nominal point)"
-  lines[#lines + 1] = "  right wheel lifted (no load):   y = " .. ranges(s, function(r) return r.right_patches == 0 end) .. " mm"
-  return table.concat(lines, "\n") .. "\n"
+  local stats = shard.compute(run, before)
+  local msg = ("%d cases computed in %d s (%.1f s cpu), %d failed"):format(stats.cases, stats.wall, stats.cpu,
+                                                                           stats.failed)
+  if stats.resumed > 0 then msg = msg .. (", %d resumed from earlier parts"):format(stats.resumed) end
+  if run.shards > 1 then
+    say("shard %d of %d done: %s. Once every shard is done: wrc merge %s out=%s (or this command with --merge)",
+        run.shard, run.shards, msg, common.shell_word(cmd.script), common.shell_word(run.dir))
+    if stats.failed > 0 then cmd.status = 3 end
+    return false
+  end
+  say("%s", msg)
+  return true
 end
 
--- Figures 4 and 5 and the rigid/elastic comparison from the tables (rows of sweep.csv and rigid.csv, the same
--- cases in the same order) for the yaws given in degrees.
-function M.plot_sweep(dir, rows, rigid_rows, yaws_deg)
-  local function series_xy(yaw, column, rigid, forces)
-    local xs, vs = {}, {}
-    local src_rows = rigid and rigid_rows or rows
-    for _, r in ipairs(M.series(src_rows, yaw)) do
-      xs[#xs + 1] = r.y_mm
-      local ok = r.converged == 1 and not (forces and r.tension == 1) and r[column] ~= nil
-      vs[#vs + 1] = ok and r[column] or 0 / 0
-    end
-    return xs, vs
+-- r = {
+--   cases = n,                                    -- the study's cases, 1..n
+--   chunks = {{first =, last =}, ...} | chunk_size = m,  -- each solved on its own (continuation inside a chunk)
+--   tables = {{key = "sweep", file = "sweep.csv", columns = {...}}, ...},
+--   compute = function(batch) -> results,         -- batch = {chunks = {{index =, first =, last =}, ...}, first =, last =};
+--                                                 -- results[case] = {<key> = row or {rows}, error = "why" (failed)}
+--   key = function(case) -> {column = value},     -- the columns that name a case in failures.csv (key_columns)
+--   key_columns = {...},
+--   inputs = {name = value},                      -- profiles, numbers, strings, tables: part of the study's hash
+--   batch = 8,                                    -- chunks per compute call (one checkpoint block per call)
+--   finish = function(ctx),                       -- after the merge: figures and summary from the tables (ctx.read)
+-- }
+-- Returns the number of failed cases (nothing for one shard of several); wrc.command.status is 3 when some failed.
+function Study:run(r)
+  local cmd = common.command()
+  cmd.study = true  -- the host's flags applied (a script that never gets here ignores them; the host says so)
+  assert(math.type(r.cases) == "integer" and r.cases >= 1, "study:run: cases must be a positive integer")
+  assert(type(r.compute) == "function", "study:run: compute(batch) is required")
+  local nchunks, chunk, chunks_text = layout.chunks(r)  -- (its errors name the study's line)
+  local run = new_run(self, r, cmd, nchunks, chunk)
+  run.hash, run.lines = identity.of(self.script, self.declared, self.options, r, chunks_text)
+  manifest.check_folder(run.dir)  -- before anything is created in a folder that is refused
+  -- One run at a time writes the folder (a merge, or the study in one process) and one computes each shard: locked
+  -- before the folder is read for good.
+  if cmd.merge or run.shards == 1 then run.locks:merge() end
+  if not cmd.merge then run.locks:shard(run.shard, run.shards) end
+  run.m_old = manifest.check_folder(run.dir, true)
+  if not cmd.merge and not compute_shard(run, cmd) then return end
+  local failed = merge.merge(run)
+  if failed > 0 then
+    say("%d of %d cases failed (listed in %s/failures.csv)", failed, run.cases, run.dir)
+    cmd.status = 3
   end
-  local function plot(file, ylabel, column, title, with_rigid, forces)
-    local series = {}
-    for _, yaw in ipairs(yaws_deg) do
-      local x, v = series_xy(yaw, column)
-      series[#series + 1] = {x = x, y = v, title = string.format("elastic, yaw %g deg", yaw), style = "linespoints pt 7 ps 0.4"}
-      if with_rigid then
-        local xr, vr = series_xy(yaw, column, true, forces)
-        series[#series + 1] = {x = xr, y = vr, title = string.format("rigid, yaw %g deg", yaw), style = "lines lw 2 dt 2"}
-      end
-    end
-    out.plot{file = dir .. "/" .. file, title = title, xlabel = "lateral displacement y (mm)", ylabel = ylabel, series = series}
-  end
-  plot("fig4_z.png", "vertical displacement z (mm)", "z_mm", "Fig. 4: height of the centre")
-  plot("fig4_roll.png", "roll angle (mrad)", "roll_mrad", "Fig. 4: roll angle")
-  plot("fig5_YQ.png", "Y/Q", "Y_Q", "Fig. 5: lateral / vertical force")
-  plot("fig5_Mz.png", "Mz (kN m)", "Mz_kNm", "Fig. 5: yaw moment that holds the wheelset")
-  plot("rigid_vs_elastic_z.png", "z (mm)", "z_mm", "rigid vs elastic contact: height", true)
-  plot("rigid_vs_elastic_roll.png", "roll (mrad)", "roll_mrad", "rigid vs elastic contact: roll", true)
-  plot("rigid_vs_elastic_YQ.png", "Y/Q", "Y_Q", "rigid vs elastic contact: Y/Q (rigid: where both wheels push)", true, true)
+  return failed
 end
 
--- A sweep of equilibria as a study (wrc.study.new): the cases yaw x y (y ascending), cut into the engine's
--- continuation chunks (ws:sweep_plan), each computed on its own, so that any split into shards, batches or threads
--- gives the same rows. Writes sweep.csv (and rigid.csv with rigid = true) and calls o.finish(ctx) after the merge.
---   o = {y = {...} (ascending), yaw = {...} (rad), Q =, rigid =, threads =, chain =, inputs =, finish =}
-function M.run_sweep(s, ws, o)
-  for i = 2, #o.y do assert(o.y[i] > o.y[i - 1], "study.run_sweep: y must be ascending") end
-  local plan = ws:sweep_plan{y = o.y, yaw = o.yaw, chain = o.chain}
-  local chunks = {}
-  for k, c in ipairs(plan.chunks) do chunks[k] = {first = c.first, last = c.last} end
-  local threads = (o.threads and o.threads > 0) and o.threads or wrc.cores
-  local tables = {{key = "sweep", file = "sweep.csv", columns = M.sweep_columns}}
-  if o.rigid then tables[2] = {key = "rigid", file = "rigid.csv", columns = M.rigid_columns} end
-  local ny = #o.y
-  return s:run{
-    cases = plan.cases, chunks = chunks, tables = tables, inputs = o.inputs, batch = 2 * threads,
-    key_columns = {"yaw_deg", "y_mm"},
-    key = function(i) return {yaw_deg = o.yaw[(i - 1) // ny + 1] * deg, y_mm = o.y[(i - 1) % ny + 1] * 1e3} end,
-    compute = function(batch)
-      local ids = {}
-      for _, c in ipairs(batch.chunks) do ids[#ids + 1] = c.index end
-      local sweep = ws:sweep{y = o.y, yaw = o.yaw, Q = o.Q, rigid = o.rigid, threads = o.threads, chain = o.chain,
-                             chunks = ids, progress = false}
-      local results = {}
-      for _, r in ipairs(sweep) do
-        results[r.case] = {sweep = M.sweep_row(r), rigid = o.rigid and M.rigid_row(r) or nil,
-                           error = (not r.converged) and (r.error or "did not converge") or nil}
-      end
-      return results
-    end,
-    finish = o.finish,
-  }
-end
+-- `wrc merge DIR` (the form before wrc named the study): runs nothing, says where the parts came from and how to
+-- merge them. The host calls it.
+M.refuse_folder_merge = origin.refuse_folder_merge
 
--- Grid centres (mm) of a patch in its contact plane.
-local function axes(p)
-  local xs, ys = {}, {}
-  for i = 1, p.grid.nx do xs[i] = (p.grid.x0 + (i - 1) * p.grid.dx) * 1e3 end
-  for j = 1, p.grid.ny do ys[j] = (p.grid.y0 + (j - 1) * p.grid.dy) * 1e3 end
-  return xs, ys
+-- The sweep tables and the paper's figures were in wrc.study until it became the runner alone: a study that still
+-- looks for them here is told where they are.
+local MOVED = {}
+for _, name in ipairs{"sweep_columns", "creep_columns", "columns", "sweep_row", "rigid_columns", "rigid_row", "series",
+                      "nearest_start", "ranges", "first_crossing", "summary", "plot_sweep", "run_sweep", "plot_patches",
+                      "plot_rail_pressure"} do
+  MOVED[name] = true
 end
-
-local function scaled(grid, k, floor)
-  local v = {}
-  for j, row in ipairs(grid) do
-    v[j] = {}
-    for i, x in ipairs(row) do v[j][i] = floor and math.max(x * k, floor) or x * k end
+setmetatable(M, {__index = function(_, name)
+  if MOVED[name] then
+    error(("wrc.study.%s is in wrc.sweep now: local sweep = require \"wrc.sweep\", then sweep.%s"):format(name, name), 2)
   end
-  return v
-end
-
--- The grid's second axis: across the contact plane, or along the rail's profile (a conformal area).
-local function across(p)
-  return p.surface == "conformal" and "arc length along the rail profile (mm)" or "lateral, in the contact plane (mm)"
-end
-
--- Figures 6 and 7: pressure and undeformed distance of every contact area of an equilibrium.
-function M.plot_patches(dir, tag, e)
-  for _, side in ipairs{"left", "right"} do
-    for k, p in ipairs(e[side].patches) do
-      if p.pressure then
-        local xs, ys = axes(p)
-        local name = string.format("%s_%s%d", tag, side, k)
-        out.map{file = string.format("%s/fig6_pressure_%s.png", dir, name), x = xs, y = ys, value = scaled(p.pressure, 1e-6),
-                title = string.format("pressure (MPa), %s wheel, %s: N = %.1f kN, angle %.1f deg", side, tag,
-                                      p.normal_force / 1e3, p.angle * deg),
-                xlabel = "x, rolling direction (mm)", ylabel = across(p), cblabel = "MPa"}
-        out.map{file = string.format("%s/fig7_h_%s.png", dir, name), x = xs, y = ys, value = scaled(p.h, 1e3, -0.05),
-                title = string.format("undeformed distance h (mm, > 0 inter-penetration), %s wheel, %s", side, tag),
-                xlabel = "x, rolling direction (mm)", ylabel = across(p), cblabel = "mm"}
-      end
-    end
-  end
-end
-
--- The rail surface point under an element of an area: the element's lateral plane coordinate v placed between
--- the two rail lines (from the area's segments) that bracket it; x along the track from the plane.
-local function rail_surface_mapper(p)
-  local o, t1, t2 = p.frame.origin, p.frame.t1, p.frame.t2
-  if p.rows then  -- a conformal area lies on the rail: its grid row j at (rows.y[j], rows.z[j]), x from its origin
-    return function(u, v)
-      local j = math.floor((v - p.grid.y0) / p.grid.dy + 0.5) + 1
-      return o.x + u, p.rows.y[j], p.rows.z[j]
-    end
-  end
-  local lines, seen = {}, {}
-  for _, s in ipairs(p.segments or {}) do
-    if not seen[s.line] then
-      seen[s.line] = true
-      lines[#lines + 1] = {v = (s.y - o.y) * t2.y + (s.z - o.z) * t2.z - o.x * t2.x, y = s.y, z = s.z}
-    end
-  end
-  table.sort(lines, function(a, b) return a.v < b.v end)
-  return function(u, v)
-    local x = o.x + u * t1.x + v * t2.x
-    if #lines < 2 then return x, o.y + u * t1.y + v * t2.y, o.z + u * t1.z + v * t2.z end
-    local k = 1
-    while k < #lines - 1 and lines[k + 1].v < v do k = k + 1 end
-    local a, b = lines[k], lines[k + 1]
-    local f = (v - a.v) / (b.v - a.v)
-    return x, a.y + f * (b.y - a.y), a.z + f * (b.z - a.z)
-  end
-end
-
--- Figure 8: the pressure of the left wheel's contact areas on the rail surface, in the track frame.
-function M.plot_rail_pressure(dir, name, title, e)
-  local points = {}
-  for _, p in ipairs(e.left.patches) do
-    if p.pressure then
-      local on_rail = rail_surface_mapper(p)
-      for j = 1, p.grid.ny do
-        for i = 1, p.grid.nx do
-          local pr = p.pressure[j][i]
-          if pr > 0 then
-            local x, y, z = on_rail(p.grid.x0 + (i - 1) * p.grid.dx, p.grid.y0 + (j - 1) * p.grid.dy)
-            points[#points + 1] = {x * 1e3, y * 1e3, z * 1e3, pr * 1e-6}
-          end
-        end
-      end
-    end
-  end
-  out.scatter3d{file = dir .. "/" .. name .. "_rail_pressure.png", points = points, width = 900, height = 700,
-                title = "Fig. 8: pressure on the left rail surface, " .. title, xlabel = "x (mm)", ylabel = "y (mm)",
-                zlabel = "z (mm)", cblabel = "MPa"}
-end
+end})
 
 return M

@@ -244,14 +244,14 @@ do
       check.rel(r[side].creep_force.y, c[side].creep_force.y, 1e-4, "sweep creep force y, " .. side)
     end
   end
-  -- The sweep table's creep columns (wrc.study).
-  local study = require "wrc.study"
-  local cols = study.columns(s)
-  check.ok(cols[#cols] == "power_W" and #cols == #study.sweep_columns + #study.creep_columns, "creep columns")
-  local row = study.sweep_row(s[2])
+  -- The sweep table's creep columns (wrc.sweep).
+  local tables = require "wrc.sweep"
+  local cols = tables.columns(s)
+  check.ok(cols[#cols] == "power_W" and #cols == #tables.sweep_columns + #tables.creep_columns, "creep columns")
+  local row = tables.sweep_row(s[2])
   check.rel(row.left_creep_Fx_kN, s[2].left.creep_force.x / 1e3, 1e-12, "creep column left_creep_Fx_kN")
   check.rel(row.power_W, s[2].power, 1e-12, "creep column power_W")
-  check.ok(#study.columns(ws:sweep{y = {0}, Q = 200e3, threads = 1, progress = false}) == #study.sweep_columns,
+  check.ok(#tables.columns(ws:sweep{y = {0}, Q = 200e3, threads = 1, progress = false}) == #tables.sweep_columns,
            "no creep columns without kinematics")
   local ok = pcall(function() return ws:equilibrium{y = 0, Q = 200e3, V = V, mu = 0.3} end)
   check.ok(not ok, "the equilibrium is frictionless: kinematics keys are refused")

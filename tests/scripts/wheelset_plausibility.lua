@@ -82,11 +82,11 @@ for _, e in ipairs(s) do
   end
 end
 
-local study = require "wrc.study"
+local tables = require "wrc.sweep"
 local has_column = false
-for _, c in ipairs(study.sweep_columns) do has_column = has_column or c == "flange_climb" end
+for _, c in ipairs(tables.sweep_columns) do has_column = has_column or c == "flange_climb" end
 check.ok(has_column, "sweep.csv has the column flange_climb")
-check.ok(study.sweep_row(s[1]).flange_climb == 0, "a paper row: flange_climb = 0")
+check.ok(tables.sweep_row(s[1]).flange_climb == 0, "a paper row: flange_climb = 0")
 
 for _, y in ipairs{20e-3, 50e-3, -20e-3, -50e-3} do
   local e = ws:equilibrium{y = y, Q = Q}
@@ -98,7 +98,7 @@ for _, y in ipairs{20e-3, 50e-3, -20e-3, -50e-3} do
   check.ok(e.flange_climb_reason:find(up .. " wheel: lifted", 1, true), what .. ": " .. tostring(e.flange_climb_reason))
   local reported = tonumber(e.flange_climb_reason:match("lifted ([%d.]+) mm"))
   check.near(reported * 1e-3, lift(e, up), 2e-3, what .. ": the reported lift")
-  check.ok(study.sweep_row(e).flange_climb == 1, what .. ": flange_climb = 1 in a sweep row")
+  check.ok(tables.sweep_row(e).flange_climb == 1, what .. ": flange_climb = 1 in a sweep row")
 end
 
 -- Contact beyond the steepest part of the flange: the wheelset held 14 mm out at zero roll, pressed onto the flange.

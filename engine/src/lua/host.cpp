@@ -216,7 +216,7 @@ int refuse_folder_merge(const std::string& folder) {
   lua_State* L = open_or_report();
   if (L == nullptr) return 1;
   push_command(L, "", RunFlags{});
-  int status = luaL_loadstring(L, "return require('wrc.study.run').refuse_folder_merge(...)");
+  int status = luaL_loadstring(L, "return require('wrc.study').refuse_folder_merge(...)");
   if (status == LUA_OK) {
     lua_pushstring(L, folder.c_str());
     status = pcall_traceback(L, 1, 0);

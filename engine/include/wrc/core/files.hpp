@@ -1,5 +1,5 @@
 // Files written whole or not at all, folder listings and content hashes: the mechanics under study outputs
-// (scripts/study/run.lua), which must never leave a file that looks complete and is not.
+// (scripts/study/), which must never leave a file that looks complete and is not.
 #pragma once
 
 #include <cstdint>
