@@ -27,6 +27,7 @@ local manifest = require "wrc.study.manifest"
 local merge = require "wrc.study.merge"
 local options = require "wrc.study.options"
 local origin = require "wrc.study.origin"
+local parts = require "wrc.study.parts"
 local shard = require "wrc.study.shard"
 local fs = wrc.fs
 local M = {}
@@ -142,12 +143,15 @@ function Study:run(r)
   local nchunks, chunk, chunks_text = layout.chunks(r)  -- (its errors name the study's line)
   local run = new_run(self, r, cmd, nchunks, chunk)
   run.hash, run.lines = identity.of(self.script, self.declared, self.options, r, chunks_text)
-  manifest.check_folder(run.dir)  -- before anything is created in a folder that is refused
+  -- A folder without parts is checked before anything is created in it (a refused folder stays as it was); one with
+  -- parts only once its locks are held, so that a file that another run is writing there is not taken as unknown.
+  local has_parts = fs.kind(run.dir .. "/" .. parts.FOLDER) == "folder"
+  if not has_parts then manifest.check_folder(run.dir) end
   -- One run at a time writes the folder (a merge, or the study in one process) and one computes each shard: locked
   -- before the folder is read for good.
   if cmd.merge or run.shards == 1 then run.locks:merge() end
   if not cmd.merge then run.locks:shard(run.shard, run.shards) end
-  run.m_old = manifest.check_folder(run.dir, true)
+  run.m_old = manifest.check_folder(run.dir, not has_parts)
   if not cmd.merge and not compute_shard(run, cmd) then return end
   local failed = merge.merge(run)
   if failed > 0 then
