@@ -12,6 +12,8 @@
 #include <functional>
 #include <string>
 
+#include <unistd.h>
+
 using namespace wrc;
 
 namespace {
@@ -27,7 +29,8 @@ const ReaderRegistry& built_plugins() {
 
 std::string tmp_path(const std::string& name) {
   const char* t = std::getenv("WRC_TEST_TMP");
-  return std::string(t && *t ? t : "/tmp") + "/reader_input_" + name;
+  // The process id in the name: two runs of the suite at once (or ctest -j) never write each other's files.
+  return std::string(t && *t ? t : "/tmp") + "/reader_input_" + std::to_string(getpid()) + "_" + name;
 }
 
 std::string write(const std::string& name, const std::string& text) {
