@@ -357,28 +357,37 @@ def table_after(path, heading):
     return rows
 
 
+def read_or_report(root, rel):
+    """The text of a file the checks need; a missing one is a problem, not a crash."""
+    path = os.path.join(root, rel)
+    if not os.path.exists(path):
+        report(path, 1, f"{rel} is missing")
+        return ""
+    return open(path, encoding="utf-8").read()
+
+
 def check_readme(root):
     readme = os.path.join(root, "README.md")
     lines = open(readme, encoding="utf-8").read().split("\n")
     count = len(lines) - (1 if lines[-1] == "" else 0)
     if count > 300:
         report(readme, count, f"README.md has {count} lines, more than 300: move the detail to docs/")
-    started = os.path.join(root, "docs/getting-started.md")
     commands = [l for l in lines if l.startswith(".ci/deps")]
-    theirs = set(open(started, encoding="utf-8").read().split("\n"))
+    theirs = set(read_or_report(root, "docs/getting-started.md").split("\n"))
     for c in commands:
         if c not in theirs:
             report(readme, lines.index(c) + 1, f"set-up command not in docs/getting-started.md: {c}")
     if not commands:
         report(readme, 1, "README.md shows no set-up command (.ci/deps ...)")
     nav = set(re.findall(r"(?m)^\s*-\s*(?:[^:\n]+|\"[^\"]*\"):\s*([\w/.-]+\.md)\s*$",
-                         open(os.path.join(root, "mkdocs.yml"), encoding="utf-8").read()))
+                         read_or_report(root, "mkdocs.yml")))
     for page in sorted(glob.glob(os.path.join(root, "docs/**/*.md"), recursive=True)):
         rel = os.path.relpath(page, os.path.join(root, "docs"))
         if rel not in nav:
             report(os.path.join(root, "mkdocs.yml"), 1, f"docs/{rel} is not in the nav: the site does not reach it")
-    ours, paper = table_after(readme, "The paper in the code"), table_after(os.path.join(root, "docs/paper.md"),
-                                                                             "The paper in the code")
+    paper_page = os.path.join(root, "docs/paper.md")
+    ours = table_after(readme, "The paper in the code")
+    paper = table_after(paper_page, "The paper in the code") if os.path.exists(paper_page) else None
     if not ours or ours != paper:
         report(readme, 1, "the paper-to-code table differs from the one of docs/paper.md (or is missing)")
 
