@@ -79,12 +79,12 @@ Profile finish_profile(RawProfile raw, const LoadOptions& options, const std::st
 Profile transform_profile(const Profile& p, const LoadOptions& options);
 
 // Where a profile name points, one rule for every caller (wrc.profile.load, wrc_profile_load, a definition loading
-// another; README "Where profiles are found"): a relative path whose first name is `profiles` ("profiles/60e1.lua")
-// is the shipped profile of that name in paths().profiles -- never a file of the working directory, so that a
-// planted ./profiles/60e1.lua cannot replace the shipped rail; any other path (absolute, "./profiles/60e1.lua",
-// "measured/w1.whl") is a file, relative to the working directory. Returns the path to open; throws wrc::Error when
-// there is no such file (for a shipped name: listing the shipped profiles, and the ./ path of a file of the working
-// directory with that name).
+// another; docs/guide/profiles.md "Where profiles are found"): a relative path whose first name is `profiles`
+// ("profiles/60e1.lua") is the shipped profile of that name in paths().profiles -- never a file of the working
+// directory, so that a planted ./profiles/60e1.lua cannot replace the shipped rail; any other path (absolute,
+// "./profiles/60e1.lua", "measured/w1.whl") is a file, relative to the working directory. Returns the path to open;
+// throws wrc::Error when there is no such file (for a shipped name: listing the shipped profiles, and the ./ path of a
+// file of the working directory with that name).
 std::string resolve_profile_path(const std::string& name);
 
 // True when `path` is a file directly in paths().profiles (a shipped profile), by its canonical path.
