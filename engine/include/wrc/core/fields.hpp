@@ -2,7 +2,7 @@
 // a flat map of "left.patches.1.force.z" paths, a CSV writer a row. A result type provides
 //   void describe(const Result&, FieldSink&)
 // calling the sink's methods in a fixed order. Names carry no units: each call gives the field's FieldDoc (unit and
-// meaning) beside its value, so that the field reference (docs/reference/fields.md) is made by the same calls that
+// meaning) beside its value, so that a field reference is made by the same calls that
 // fill results and cannot drift from them.
 #pragma once
 
