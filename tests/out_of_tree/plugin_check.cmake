@@ -7,12 +7,13 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX} R
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc})")
 endif()
-set(plugin_source ${SOURCE}/tests/install/reader_plugin)
+set(plugin_source ${SOURCE}/tests/out_of_tree/reader_plugin)
 
 # 1. CMake package: the prefix alone (no package registry), and the include path must be the prefix's.
 set(cbuild ${PREFIX}/build-plugin)
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${plugin_source} -B ${cbuild} -DCMAKE_PREFIX_PATH=${PREFIX}
-                        -DCMAKE_C_COMPILER=${CC} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+                        -DCMAKE_C_COMPILER=${CC} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+                        -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc EQUAL 0)
   execute_process(COMMAND ${CMAKE_COMMAND} --build ${cbuild} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -47,8 +48,8 @@ foreach(dir ${cbuild}/plugins ${PREFIX}/plugin-pc)
     message(FATAL_ERROR "${dir}/wrc_reader_station.so links libwrc (or objdump failed, ${rc}):\n${headers}")
   endif()
   file(MAKE_DIRECTORY ${PREFIX}/tmp)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E env WRC_PLUGIN_PATH=${dir}
-                          ${PREFIX}/bin/wrc run ${SOURCE}/tests/install/plugin_check.lua tmp=${PREFIX}/tmp plugins=${dir}
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env WRC_PLUGIN_PATH=${dir} ${PREFIX}/bin/wrc run
+                          ${SOURCE}/tests/out_of_tree/plugin_check.lua tmp=${PREFIX}/tmp plugins=${dir}
                   WORKING_DIRECTORY / RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "the installed wrc with the plugin of ${dir} failed (${rc}):\n${out}\n${err}")

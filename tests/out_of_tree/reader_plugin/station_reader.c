@@ -1,5 +1,5 @@
-/* A reader plugin built out of tree, against an installed wrc alone (tests/install/plugin_check.cmake): survey
- * stations, one point per line, "<label> <y> <z>" in millimetres in the engine frame, after a first line
+/* A reader plugin built out of tree, against an installed wrc alone (tests/out_of_tree/plugin_check.cmake):
+ * survey stations, one point per line, "<label> <y> <z>" in millimetres in the engine frame, after a first line
  * "stations wheel" or "stations rail"; '#' starts a comment. Its own option `first` (a label) skips the stations
  * before that one. */
 #include <wrc/reader.h>

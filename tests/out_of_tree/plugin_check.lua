@@ -1,6 +1,6 @@
--- The station reader (tests/install/reader_plugin), built out of tree against an installed wrc and given to the
--- installed wrc through WRC_PLUGIN_PATH: it is listed from that folder, reads a file of known points (a parabola,
--- mm) into the same points in metres, takes its own option and reports a bad line with the file and line.
+-- The station reader (tests/out_of_tree/reader_plugin), built out of tree against an installed wrc and given to
+-- the installed wrc through WRC_PLUGIN_PATH: it is listed from that folder, reads a file of known points (a
+-- parabola, mm) into the same points in metres, takes its own option and reports a bad line with the file and line.
 --   wrc run plugin_check.lua tmp=<folder> plugins=<the folder in WRC_PLUGIN_PATH>
 local check = require "wrc.check"
 
@@ -17,7 +17,8 @@ for _, r in ipairs(wrc.profile.readers()) do
   if r.id == "station" then station = r end
 end
 check.ok(station ~= nil, "the station reader is listed")
-check.ok(station.origin:find(arg.plugins, 1, true) == 1, "the station reader comes from " .. arg.plugins .. ": " .. station.origin)
+check.ok(station.origin:find(arg.plugins, 1, true) == 1,
+         "the station reader comes from " .. arg.plugins .. ": " .. station.origin)
 check.ok(station.extensions[1] == ".sta" and station.options[1] == "first", "its extension and option")
 
 -- y every millimetre from -20 to 20, z = -y^2/400 (mm).
