@@ -85,7 +85,7 @@ std::string error_of(const std::string& name, const std::string& options, const 
 
 }  // namespace
 
-TEST_CASE("load_profile: a .lua definition runs through the loader given, with every option as its `...`") {
+TEST_CASE("load_profile: a .lua definition runs through the loader given, with every option as its arguments") {
   const std::string path = write("head.lua", "error('the fake loader never runs this')\n");
   FakeDefinitions fake;
   const DefinitionLoader loader = fake.loader();
@@ -108,7 +108,7 @@ TEST_CASE("load_profile: a .lua definition runs through the loader given, with e
   CHECK(p.kind == ProfileKind::rail);
 }
 
-TEST_CASE("load_profile: a file never reaches the definition loader; a .lua given to a reader is a file") {
+TEST_CASE("load_profile: a file never reaches the definition loader, nor does a .lua given to a reader") {
   const Head h;
   const std::string txt = write("head.txt", h.text());
   FakeDefinitions fake;
@@ -129,7 +129,7 @@ TEST_CASE("load_profile: a file never reaches the definition loader; a .lua give
   CHECK(q.z == p.z);
 }
 
-TEST_CASE("load_profile: without a definition loader a definition is refused; units never apply to one") {
+TEST_CASE("load_profile: without a definition loader a definition is refused, and units never apply to one") {
   const std::string path = write("refused.lua", "return nil\n");
   CHECK(error_of(path, "", nullptr) ==
         "wrc.profile.load: " + path + ": a Lua profile definition, and this program loads no Lua (only files that a "

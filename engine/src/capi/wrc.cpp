@@ -284,7 +284,8 @@ wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile**
     auto p = std::make_shared<wrc_profile>();
     p->profile = std::make_shared<const wrc::Profile>(
         wrc::load_profile(path, options_of(options, "wrc_profile_load: options"), &definitions));
-    for (const std::string& w : p->profile->warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+    for (const std::string& w : p->profile->warnings)
+      std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
     *out = registry().add(std::move(p));
     return WRC_OK;
   });
