@@ -44,7 +44,7 @@ void describe_sample(FieldSink& out) {
 
 }  // namespace
 
-TEST_CASE("fields: documentation reaches document() before each value; undocumented calls reach only the value") {
+TEST_CASE("fields: documentation reaches document() before each value, undocumented calls reach only the value") {
   Recorder r;
   describe_sample(r);
   const std::vector<std::string> expected = {

@@ -27,7 +27,7 @@ RunFlags flags_of(std::vector<std::string> args, const std::map<std::string, std
 
 }  // namespace
 
-TEST_CASE("host flags: --shard K/N, --merge, --fresh, --help are taken out; key=value words stay") {
+TEST_CASE("host flags: --shard K/N, --merge, --fresh, --help are taken out, key=value words stay") {
   std::vector<std::string> args{"step_mm=0.5", "--shard", "2/4", "out=x", "--fresh"};
   const RunFlags f = flags(args);
   CHECK(args == std::vector<std::string>{"step_mm=0.5", "out=x"});
