@@ -337,7 +337,7 @@ TEST_CASE("subsurface on a grid: both methods equal the sum of rectangle_stress 
   }
 }
 
-TEST_CASE("subsurface: the FFT path equals the direct path to rounding; symmetries of a sliding Hertz load") {
+TEST_CASE("subsurface: the FFT path equals the direct path to rounding, and the symmetries of a sliding Hertz load") {
   const double a = 4e-3, p0 = 1.2e9, mu = 0.25;
   const Grid g = hertz_grid(a, 15, 3);  // 37 x 37
   const std::vector<double> p = hertz_pressure(g, a, p0);

@@ -160,7 +160,7 @@ SubsurfaceResult compute_subsurface(const Material& material, const SurfaceLoad&
 
 // Fields (Lua and C): body, method, nu, von_mises_max, von_mises_max_x/_y/_z, tresca_max, tresca_max_x/_y/_z,
 // tau1_max (Pa, m), shakedown = {p0, shear_yield, load_factor, traction_coefficient, elastic_limit, subsurface_limit,
-// surface_limit (absent when infinite), map, regime}, depths = list of {z, von_mises_max (_x, _y), tresca_max (_x, _y)
+// surface_limit (the two limits absent when infinite: no stress, no traction), map, regime}, depths = list of {z, von_mises_max (_x, _y), tresca_max (_x, _y)
 // and, with fields, the grids sigma_xx, sigma_yy, sigma_zz, sigma_xy, sigma_xz, sigma_yz, sigma_1, sigma_2, sigma_3,
 // von_mises, tresca, max_shear}.
 void describe(const SubsurfaceResult& result, FieldSink& out);
