@@ -1,6 +1,7 @@
 // Sweeps of equilibria with continuation along y, on worker threads (equilibrium.hpp).
 #include "wrc/core/error.hpp"
 #include "wrc/core/files.hpp"
+#include "wrc/core/parallel.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 
 #include "wrc/core/error.hpp"
 #include "wrc/core/files.hpp"
+#include "wrc/core/parallel.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 

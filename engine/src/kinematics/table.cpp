@@ -2,6 +2,7 @@
 #include "wrc/kinematics/table.hpp"
 
 #include "wrc/core/files.hpp"
+#include "wrc/core/parallel.hpp"
 
 #include "wrc/core/error.hpp"
 
