@@ -8,7 +8,7 @@
 -- For each pair: the rigid contact geometry table y = -10 .. 10 mm every 0.05 mm with the roll free (CSV and the
 -- multibody text table), its contact-point jumps, the contact-point chart (PNG), and tan(gamma_e) against the
 -- amplitude up to flange contact with the roll fixed (EN 15302's usual way) and free. Writes into `out`:
---   table_<pair>.csv, table_<pair>.txt     the geometry tables (README "Rigid contact geometry" lists the columns)
+--   table_<pair>.csv, table_<pair>.txt     the geometry tables (docs/guide/geometry.md lists the columns)
 --   conicity.csv                           pair, roll, yhat_mm, tan_gamma (integral method)
 --   conicity.png, dr.png                   tan(gamma_e) against the amplitude; Δr against y
 --   contact_<pair>.png                     the contact-point chart of the left wheel
@@ -27,7 +27,7 @@ local dir, plots = opt.out, opt.plots
 local s1002 = wrc.profile.load("profiles/s1002.lua")
 local e60 = wrc.profile.load("profiles/60e1.lua")
 -- The worn wheel is a measurement-like file (0.2 mm points, +-3 um noise): smoothed on load (smooth = 0.5 mm halves
--- waviness of 3 mm wavelength and removes the noise; README "Profiles as smooth curves").
+-- waviness of 3 mm wavelength and removes the noise; docs/guide/profiles.md "Profiles as smooth curves").
 -- Its file ships with the examples (wrc.paths.root/examples), found so from any working directory.
 local worn = wrc.profile.load(wrc.paths.root .. "/examples/data/s1002_hollow_worn.whl", {smooth = 0.5e-3})
 local pairs_ = {

@@ -12,7 +12,7 @@
 -- Writes into `out`: creep_curves.csv (every point of the curves: y_mm, curve, creepage, F / (mu N) exact and
 -- FASTSIM), curves_xi.png, curves_eta.png, curves_spin.png, traction.csv (the area's grids: x_mm, y_mm are the grid's
 -- coordinates, on the default conformal area x along the track and s along the rail's profile), traction_*.png and
--- summary.txt (the numbers of README "Rolling contact").
+-- summary.txt (the numbers of docs/guide/rolling.md "Rolling contact").
 local out = require "wrc.output"
 
 local dir = arg.out or "results/creep"

@@ -11,7 +11,7 @@
 --
 -- Writes into `out`: sweep.csv (elastic), rigid.csv (rigid reference), the figures of the paper as PNG
 -- (fig4_z_roll, fig5_YQ_Mz, fig6_pressure_*, fig7_h_*, fig8_rail_*, rigid_vs_elastic) with their data, and
--- summary.txt (the numbers quoted in the README), all made from the two tables; manifest.txt lists them.
+-- summary.txt (the numbers quoted in docs/getting-started.md), all made from the two tables; manifest.txt lists them.
 local study = require "wrc.study"
 local sweep = require "wrc.sweep"
 

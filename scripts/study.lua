@@ -1,5 +1,5 @@
 -- wrc.study: the study runner. A study declares its options and its cases, and runs in one process or in shards on
--- many machines (README "Studies: declared options, safe outputs, shards and clusters"). Its cases are cut into
+-- many machines (docs/guide/studies.md). Its cases are cut into
 -- chunks (fixed by the study, never by the number of shards or threads); a shard computes a contiguous range of
 -- chunks and streams their rows into checkpoint blocks in OUT/parts; a run again resumes after the last whole block;
 -- the merge concatenates the blocks into exactly the tables one process writes, then the study makes its figures and

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs a wrc study in N shards with GNU parallel -- on this machine, or on several over ssh -- then merges them into
-# exactly the files a single process writes (README "Studies at scale").
+# exactly the files a single process writes (docs/guide/studies.md).
 #
 #   examples/cluster/parallel.sh [-n SHARDS] [-j JOBS] [-S HOSTS] STUDY.lua [key=value ...]
 #

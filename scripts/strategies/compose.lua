@@ -6,14 +6,14 @@
 --                        cones and lines, and optionally coarse = {every = n, wheel = <profile> | wheel_step = m}.
 --   locate(ctx, side)    per pose and side: decides which index windows of lines x cones to test, by calling the
 --                        engine's primitives on ctx (ctx:test, ctx:walk, ctx:coarse, ctx:test_windows,
---                        ctx:walk_windows; see README "Strategies"). The inner loops are native.
+--                        ctx:walk_windows; see docs/guide/location.md "Strategies"). The inner loops are native.
 --
 -- Accepted values:
 --   "topology"                          a module scripts/strategies/topology.lua (or a path ending in .lua)
 --   {"constant_slope", "coarse", "topology", step = 0.1e-3}   a composition of components, with options
 --   {name = "uniform", step = 0.2e-3}   one module with options
 --   {locate = function(ctx, side) ... end, discretise = function(d) ... end}   inline (runs only in the Lua state
---                                        that built the wheelset; see README)
+--                                        that built the wheelset; see docs/guide/location.md)
 --
 -- A component module returns a table with any of:
 --   description  one line

@@ -308,7 +308,7 @@ TEST_CASE("a trajectory follows a motion warm-started, with the forces of cold e
   CHECK(wrc_trajectory_free(tr) == WRC_INVALID_ARGUMENT);
 }
 
-TEST_CASE("a trajectory with rolling options: the creep forces of wrc_contact at its poses; bad options refused") {
+TEST_CASE("a trajectory with rolling options: the creep forces of wrc_contact at its poses, bad options refused") {
   Fixture f;
   wrc_trajectory* tr = nullptr;
   REQUIRE_MESSAGE(wrc_trajectory_new(f.ws, "tolerance=1e-6", &tr) == WRC_OK, last());

@@ -1,8 +1,8 @@
-// The C API against hostile input files and option strings (wrc.h, wrc_profile_load; README "What is code and what is
-// data"): a Lua profile definition runs sandboxed -- one that would write a file or load a library is refused with a
-// message and nothing is written; its CPU and memory budgets hold -- "profiles/NAME" is the shipped profile even with a
-// planted ./profiles/NAME in the working directory, and an option string with a key nested 30000 levels is refused,
-// not a stack overflow.
+// The C API against hostile input files and option strings (wrc.h, wrc_profile_load; docs/guide/studies.md "What is
+// code and what is data"): a Lua profile definition runs sandboxed -- one that would write a file or load a library is
+// refused with a message and nothing is written; its CPU and memory budgets hold -- "profiles/NAME" is the shipped
+// profile even with a planted ./profiles/NAME in the working directory, and an option string with a key nested 30000
+// levels is refused, not a stack overflow.
 #include "wrc/wrc.h"
 
 #include <doctest/doctest.h>

@@ -9,7 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 using namespace wrc;
 
@@ -100,4 +102,101 @@ TEST_CASE("option text: 40000 keys, flat and in one nested table, all kept in or
     CHECK(t.entries[i].first == fmt::format("k{}", i));
     CHECK(t.entries[i].second.number == i);
   }
+}
+
+namespace {
+
+// A reading function as the engine writes them: documented keys, defaults from a struct, a nested table, a check of
+// what it read that a documenting pass skips.
+struct Params {
+  double radius = 0.45;
+  int margin = 2;
+  bool grids = true;
+  std::string surface = "conformal";
+  std::string name = "S1002";
+  std::optional<double> xi;
+  double Q = 0;
+};
+
+Params read_params(OptionReader& r) {
+  Params p;
+  p.radius = r.number("radius", {"m", "wheel radius at the tape circle"}, p.radius);
+  p.margin = r.integer("margin", 1, 100, {"1", "elements around the area"}, p.margin);
+  p.grids = r.boolean("grids", {"", "keep the pressure grids"}, p.grids);
+  p.surface = r.choice("surface", {"planar", "conformal"}, {"", "potential contact area"}, p.surface);
+  p.name = r.string("name", {"", "profile name"}, p.name);
+  p.Q = r.need_number("Q", {"N", "vertical load"});
+  if (auto c = r.table("creepage", {"", "creepages at the reference point"})) {
+    p.xi = c->number("xi", {"1", "longitudinal creepage"});
+    c->finish();
+  }
+  if (!r.documenting() && p.Q <= 0) fail("{}: 'Q' must be > 0, got {}", r.context(), p.Q);
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("option docs: a documenting reader records every key with type, unit, help, default and choices") {
+  std::vector<OptionInfo> keys;
+  OptionReader r = OptionReader::documenting("call", keys);
+  CHECK(r.documenting());
+  read_params(r);
+  r.finish();  // nothing to refuse
+  REQUIRE(keys.size() == 8);
+  auto at = [&](const std::string& k) -> const OptionInfo& {
+    for (const auto& i : keys)
+      if (i.key == k) return i;
+    FAIL("no key " << k);
+    return keys.front();
+  };
+  CHECK(keys[0].key == "radius");  // in the order asked
+  CHECK(at("radius").type == "number");
+  CHECK(at("radius").unit == "m");
+  CHECK(at("radius").help == "wheel radius at the tape circle");
+  CHECK(at("radius").fallback == "0.45");
+  CHECK(!at("radius").required);
+  CHECK(at("margin").type == "integer");
+  CHECK(at("margin").fallback == "2");
+  CHECK(at("grids").fallback == "true");
+  CHECK(at("surface").type == "choice");
+  CHECK(at("surface").choices == std::vector<std::string>{"planar", "conformal"});
+  CHECK(at("surface").fallback == "\"conformal\"");
+  CHECK(at("name").fallback == "\"S1002\"");
+  CHECK(at("Q").required);
+  CHECK(at("Q").unit == "N");
+  CHECK(at("creepage").type == "table");
+  CHECK(at("creepage.xi").unit == "1");
+  CHECK(at("creepage.xi").fallback.empty());
+}
+
+TEST_CASE("option docs: documented getters read values, fallbacks and errors as the plain ones") {
+  const OptionTable t = parse_option_text("radius=0.46 surface=planar Q=1e5 creepage.xi=0.001", "ctx");
+  OptionReader r(t, "call");
+  CHECK(!r.documenting());
+  const Params p = read_params(r);
+  r.finish();
+  CHECK(p.radius == 0.46);
+  CHECK(p.margin == 2);
+  CHECK(p.grids);
+  CHECK(p.surface == "planar");
+  CHECK(p.name == "S1002");
+  CHECK(p.Q == 1e5);
+  CHECK(p.xi == 0.001);
+
+  auto error_reading = [](const std::string& text) -> std::string {
+    const OptionTable t2 = parse_option_text(text, "ctx");
+    OptionReader r2(t2, "call");
+    try {
+      read_params(r2);
+      r2.finish();
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(error_reading("Q=1 surface=round").find("'surface' must be one of \"planar\", \"conformal\"") != std::string::npos);
+  CHECK(error_reading("Q=1 margin=0").find("'margin' must be a whole number in 1..100") != std::string::npos);
+  CHECK(error_reading("radius=1").find("'Q' is required") != std::string::npos);
+  CHECK(error_reading("Q=-1").find("'Q' must be > 0") != std::string::npos);
+  CHECK(error_reading("Q=1 raduis=1").find("did you mean 'radius'") != std::string::npos);
 }

@@ -212,7 +212,7 @@ static void check_same_bits(const EquilibriumResult& a, const EquilibriumResult&
   CHECK(a.iterations == b.iterations);
 }
 
-TEST_CASE("sweep: the plan cuts the cases into chunks that start cold, any split over calls or threads gives the same bits") {
+TEST_CASE("sweep: the plan cuts the cases into chunks that start cold, and any split over calls or threads gives the same bits") {
   const std::vector<double> ys{-4e-3, -3e-3, -2e-3, -1e-3, 0.0, 1e-3, 2e-3, 3e-3, 4e-3};
   const std::vector<double> yaws{0.0, 0.01};
   // Whole chains: per yaw, the chain below the centre (started from it, which it does not report) and the chain from

@@ -1,4 +1,4 @@
--- Interacting contact areas are solved together (issue 5, wheelset_contact.hpp, interaction.hpp).
+-- Interacting contact areas are solved together (issue 5, wheelset/contact.hpp, interaction.hpp).
 --
 -- The pair: a cylindrical wheel on a rail with two narrow circular crowns (radius Rc) a distance d apart, at the
 -- same height or the second one lower: two separate inter-penetration areas on one wheel, in one plane, whose

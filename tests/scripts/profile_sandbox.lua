@@ -1,8 +1,8 @@
--- Profile definitions are data (README "What is code and what is data"): a definition runs in a sandbox, so that a
--- hostile one cannot reach the system (each attempt below would create a marker file; none may exist afterwards, and
--- each is refused with a message naming what is missing), cannot escape its budgets of instructions, memory and
--- profile points (not even by catching the error), and still has what a definition needs. Also the point limit of
--- every profile (kMaxProfilePoints) and the lookup rule of "profiles/NAME" seen from a study.
+-- Profile definitions are data (docs/guide/studies.md "What is code and what is data"): a definition runs in a sandbox,
+-- so that a hostile one cannot reach the system (each attempt below would create a marker file; none may exist
+-- afterwards, and each is refused with a message naming what is missing), cannot escape its budgets of instructions,
+-- memory and profile points (not even by catching the error), and still has what a definition needs. Also the point
+-- limit of every profile (kMaxProfilePoints) and the lookup rule of "profiles/NAME" seen from a study.
 local check = require "wrc.check"
 local H = dofile(os.getenv("WRC_TEST_DATA") .. "/profile/helpers.lua")
 local tmp = H.tmpdir() .. "/profile_sandbox_"

@@ -1,4 +1,4 @@
--- Rolling contact with friction through the Lua API (README "Rolling contact"): S1002 on 60E1, 0.5 mm elements.
+-- Rolling contact with friction through the Lua API (docs/guide/rolling.md): S1002 on 60E1, 0.5 mm elements.
 --   - the kinematic creepages against the kinematics written out here, on planar and on conformal areas (the
 --     default): spin = omega . n / V (n = t1 x t2, the reference point's normal), the lateral creepage's response
 --     to vy, the longitudinal one's to omega (the lever is the rolling radius);

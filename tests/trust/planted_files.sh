@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Lua files planted in data folders and working directories do not run (README "What is code and what is data").
+# Lua files planted in data folders and working directories do not run (docs/guide/studies.md "What is code and what
+# is data").
 # Each planted file would leave a marker file in the test's folder (os.execute, io.open, package.loadlib); none may
 # exist afterwards:
 #   - the fleet study's wheels=DIR takes the readers' formats only: a zz.lua in DIR is neither run nor listed; with

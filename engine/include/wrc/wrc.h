@@ -24,8 +24,9 @@
  *
  * Options: a string of "key=value" pairs separated by blanks or ';' (NULL or "" for none). A value is a number, true
  * or false, a list of numbers "a,b" or a word; dotted keys make nested tables ("shift.y=1e-3"). The keys are those of
- * the Lua API (README): an unknown key is an error naming the closest known one. A key given twice, a key of more
- * than 256 characters or 16 dotted levels and a string of more than 32 MB are errors too (WRC_ERROR).
+ * the Lua API (docs/reference/lua-api.md): an unknown key is an error naming the closest known one. A key given
+ * twice, a key of more than 256 characters or 16 dotted levels and a string of more than 32 MB are errors too
+ * (WRC_ERROR).
  */
 #ifndef WRC_WRC_H
 #define WRC_WRC_H
@@ -71,9 +72,9 @@ const char* wrc_last_error(void);
  * working directory). A Lua definition is data, whoever wrote it: it runs in a sandbox of its own, without os, io,
  * package, require, dofile, loadfile, debug or binary chunks, so that it cannot reach the file system, run programs or
  * load libraries, within budgets of 1e9 Lua instructions and 256 MB; past one it fails with WRC_ERROR and a message
- * (README "What is code and what is data"). A profile has at most 1000000 points. Options: those of wrc.profile.load
- * (units, mirror_y, mirror_z, crop.y, crop.z, shift.y, shift.z, kind, name, reader, the reader's own options; a Lua
- * definition's own options such as step). The caller owns *out. */
+ * (docs/guide/studies.md "What is code and what is data"). A profile has at most 1000000 points. Options: those of
+ * wrc.profile.load (units, mirror_y, mirror_z, crop.y, crop.z, shift.y, shift.z, kind, name, reader, the reader's own
+ * options; a Lua definition's own options such as step). The caller owns *out. */
 wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out);
 /* A profile from n points (m, left-side frame; docs/design.md section 2); kind is "wheel" or "rail"; name may be
  * NULL. The arrays are copied; n above 10,000,000 is WRC_INVALID_ARGUMENT. The caller owns *out. */
@@ -106,7 +107,7 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 /* Contact at a prescribed pose (m, rad). WRC_ERROR for a pose far too deep: a wheel and its rail inter-penetrating
  * deeper than max_penetration (m, default 1e-3; an option), or |y|, |z| beyond the wheel radius, |roll|, |yaw| beyond
  * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity, max_penetration; with
- * friction (rolling contact, README "Rolling contact"): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
+ * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
  * vy (m/s), yaw_rate (rad/s), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
  * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
@@ -155,7 +156,7 @@ wrc_status wrc_trajectory_wheel_with(wrc_trajectory* trajectory, int side, doubl
 wrc_status wrc_trajectory_reset(wrc_trajectory* trajectory);
 /* Releases a trajectory (NULL: nothing to do). */
 wrc_status wrc_trajectory_free(wrc_trajectory* trajectory);
-/* ---- rigid contact geometry, equivalent conicity, profile measures (README "Rigid contact geometry") ---- */
+/* ---- rigid contact geometry, equivalent conicity, profile measures (docs/guide/geometry.md) ---- */
 
 /* The rigid contact at y, yaw (m, rad). Options: roll ("free": both wheels on their rails, the default; "fixed": held
  * at 0 with each wheel on its own rail; or a number: held at that roll, rad), Q, two_point_tolerance, start.z,

@@ -9,11 +9,13 @@
 #include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/host/terminal.hpp"
 #include "wrc/kinematics/table.hpp"
+#include "wrc/lua/definitions.hpp"
+#include "wrc/profile/load.hpp"
 #include "wrc/profile/measures.hpp"
-#include "wrc/lua/host.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -278,8 +280,13 @@ wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile**
   return guard("wrc_profile_load", [&] {
     set_out(out, "profile");
     if (!path) invalid("the path is NULL");
+    // Lua runs only inside the definition loader, for a .lua definition (a Simpack or text file makes no Lua state).
+    const wrc::DefinitionLoader definitions = wrc::lua::definition_loader();
     auto p = std::make_shared<wrc_profile>();
-    p->profile = wrc::lua::load_profile(path, options_of(options, "wrc_profile_load: options"));
+    p->profile = std::make_shared<const wrc::Profile>(
+        wrc::load_profile(path, options_of(options, "wrc_profile_load: options"), &definitions));
+    for (const std::string& w : p->profile->warnings)
+      std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
     *out = registry().add(std::move(p));
     return WRC_OK;
   });

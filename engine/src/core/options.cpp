@@ -212,6 +212,43 @@ std::string closest_name(std::string_view key, const std::vector<std::string>& k
 OptionReader::OptionReader(const OptionTable& table, std::string context)
     : table_(table), context_(std::move(context)) {}
 
+OptionReader OptionReader::documenting(std::string context, std::vector<OptionInfo>& out) {
+  static const OptionTable nothing;
+  OptionReader r(nothing, std::move(context));
+  r.doc_ = &out;
+  return r;
+}
+
+namespace {
+
+std::string fallback_text(double v) { return fmt::format("{}", v); }
+std::string fallback_text(bool v) { return v ? "true" : "false"; }
+std::string fallback_text(const std::string& v) { return fmt::format("\"{}\"", v); }
+
+std::vector<std::string> choice_list(std::initializer_list<std::string_view> choices) {
+  return {choices.begin(), choices.end()};
+}
+
+}  // namespace
+
+void OptionReader::note(std::string_view key, std::string_view type, OptionDoc doc, std::string fallback,
+                        bool required, std::vector<std::string> choices) {
+  const std::string full = prefix_ + std::string(key);
+  auto it = std::find_if(doc_->begin(), doc_->end(), [&](const OptionInfo& i) { return i.key == full; });
+  if (it == doc_->end()) {
+    doc_->push_back(OptionInfo{full, std::string(type), "", "", "", false, {}});
+    it = doc_->end() - 1;
+  }
+  auto fill = [](std::string& slot, std::string_view v) {
+    if (slot.empty() && !v.empty()) slot = std::string(v);
+  };
+  fill(it->unit, doc.unit ? doc.unit : "");
+  fill(it->help, doc.help ? doc.help : "");
+  fill(it->fallback, fallback);
+  it->required = it->required || required;
+  if (it->choices.empty()) it->choices = std::move(choices);
+}
+
 const OptionValue* OptionReader::value(std::string_view key) {
   if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
   return table_.find(key);
@@ -227,7 +264,8 @@ void OptionReader::type_error(std::string_view key, const OptionValue& v, std::s
   fail("{}: '{}' must be {}, got {}", context_, key, expected, v.type_name());
 }
 
-std::optional<double> OptionReader::number(std::string_view key) {
+std::optional<double> OptionReader::number(std::string_view key, OptionDoc doc) {
+  if (doc_) note(key, "number", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   if (v->type != OptionValue::Type::number) type_error(key, *v, "a number");
@@ -235,36 +273,67 @@ std::optional<double> OptionReader::number(std::string_view key) {
   return v->number;
 }
 
-double OptionReader::need_number(std::string_view key) {
-  const auto v = number(key);
+double OptionReader::number(std::string_view key, OptionDoc doc, double fallback) {
+  if (doc_) note(key, "number", doc, fallback_text(fallback));
+  return number(key, doc).value_or(fallback);
+}
+
+double OptionReader::need_number(std::string_view key, OptionDoc doc) {
+  if (doc_) {
+    note(key, "number", doc, {}, true);
+    return 0;
+  }
+  const auto v = number(key, doc);
   if (!v) fail("{}: '{}' is required (a number)", context_, key);
   return *v;
 }
 
-std::optional<int> OptionReader::integer(std::string_view key, int lo, int hi) {
-  const auto v = number(key);
-  if (!v) return std::nullopt;
-  if (*v != std::floor(*v) || *v < lo || *v > hi)
-    fail("{}: '{}' must be a whole number in {}..{}, got {}", context_, key, lo, hi, *v);
-  return static_cast<int>(*v);
+std::optional<int> OptionReader::integer(std::string_view key, int lo, int hi, OptionDoc doc) {
+  if (doc_) note(key, "integer", doc);
+  const OptionValue* raw = value(key);
+  if (!raw) return std::nullopt;
+  const double v = *number(key, doc);
+  if (v != std::floor(v) || v < lo || v > hi)
+    fail("{}: '{}' must be a whole number in {}..{}, got {}", context_, key, lo, hi, v);
+  return static_cast<int>(v);
 }
 
-std::optional<bool> OptionReader::boolean(std::string_view key) {
+int OptionReader::integer(std::string_view key, int lo, int hi, OptionDoc doc, int fallback) {
+  if (doc_) note(key, "integer", doc, std::to_string(fallback));
+  return integer(key, lo, hi, doc).value_or(fallback);
+}
+
+std::optional<bool> OptionReader::boolean(std::string_view key, OptionDoc doc) {
+  if (doc_) note(key, "boolean", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   if (v->type != OptionValue::Type::boolean) type_error(key, *v, "a boolean");
   return v->boolean;
 }
 
-std::optional<std::string> OptionReader::string(std::string_view key) {
+bool OptionReader::boolean(std::string_view key, OptionDoc doc, bool fallback) {
+  if (doc_) note(key, "boolean", doc, fallback_text(fallback));
+  return boolean(key, doc).value_or(fallback);
+}
+
+std::optional<std::string> OptionReader::string(std::string_view key, OptionDoc doc) {
+  if (doc_) note(key, "string", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   if (v->type != OptionValue::Type::string) type_error(key, *v, "a string");
   return v->string;
 }
 
-std::optional<std::string> OptionReader::choice(std::string_view key, std::initializer_list<std::string_view> choices) {
-  auto s = string(key);
+std::string OptionReader::string(std::string_view key, OptionDoc doc, std::string fallback) {
+  if (doc_) note(key, "string", doc, fallback_text(fallback));
+  auto v = string(key, doc);
+  return v ? std::move(*v) : std::move(fallback);
+}
+
+std::optional<std::string> OptionReader::choice(std::string_view key, std::initializer_list<std::string_view> choices,
+                                                OptionDoc doc) {
+  if (doc_) note(key, "choice", doc, {}, false, choice_list(choices));
+  auto s = string(key, doc);
   if (!s) return s;
   std::string list;
   for (auto c : choices) {
@@ -274,7 +343,19 @@ std::optional<std::string> OptionReader::choice(std::string_view key, std::initi
   fail("{}: '{}' must be one of {}, got \"{}\"", context_, key, list, *s);
 }
 
+std::string OptionReader::choice(std::string_view key, std::initializer_list<std::string_view> choices, OptionDoc doc,
+                                 std::string fallback) {
+  if (doc_) note(key, "choice", doc, fallback_text(fallback), false, choice_list(choices));
+  auto v = choice(key, choices, doc);
+  return v ? std::move(*v) : std::move(fallback);
+}
+
 std::optional<std::vector<double>> OptionReader::numbers(std::string_view key, bool finite) {
+  return numbers(key, OptionDoc{}, finite);
+}
+
+std::optional<std::vector<double>> OptionReader::numbers(std::string_view key, OptionDoc doc, bool finite) {
+  if (doc_) note(key, "numbers", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   if (v->type == OptionValue::Type::number && !finite) return std::vector<double>{v->number};
@@ -292,7 +373,8 @@ std::optional<std::vector<double>> OptionReader::numbers(std::string_view key, b
   return out;
 }
 
-std::optional<std::vector<std::string>> OptionReader::strings(std::string_view key) {
+std::optional<std::vector<std::string>> OptionReader::strings(std::string_view key, OptionDoc doc) {
+  if (doc_) note(key, "strings", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   if (v->type != OptionValue::Type::array) type_error(key, *v, "an array of strings");
@@ -306,6 +388,11 @@ std::optional<std::vector<std::string>> OptionReader::strings(std::string_view k
 }
 
 std::optional<std::vector<double>> OptionReader::number_list(std::string_view key, std::size_t max_count) {
+  return number_list(key, OptionDoc{}, max_count);
+}
+
+std::optional<std::vector<double>> OptionReader::number_list(std::string_view key, OptionDoc doc, std::size_t max_count) {
+  if (doc_) note(key, "list", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   std::vector<double> out;
@@ -328,14 +415,21 @@ std::optional<std::vector<double>> OptionReader::number_list(std::string_view ke
   return out;
 }
 
-std::optional<OptionReader> OptionReader::table(std::string_view key) {
+std::optional<OptionReader> OptionReader::table(std::string_view key, OptionDoc doc) {
+  if (doc_) {
+    note(key, "table", doc);
+    OptionReader sub = documenting(fmt::format("{}: '{}'", context_, key), *doc_);
+    sub.prefix_ = prefix_ + std::string(key) + ".";
+    return sub;
+  }
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   if (v->type != OptionValue::Type::table) type_error(key, *v, "a table");
   return OptionReader(*v->table, fmt::format("{}: '{}'", context_, key));
 }
 
-std::shared_ptr<const void> OptionReader::object(std::string_view key, std::string_view type) {
+std::shared_ptr<const void> OptionReader::object(std::string_view key, std::string_view type, OptionDoc doc) {
+  if (doc_) note(key, type, doc);
   const OptionValue* v = value(key);
   if (!v) return nullptr;
   if (v->type != OptionValue::Type::object || v->string != type) type_error(key, *v, fmt::format("a {}", type));
@@ -350,6 +444,7 @@ std::vector<const std::pair<std::string, OptionValue>*> OptionReader::rest() con
 }
 
 void OptionReader::finish() const {
+  if (doc_) return;
   for (const auto& [key, v] : table_.entries) {
     if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
     std::string list;

@@ -1,4 +1,4 @@
-// A wheelset followed along a trajectory (wheelset/trajectory.hpp).
+// A wheelset followed along a trajectory (equilibrium/trajectory.hpp).
 #include "wrc/equilibrium/trajectory.hpp"
 
 #include "wrc/core/error.hpp"

@@ -1,5 +1,6 @@
-// wrc.fs: the file operations study scripts need beyond Lua's io library (README "Studies: outputs"): folders,
-// files written atomically, listings and content hashes. Each function converts and calls core/files.
+// wrc.fs: the file operations study scripts need beyond Lua's io library (docs/guide/studies.md "What a run
+// guarantees"): folders, files written atomically, listings and content hashes. Each function converts and calls
+// core/files.
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"

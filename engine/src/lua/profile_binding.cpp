@@ -1,34 +1,18 @@
 // wrc.profile: profiles from Lua tables, Lua definitions and files (reader plugins and readers registered
-// from Lua), and the wrc.Profile methods scripts use for checks and plots.
+// from Lua), through wrc::load_profile; the wrc.Profile type and its methods are in profile_type.cpp.
 #include "lua/profile_binding.hpp"
 
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"
-#include "lua/sandbox.hpp"
-#include "wrc/core/paths.hpp"
+#include "wrc/lua/definitions.hpp"
 #include "wrc/profile/load.hpp"
-#include "wrc/profile/orientation.hpp"
 #include "wrc/profile/reader.hpp"
-#include "wrc/profile/spline.hpp"
 
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <system_error>
-
-namespace fs = std::filesystem;
 
 namespace wrc::lua {
-
-const char* const kProfileType = "wrc.Profile";
-
-void push_profile(lua_State* L, std::shared_ptr<const Profile> p) { push_shared(L, std::move(p), kProfileType); }
-
-const std::shared_ptr<const Profile>& check_profile(lua_State* L, int idx, std::string_view context) {
-  return check_shared<const Profile>(L, idx, kProfileType, context);
-}
 
 namespace {
 
@@ -61,69 +45,25 @@ struct CurrentState {
   ~CurrentState() { r.current = saved; }
 };
 
-// The options table at idx (may be none). For a file, keys the host does not know go to the reader;
-// `geometric_only` (p:transform) rejects them.
-LoadOptions read_options(lua_State* L, int idx, std::string_view ctx, bool geometric_only) {
-  if (!lua_isnoneornil(L, idx) && !lua_istable(L, idx)) fail("{}: options must be a table, got {}", ctx, type_name(L, idx));
-  const OptionTable t = to_options(L, idx, ctx);
-  OptionReader r(t, std::string(ctx));
-  return read_load_options(r, geometric_only);
+// Shows a loaded profile's warnings, as every front end does (the engine prints nothing).
+void print_warnings(const Profile& p) {
+  for (const std::string& w : p.warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
 }
 
 // ---- wrc.profile functions ----
 
-// The length of t[key] when it is a table (raw access, no metamethod), else 0.
-std::size_t raw_length(lua_State* L, int t, const char* key) {
-  if (!lua_istable(L, t)) return 0;
-  lua_pushstring(L, key);
-  lua_rawget(L, t);
-  const std::size_t n = lua_istable(L, -1) ? lua_rawlen(L, -1) : 0;
-  lua_pop(L, 1);
-  return n;
-}
-
-}  // namespace
-
-namespace profile_api {
-
-// wrc.profile.points{kind=, y={...}, z={...}, name=}: metres, left-side frame.
-int points(lua_State* L) {
-  const char* ctx = "wrc.profile.points";
-  // Counted before the arrays are converted (each number would become an option value first).
-  check_point_count(static_cast<double>(std::max(raw_length(L, 1, "y"), raw_length(L, 1, "z"))), ctx);
-  const OptionTable t = table_options(L, 1, ctx);
-  OptionReader r(t, ctx);
-  const auto kind_text = r.string("kind");
-  if (!kind_text) fail("{}: 'kind' is required (\"wheel\" or \"rail\")", ctx);
-  const ProfileKind kind = parse_profile_kind(*kind_text, ctx);
-  auto y = r.numbers("y").value_or(std::vector<double>{});
-  auto z = r.numbers("z").value_or(std::vector<double>{});
-  const std::string name = r.string("name").value_or(std::string(to_string(kind)));
-  r.finish();
-  push_profile(L, std::make_shared<const Profile>(make_profile(kind, std::move(y), std::move(z), name, ctx)));
-  return 1;
-}
-
-}  // namespace profile_api
-
-namespace {
-
-// wrc.profile.load(path [, options]) -> wrc.Profile: a Lua definition runs in a sandbox (sandbox.hpp), a file goes
-// to the readers (those registered from this state first).
+// wrc.profile.load(path [, options]) -> wrc.Profile: wrc::load_profile with the sandbox for Lua definitions
+// (sandbox.hpp) and the readers registered from this state looked up before the plugins.
 int profile_load(lua_State* L) {
   const char* ctx = "wrc.profile.load";
   const std::string given = check_string(L, 1, ctx);
-  const LoadOptions o = read_options(L, 2, ctx, false);
-  const std::string path = resolve_profile_path(given);
-  std::shared_ptr<Profile> p;
-  if (is_definition(path, o)) {
-    p = std::make_shared<Profile>(load_definition(path, to_options(L, 2, ctx)));
-  } else {
-    LuaReaders& lr = lua_readers(L);
-    CurrentState cs(lr, L);
-    p = std::make_shared<Profile>(load_profile_file(path, o, {&lr.registry, &ReaderRegistry::plugins()}));
-  }
-  for (const std::string& w : p->warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+  if (!lua_isnoneornil(L, 2) && !lua_istable(L, 2)) fail("{}: options must be a table, got {}", ctx, type_name(L, 2));
+  const OptionTable options = to_options(L, 2, ctx);
+  LuaReaders& lr = lua_readers(L);
+  CurrentState cs(lr, L);
+  const DefinitionLoader definitions = definition_loader();
+  auto p = std::make_shared<const Profile>(wrc::load_profile(given, options, &definitions, &lr.registry));
+  print_warnings(*p);
   push_profile(L, std::move(p));
   return 1;
 }
@@ -206,14 +146,6 @@ int profile_register_reader(lua_State* L) {
   return 0;
 }
 
-void push_strings(lua_State* L, const std::vector<std::string>& v) {
-  lua_createtable(L, static_cast<int>(v.size()), 0);
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    lua_pushstring(L, v[i].c_str());
-    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
-}
-
 // wrc.profile.readers() -> {{id=, extensions=, options=, description=, origin=}, ...}, {rejected messages}
 int profile_readers(lua_State* L) {
   const ReaderRegistry& plugins = ReaderRegistry::plugins();
@@ -238,119 +170,6 @@ int profile_readers(lua_State* L) {
 }
 
 }  // namespace
-
-// ---- wrc.Profile methods ----
-
-namespace profile_api {
-
-// p:points() -> y, z (two Lua arrays, metres)
-int method_points(lua_State* L) {
-  const auto& p = check_profile(L, 1, "profile:points");
-  push_array(L, p->y);
-  push_array(L, p->z);
-  return 2;
-}
-
-// p:resample{step=, along="arc"|"y"} -> a new profile
-int method_resample(lua_State* L) {
-  const char* ctx = "profile:resample";
-  const auto& p = check_profile(L, 1, ctx);
-  const OptionTable t = table_options(L, 2, ctx);
-  OptionReader r(t, ctx);
-  const double step = r.need_number("step");
-  const std::string along = r.choice("along", {"arc", "y"}).value_or("arc");
-  r.finish();
-  if (!(step > 0)) fail("{}: 'step' must be a positive number of metres, got {}", ctx, step);
-  if (along == "arc") push_profile(L, std::make_shared<const Profile>(resample_arc(*p, step)));
-  else push_profile(L, std::make_shared<const Profile>(resample_y(*p, step)));
-  return 1;
-}
-
-// p:interpolate(y) -> z at y (linear between the points); y must lie within the profile.
-int method_interpolate(lua_State* L) {
-  const char* ctx = "profile:interpolate";
-  const auto& p = check_profile(L, 1, ctx);
-  const double y = check_number(L, 2, ctx);
-  if (y < p->y.front() || y > p->y.back())
-    fail("{}: y = {} m lies outside the profile ({} .. {} m)", ctx, y, p->y.front(), p->y.back());
-  lua_pushnumber(L, interpolate_z(*p, y));
-  return 1;
-}
-
-// p:arc_length() -> metres
-int method_arc_length(lua_State* L) {
-  lua_pushnumber(L, arc_length(*check_profile(L, 1, "profile:arc_length")));
-  return 1;
-}
-
-// p:bounds() -> {y_min=, y_max=, z_min=, z_max=} (metres)
-int method_bounds(lua_State* L) {
-  const auto& p = check_profile(L, 1, "profile:bounds");
-  const auto [zmin, zmax] = std::minmax_element(p->z.begin(), p->z.end());
-  lua_createtable(L, 0, 4);
-  set_number(L, "y_min", p->y.front());
-  set_number(L, "y_max", p->y.back());
-  set_number(L, "z_min", *zmin);
-  set_number(L, "z_max", *zmax);
-  return 1;
-}
-
-// p:transform{mirror_y=, mirror_z=, crop=, shift=, name=} -> a new profile
-int method_transform(lua_State* L) {
-  const char* ctx = "profile:transform";
-  const auto& p = check_profile(L, 1, ctx);
-  check_table(L, 2, ctx);
-  const LoadOptions o = read_options(L, 2, ctx, true);
-  push_profile(L, std::make_shared<const Profile>(transform_profile(*p, o)));
-  return 1;
-}
-
-int len(lua_State* L) {
-  lua_pushinteger(L, static_cast<lua_Integer>(check_profile(L, 1, "#profile")->size()));
-  return 1;
-}
-
-int tostring(lua_State* L) {
-  const auto& p = check_profile(L, 1, "tostring(profile)");
-  lua_pushstring(L, fmt::format("wrc.Profile({} '{}', {} points, y {:.4f}..{:.4f} m, from {})", to_string(p->kind),
-                                p->name, p->size(), p->y.front(), p->y.back(), p->source)
-                        .c_str());
-  return 1;
-}
-
-int index(lua_State* L) {
-  const auto& p = check_profile(L, 1, "profile");
-  if (lua_type(L, 2) == LUA_TSTRING) {
-    const std::string_view key = lua_tostring(L, 2);
-    if (key == "kind") return lua_pushstring(L, to_string(p->kind)), 1;
-    if (key == "name") return lua_pushstring(L, p->name.c_str()), 1;
-    if (key == "source") return lua_pushstring(L, p->source.c_str()), 1;
-    if (key == "duplicates_dropped") return lua_pushinteger(L, p->duplicates_dropped), 1;
-    if (key == "transforms") return push_strings(L, p->transforms), 1;
-    if (key == "warnings") return push_strings(L, p->warnings), 1;
-    if (key == "smooth") return p->spline ? lua_pushnumber(L, p->spline->smoothing) : lua_pushnil(L), 1;
-    if (key == "metadata") {
-      lua_createtable(L, 0, static_cast<int>(p->metadata.size()));
-      for (const auto& [k, v] : p->metadata) set_string(L, k.c_str(), v);
-      return 1;
-    }
-  }
-  // Methods.
-  luaL_getmetatable(L, kProfileType);
-  lua_getfield(L, -1, "methods");
-  lua_pushvalue(L, 2);
-  lua_rawget(L, -2);
-  return 1;
-}
-
-}  // namespace profile_api
-
-void register_profile_methods(lua_State* L, const luaL_Reg* methods) {
-  luaL_getmetatable(L, kProfileType);
-  lua_getfield(L, -1, "methods");
-  luaL_setfuncs(L, methods, 0);
-  lua_pop(L, 2);
-}
 
 void open_profile(lua_State* L) {
   if (luaL_newmetatable(L, kProfileType)) {
@@ -391,13 +210,9 @@ void open_profile(lua_State* L) {
 }
 
 std::shared_ptr<const Profile> load_profile(const std::string& name, const OptionTable& options) {
-  const char* ctx = "wrc.profile.load";
-  OptionReader r(options, ctx);
-  const LoadOptions o = read_load_options(r, false);
-  const std::string path = resolve_profile_path(name);
-  auto p = std::make_shared<Profile>(is_definition(path, o) ? load_definition(path, options)
-                                                            : load_profile_file(path, o, {&ReaderRegistry::plugins()}));
-  for (const std::string& w : p->warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+  const DefinitionLoader definitions = definition_loader();
+  auto p = std::make_shared<const Profile>(wrc::load_profile(name, options, &definitions));
+  print_warnings(*p);
   return p;
 }
 

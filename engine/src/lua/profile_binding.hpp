@@ -1,11 +1,15 @@
-// The wrc.Profile userdata (a shared_ptr<const Profile>), shared by the bindings that take profiles.
+// The wrc.Profile userdata (a shared_ptr<const Profile>), shared by the bindings that take profiles, and the
+// wrc.profile module. The type and its methods are defined in profile_type.cpp (the sandbox of profile definitions
+// uses them without the rest of the binding), open_profile and the module's functions in profile_binding.cpp.
 #pragma once
 
 #include "lua/lua.hpp"
 #include "wrc/profile/profile.hpp"
 
 #include <memory>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace wrc::lua {
 
@@ -16,6 +20,9 @@ const std::shared_ptr<const Profile>& check_profile(lua_State* L, int idx, std::
 
 // Adds methods (p:name(...)) to wrc.Profile; used by the parts of the binding that extend profiles.
 void register_profile_methods(lua_State* L, const luaL_Reg* methods);
+
+// Pushes an array of strings.
+void push_strings(lua_State* L, const std::vector<std::string>& v);
 
 void open_profile(lua_State* L);  // wrc.profile and the wrc.Profile metatable
 

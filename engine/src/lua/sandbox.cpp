@@ -9,8 +9,7 @@
 #include "lua/profile_binding.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
-#include "wrc/profile/orientation.hpp"
-#include "wrc/profile/reader.hpp"
+#include "wrc/profile/load.hpp"
 
 #include <fmt/format.h>
 
@@ -173,7 +172,14 @@ int text_load(lua_State* L) {
   return 2;
 }
 
-Profile definition(const std::string& path, const OptionTable& options, Budget& budget, int depth);
+Profile run(const std::string& path, const OptionTable& options, Budget& budget, int depth);
+
+// The loader of the definitions a definition at `depth` loads: the same budget, one level deeper.
+DefinitionLoader nested_definitions(Budget& budget, int depth) {
+  return [&budget, depth](const std::string& path, const OptionTable& options) {
+    return run(path, options, budget, depth + 1);
+  };
+}
 
 // wrc.profile.load inside a definition: the shipped profiles only, as the same rule names them.
 int nested_load(lua_State* L) {
@@ -191,11 +197,9 @@ int nested_load(lua_State* L) {
          paths().profiles);
   if (s.depth + 1 > kMaxNesting) fail("{}: {}: profile definitions nest more than {} levels", ctx, given, kMaxNesting);
   s.budget->instructions += kNestedLoadCost;
-  OptionReader r(options, ctx);
-  const LoadOptions o = read_load_options(r, false);
-  Profile p = is_definition(path, o) ? definition(path, options, *s.budget, s.depth + 1)
-                                     : load_profile_file(path, o, {&ReaderRegistry::plugins()});
-  push_profile(L, std::make_shared<const Profile>(std::move(p)));
+  const DefinitionLoader definitions = nested_definitions(*s.budget, s.depth);
+  // `given` again, not `path`: load_profile resolves it by the same rule to the same file.
+  push_profile(L, std::make_shared<const Profile>(wrc::load_profile(given, options, &definitions)));
   return 1;
 }
 
@@ -303,33 +307,20 @@ Profile run(const std::string& path, const OptionTable& options, Budget& budget,
   return **ud;
 }
 
-bool has_geometric_options(const LoadOptions& o) {
-  return o.mirror_y || o.mirror_z || o.crop || o.shift_y != 0 || o.shift_z != 0 || o.name || o.kind || o.smooth;
-}
-
-// A definition with the host's load options applied and the orientation checked.
-Profile definition(const std::string& path, const OptionTable& options, Budget& budget, int depth) {
-  OptionReader r(options, "wrc.profile.load");
-  const LoadOptions o = read_load_options(r, false);
-  if (o.metres_per_unit) fail("wrc.profile.load: {}: 'units' does not apply to a Lua definition (it returns metres)", path);
-  Profile p = run(path, options, budget, depth);
-  p.source = path;
-  if (has_geometric_options(o)) p = transform_profile(p, o);
-  p.warnings = orientation_warnings(p);
-  return p;
-}
-
 }  // namespace
 
-bool is_definition(const std::string& path, const LoadOptions& options) {
-  return file_extension(path) == ".lua" && !options.reader;
+DefinitionLoader definition_loader(const SandboxLimits& limits) {
+  return [limits](const std::string& path, const OptionTable& options) {
+    Budget budget;
+    budget.limits = limits;
+    budget.path = path;
+    return run(path, options, budget, 0);
+  };
 }
 
 Profile load_definition(const std::string& path, const OptionTable& options, const SandboxLimits& limits) {
-  Budget budget;
-  budget.limits = limits;
-  budget.path = path;
-  return definition(path, options, budget, 0);
+  const DefinitionLoader definitions = definition_loader(limits);
+  return wrc::load_profile(path, options, &definitions);
 }
 
 }  // namespace wrc::lua

@@ -11,31 +11,20 @@
 #pragma once
 
 #include "wrc/core/options.hpp"
-#include "wrc/profile/load.hpp"
+#include "wrc/lua/definitions.hpp"
 #include "wrc/profile/profile.hpp"
 
-#include <cstddef>
-#include <cstdint>
 #include <string>
 
 namespace wrc::lua {
 
-// The budget of one wrc.profile.load of a definition, with everything it loads. The shipped definitions at
-// kMaxProfilePoints points need at most 1e8 instructions, 48 MB and 3 M points (worn_s1002 with its S1002): the
-// defaults leave ten times, five times and twice that.
-struct SandboxLimits {
-  std::uint64_t instructions = 1'000'000'000;   // Lua VM instructions
-  std::size_t memory = std::size_t{256} << 20;  // bytes of Lua memory held at once
-  double points = 6.0 * kMaxProfilePoints;      // profile points made, in all (each profile holds memory in C++)
-};
+// The sandbox's entry, definition_loader, and its budget, SandboxLimits, are in wrc/lua/definitions.hpp (the C API
+// calls them without this binding's headers).
 
-// True when `path` is loaded as a Lua definition: a .lua file not given to a reader (`reader = "<id>"`).
-bool is_definition(const std::string& path, const LoadOptions& options);
-
-// Runs the definition at `path` (a path to open: resolve_profile_path's) in a sandbox with `options` as its `...`,
-// then applies the load options that are the host's (mirror_y, mirror_z, crop, shift, name, kind, smooth; `units` is
-// refused: a definition returns metres) and the orientation check (warnings). Throws wrc::Error naming the file: an
-// error of the definition with its line, a budget exceeded, a result that is not a wrc.Profile.
+// wrc::load_profile(path, options) with the sandbox of `limits` as its definition loader: for a definition at `path`,
+// the profile as wrc.profile.load gives it (the host's load options applied, `units` refused, orientation checked).
+// Throws wrc::Error naming the file: an error of the definition with its line, a budget exceeded, a result that is
+// not a wrc.Profile.
 Profile load_definition(const std::string& path, const OptionTable& options, const SandboxLimits& limits = {});
 
 }  // namespace wrc::lua

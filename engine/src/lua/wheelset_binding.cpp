@@ -1,4 +1,4 @@
-// wrc.wheelset{...} and the methods of wrc.Wheelset (README "The Lua API"): each converts its arguments into
+// wrc.wheelset{...} and the methods of wrc.Wheelset (docs/reference/lua-api.md): each converts its arguments into
 // engine options, calls the engine (wheelset/, equilibrium/) and pushes the result the engine describes.
 #include "lua/wheelset_binding.hpp"
 

@@ -3,6 +3,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/orientation.hpp"
+#include "wrc/profile/reader.hpp"
 #include "wrc/profile/spline.hpp"
 
 #include <algorithm>
@@ -301,6 +302,42 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
   if (o.smooth) p = smooth_profile(p, *o.smooth);
   p.warnings = orientation_warnings(p);
   return p;
+}
+
+namespace {
+
+bool has_geometric_options(const LoadOptions& o) {
+  return o.mirror_y || o.mirror_z || o.crop || o.shift_y != 0 || o.shift_z != 0 || o.name || o.kind || o.smooth;
+}
+
+// A definition's profile with the host's load options applied and the orientation checked.
+Profile finish_definition(Profile made, const LoadOptions& o, const std::string& path) {
+  made.source = path;
+  if (has_geometric_options(o)) made = transform_profile(made, o);
+  made.warnings = orientation_warnings(made);
+  return made;
+}
+
+}  // namespace
+
+bool is_definition(const std::string& path, const LoadOptions& options) {
+  return file_extension(path) == ".lua" && !options.reader;
+}
+
+Profile load_profile(const std::string& name, const OptionTable& options, const DefinitionLoader* definitions,
+                     const ReaderRegistry* readers) {
+  const char* ctx = "wrc.profile.load";
+  OptionReader r(options, ctx);
+  const LoadOptions o = read_load_options(r, false);
+  const std::string path = resolve_profile_path(name);
+  if (!is_definition(path, o)) {
+    if (readers) return load_profile_file(path, o, {readers, &ReaderRegistry::plugins()});
+    return load_profile_file(path, o);
+  }
+  if (!definitions)
+    fail("{}: {}: a Lua profile definition, and this program loads no Lua (only files that a reader reads)", ctx, path);
+  if (o.metres_per_unit) fail("{}: {}: 'units' does not apply to a Lua definition (it returns metres)", ctx, path);
+  return finish_definition((*definitions)(path, options), o, path);
 }
 
 Profile transform_profile(const Profile& p, const LoadOptions& o) {

@@ -1,4 +1,4 @@
-// Patches -> potential contact areas -> normal problems -> forces (wheelset_contact.hpp).
+// Patches -> potential contact areas -> normal problems -> forces (wheelset/contact.hpp).
 #include "wrc/wheelset/contact.hpp"
 
 #include "contact_internal.hpp"

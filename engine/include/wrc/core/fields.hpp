@@ -1,7 +1,9 @@
 // Results described field by field, once, for every consumer: the Lua binding builds tables from them, the C API
 // a flat map of "left.patches.1.force.z" paths, a CSV writer a row. A result type provides
 //   void describe(const Result&, FieldSink&)
-// calling the sink's methods in a fixed order; names carry no units, the headers of the result types give them.
+// calling the sink's methods in a fixed order. Names carry no units: each call gives the field's FieldDoc (unit and
+// meaning) beside its value, so that a field reference is made by the same calls that
+// fill results and cannot drift from them.
 #pragma once
 
 #include <Eigen/Core>
@@ -10,6 +12,13 @@
 #include <string_view>
 
 namespace wrc {
+
+// What a field is: its unit ("m", "N", "Pa", "rad", "N m", "1" for a pure number, "" for text, flags, counts and
+// tables) and one line of meaning (signs and frames by docs/design.md, section 2).
+struct FieldDoc {
+  const char* unit = "";
+  const char* meaning = "";
+};
 
 class FieldSink {
  public:
@@ -30,14 +39,57 @@ class FieldSink {
   virtual void item() = 0;
   virtual void end() = 0;
 
-  // {x =, y =, z =}
-  void vec3(std::string_view key, const Eigen::Vector3d& v) {
+  // The same with the field's documentation, handed to document() first.
+  void number(std::string_view key, double v, FieldDoc doc) {
+    document(key, doc);
+    number(key, v);
+  }
+  void integer(std::string_view key, long long v, FieldDoc doc) {
+    document(key, doc);
+    integer(key, v);
+  }
+  void boolean(std::string_view key, bool v, FieldDoc doc) {
+    document(key, doc);
+    boolean(key, v);
+  }
+  void string(std::string_view key, std::string_view v, FieldDoc doc) {
+    document(key, doc);
+    string(key, v);
+  }
+  void numbers(std::string_view key, const double* v, std::size_t n, FieldDoc doc) {
+    document(key, doc);
+    numbers(key, v, n);
+  }
+  void integers(std::string_view key, const long long* v, std::size_t n, FieldDoc doc) {
+    document(key, doc);
+    integers(key, v, n);
+  }
+  void grid(std::string_view key, const double* v, int nx, int ny, FieldDoc doc) {
+    document(key, doc);
+    grid(key, v, nx, ny);
+  }
+  void begin(std::string_view key, FieldDoc doc) {
+    document(key, doc);
     begin(key);
-    number("x", v.x());
-    number("y", v.y());
-    number("z", v.z());
+  }
+  void begin_list(std::string_view key, std::size_t n, FieldDoc doc) {
+    document(key, doc);
+    begin_list(key, n);
+  }
+
+  // {x =, y =, z =}: a vector, each component with the vector's unit.
+  void vec3(std::string_view key, const Eigen::Vector3d& v, FieldDoc doc = {}) {
+    begin(key, doc);
+    number("x", v.x(), {doc.unit, "x component"});
+    number("y", v.y(), {doc.unit, "y component"});
+    number("z", v.z(), {doc.unit, "z component"});
     end();
   }
+
+ protected:
+  // The documentation of the field `key` that the next call fills (a sink that writes a reference records it;
+  // the others ignore it).
+  virtual void document(std::string_view /*key*/, FieldDoc /*doc*/) {}
 };
 
 }  // namespace wrc

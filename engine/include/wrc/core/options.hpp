@@ -59,36 +59,78 @@ inline constexpr std::size_t kMaxOptionTextLength = std::size_t{32} << 20;
 // that name `context` and the key.
 OptionTable parse_option_text(std::string_view text, std::string_view context);
 
+// What a key means, beside its name and the default its options struct holds: the unit ("m", "N", "Pa", "rad",
+// "m/s", "1" for a pure number, "" for strings, booleans and tables) and one line of help. Readers pass it with every
+// key, so that the one reading function is also the description that help texts and docs/reference are made from.
+struct OptionDoc {
+  const char* unit = "";
+  const char* help = "";
+};
+
+// One key as a documenting reader saw it (OptionReader::documenting).
+struct OptionInfo {
+  std::string key;        // "radius"; a nested table's keys with its name in front ("creepage.xi")
+  std::string type;       // "number", "integer", "boolean", "string", "choice", "numbers", "strings", "list",
+                          // "table" or an engine object's type ("wrc.Profile")
+  std::string unit, help;
+  std::string fallback;   // the default as text ("0.45", "true", "\"accurate\""); "" when there is none
+  bool required = false;
+  std::vector<std::string> choices;  // of a "choice"
+};
+
 // Reads an OptionTable, remembering which keys were asked for; finish() rejects the others, naming the closest
 // known key (a typo such as 'raduis' for 'radius'). Every getter checks the type and that numbers are finite.
+//
+// Getters come in three forms: `number(key, doc)` (nullopt when absent), `number(key, doc, fallback)` (the
+// fallback when absent: the options struct's member, the one place defaults live) and `need_number(key, doc)`
+// (required). The forms without a doc are kept for keys not yet documented.
+//
+// A documenting reader (documenting()) reads an empty table and records every key a reading function asks for,
+// with its type, unit, help, default and choices, instead of reading it: required getters then return a
+// placeholder (0, "", an empty list) and finish() does nothing. A reading function that checks what it read must skip
+// its checks while documenting() (validation belongs in the options struct's validate(), which a documenting pass
+// never calls).
 class OptionReader {
  public:
   OptionReader(const OptionTable& table, std::string context);
+  // A reader of nothing that records into `out` (keys in the order asked, each once).
+  static OptionReader documenting(std::string context, std::vector<OptionInfo>& out);
+  bool documenting() const { return doc_ != nullptr; }
   const std::string& context() const { return context_; }
   bool has(std::string_view key);  // present (and counted as known)
   const OptionValue* value(std::string_view key);  // nullptr when absent
 
-  std::optional<double> number(std::string_view key);
-  double number(std::string_view key, double fallback) { return number(key).value_or(fallback); }
-  double need_number(std::string_view key);
+  std::optional<double> number(std::string_view key, OptionDoc doc = {});
+  double number(std::string_view key, OptionDoc doc, double fallback);
+  double number(std::string_view key, double fallback) { return number(key, OptionDoc{}, fallback); }
+  double need_number(std::string_view key, OptionDoc doc = {});
   // A whole number in [lo, hi].
-  std::optional<int> integer(std::string_view key, int lo, int hi);
-  std::optional<bool> boolean(std::string_view key);
-  std::optional<std::string> string(std::string_view key);
+  std::optional<int> integer(std::string_view key, int lo, int hi, OptionDoc doc = {});
+  int integer(std::string_view key, int lo, int hi, OptionDoc doc, int fallback);
+  std::optional<bool> boolean(std::string_view key, OptionDoc doc = {});
+  bool boolean(std::string_view key, OptionDoc doc, bool fallback);
+  std::optional<std::string> string(std::string_view key, OptionDoc doc = {});
+  std::string string(std::string_view key, OptionDoc doc, std::string fallback);
   // One of `choices`; the message lists them.
-  std::optional<std::string> choice(std::string_view key, std::initializer_list<std::string_view> choices);
+  std::optional<std::string> choice(std::string_view key, std::initializer_list<std::string_view> choices,
+                                    OptionDoc doc = {});
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> choices, OptionDoc doc,
+                     std::string fallback);
   // An array of finite numbers (a single number counts as an array of one). With finite = false, NaN and
   // infinities are kept (for the caller to report with more context).
   std::optional<std::vector<double>> numbers(std::string_view key, bool finite = true);
+  std::optional<std::vector<double>> numbers(std::string_view key, OptionDoc doc, bool finite = true);
   // An array of strings.
-  std::optional<std::vector<std::string>> strings(std::string_view key);
+  std::optional<std::vector<std::string>> strings(std::string_view key, OptionDoc doc = {});
   // A list of numbers: an array, a single number, or a table {from =, to =, step =} (inclusive; the step's sign
   // follows from and to). At most max_count values.
   std::optional<std::vector<double>> number_list(std::string_view key, std::size_t max_count = 1000000);
-  // A nested table (nullopt when absent); its reader's context is "<context>: <key>".
-  std::optional<OptionReader> table(std::string_view key);
+  std::optional<std::vector<double>> number_list(std::string_view key, OptionDoc doc, std::size_t max_count = 1000000);
+  // A nested table (nullopt when absent); its reader's context is "<context>: <key>". A documenting reader returns a
+  // documenting reader of the table, whose keys it records as "<key>.<name>".
+  std::optional<OptionReader> table(std::string_view key, OptionDoc doc = {});
   // An engine object of the given type name.
-  std::shared_ptr<const void> object(std::string_view key, std::string_view type);
+  std::shared_ptr<const void> object(std::string_view key, std::string_view type, OptionDoc doc = {});
 
   // Declares keys as known without reading them (handled elsewhere, e.g. by the binding).
   void allow(std::initializer_list<std::string_view> keys);
@@ -100,9 +142,14 @@ class OptionReader {
 
  private:
   [[noreturn]] void type_error(std::string_view key, const OptionValue& v, std::string_view expected) const;
+  // While documenting: records the key (once; a later call fills what an earlier one left empty).
+  void note(std::string_view key, std::string_view type, OptionDoc doc, std::string fallback = {},
+            bool required = false, std::vector<std::string> choices = {});
   const OptionTable& table_;
   std::string context_;
   std::vector<std::string> known_;
+  std::vector<OptionInfo>* doc_ = nullptr;  // documenting: where keys are recorded
+  std::string prefix_;                      // documenting a nested table: "<key>."
 };
 
 // The entry of `known` closest to `key` by edit distance, or "" when none is plausibly a typo of it.

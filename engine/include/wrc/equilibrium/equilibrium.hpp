@@ -6,7 +6,7 @@
 // The lateral force Y and the moments My, Mz that an external support must apply at the centre to hold the
 // wheelset there are reported: Y = -sum Fy, My = -sum My, Mz = -sum Mz.
 //
-// The Jacobian comes from the sensitivities of the normal problems (wheelset_contact.hpp): each area's
+// The Jacobian comes from the sensitivities of the normal problems (wheelset/contact.hpp): each area's
 // pressure response to the rigid motion of the wheel surface, on its contact set (forward differences while a
 // wheel is lifted), and is corrected by Broyden updates between steps. Steps are limited and backtracked on the
 // residual norm (|R_F|/Q)^2 + (|R_M|/(Q 1 m))^2.
@@ -193,7 +193,7 @@ SweepOptions read_sweep_options(OptionReader& options);
 std::string failure_message(const EquilibriumResult& result);
 std::string failure_message(const WheelResult& result);
 
-// The results as fields (Lua tables, C API paths; docs in README "Equilibrium"). An equilibrium: converged,
+// The results as fields (Lua tables, C API paths; docs/guide/equilibrium.md "Lua API"). An equilibrium: converged,
 // error, flange_climb (and flange_climb_reason when true), y, yaw, Q, z, roll, Y, My, Mz, Y_Q, iterations,
 // evaluations, residual = {force, moment}, left, right (as wheelset/contact.hpp describes a wheel),
 // rolling_radius_difference (left - right; only when both wheels carry load), force, moment. A wheel: the side's

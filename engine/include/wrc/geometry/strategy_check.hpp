@@ -1,7 +1,7 @@
-// The opt-in cross check of a location strategy against brute force (README "Checking a strategy"): random poses of
-// a study's range are located with the strategy and with every line against every cone of the same discretisation
-// (NativeSearch{false, test}, ws:locate{search = "brute"}); any difference is an error naming the first pose. A user
-// strategy that prunes too much would otherwise miss contact areas silently (forces a few percent low).
+// The opt-in cross check of a location strategy against brute force (docs/guide/robustness.md "Checking a strategy"):
+// random poses of a study's range are located with the strategy and with every line against every cone of the same
+// discretisation (NativeSearch{false, test}, ws:locate{search = "brute"}); any difference is an error naming the first
+// pose. A user strategy that prunes too much would otherwise miss contact areas silently (forces a few percent low).
 #pragma once
 
 #include "wrc/core/fields.hpp"

@@ -9,7 +9,7 @@
 
 namespace wrc::host {
 
-// What `wrc run STUDY.lua ...` is asked besides the study's own key=value options.
+// What `wrc run STUDY.lua ...` is asked besides the study's own key=value options (docs/guide/studies.md).
 struct RunFlags {
   int shard = 1, shards = 1;  // compute part `shard` of `shards` (1-based)
   std::string shard_from;     // where the split came from ("--shard 2/4", "SLURM_ARRAY_TASK_ID=2 ..."), "" if none

@@ -1,5 +1,5 @@
 // Rigid (kinematic) contact of a wheelset on its track: undeformable wheels and rails, the contact where the gap
-// between the undeformed profiles vanishes (docs/design.md, sections 2 and 3; README "Rigid contact geometry").
+// between the undeformed profiles vanishes (docs/design.md, sections 2 and 3; docs/guide/geometry.md).
 //
 // For a lateral position y and a yaw, the wheelset is lowered onto its rails:
 //  - roll free: z and roll such that both wheels touch (the kinematic constraint of a wheelset on its track);
@@ -113,7 +113,7 @@ RigidOptions read_rigid_options(OptionReader& options);
 // Y, My, Mz, Y_Q (roll free), left/right = {lifted, z, gap, two_point, point, normal, angle, rolling_radius,
 // normal_force (roll free), overlap, line, contacts = {{gap, line, point, wheel_point, normal, angle,
 // rolling_radius, wheel_profile = {y, z}, rail_profile = {y, z}, wheel_curvature, rail_curvature,
-// wheel_lateral_radius, rail_lateral_radius (1 / curvature, when not zero)}, ...}} (README "Rigid contact geometry").
+// wheel_lateral_radius, rail_lateral_radius (1 / curvature, when not zero)}, ...}} (docs/guide/geometry.md).
 void describe(const RigidResult& result, FieldSink& out);
 void describe(const RigidContactPoint& contact, FieldSink& out);
 

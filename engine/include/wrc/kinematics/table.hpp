@@ -1,4 +1,4 @@
-// Rigid contact geometry tables (README "Rigid contact geometry"): the rigid contact (rigid.hpp) for a sorted
+// Rigid contact geometry tables (docs/guide/geometry.md): the rigid contact (rigid.hpp) for a sorted
 // series of lateral displacements at one yaw, the way multibody codes precompute it, in one engine call on worker
 // threads, with the contact-point jumps found and written as CSV or as a plain-text table for multibody programs.
 //
@@ -55,7 +55,7 @@ GeometryTable run_geometry_table(const GeometryModel& geometry, const GeometryTa
 // csv, file. `progress` and `notice` are left to the front end: a reader prints nothing.
 GeometryTableOptions read_geometry_table_options(OptionReader& options);
 
-// The CSV columns (units in the names) and the multibody table (README "Rigid contact geometry" lists both).
+// The CSV columns (units in the names) and the multibody table (docs/guide/geometry.md "Geometry tables" lists both).
 void write_geometry_csv(const GeometryTable& table, const std::string& path);
 void write_geometry_text(const GeometryTable& table, const GeometryModel& geometry, const std::string& path);
 

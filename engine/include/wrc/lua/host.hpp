@@ -31,8 +31,9 @@ int run_file(const std::string& path, const std::vector<std::string>& args, cons
 // the command that merges them with it. Returns 2.
 int refuse_folder_merge(const std::string& folder);
 
-// Loads a profile as wrc.profile.load(path, options) does -- a Lua definition or a file through the readers -- in a
-// Lua state of its own, closed before returning (for callers without a Lua state: the C API). Throws wrc::Error.
+// Loads a profile as wrc.profile.load(path, options) does, without readers registered from Lua: wrc::load_profile
+// (profile/load.hpp) with the sandbox as its definition loader, the warnings printed on stderr (for C++ callers
+// without a Lua state: tests, benchmarks; the C API calls wrc::load_profile itself). Throws wrc::Error.
 std::shared_ptr<const Profile> load_profile(const std::string& path, const OptionTable& options);
 
 // An interpreter with the standard libraries and the `wrc` module loaded, for embedding and tests.

@@ -1,17 +1,39 @@
-// Loading profiles from files (docs/design.md, section 6): what a reader produces (RawProfile), the options
-// every reader shares (LoadOptions) and the host's post-processing that turns raw points into a
-// validated Profile: units, extent check, mirrors, crop window, shift, then make_profile.
+// Loading profiles (docs/design.md, section 6): the one entry point every front end calls (load_profile: path
+// lookup, reader dispatch, Lua definitions through a loader the caller passes in), what a reader produces
+// (RawProfile), the options every reader shares (LoadOptions) and the host's post-processing that turns raw points
+// into a validated Profile: units, extent check, mirrors, crop window, shift, then make_profile.
 #pragma once
 
 #include "wrc/core/options.hpp"
 #include "wrc/profile/profile.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace wrc {
+
+class ReaderRegistry;  // reader.hpp
+
+// Runs the Lua profile definition at `path` (a path to open) with `options` (all the load options) as its `...` and
+// returns the profile as the definition made it, in metres; load_profile applies the load options after. The profile
+// area knows no Lua: the caller that can run definitions passes one in (the Lua binding and the C API pass the sandbox
+// of engine/src/lua/sandbox.hpp, which makes a Lua state only inside the call).
+using DefinitionLoader = std::function<Profile(const std::string& path, const OptionTable& options)>;
+
+// Loads a profile, the one way for every front end (wrc.profile.load, wrc_profile_load, a definition loading a
+// shipped profile). Reads `options` (read_load_options, messages as "wrc.profile.load"), finds the file
+// (resolve_profile_path), then:
+// - a Lua definition (is_definition): runs it through `definitions` (nullptr: an error, this caller runs no Lua),
+//   with `units` refused (a definition returns metres), then applies the geometric options (transform_profile) and
+//   the orientation check;
+// - any other file: the reader named by `reader`, else the one claiming the extension, looked up in `readers` (the
+//   readers registered from Lua; may be nullptr) before the plugins (load_profile_file, reader.hpp).
+// The profile's warnings are the caller's to show. Throws wrc::Error naming the file (and line).
+Profile load_profile(const std::string& name, const OptionTable& options, const DefinitionLoader* definitions,
+                     const ReaderRegistry* readers = nullptr);
 
 // What a reader hands to the host: points in the engine orientation (left-side frame, z up) but still in
 // the file's length unit, with their source lines and what the reader knows and did.
@@ -53,6 +75,9 @@ struct LoadOptions {
 // against the reader's own options when it reads).
 LoadOptions read_load_options(OptionReader& options, bool geometric_only);
 
+// True when `path` is loaded as a Lua definition: a .lua file not given to a reader (`reader = "<id>"`).
+bool is_definition(const std::string& path, const LoadOptions& options);
+
 // What a reader written in a scripting language returns: y, z (arrays, required; NaN kept for the host to report
 // with its line), lines (source line per point), kind, units (a name or metres per unit), name, transforms
 // (array of strings). Unknown keys are errors.
@@ -79,12 +104,12 @@ Profile finish_profile(RawProfile raw, const LoadOptions& options, const std::st
 Profile transform_profile(const Profile& p, const LoadOptions& options);
 
 // Where a profile name points, one rule for every caller (wrc.profile.load, wrc_profile_load, a definition loading
-// another; README "Where profiles are found"): a relative path whose first name is `profiles` ("profiles/60e1.lua")
-// is the shipped profile of that name in paths().profiles -- never a file of the working directory, so that a
-// planted ./profiles/60e1.lua cannot replace the shipped rail; any other path (absolute, "./profiles/60e1.lua",
-// "measured/w1.whl") is a file, relative to the working directory. Returns the path to open; throws wrc::Error when
-// there is no such file (for a shipped name: listing the shipped profiles, and the ./ path of a file of the working
-// directory with that name).
+// another; docs/guide/profiles.md "Where profiles are found"): a relative path whose first name is `profiles`
+// ("profiles/60e1.lua") is the shipped profile of that name in paths().profiles -- never a file of the working
+// directory, so that a planted ./profiles/60e1.lua cannot replace the shipped rail; any other path (absolute,
+// "./profiles/60e1.lua", "measured/w1.whl") is a file, relative to the working directory. Returns the path to open;
+// throws wrc::Error when there is no such file (for a shipped name: listing the shipped profiles, and the ./ path of a
+// file of the working directory with that name).
 std::string resolve_profile_path(const std::string& name);
 
 // True when `path` is a file directly in paths().profiles (a shipped profile), by its canonical path.

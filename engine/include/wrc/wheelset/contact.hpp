@@ -67,8 +67,8 @@ struct ContactOptions {
   halfspace::NormalOptions normal;  // tolerance etc. of the normal solver
   // The potential contact area: the curved surface along the rail's profile (CONTACT's conformal mode;
   // wheelset/conformal.hpp) or one plane per area (the paper's, CONTACT's planar mode). Conformal by default: it
-  // agrees with the plane where the patch is flat and satisfies virtual work where the plane does not (README,
-  // "Conformal contact").
+  // agrees with the plane where the patch is flat and satisfies virtual work where the plane does not
+  // (docs/guide/normal.md "Conformal contact").
   ContactSurface surface = ContactSurface::conformal;
 };
 

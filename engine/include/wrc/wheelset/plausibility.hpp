@@ -1,4 +1,4 @@
-// Plausibility of a wheelset set-up and of its results (README "Implausible set-ups and flange climb"):
+// Plausibility of a wheelset set-up and of its results (docs/guide/robustness.md):
 // the profiles' sizes and shapes for their kind and the flanges against the gauge, checked when the wheelset is
 // built; results past flange climb flagged.
 #pragma once

@@ -1,0 +1,27 @@
+# Runs the Lua example of a documentation page as printed (tests/docs/CMakeLists.txt): the ```lua block of PAGE
+# whose first line starts with MARKER is written to a fresh folder TMP/<its name> and run there by WRC with ARGS (a
+# list); it must exit 0 and its output must match EXPECT.
+file(READ ${PAGE} text)
+string(FIND "${text}" "```lua\n${MARKER}" start)
+if(start EQUAL -1)
+  message(FATAL_ERROR "${PAGE} has no ```lua block starting with '${MARKER}'")
+endif()
+math(EXPR start "${start} + 7")
+string(SUBSTRING "${text}" ${start} -1 rest)
+string(FIND "${rest}" "```" stop)
+string(SUBSTRING "${rest}" 0 ${stop} script)
+string(REGEX MATCH "[A-Za-z0-9_]+\\.lua" name "${MARKER}")
+string(REGEX REPLACE "\\.lua$" "" stem "${name}")
+set(dir ${TMP}/${stem})
+file(REMOVE_RECURSE ${dir})
+file(MAKE_DIRECTORY ${dir})
+file(WRITE ${dir}/${name} "${script}")
+execute_process(COMMAND ${WRC} run ${dir}/${name} ${ARGS} WORKING_DIRECTORY ${dir}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${name} from ${PAGE} failed (${rc})")
+endif()
+if(NOT "${out}${err}" MATCHES "${EXPECT}")
+  message(FATAL_ERROR "${name} from ${PAGE} ran, but its output does not match '${EXPECT}'")
+endif()
