@@ -7,12 +7,16 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <unistd.h>
 
 namespace {
 
@@ -390,6 +394,45 @@ TEST_CASE("rigid contact geometry, tables, conicity and flange measures through 
   CHECK(number(m, "Sd") == doctest::Approx(0.0325).epsilon(1e-4));
   wrc_result_free(m);
   CHECK(wrc_profile_flange_measures(f.rail, nullptr, &m) == WRC_ERROR);
+}
+
+namespace {
+
+// What `call` writes to stderr (file descriptor 2, redirected to a temporary file while it runs).
+std::string stderr_of(const std::function<void()>& call) {
+  std::fflush(stderr);
+  std::FILE* f = std::tmpfile();
+  REQUIRE(f != nullptr);
+  const int saved = dup(2);
+  REQUIRE(dup2(fileno(f), 2) == 2);
+  call();
+  std::fflush(stderr);
+  dup2(saved, 2);
+  close(saved);
+  std::string text(static_cast<std::size_t>(std::ftell(f)), '\0');
+  std::rewind(f);
+  REQUIRE(std::fread(text.data(), 1, text.size(), f) == text.size());
+  std::fclose(f);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("the C API prints nothing unless asked: a capped thread count is a field, progress=true draws a line") {
+  Fixture f;
+  wrc_result* t = nullptr;
+  // 3 rows make one chunk: 4 threads asked for, 1 used -- said in the result, not on the caller's stderr.
+  CHECK(stderr_of([&] { REQUIRE(wrc_geometry_table(f.ws, "y=0,1e-3,2e-3 threads=4", &t) == WRC_OK); }).empty());
+  char note[256];
+  size_t length = 0;
+  REQUIRE(wrc_result_string(t, "threads_note", note, sizeof note, &length) == WRC_OK);
+  CHECK(std::string(note).find("threads = 4 asked for, 1 used") != std::string::npos);
+  CHECK(number(t, "threads") == 1);
+  wrc_result_free(t);
+  const std::string drawn = stderr_of([&] { REQUIRE(wrc_geometry_table(f.ws, "y=0,1e-3,2e-3 progress=true", &t) == WRC_OK); });
+  CHECK(drawn.find("\rwrc geometry table: 3 / 3 rows, ") != std::string::npos);
+  CHECK(drawn.back() == '\n');
+  wrc_result_free(t);
 }
 
 TEST_CASE("rolling contact through the C API: creep forces, grids and the options' errors") {

@@ -165,8 +165,10 @@ wrc_status wrc_trajectory_free(wrc_trajectory* trajectory);
  * (with the result) when there is no such pose. */
 wrc_status wrc_rigid_contact(wrc_wheelset* wheelset, double y, double yaw, const char* options, wrc_result** out);
 /* A rigid contact geometry table in one call, on worker threads. Options: y.from, y.to, y.step (m; or y=a,b,c), yaw,
- * roll, Q, two_point_tolerance, threads, jump_threshold, csv=<path>, file=<path> (the multibody table), progress.
- * Fields: "rows.<i>.<field of wrc_rigid_contact>", "jumps.<i>.side|y_before|y_after|wheel_jump|rail_jump", "seconds". */
+ * roll, Q, two_point_tolerance, threads, jump_threshold, csv=<path>, file=<path> (the multibody table), progress
+ * (true: a progress line on stderr; default false, the library prints nothing). Fields: "rows.<i>.<field of
+ * wrc_rigid_contact>", "jumps.<i>.side|y_before|y_after|wheel_jump|rail_jump", "seconds", "threads", "threads_note"
+ * (why fewer threads ran than asked for). */
 wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_result** out);
 /* Equivalent conicity (EN 15302) of a Δr table of n points (at most 10,000,000): y (m, increasing) and
  * dr = r_left - r_right (m). Options:

@@ -7,6 +7,7 @@
 #include "wrc/core/options.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/host/terminal.hpp"
 #include "wrc/kinematics/table.hpp"
 #include "wrc/lua/definitions.hpp"
 #include "wrc/profile/load.hpp"
@@ -517,7 +518,8 @@ wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_r
     const auto w = registry().get(wheelset, "wheelset");
     const wrc::OptionTable t = options_of(options, "wrc_geometry_table: options");
     wrc::OptionReader r(t, "wrc_geometry_table");
-    const wrc::GeometryTableOptions o = wrc::read_geometry_table_options(r);
+    wrc::GeometryTableOptions o = wrc::read_geometry_table_options(r);
+    o.progress = wrc::host::read_progress_line(r, false, "geometry table", "rows");  // the caller's stderr: when asked
     r.finish();
     return make_result(out, true, "", wrc::run_geometry_table(w->model->geometry(), o));
   });

@@ -11,10 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <system_error>
-#include <thread>
 
 #include <fcntl.h>
-#include <sched.h>
 #include <unistd.h>
 
 namespace wrc {
@@ -170,13 +168,6 @@ FileDigest digest_file(const std::string& path, std::uint64_t limit) {
   if (in.bad()) fail("cannot read '{}': {}", path, reason());
   d.hash = h.hex();
   return d;
-}
-
-int available_cores() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace wrc

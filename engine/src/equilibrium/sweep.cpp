@@ -1,17 +1,11 @@
 // Sweeps of equilibria with continuation along y, on worker threads (equilibrium.hpp).
 #include "wrc/core/error.hpp"
-#include "wrc/core/files.hpp"
+#include "wrc/core/parallel.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <mutex>
-#include <thread>
-
-#include <unistd.h>
 
 namespace wrc {
 namespace {
@@ -37,32 +31,6 @@ void add_chain(std::vector<SweepChunk>& chunks, const std::vector<int>& report, 
     std::sort(c.report.begin(), c.report.end());
     chunks.push_back(std::move(c));
   }
-}
-
-// Runs tasks 0..count-1 on the workers, each worker with its own workspace; with one worker, on the calling thread
-// (a Lua strategy bound to the caller's state stays on it). An exception that escapes a task is rethrown.
-void run_parallel(std::vector<std::unique_ptr<ContactWorkspace>>& workspaces, int count,
-                  const std::function<void(ContactWorkspace&, int)>& task) {
-  std::atomic<int> next{0};
-  auto worker = [&](int id) {
-    for (int t; (t = next.fetch_add(1)) < count;) task(*workspaces[static_cast<std::size_t>(id)], t);
-  };
-  const int threads = static_cast<int>(workspaces.size());
-  if (threads == 1) return worker(0);
-  std::vector<std::thread> pool;
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  for (int id = 0; id < threads; ++id)
-    pool.emplace_back([&, id] {
-      try {
-        worker(id);
-      } catch (...) {  // solve_case catches per case; anything else is a bug worth reporting, not a crash
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-      }
-    });
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
 }
 
 // A converged case of a continuation chain.
@@ -93,7 +61,7 @@ std::optional<Start> predicted_start(const std::vector<ChainPoint>& path, double
 class SweepRun {
  public:
   SweepRun(const ContactModel& model, const SweepPlan& plan, const SweepOptions& opt, SweepResult& out)
-      : model_(model), plan_(plan), opt_(opt), out_(out), total_(static_cast<int>(out.index.size())) {
+      : model_(model), plan_(plan), opt_(opt), out_(out), progress_(opt.progress, static_cast<int>(out.index.size())) {
     slot_.assign(plan.cases.size(), -1);
     for (std::size_t k = 0; k < out.index.size(); ++k) slot_[static_cast<std::size_t>(out.index[k])] = static_cast<int>(k);
   }
@@ -147,11 +115,7 @@ class SweepRun {
       e.Q = opt_.Q;
       e.message = ex.what();
     }
-    if (!reported) return ok;
-    std::lock_guard<std::mutex> lock(progress_mutex_);
-    ++done_;
-    if (!ok) ++failed_;
-    if (opt_.progress) opt_.progress(done_, total_, failed_);
+    if (reported) progress_.add(!ok);
     return ok;
   }
 
@@ -160,8 +124,7 @@ class SweepRun {
   const SweepOptions& opt_;
   SweepResult& out_;
   std::vector<int> slot_;  // per case of the plan, its entry in out_ (-1: not in this run)
-  std::mutex progress_mutex_;
-  int done_ = 0, failed_ = 0, total_ = 0;
+  ProgressCount progress_;
 };
 
 }  // namespace
@@ -212,24 +175,23 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
   out.rigid.resize(out.index.size());
   out.errors.resize(out.index.size());
 
+  // One chunk per task: a chunk's cases follow each other by continuation, and chunks do not depend on each other.
   const int count = static_cast<int>(chunks.size());
-  int threads = opt.threads > 0 ? opt.threads : available_cores();
-  threads = std::max(1, std::min(threads, opt.single_thread.empty() ? count : 1));
-  out.threads = threads;
-  if (opt.threads > threads) {
-    out.threads_note = fmt::format("threads = {} asked for, {} used: {}", opt.threads, threads,
-                                   !opt.single_thread.empty() ? opt.single_thread
-                                   : fmt::format("the sweep has {} chunk{} (continuation chains: per yaw, outward "
-                                                 "from the centre on each side), one per thread", count,
-                                                 count == 1 ? "" : "s"));
-    if (opt.notice) opt.notice(out.threads_note);
-  }
-  std::vector<std::unique_ptr<ContactWorkspace>> workspaces(static_cast<std::size_t>(threads));
+  const ThreadCount tc =
+      thread_count(opt.threads, opt.single_thread.empty() ? count : 1,
+                   !opt.single_thread.empty() ? opt.single_thread
+                   : fmt::format("the sweep has {} chunk{} (continuation chains: per yaw, outward from the centre on "
+                                 "each side), one per thread", count, count == 1 ? "" : "s"));
+  out.threads = tc.threads;
+  out.threads_note = tc.note;
+  if (!tc.note.empty() && opt.notice) opt.notice(tc.note);
+  std::vector<std::unique_ptr<ContactWorkspace>> workspaces(static_cast<std::size_t>(tc.threads));
   for (auto& w : workspaces) w = make_workspace();
 
   SweepRun run(model, plan, opt, out);
-  run_parallel(workspaces, count, [&](ContactWorkspace& ws, int t) {
-    run.run_chunk(ws, plan.chunks[static_cast<std::size_t>(chunks[static_cast<std::size_t>(t)])]);
+  parallel_for(count, tc.threads, [&](int worker, int t) {
+    run.run_chunk(*workspaces[static_cast<std::size_t>(worker)],
+                  plan.chunks[static_cast<std::size_t>(chunks[static_cast<std::size_t>(t)])]);
   });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
@@ -251,17 +213,7 @@ SweepOptions read_sweep_options(OptionReader& r) {
   o.keep_grids = r.boolean("grids").value_or(false);
   o.chain = r.integer("chain", 0, 100000000).value_or(0);
   o.equilibrium = read_equilibrium_options(r);
-  o.notice = [](const std::string& note) { std::fprintf(stderr, "wrc: sweep: %s\n", note.c_str()); };
   o.rolling = read_rolling_request(r);
-  if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
-    const auto t0 = std::chrono::steady_clock::now();
-    o.progress = [t0](int done, int total, int failed) {
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::fprintf(stderr, "\rwrc sweep: %d / %d cases, %d failed, %.1f s", done, total, failed, s);
-      if (done == total) std::fputc('\n', stderr);
-      std::fflush(stderr);
-    };
-  }
   return o;
 }
 

@@ -2,22 +2,16 @@
 #include "wrc/geometry/strategy_check.hpp"
 
 #include "wrc/core/error.hpp"
-#include "wrc/core/files.hpp"
+#include "wrc/core/parallel.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <mutex>
 #include <random>
-#include <thread>
-
-#include <unistd.h>
 
 namespace wrc {
 namespace {
@@ -133,56 +127,35 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Draw> draws = draw_poses(o);
   const int n = static_cast<int>(draws.size());
-  int threads = o.threads > 0 ? o.threads : available_cores();
-  threads = std::max(1, std::min(threads, n));
+  const int threads = thread_count(o.threads, n, "").threads;  // no more threads than poses (the result says how many)
   std::vector<Worker> workers(static_cast<std::size_t>(threads));
   for (Worker& w : workers) w.search = make_search();  // on the calling thread: a strategy may need it
-  std::atomic<int> next{0}, first_bad{INT_MAX}, done{0};
-  std::mutex m;
-  std::string bad_message;
-  auto record = [&](int i, const std::string& what) {
-    std::lock_guard<std::mutex> lock(m);
-    if (i < first_bad) {
-      first_bad = i;
-      bad_message = what;
+  ProgressCount progress(o.progress, n);
+  // A pose that differs throws: the error is the first such pose in drawing order, on any number of threads.
+  parallel_for(n, threads, [&](int worker, int i) {
+    Worker& w = workers[static_cast<std::size_t>(worker)];
+    const Pose p = pose_of(g, draws[static_cast<std::size_t>(i)]);
+    auto differs = [&](const std::string& what) {
+      fail("check_strategy: the strategy '{}' differs from brute force on the same discretisation at pose {} of {} "
+           "(seed {}): {}: {}", g.strategy.name, i + 1, n, o.seed, pose_text(p), what);
+    };
+    try {
+      locate_contact(g, p, w.mine, *w.search);
+    } catch (const Error& e) {
+      differs(fmt::format("the strategy fails: {}", e.what()));
     }
-  };
-  auto run = [&](Worker& w) {
-    for (int i; (i = next.fetch_add(1)) < n && i < first_bad;) {
-      const Pose p = pose_of(g, draws[static_cast<std::size_t>(i)]);
-      try {
-        locate_contact(g, p, w.mine, *w.search);
-      } catch (const Error& e) {
-        record(i, fmt::format("the strategy fails: {}", e.what()));
-        continue;
-      }
-      locate_contact(g, p, w.ref, w.brute);
-      std::string what;
-      for (int s : {kLeft, kRight}) {
-        if (what.empty()) what = side_difference(w.mine, w.ref, s);
-        w.counts.tests += w.mine.counters(s).tests;
-        w.counts.brute_tests += w.ref.counters(s).tests;
-        w.counts.patches += static_cast<long long>(w.ref.patches(s).size());
-      }
-      if (!w.ref.patches(kLeft).empty() || !w.ref.patches(kRight).empty()) ++w.counts.contact_poses;
-      if (!what.empty()) record(i, what);
-      if (const int d = ++done; o.progress && (d % std::max(1, n / 100) == 0 || d == n)) {
-        std::lock_guard<std::mutex> lock(m);
-        o.progress(d, n);
-      }
+    locate_contact(g, p, w.ref, w.brute);
+    std::string what;
+    for (int s : {kLeft, kRight}) {
+      if (what.empty()) what = side_difference(w.mine, w.ref, s);
+      w.counts.tests += w.mine.counters(s).tests;
+      w.counts.brute_tests += w.ref.counters(s).tests;
+      w.counts.patches += static_cast<long long>(w.ref.patches(s).size());
     }
-  };
-  if (threads == 1) {
-    run(workers[0]);
-  } else {
-    std::vector<std::thread> pool;
-    for (Worker& w : workers) pool.emplace_back([&run, &w] { run(w); });
-    for (auto& t : pool) t.join();
-  }
-  if (first_bad < n)
-    fail("check_strategy: the strategy '{}' differs from brute force on the same discretisation at pose {} of {} "
-         "(seed {}): {}: {}", g.strategy.name, first_bad + 1, n, o.seed,
-         pose_text(pose_of(g, draws[static_cast<std::size_t>(first_bad.load())])), bad_message);
+    if (!w.ref.patches(kLeft).empty() || !w.ref.patches(kRight).empty()) ++w.counts.contact_poses;
+    if (!what.empty()) differs(what);
+    progress.add();
+  });
   StrategyCheckResult r;
   r.poses = n;
   r.threads = threads;
@@ -211,15 +184,6 @@ StrategyCheckOptions read_strategy_check_options(OptionReader& r) {
   range("depth", o.depth);
   o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT_MAX).value_or(1));
   o.threads = r.integer("threads", 0, 256).value_or(0);
-  if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
-    const auto t0 = std::chrono::steady_clock::now();
-    o.progress = [t0](int done, int total) {
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::fprintf(stderr, "\rwrc check_strategy: %d / %d poses, %.0f s", done, total, s);
-      if (done == total) std::fputc('\n', stderr);
-      std::fflush(stderr);
-    };
-  }
   return o;
 }
 

@@ -1,5 +1,6 @@
-// wrc: the command-line host. Parses the command line and hands the script to the Lua host.
+// wrc: the command-line host. Parses the command line (command_line.hpp) and hands the script to the Lua host.
 #include "wrc/core/config.hpp"
+#include "wrc/host/command_line.hpp"
 #include "wrc/lua/host.hpp"
 
 #include <cstdio>
@@ -64,8 +65,9 @@ int main(int argc, char** argv) {
     if (cmd == "merge" && std::filesystem::is_directory(argv[2], ec)) return wrc::lua::refuse_folder_merge(argv[2]);
     try {
       const auto env = [](const char* name) { return std::getenv(name); };
-      const wrc::lua::RunFlags flags =
-          cmd == "merge" ? wrc::lua::take_merge_flags(args) : wrc::lua::take_run_flags(args, env);
+      const wrc::host::RunFlags flags =
+          cmd == "merge" ? wrc::host::take_merge_flags(args) : wrc::host::take_run_flags(args, env);
+      for (const std::string& note : flags.notes) std::fprintf(stderr, "wrc: %s\n", note.c_str());
       return wrc::lua::run_file(argv[2], args, flags);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "wrc %s: %s\n", cmd.c_str(), e.what());

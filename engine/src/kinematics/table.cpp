@@ -1,20 +1,15 @@
 // Rigid contact geometry tables (table.hpp): rows with continuation on worker threads, jumps by bisection, files.
 #include "wrc/kinematics/table.hpp"
 
-#include "wrc/core/files.hpp"
-
 #include "wrc/core/error.hpp"
+#include "wrc/core/files.hpp"
+#include "wrc/core/parallel.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <memory>
-#include <mutex>
 #include <numbers>
-#include <thread>
-
-#include <unistd.h>
 
 namespace wrc {
 namespace {
@@ -45,12 +40,12 @@ std::optional<Eigen::Vector2d> predict(const std::vector<RigidResult>& rows, con
 
 // Solves the rows [first, last) in order, each from its predecessors.
 void solve_chunk(const GeometryModel& g, const GeometryTableOptions& o, std::size_t first, std::size_t last,
-                 std::vector<RigidResult>& rows, const std::function<void()>& done) {
+                 std::vector<RigidResult>& rows, ProgressCount& progress) {
   RigidOptions ro = o.rigid;
   for (std::size_t i = first; i < last; ++i) {
     ro.start = predict(rows, o.y, i, first);
     rows[i] = solve_rigid(g, o.y[i], o.yaw, ro);
-    done();
+    progress.add(!rows[i].converged);
   }
 }
 
@@ -105,39 +100,20 @@ GeometryTable run_geometry_table(const GeometryModel& g, const GeometryTableOpti
   t.roll = o.rigid.roll;
   const std::size_t n = o.y.size();
   t.rows.resize(n);
-  // At least 16 rows a chunk: continuation needs a run-up, and threads cost more than short chunks save.
-  const int threads = std::clamp(o.threads > 0 ? o.threads : available_cores(), 1, std::max(1, static_cast<int>(n / 16)));
-  t.threads = threads;
-  if (o.threads > threads) {
-    t.threads_note = fmt::format("threads = {} asked for, {} used: {} rows make {} chunk{} of at least 16 rows",
-                                 o.threads, threads, n, threads, threads == 1 ? "" : "s");
-    if (o.notice) o.notice(t.threads_note);
-  }
-  std::mutex m;
-  int done = 0;
-  auto tick = [&] {
-    std::lock_guard lock(m);
-    ++done;
-    if (o.progress) o.progress(done, static_cast<int>(n));
-  };
-  std::vector<std::thread> pool;
-  std::exception_ptr error;
-  for (int k = 0; k < threads; ++k) {
-    const std::size_t first = n * static_cast<std::size_t>(k) / static_cast<std::size_t>(threads);
-    const std::size_t last = n * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(threads);
-    auto work = [&, first, last] {
-      try {
-        solve_chunk(g, o, first, last, t.rows, tick);
-      } catch (...) {
-        std::lock_guard lock(m);
-        if (!error) error = std::current_exception();
-      }
-    };
-    if (threads == 1) work();
-    else pool.emplace_back(work);
-  }
-  for (auto& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
+  // As many contiguous chunks as threads, each solved in order from a cold start: at least 16 rows a chunk, as
+  // continuation needs a run-up and threads cost more than short chunks save.
+  const int cap = std::max(1, static_cast<int>(n / 16));
+  const ThreadCount tc =
+      thread_count(o.threads, cap, fmt::format("{} rows make {} chunk{} of at least 16 rows", n, cap, cap == 1 ? "" : "s"));
+  t.threads = tc.threads;
+  t.threads_note = tc.note;
+  if (!tc.note.empty() && o.notice) o.notice(tc.note);
+  const auto chunks = static_cast<std::size_t>(tc.threads);
+  ProgressCount progress(o.progress, static_cast<int>(n));
+  parallel_for(tc.threads, tc.threads, [&](int, int k) {
+    const auto c = static_cast<std::size_t>(k);
+    solve_chunk(g, o, n * c / chunks, n * (c + 1) / chunks, t.rows, progress);
+  });
   find_jumps(g, o, t);
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!o.csv.empty()) write_geometry_csv(t, o.csv);
@@ -157,15 +133,6 @@ GeometryTableOptions read_geometry_table_options(OptionReader& r) {
   o.jump_threshold = r.number("jump_threshold", o.jump_threshold);
   o.csv = r.string("csv").value_or("");
   o.file = r.string("file").value_or("");
-  o.notice = [](const std::string& note) { std::fprintf(stderr, "wrc: geometry table: %s\n", note.c_str()); };
-  if (r.boolean("progress").value_or(isatty(STDERR_FILENO) == 1)) {
-    o.progress = [](int done, int total) {
-      if (done != total && done % 50 != 0) return;
-      std::fprintf(stderr, "\rwrc geometry table: %d / %d rows", done, total);
-      if (done == total) std::fputc('\n', stderr);
-      std::fflush(stderr);
-    };
-  }
   return o;
 }
 

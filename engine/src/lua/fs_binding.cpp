@@ -6,6 +6,7 @@
 #include "lua/guard.hpp"
 #include "wrc/core/files.hpp"
 #include "wrc/core/options.hpp"
+#include "wrc/core/parallel.hpp"
 
 #include <filesystem>
 #include <system_error>

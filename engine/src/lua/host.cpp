@@ -1,4 +1,5 @@
-// The script host: state creation, package paths, protected calls with tracebacks, `wrc run`.
+// The script host: state creation, package paths, protected calls with tracebacks, running a script with the
+// command line's flags (host/command_line parses them).
 #include "wrc/lua/host.hpp"
 
 #include "lua/bindings.hpp"
@@ -6,14 +7,8 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
 
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <map>
 #include <optional>
 #include <string>
 
@@ -139,7 +134,7 @@ void push_args(lua_State* L, const std::string& script, const std::vector<std::s
 }
 
 // wrc.command = {script =, shard =, shards =, shard_from =, merge =, fresh =, help =}.
-void push_command(lua_State* L, const std::string& script, const RunFlags& flags) {
+void push_command(lua_State* L, const std::string& script, const host::RunFlags& flags) {
   lua_getglobal(L, "wrc");
   lua_createtable(L, 0, 8);
   set_string(L, "script", script);
@@ -193,10 +188,9 @@ lua_State* open_or_report() {
 
 }  // namespace
 
-int run_file(const std::string& path, const std::vector<std::string>& args, const RunFlags& flags) {
+int run_file(const std::string& path, const std::vector<std::string>& args, const host::RunFlags& flags) {
   lua_State* L = open_or_report();
   if (L == nullptr) return 1;
-  for (const std::string& note : flags.notes) std::fprintf(stderr, "wrc: %s\n", note.c_str());
   push_args(L, path, args);
   push_command(L, path, flags);
   int status = luaL_loadfile(L, path.c_str());
@@ -215,7 +209,7 @@ int run_file(const std::string& path, const std::vector<std::string>& args, cons
 int refuse_folder_merge(const std::string& folder) {
   lua_State* L = open_or_report();
   if (L == nullptr) return 1;
-  push_command(L, "", RunFlags{});
+  push_command(L, "", host::RunFlags{});
   int status = luaL_loadstring(L, "return require('wrc.study').refuse_folder_merge(...)");
   if (status == LUA_OK) {
     lua_pushstring(L, folder.c_str());
@@ -224,120 +218,6 @@ int refuse_folder_merge(const std::string& folder) {
   const int code = exit_code(L, status);
   lua_close(L);
   return code == 0 ? 2 : code;
-}
-
-namespace {
-
-// K/N with 1 <= K <= N.
-void parse_shard(const std::string& text, RunFlags& f) {
-  int k = 0, n = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%d/%d%c", &k, &n, &tail) != 2 || n < 1 || k < 1 || k > n || n > 1000000)
-    fail("--shard {}: expected K/N with 1 <= K <= N (e.g. --shard 2/4)", text);
-  f.shard = k;
-  f.shards = n;
-}
-
-// An integer environment variable, nullopt when unset; an error when set to anything else.
-std::optional<long> env_integer(const std::function<const char*(const char*)>& env, const char* name) {
-  const char* v = env(name);
-  if (v == nullptr || *v == 0) return std::nullopt;
-  char* end = nullptr;
-  errno = 0;
-  const long x = std::strtol(v, &end, 10);
-  if (errno != 0 || *end != 0) fail("{}={} is not a whole number", name, v);
-  return x;
-}
-
-// The shard of a SLURM array task: ids MIN, MIN + STEP, ..., MAX number the shards 1..N.
-void shard_from_slurm(const std::function<const char*(const char*)>& env, RunFlags& f) {
-  const long id = *env_integer(env, "SLURM_ARRAY_TASK_ID");
-  const auto count = env_integer(env, "SLURM_ARRAY_TASK_COUNT"), max = env_integer(env, "SLURM_ARRAY_TASK_MAX");
-  const long step = env_integer(env, "SLURM_ARRAY_TASK_STEP").value_or(1);
-  auto min = env_integer(env, "SLURM_ARRAY_TASK_MIN");
-  if (step < 1) fail("SLURM_ARRAY_TASK_STEP={} must be >= 1", step);
-  if (!min && count && max) min = *max - (*count - 1) * step;
-  if (!min || (!count && !max))
-    fail("SLURM_ARRAY_TASK_ID={} is set without SLURM_ARRAY_TASK_MIN and SLURM_ARRAY_TASK_COUNT or _MAX: pass --shard K/N",
-         id);
-  const long n = count ? *count : (*max - *min) / step + 1;
-  if (max && (*max - *min) / step + 1 != n)
-    fail("the SLURM array's task ids {}..{} (step {}) do not number its {} tasks 1..N (a list with gaps?): submit "
-         "--array=1-N or pass --shard K/N", *min, *max, step, n);
-  if (id < *min || (id - *min) % step != 0 || (id - *min) / step + 1 > n)
-    fail("SLURM_ARRAY_TASK_ID={} is not one of the array's ids {}, {}, ... ({} tasks)", id, *min, *min + step, n);
-  f.shard = static_cast<int>((id - *min) / step + 1);
-  f.shards = static_cast<int>(n);
-  f.shard_from = fmt::format("SLURM_ARRAY_TASK_ID={} of the array {}-{} ({} tasks)", id, *min, *min + (n - 1) * step, n);
-}
-
-// The flags of a command line taken out of `args`; each flag and each key=value key at most once.
-RunFlags parse_flags(std::vector<std::string>& args) {
-  RunFlags f;
-  std::vector<std::string> rest, seen;
-  std::map<std::string, std::string> keys;
-  auto once = [&](const std::string& flag) {
-    if (std::find(seen.begin(), seen.end(), flag) != seen.end()) fail("{} is given twice: give it once", flag);
-    seen.push_back(flag);
-  };
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a.rfind("--", 0) != 0 && a != "-h") {
-      const auto eq = a.find('=');
-      if (eq != std::string::npos && eq > 0) {
-        const auto [it, fresh] = keys.emplace(a.substr(0, eq), a);
-        if (!fresh) fail("option {} is given twice ({} and {}): give it once", it->first, it->second, a);
-      }
-      rest.push_back(a);
-    } else if (a == "--help" || a == "-h") {
-      once("--help");
-      f.help = true;
-    } else if (a == "--merge") {
-      once("--merge");
-      f.merge = true;
-    } else if (a == "--fresh") {
-      once("--fresh");
-      f.fresh = true;
-    } else if (a == "--shard" || a.rfind("--shard=", 0) == 0) {
-      once("--shard");
-      if (a == "--shard" && i + 1 >= args.size()) fail("--shard needs K/N (e.g. --shard 2/4)");
-      const std::string v = a == "--shard" ? args[++i] : a.substr(8);
-      parse_shard(v, f);
-      f.shard_from = "--shard " + v;
-    } else {
-      const std::string best = closest_name(a, {"--shard", "--merge", "--fresh", "--help"});
-      fail("unknown flag '{}'{} (flags: --shard K/N, --merge, --fresh, --help)", a,
-           best.empty() ? std::string() : " (did you mean '" + best + "'?)");
-    }
-  }
-  args = std::move(rest);
-  return f;
-}
-
-}  // namespace
-
-RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env) {
-  RunFlags f = parse_flags(args);
-  const bool shard_given = !f.shard_from.empty();
-  if (f.merge && shard_given) fail("--merge assembles the parts of every shard: it takes no --shard");
-  if (f.merge && f.fresh) fail("--merge assembles the parts there are, --fresh discards them: give one of the two");
-  const char* id = env("SLURM_ARRAY_TASK_ID");
-  if (id != nullptr && *id != 0 && !f.merge && !f.help) {
-    if (shard_given)
-      f.notes.push_back(fmt::format("{} wins over the SLURM array task (SLURM_ARRAY_TASK_ID={})", f.shard_from, id));
-    else
-      shard_from_slurm(env, f);
-  }
-  return f;
-}
-
-RunFlags take_merge_flags(std::vector<std::string>& args) {
-  RunFlags f = parse_flags(args);
-  if (!f.shard_from.empty() || f.merge || f.fresh)
-    fail("wrc merge STUDY.lua assembles the parts of every shard: {} does not apply to it",
-         !f.shard_from.empty() ? "--shard" : f.merge ? "--merge" : "--fresh");
-  f.merge = f.from_parts = true;
-  return f;
 }
 
 Session::Session() : state_(new_state()) {}

@@ -8,6 +8,7 @@
 #include "lua/results_binding.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/host/terminal.hpp"
 #include "wrc/kinematics/table.hpp"
 
 #include <algorithm>
@@ -168,7 +169,9 @@ int wheelset_geometry_table(lua_State* L) {
   const char* ctx = "wheelset:geometry_table";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const GeometryTableOptions o = read_geometry_table_options(a.reader);
+  GeometryTableOptions o = read_geometry_table_options(a.reader);
+  o.progress = host::read_progress_line(a.reader, host::stderr_is_terminal(), "geometry table", "rows");
+  o.notice = host::note_printer("geometry table");
   a.reader.finish();
   push_result(L, run_geometry_table(w.model->geometry(), o));
   return 1;
@@ -203,6 +206,8 @@ int wheelset_sweep(lua_State* L) {
   Args a(L, ctx);
   const SweepPlan plan = read_plan(a.reader, ctx);
   SweepOptions so = read_sweep_options(a.reader);
+  so.progress = host::read_progress_line(a.reader, host::stderr_is_terminal(), "sweep", "cases");
+  so.notice = host::note_printer("sweep");
   std::vector<int> chunks;
   if (const auto listed = a.reader.numbers("chunks")) {
     for (double k : *listed) {
@@ -335,13 +340,14 @@ void open_trajectory(lua_State* L) {
   lua_pop(L, 1);
 }
 
-// ws:check_strategy{poses =, y = {min, max}, yaw =, roll =, depth =, seed =, threads =}: the strategy against brute
-// force on random poses; an error names the first pose that differs.
+// ws:check_strategy{poses =, y = {min, max}, yaw =, roll =, depth =, seed =, threads =, progress =}: the strategy
+// against brute force on random poses; an error names the first pose that differs.
 int wheelset_check_strategy(lua_State* L) {
   const char* ctx = "wheelset:check_strategy";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
   StrategyCheckOptions o = read_strategy_check_options(a.reader);
+  o.progress = host::read_progress_line(a.reader, host::stderr_is_terminal(), "check_strategy", "poses");
   a.reader.finish();
   const bool portable = w.model->strategy().info().portable;
   if (!portable) o.threads = 1;  // an inline Lua strategy runs in this state only

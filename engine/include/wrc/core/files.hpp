@@ -119,8 +119,4 @@ class FileLock {
   bool locked_ = false;
 };
 
-// The processors this process may run on (its CPU affinity mask, as a SLURM or taskset allocation restricts it;
-// at least 1).
-int available_cores();
-
 }  // namespace wrc

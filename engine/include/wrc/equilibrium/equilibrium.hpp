@@ -17,6 +17,7 @@
 #pragma once
 
 #include "wrc/core/options.hpp"
+#include "wrc/core/parallel.hpp"
 #include "wrc/kinematics/rigid.hpp"
 #include "wrc/wheelset/contact.hpp"
 
@@ -156,8 +157,8 @@ struct SweepOptions {
   // With kinematics or creepages: the tangential problems of every converged case at its equilibrium pose (the
   // equilibrium itself stays frictionless); the creep forces join the wheels' forces, Y, My, Mz do not.
   std::optional<RollingRequest> rolling;
-  // Called from worker threads (serialised) after each case: done, total, failed so far.
-  std::function<void(int, int, int)> progress;
+  // Called from the workers (serialised) after each reported case: cases done, cases in all, failed so far.
+  Progress progress;
   // Why the sweep must run on the calling thread alone ("": it need not), e.g. a strategy bound to one Lua state.
   std::string single_thread;
   // Called once (on the calling thread) when fewer threads run than `threads` asked for, with the reason.
@@ -185,9 +186,8 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
 // Options as Lua and the C API give them: force_tolerance, moment_tolerance, max_iterations, max_evaluations,
 // max_penetration, trace (true: print the Newton iterates to stderr).
 EquilibriumOptions read_equilibrium_options(OptionReader& options);
-// A sweep's options: Q (required), threads (0: all cores), rigid, grids, chain, progress (default: stderr is a
-// terminal), the equilibrium options above, and the rolling keys (read_rolling_request). A capped thread count is
-// noted once on stderr.
+// A sweep's options: Q (required), threads (0: all cores), rigid, grids, chain, the equilibrium options above, and
+// the rolling keys (read_rolling_request). `progress` and `notice` are left to the front end: a reader prints nothing.
 SweepOptions read_sweep_options(OptionReader& options);
 // Why a solve did not converge, with its last iterate (the error of a Lua call that does not return failures).
 std::string failure_message(const EquilibriumResult& result);

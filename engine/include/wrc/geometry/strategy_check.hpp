@@ -6,6 +6,7 @@
 
 #include "wrc/core/fields.hpp"
 #include "wrc/core/options.hpp"
+#include "wrc/core/parallel.hpp"
 #include "wrc/geometry/location.hpp"
 #include "wrc/geometry/model.hpp"
 
@@ -25,7 +26,7 @@ struct StrategyCheckOptions {
   std::array<double, 2> depth{1e-6, 1e-3};    // m below the height where the wheelset first touches, log-uniform
   std::uint64_t seed = 1;
   int threads = 0;                            // worker threads (0: all cores); 1 for a strategy bound to one thread
-  std::function<void(int, int)> progress;     // (poses done, total), every 1 % of them, serialised
+  Progress progress;                          // (poses done, total, 0) after each pose, serialised
 };
 
 struct StrategyCheckResult {
@@ -49,8 +50,7 @@ StrategyCheckResult check_strategy(const GeometryModel& model, const StrategyChe
                                    const std::function<std::unique_ptr<PoseSearch>()>& make_search);
 
 // ws:check_strategy{poses =, y = {min, max}, yaw = {min, max}, roll = {min, max}, depth = {min, max}, seed =,
-// threads =, progress =} (ranges as two-number arrays; defaults as above; progress: a line on stderr, by default
-// when stderr is a terminal).
+// threads =} (ranges as two-number arrays; defaults as above). `progress` is left to the front end.
 StrategyCheckOptions read_strategy_check_options(OptionReader& options);
 // poses, threads, contact_poses, patches, tests, brute_tests, seconds.
 void describe(const StrategyCheckResult& result, FieldSink& out);

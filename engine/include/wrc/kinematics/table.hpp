@@ -8,6 +8,7 @@
 // bisected to 1e-8 m of y: if the move stays (a jump), it is reported with the positions on both sides.
 #pragma once
 
+#include "wrc/core/parallel.hpp"
 #include "wrc/kinematics/conicity.hpp"
 #include "wrc/kinematics/rigid.hpp"
 
@@ -23,7 +24,7 @@ struct GeometryTableOptions {
   RigidOptions rigid;                // roll mode, Q, two_point_tolerance (start: ignored)
   int threads = 0;                   // 0: the cores this process may use (available_cores)
   double jump_threshold = 0.5e-3;    // m: a move of the touching point larger than this between rows is examined
-  std::function<void(int, int)> progress;  // (rows done, rows): from the workers, serialised
+  Progress progress;                 // (rows done, rows, rows without a solution): from the workers, serialised
   std::string csv, file;             // when not empty: write the CSV / the multibody table there
   std::function<void(const std::string&)> notice;  // once, when fewer threads run than `threads` asked for
 };
@@ -51,7 +52,7 @@ struct GeometryTable {
 GeometryTable run_geometry_table(const GeometryModel& geometry, const GeometryTableOptions& options);
 
 // y (an array or {from =, to =, step =}, required), yaw, roll, Q, two_point_tolerance, threads, jump_threshold,
-// csv, file, progress (default: when stderr is a terminal).
+// csv, file. `progress` and `notice` are left to the front end: a reader prints nothing.
 GeometryTableOptions read_geometry_table_options(OptionReader& options);
 
 // The CSV columns (units in the names) and the multibody table (docs/guide/geometry.md "Geometry tables" lists both).

@@ -1,6 +1,6 @@
 // The flags of `wrc run` (--shard, --merge, --fresh, --help) and of `wrc merge`, and the shard of a SLURM array task.
 #include "wrc/core/error.hpp"
-#include "wrc/lua/host.hpp"
+#include "wrc/host/command_line.hpp"
 
 #include <doctest/doctest.h>
 
@@ -9,8 +9,8 @@
 #include <vector>
 
 using namespace wrc;
-using wrc::lua::RunFlags;
-using wrc::lua::take_run_flags;
+using wrc::host::RunFlags;
+using wrc::host::take_run_flags;
 
 namespace {
 
@@ -63,19 +63,19 @@ TEST_CASE("host flags: a flag or an option given twice, and --fresh with --merge
 
 TEST_CASE("host flags: wrc merge STUDY.lua takes options and --help, no --shard, --merge or --fresh") {
   std::vector<std::string> args{"out=x", "plots=false"};
-  const RunFlags f = wrc::lua::take_merge_flags(args);
+  const RunFlags f = wrc::host::take_merge_flags(args);
   CHECK(f.merge);
   CHECK(f.from_parts);
   CHECK(args == std::vector<std::string>{"out=x", "plots=false"});
   std::vector<std::string> help{"--help"};
-  CHECK(wrc::lua::take_merge_flags(help).help);
+  CHECK(wrc::host::take_merge_flags(help).help);
   std::vector<std::string> fresh{"--fresh"}, merge{"--merge"};
-  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(fresh), doctest::Contains("--fresh does not apply"), Error);
-  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(merge), doctest::Contains("--merge does not apply"), Error);
+  CHECK_THROWS_WITH_AS(wrc::host::take_merge_flags(fresh), doctest::Contains("--fresh does not apply"), Error);
+  CHECK_THROWS_WITH_AS(wrc::host::take_merge_flags(merge), doctest::Contains("--merge does not apply"), Error);
   std::vector<std::string> shard{"--shard", "1/2"};
-  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(shard), doctest::Contains("--shard does not apply"), Error);
+  CHECK_THROWS_WITH_AS(wrc::host::take_merge_flags(shard), doctest::Contains("--shard does not apply"), Error);
   std::vector<std::string> twice{"out=a", "out=b"};
-  CHECK_THROWS_WITH_AS(wrc::lua::take_merge_flags(twice), doctest::Contains("option out is given twice"), Error);
+  CHECK_THROWS_WITH_AS(wrc::host::take_merge_flags(twice), doctest::Contains("option out is given twice"), Error);
 }
 
 TEST_CASE("host flags: the shard of a SLURM array task, and --shard winning over it") {
