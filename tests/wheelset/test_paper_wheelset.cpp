@@ -4,6 +4,7 @@
 // wheel with Fz given, an equilibrium and a small sweep. The profile files are written by the fixture
 // tests/data/profile/write_text_profiles.lua (17 significant digits: they read back exactly).
 #include "lua/lua.hpp"
+#include "wheelset/vertical_load.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
 #include "wrc/profile/reader.hpp"
@@ -119,7 +120,7 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
   }
 }
 
-// ContactRequest::vertical_force (solve_wheel's predictor): the wheel's area solved for a vertical force F is the
+// areas::evaluate_vertical_load (solve_wheel's predictor): the wheel's area solved for a vertical force F is the
 // pose's penetration problem with the wheel pressed further down by the solution's approach. Against evaluations of
 // the poses themselves (grid 0.5 mm), on the tread and at the flange root (contact angle 26 deg, where a force
 // without the normals' vertical parts as weights would be ~10 % off): F of the pose gives approach 0; F of the pose
@@ -127,7 +128,7 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
 // the wheel normal's z part, so the prediction is exact to first order: measured 2e-6 of the step on the tread,
 // 6e-5 at the flange root (with elements aligned to the area's moving origin, and the approach deepening h by the
 // row normals' z part, it was 2e-4 and 1e-2).
-TEST_CASE("vertical_force: the multiplier is the further vertical approach that carries the force") {
+TEST_CASE("vertical load: the multiplier is the further vertical approach that carries the force") {
   const auto wheelset = coarse_paper_wheelset();
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
@@ -141,9 +142,7 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
     pen.tolerance = 1e-11;
     auto Fz = [&](double z) { return evaluate_contact(model, {y, z, 0.0, 0.0}, ws, pen).wheel[kLeft].force.z(); };
     auto predicted = [&](double F) {
-      ContactRequest fc = pen;
-      fc.vertical_force = F;
-      const ContactResult c = evaluate_contact(model, {y, w.z, 0.0, 0.0}, ws, fc);
+      const ContactResult c = areas::evaluate_vertical_load(model, {y, w.z, 0.0, 0.0}, ws, pen, {F});
       REQUIRE(c.wheel[kLeft].patches.size() == 1);
       const halfspace::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
       REQUIRE(s.load.control == halfspace::NormalLoad::Control::force);
@@ -159,14 +158,15 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
     CHECK(a == doctest::Approx(d).epsilon(2e-4));
   }
   ContactRequest bad;
-  bad.vertical_force = 1e5;
-  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("only_side"), Error);
+  const Pose centred{0.0, 0.0, 0.0, 0.0};
+  CHECK_THROWS_WITH_AS(areas::evaluate_vertical_load(model, centred, ws, bad, {1e5}), doctest::Contains("only_side"), Error);
   bad.only_side = kLeft;
   bad.sensitivity = true;
-  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("sensitivities"), Error);
+  CHECK_THROWS_WITH_AS(areas::evaluate_vertical_load(model, centred, ws, bad, {1e5}), doctest::Contains("sensitivities"),
+                       Error);
   bad.sensitivity = false;
-  bad.vertical_force = -1;
-  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("vertical_force = -1 N"), Error);
+  CHECK_THROWS_WITH_AS(areas::evaluate_vertical_load(model, centred, ws, bad, {-1}),
+                       doctest::Contains("vertical load of -1 N"), Error);
 }
 
 // solve_wheel from cold: a coarse estimate, one prediction and the evaluation of the predicted pose, which carries Fz

@@ -2,6 +2,8 @@
 // start from: kinematics/rigid.cpp).
 #include "wrc/equilibrium/equilibrium.hpp"
 
+#include "wheelset/vertical_load.hpp"
+
 #include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/core/roots.hpp"
@@ -526,23 +528,22 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   const double final_tolerance = opt.final_at_model_tolerance ? model.options().normal.tolerance : tight;
   int evaluations = 0;
   double tolerance = 0;  // of the last evaluation
-  auto evaluate_at = [&](double a, const ContactRequest& req) {  // the wheel pressed in by a, within the budget
+  // The wheel pressed in by a, within the budget; `load`: the predictor's evaluation (wheelset/vertical_load.hpp).
+  auto evaluate_at = [&](double a, const ContactRequest& req, const areas::VerticalLoad* load = nullptr) {
     if (evaluations++ >= opt.max_evaluations)
       throw EvaluationBudget(fmt::format("gave up after {} contact evaluations (max_evaluations)", opt.max_evaluations));
-    cur = evaluate_contact(model, {y, z_touch - a, roll, yaw}, ws, req);
+    const Pose pose{y, z_touch - a, roll, yaw};
+    cur = load ? areas::evaluate_vertical_load(model, pose, ws, req, *load) : evaluate_contact(model, pose, ws, req);
     res.z = z_touch - a;
     res.approach = a;
   };
-  // Frictionless, the normal problems solved to tol; with `vertical`, the wheel's area solved for that vertical force
-  // (`estimate`: only estimated on the coarse grid when cold).
-  auto evaluate = [&](double a, double tol, std::optional<double> vertical = std::nullopt, bool estimate = false) {
+  // Frictionless, the normal problems solved to tol; with `load`, the wheel's area solved for that vertical force.
+  auto evaluate = [&](double a, double tol, const areas::VerticalLoad* load = nullptr) {
     ContactRequest req;
     req.only_side = side;
     req.max_penetration = INFINITY;  // the approach is held within opt.max_penetration, the result checked below
     req.tolerance = tolerance = tol;
-    req.vertical_force = vertical;
-    req.estimate = estimate;
-    evaluate_at(a, req);
+    evaluate_at(a, req, load);
   };
   auto phi = [&](double a, double tol) {
     evaluate(a, tol);
@@ -554,7 +555,8 @@ WheelResult solve_wheel(const ContactModel& model, int side, double y, double ya
   // moves on by it. False when the wheel has several areas or steep normals (evaluate_contact then solved the
   // penetration) or the step is unusable.
   auto predict = [&](double& a, double tol, bool estimate = false) {
-    evaluate(a, tol, Fz, estimate);
+    const areas::VerticalLoad load{Fz, estimate};
+    evaluate(a, tol, &load);
     const auto& patches = cur.wheel[side].patches;
     if (patches.size() != 1 || patches[0].solution.load.control != halfspace::NormalLoad::Control::force) return false;
     const double next = a + patches[0].solution.approach;
