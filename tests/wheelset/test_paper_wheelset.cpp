@@ -77,9 +77,9 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
   const ContactModel& m = ws->contact_model();
 
   work->forget();
-  const WheelResult w = solve_wheel(m, kLeft, 5e-3, 0.0, 0.0, 100e3, *work);
+  const WheelResult w = solve_wheel(m, {kLeft, 5e-3, 0.0, 0.0, 100e3}, *work);
   work->forget();
-  const EquilibriumResult e = solve_equilibrium(m, 3e-3, 0.0, 200e3, *work);
+  const EquilibriumResult e = solve_equilibrium(m, {3e-3, 0.0, 200e3}, *work);
   SweepOptions so;
   so.threads = 2;
   so.rigid = true;
@@ -135,7 +135,7 @@ TEST_CASE("vertical load: the multiplier is the further vertical approach that c
   ContactWorkspace& ws = *work;
   for (double y : {3e-3, 6.4e-3}) {
     CAPTURE(y);
-    const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, ws);
+    const WheelResult w = solve_wheel(model, {kLeft, y, 0.0, 0.0, 100e3}, ws);
     REQUIRE(w.converged);
     ContactRequest pen;
     pen.only_side = kLeft;
@@ -180,7 +180,7 @@ TEST_CASE("solve_wheel: three evaluations from the tread to the flange root") {
     const double y = 0.5e-3 * k;
     CAPTURE(y);
     work->forget();
-    const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, *work);
+    const WheelResult w = solve_wheel(model, {kLeft, y, 0.0, 0.0, 100e3}, *work);
     CHECK(w.converged);
     CHECK(w.iterations == 3);
     CHECK(std::abs(w.wheel.force.z() - 100e3) <= 1e-6 * 100e3);
@@ -203,7 +203,7 @@ TEST_CASE("conformal grids: the elements lie on the rail's fixed lattice, mirror
   auto on_lattice = [&](double v) { return std::abs(v / e - std::round(v / e)) < 1e-9; };
   for (double y : {1e-3, 6.3e-3})
     for (double dz : {0.0, 30e-6, 90e-6}) {
-      const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, *work);
+      const WheelResult w = solve_wheel(model, {kLeft, y, 0.0, 0.0, 100e3}, *work);
       REQUIRE(w.converged);
       const ContactResult c = evaluate_contact(model, {y, w.z - dz, 0.0, 0.0}, *work, {});
       for (int side : {kLeft, kRight})

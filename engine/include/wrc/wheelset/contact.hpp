@@ -49,7 +49,7 @@ namespace wrc {
 inline constexpr double kElementMin = 1e-6, kElementMax = 0.01;
 
 // The deepest inter-penetration of the undeformed profiles an evaluation accepts by default (m; ContactRequest and
-// EquilibriumOptions::max_penetration). Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075
+// SolveLimits::max_penetration). Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075
 // mm at 100 kN per wheel, 0.24 mm for 367 kN on the flange root); at 1 mm the contact is tens of mm long on a 0.45 m
 // wheel, where the half-space model no longer holds (Hertz: ~5 MN).
 inline constexpr double kMaxPenetration = 1e-3;
@@ -220,7 +220,7 @@ struct ContactRequest {
   // A wheel whose undeformed profiles inter-penetrate deeper than this (m) is an error naming the depth, the limit and
   // the option max_penetration, before its areas are gridded (a pose far too deep is a mistake: 17.5 mm gave 120 MN
   // and 68 GPa). The solvers that search a pose (solve_equilibrium, solve_wheel) pass infinity for their iterates and
-  // check their solution against their own EquilibriumOptions::max_penetration.
+  // check their solution against their own SolveLimits::max_penetration (equilibrium/limits.hpp).
   double max_penetration = kMaxPenetration;
   // Throws wrc::Error naming the member, its value and its range (evaluate_contact calls it first).
   void validate() const;
