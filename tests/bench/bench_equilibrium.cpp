@@ -148,7 +148,7 @@ int main(int argc, char** argv) try {
     auto ws = make_workspace();
     const int reps = a.quick ? 5 : 20;
     for (double y : {3e-3, 6.4e-3}) {
-      const wrc::EquilibriumResult e = wrc::solve_equilibrium(*model, y, 0.0, Q, *ws);
+      const wrc::EquilibriumResult e = wrc::solve_equilibrium(*model, {y, 0.0, Q}, *ws);
       for (bool sens : {false, true}) {
         wrc::ContactRequest req;
         req.sensitivity = sens;
@@ -180,7 +180,7 @@ int main(int argc, char** argv) try {
       for (int k = -8; k <= 8; k += (a.quick ? 4 : 1)) {
         const double y = k * 1e-3;
         const double t0 = thread_cpu_s();
-        const wrc::EquilibriumResult e = wrc::solve_equilibrium(*model, y, yaw, Q, *ws);
+        const wrc::EquilibriumResult e = wrc::solve_equilibrium(*model, {y, yaw, Q}, *ws);
         const double dt = thread_cpu_s() - t0;
         ++n;
         if (!e.converged) ++failed;

@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
     work->forget();
     work->times = {};
     const double c0 = thread_cpu();
-    const wrc::EquilibriumResult e = solve_equilibrium(m, y, 0.0, 200e3, *work);
+    const wrc::EquilibriumResult e = solve_equilibrium(m, {y, 0.0, 200e3}, *work);
     const double c = thread_cpu() - c0;
     fmt::print("y = {:.0f} mm: {:.1f} ms, {} evaluations ({} Newton iterations), converged {}\n", y * 1e3, 1e3 * c,
                e.evaluations, e.iterations, e.converged);
@@ -222,7 +222,7 @@ int main(int argc, char** argv) {
       for (double y = 0; y <= 7e-3 + 1e-12; y += 0.5e-3) {
         work->forget();
         const double c0 = thread_cpu();
-        const wrc::WheelResult r = solve_wheel(m, wrc::kLeft, y, 0.0, 0.0, 100e3, *work);
+        const wrc::WheelResult r = solve_wheel(m, {wrc::kLeft, y, 0.0, 0.0, 100e3}, *work);
         t.push_back(thread_cpu() - c0);
         evaluations += r.iterations;
         if (!r.converged) fmt::print("  y = {:.1f} mm did not converge: {}\n", y * 1e3, r.message);
@@ -322,7 +322,7 @@ int main(int argc, char** argv) {
       const double roll = wrc::interpolate(ty, troll, h.y);
       const double c0 = thread_cpu();
       for (int side : {wrc::kLeft, wrc::kRight}) {
-        const wrc::WheelResult r = traj.wheel(side, h.y, h.yaw, roll, 100e3);
+        const wrc::WheelResult r = traj.wheel({side, h.y, h.yaw, roll, 100e3});
         evaluations += r.iterations;
         failed += !r.converged;
       }

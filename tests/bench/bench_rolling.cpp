@@ -74,7 +74,7 @@ Area paper_area(const std::shared_ptr<const wrc::GeometryModel>& geometry, const
   opt.element = element;
   const wrc::ContactModel model(geometry, material, opt);
   wrc::ContactWorkspace ws(model);
-  const wrc::EquilibriumResult e = wrc::solve_equilibrium(model, 0, 0, 200e3, ws);
+  const wrc::EquilibriumResult e = wrc::solve_equilibrium(model, {0, 0, 200e3}, ws);
   wrc::RollingRequest rq;
   rq.kinematics = wrc::Kinematics{100 / 3.6, std::nullopt, 0, 0};
   rq.friction = Friction::coulomb(0.3);

@@ -4,7 +4,8 @@
 //  - the sweep's contract: cases in the order given, the same results on 1 and 2 threads and as single solves,
 //    progress reported once per case, a failed case recorded while the sweep goes on;
 //  - solve_equilibrium: tighter tolerances are honoured, a far start reaches the same solution, the trace sees
-//    every iterate, bad input throws.
+//    every iterate, bad input throws;
+//  - the solvers (and evaluate_contact, run_sweep, a trajectory's wheel step) check their cases and options first.
 #include "geometry/geometry_fixtures.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
@@ -167,7 +168,7 @@ TEST_CASE("sweep: cases in the order given, 1 and 2 threads agree with single so
     const SweepCase& sc = runs[0].cases[c];
     CAPTURE(sc.y);
     CAPTURE(sc.yaw);
-    const EquilibriumResult e = solve_equilibrium(model, sc.y, sc.yaw, kQ, ws);
+    const EquilibriumResult e = solve_equilibrium(model, {sc.y, sc.yaw, kQ}, ws);
     REQUIRE(e.converged);
     for (const SweepResult& r : runs) {
       CHECK(std::abs(r.elastic[c].z - e.z) <= 1e-8);
@@ -191,7 +192,7 @@ TEST_CASE("sweep: a repeated y continues from the points of distinct y and costs
   for (std::size_t c = 0; c < ys.size(); ++c) {
     CAPTURE(ys[c]);
     REQUIRE(r.elastic[c].converged);
-    const EquilibriumResult e = solve_equilibrium(model, ys[c], 0.0, kQ, ws);
+    const EquilibriumResult e = solve_equilibrium(model, {ys[c], 0.0, kQ}, ws);
     REQUIRE(e.converged);
     CHECK(std::abs(r.elastic[c].z - e.z) <= 1e-8);  // within tolerance / stiffness, as above
     CHECK(std::abs(r.elastic[c].roll - e.roll) <= 1e-8);
@@ -267,7 +268,7 @@ TEST_CASE("sweep: the plan cuts the cases into chunks that start cold, and any s
   // A chunk's first case is a cold solve: the same bits as solve_equilibrium from nothing in a new workspace.
   ContactWorkspace cold(model);
   const SweepCase& first = cut.cases[static_cast<std::size_t>(cut.chunks[3].solve[0])];
-  check_same_bits(solve_equilibrium(model, first.y, first.yaw, kQ, cold, o.equilibrium),
+  check_same_bits(solve_equilibrium(model, {first.y, first.yaw, kQ}, cold, o.equilibrium),
                   ref.elastic[static_cast<std::size_t>(cut.chunks[3].solve[0])]);
   CHECK_THROWS_WITH_AS(run_sweep(model, cut, {8}, o, make_workspace), doctest::Contains("chunk 9 does not exist"), Error);
   CHECK_THROWS_WITH_AS(run_sweep(model, cut, {1, 1}, o, make_workspace), doctest::Contains("listed twice"), Error);
@@ -317,16 +318,16 @@ TEST_CASE("solve_equilibrium: tolerances honoured, a far start converges to the 
   const ContactModel& model = synthetic_model();
   ContactWorkspace ws(model);
   const double y = 2e-3, yaw = 0.005;
-  const EquilibriumResult ref = solve_equilibrium(model, y, yaw, kQ, ws);
+  const EquilibriumResult ref = solve_equilibrium(model, {y, yaw, kQ}, ws);
   REQUIRE(ref.converged);
   CHECK(std::abs(ref.residual_force) <= 1e-6 * kQ);
   CHECK(std::abs(ref.residual_moment) <= 1e-6 * kQ);
 
-  EquilibriumOptions tight;
-  tight.force_tolerance = tight.moment_tolerance = 1e-8;
+  NewtonOptions tight;
+  tight.limits.force_tolerance = tight.moment_tolerance = 1e-8;
   std::vector<int> traced;
   tight.trace = [&](int it, double, double, const ContactResult&) { traced.push_back(it); };
-  const EquilibriumResult t = solve_equilibrium(model, y, yaw, kQ, ws, tight);
+  const EquilibriumResult t = solve_equilibrium(model, {y, yaw, kQ}, ws, tight);
   REQUIRE(t.converged);
   CHECK(std::abs(t.residual_force) <= 1e-8 * kQ);
   CHECK(std::abs(t.residual_moment) <= 1e-8 * kQ);
@@ -339,16 +340,58 @@ TEST_CASE("solve_equilibrium: tolerances honoured, a far start converges to the 
   Start start;
   start.z = ref.z + 1e-3;
   start.roll = ref.roll + 3e-3;
-  const EquilibriumResult far = solve_equilibrium(model, y, yaw, kQ, ws, {}, {start});
+  const EquilibriumResult far = solve_equilibrium(model, {y, yaw, kQ}, ws, {}, {start});
   REQUIRE(far.converged);
   CHECK(std::abs(far.z - ref.z) <= 1e-8);
   CHECK(std::abs(far.roll - ref.roll) <= 1e-8);
 
-  CHECK_THROWS_AS(solve_equilibrium(model, std::nan(""), 0, kQ, ws), Error);
-  CHECK_THROWS_AS(solve_equilibrium(model, 0, 0, -1, ws), Error);
-  CHECK_THROWS_AS(solve_equilibrium(model, 0, 1.0, kQ, ws), Error);
-  CHECK_THROWS_AS(solve_wheel(model, kLeft, 0, 0, 0, 0, ws), Error);
+  CHECK_THROWS_AS(solve_equilibrium(model, {std::nan(""), 0, kQ}, ws), Error);
+  CHECK_THROWS_AS(solve_equilibrium(model, {0, 0, -1}, ws), Error);
+  CHECK_THROWS_AS(solve_equilibrium(model, {0, 1.0, kQ}, ws), Error);
+  CHECK_THROWS_AS(solve_wheel(model, {kLeft, 0, 0, 0, 0}, ws), Error);
   CHECK_THROWS_AS(solve_rigid(model.geometry(), 0.5, 0, kQ), Error);
+}
+
+// The solvers check their cases and options themselves (not only the option readers): a C++ caller gets an error that
+// names the value, its unit and its range before any evaluation, instead of a solve that runs with a zero tolerance, a
+// negative step or a side that indexes out of bounds (before these checks, each of these ran without an error).
+TEST_CASE("cases and options are validated by the solvers themselves") {
+  const ContactModel& model = synthetic_model();
+  ContactWorkspace ws(model);
+  auto fails = [](auto&& f, const char* text) { CHECK_THROWS_WITH_AS(f(), doctest::Contains(text), Error); };
+  NewtonOptions newton;
+  newton.limits.force_tolerance = 0;
+  fails([&] { solve_equilibrium(model, {0, 0, kQ}, ws, newton); }, "equilibrium: force_tolerance = 0 must be in ]0, 0.1]");
+  newton = {};
+  newton.max_step_z = -1e-3;
+  fails([&] { solve_equilibrium(model, {0, 0, kQ}, ws, newton); }, "max_step_z = -0.001 m must be in ]0, 0.01] m");
+  newton = {};
+  newton.limits.normal_tolerance = 0.5;
+  fails([&] { solve_equilibrium(model, {0, 0, kQ}, ws, newton); }, "normal_tolerance = 0.5 must be in [1e-14, 1e-2[");
+  fails([&] { solve_equilibrium(model, {0, 0, 2e10}, ws); }, "Q = 2e+10 N must be a positive number of at most");
+
+  WheelOptions wheel;
+  wheel.wheel_approach = 0;
+  fails([&] { solve_wheel(model, {kLeft, 0, 0, 0, 1e5}, ws, wheel); }, "wheel: wheel_approach = 0 m must be in ]0, 0.01] m");
+  wheel = {};
+  wheel.limits.max_evaluations = 0;
+  fails([&] { solve_wheel(model, {kLeft, 0, 0, 0, 1e5}, ws, wheel); }, "max_evaluations = 0 must be in [1, 1048576]");
+  fails([&] { solve_wheel(model, {2, 0, 0, 0, 1e5}, ws); }, "wheel: side = 2 must be 0 (left) or 1 (right)");
+  fails([&] { solve_wheel(model, {kRight, 0, 0, 0.5, 1e5}, ws); }, "roll = 0.5 rad must be finite and within +-0.3 rad");
+
+  ContactRequest request;
+  request.tolerance = 0.5;
+  fails([&] { evaluate_contact(model, {0, 0, 0, 0}, ws, request); }, "contact: tolerance = 0.5 must be in [0, 1e-2]");
+  request = {};
+  request.only_side = 3;
+  fails([&] { evaluate_contact(model, {0, 0, 0, 0}, ws, request); }, "only_side = 3 must be -1 (both wheels)");
+
+  // A sweep refuses its options once, before its cases (not as every case's error).
+  SweepOptions sweep;
+  sweep.threads = 1;
+  sweep.equilibrium.moment_tolerance = 0;
+  fails([&] { run_sweep(model, {0.0}, {0.0}, sweep, [&] { return std::make_unique<ContactWorkspace>(model); }); },
+        "sweep: moment_tolerance = 0 must be in ]0, 0.1]");
 }
 
 // A trajectory step that fails from its warm start is solved again cold before it fails (issue: a wheel step whose
@@ -379,11 +422,26 @@ TEST_CASE("trajectory: a step that fails warm is solved cold, with the result of
   const ContactResult cold = evaluate_contact(ws->contact_model(), {pose.y, pose.z - 1e-6, pose.roll, pose.yaw}, *cold_ws, req);
   CHECK(warm.force.z() == doctest::Approx(cold.force.z()).epsilon(1e-9));
 
-  REQUIRE(tr.wheel(kLeft, 1e-3, 0.002, 0, 80e3).converged);
+  REQUIRE(tr.wheel({kLeft, 1e-3, 0.002, 0, 80e3}).converged);
   poison();
   WheelResult w;
-  REQUIRE_NOTHROW(w = tr.wheel(kLeft, 1.2e-3, 0.002, 0, 85e3));
+  REQUIRE_NOTHROW(w = tr.wheel({kLeft, 1.2e-3, 0.002, 0, 85e3}));
   CHECK(w.converged);
-  const WheelResult c = solve_wheel(ws->contact_model(), kLeft, 1.2e-3, 0.002, 0, 85e3, *cold_ws);
+  const WheelResult c = solve_wheel(ws->contact_model(), {kLeft, 1.2e-3, 0.002, 0, 85e3}, *cold_ws);
   CHECK(w.z == doctest::Approx(c.z).epsilon(1e-6));
+}
+
+// A trajectory's wheel step checks its case before the side selects the last approaches (an out-of-range side indexed
+// past them before).
+TEST_CASE("trajectory: a wheel step with a side out of range is an error") {
+  WheelsetProfiles p;
+  const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
+  p.wheel = {wheel, wheel};
+  p.rail = {rail, rail};
+  WheelsetParams params;
+  params.contact.element = 0.5e-3;
+  params.check_setup = false;  // a synthetic pair
+  Trajectory tr(build_wheelset(p, params));
+  CHECK_THROWS_WITH_AS(tr.wheel({5, 1e-3, 0, 0, 80e3}), doctest::Contains("side = 5 must be 0 (left) or 1 (right)"), Error);
+  CHECK(tr.wheel({kLeft, 1e-3, 0.002, 0, 80e3}).converged);
 }

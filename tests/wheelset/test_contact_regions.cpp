@@ -1,7 +1,7 @@
 // The count of separate contact regions of an area (patch.regions) against a flood fill written here: random
 // pressure fields of blobs, lines and single elements, 8-connected, each region counted when it carries >= 0.1 %
 // of the force.
-#include "wheelset/contact_internal.hpp"
+#include "wheelset/area.hpp"
 
 #include <doctest/doctest.h>
 
@@ -56,7 +56,7 @@ TEST_CASE("contact_regions = an 8-connected flood fill with the force share, on 
     if (!(s.force > 0)) continue;
     CAPTURE(t);
     const int expected = flood_fill_regions(s);
-    CHECK(contact_detail::contact_regions(s) == expected);
+    CHECK(areas::contact_regions(s) == expected);
     several += expected > 1;
     int all = 0;  // regions without the force share
     halfspace::NormalSolution any = s;

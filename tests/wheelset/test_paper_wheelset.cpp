@@ -4,6 +4,7 @@
 // wheel with Fz given, an equilibrium and a small sweep. The profile files are written by the fixture
 // tests/data/profile/write_text_profiles.lua (17 significant digits: they read back exactly).
 #include "lua/lua.hpp"
+#include "wheelset/vertical_load.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
 #include "wrc/profile/reader.hpp"
@@ -76,9 +77,9 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
   const ContactModel& m = ws->contact_model();
 
   work->forget();
-  const WheelResult w = solve_wheel(m, kLeft, 5e-3, 0.0, 0.0, 100e3, *work);
+  const WheelResult w = solve_wheel(m, {kLeft, 5e-3, 0.0, 0.0, 100e3}, *work);
   work->forget();
-  const EquilibriumResult e = solve_equilibrium(m, 3e-3, 0.0, 200e3, *work);
+  const EquilibriumResult e = solve_equilibrium(m, {3e-3, 0.0, 200e3}, *work);
   SweepOptions so;
   so.threads = 2;
   so.rigid = true;
@@ -119,7 +120,7 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
   }
 }
 
-// ContactRequest::vertical_force (solve_wheel's predictor): the wheel's area solved for a vertical force F is the
+// areas::evaluate_vertical_load (solve_wheel's predictor): the wheel's area solved for a vertical force F is the
 // pose's penetration problem with the wheel pressed further down by the solution's approach. Against evaluations of
 // the poses themselves (grid 0.5 mm), on the tread and at the flange root (contact angle 26 deg, where a force
 // without the normals' vertical parts as weights would be ~10 % off): F of the pose gives approach 0; F of the pose
@@ -127,23 +128,21 @@ TEST_CASE("the paper's wheelset from C++ alone gives bit for bit the numbers of 
 // the wheel normal's z part, so the prediction is exact to first order: measured 2e-6 of the step on the tread,
 // 6e-5 at the flange root (with elements aligned to the area's moving origin, and the approach deepening h by the
 // row normals' z part, it was 2e-4 and 1e-2).
-TEST_CASE("vertical_force: the multiplier is the further vertical approach that carries the force") {
+TEST_CASE("vertical load: the multiplier is the further vertical approach that carries the force") {
   const auto wheelset = coarse_paper_wheelset();
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
   ContactWorkspace& ws = *work;
   for (double y : {3e-3, 6.4e-3}) {
     CAPTURE(y);
-    const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, ws);
+    const WheelResult w = solve_wheel(model, {kLeft, y, 0.0, 0.0, 100e3}, ws);
     REQUIRE(w.converged);
     ContactRequest pen;
     pen.only_side = kLeft;
     pen.tolerance = 1e-11;
     auto Fz = [&](double z) { return evaluate_contact(model, {y, z, 0.0, 0.0}, ws, pen).wheel[kLeft].force.z(); };
     auto predicted = [&](double F) {
-      ContactRequest fc = pen;
-      fc.vertical_force = F;
-      const ContactResult c = evaluate_contact(model, {y, w.z, 0.0, 0.0}, ws, fc);
+      const ContactResult c = areas::evaluate_vertical_load(model, {y, w.z, 0.0, 0.0}, ws, pen, {F});
       REQUIRE(c.wheel[kLeft].patches.size() == 1);
       const halfspace::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
       REQUIRE(s.load.control == halfspace::NormalLoad::Control::force);
@@ -159,14 +158,15 @@ TEST_CASE("vertical_force: the multiplier is the further vertical approach that 
     CHECK(a == doctest::Approx(d).epsilon(2e-4));
   }
   ContactRequest bad;
-  bad.vertical_force = 1e5;
-  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("only_side"), Error);
+  const Pose centred{0.0, 0.0, 0.0, 0.0};
+  CHECK_THROWS_WITH_AS(areas::evaluate_vertical_load(model, centred, ws, bad, {1e5}), doctest::Contains("only_side"), Error);
   bad.only_side = kLeft;
   bad.sensitivity = true;
-  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("sensitivities"), Error);
+  CHECK_THROWS_WITH_AS(areas::evaluate_vertical_load(model, centred, ws, bad, {1e5}), doctest::Contains("sensitivities"),
+                       Error);
   bad.sensitivity = false;
-  bad.vertical_force = -1;
-  CHECK_THROWS_WITH_AS(evaluate_contact(model, {0.0, 0.0, 0.0, 0.0}, ws, bad), doctest::Contains("vertical_force = -1 N"), Error);
+  CHECK_THROWS_WITH_AS(areas::evaluate_vertical_load(model, centred, ws, bad, {-1}),
+                       doctest::Contains("vertical load of -1 N"), Error);
 }
 
 // solve_wheel from cold: a coarse estimate, one prediction and the evaluation of the predicted pose, which carries Fz
@@ -180,7 +180,7 @@ TEST_CASE("solve_wheel: three evaluations from the tread to the flange root") {
     const double y = 0.5e-3 * k;
     CAPTURE(y);
     work->forget();
-    const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, *work);
+    const WheelResult w = solve_wheel(model, {kLeft, y, 0.0, 0.0, 100e3}, *work);
     CHECK(w.converged);
     CHECK(w.iterations == 3);
     CHECK(std::abs(w.wheel.force.z() - 100e3) <= 1e-6 * 100e3);
@@ -203,7 +203,7 @@ TEST_CASE("conformal grids: the elements lie on the rail's fixed lattice, mirror
   auto on_lattice = [&](double v) { return std::abs(v / e - std::round(v / e)) < 1e-9; };
   for (double y : {1e-3, 6.3e-3})
     for (double dz : {0.0, 30e-6, 90e-6}) {
-      const WheelResult w = solve_wheel(model, kLeft, y, 0.0, 0.0, 100e3, *work);
+      const WheelResult w = solve_wheel(model, {kLeft, y, 0.0, 0.0, 100e3}, *work);
       REQUIRE(w.converged);
       const ContactResult c = evaluate_contact(model, {y, w.z - dz, 0.0, 0.0}, *work, {});
       for (int side : {kLeft, kRight})

@@ -390,11 +390,12 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
     const wrc::OptionTable t = options_of(options, "wrc_wheel: options");
     wrc::OptionReader r(t, "wrc_wheel");
-    const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
+    const wrc::WheelOptions opt = wrc::read_wheel_options(r);
     const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
     r.finish();
     Lease ws(*w);
-    const wrc::WheelResult res = solve_wheel(w->model->contact_model(), side, y, yaw, roll, Fz, *ws, opt, std::nullopt, rolling);
+    const wrc::WheelResult res =
+        solve_wheel(w->model->contact_model(), {side, y, yaw, roll, Fz}, *ws, opt, std::nullopt, rolling);
     return make_result(out, res.converged, res.converged ? "" : "wrc_wheel: " + failure_message(res), res);
   });
 }
@@ -406,7 +407,7 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"Q", Q}}) finite(name, v);
     const wrc::OptionTable t = options_of(options, "wrc_equilibrium: options");
     wrc::OptionReader r(t, "wrc_equilibrium");
-    const wrc::EquilibriumOptions opt = wrc::read_equilibrium_options(r);
+    const wrc::NewtonOptions opt = wrc::read_newton_options(r);
     std::vector<wrc::Start> starts;
     if (auto s = r.table("start")) {
       starts.push_back(wrc::Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
@@ -416,7 +417,7 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
     req.keep_grids = r.boolean("grids").value_or(true);
     r.finish();
     Lease ws(*w);
-    const wrc::EquilibriumResult e = solve_equilibrium(w->model->contact_model(), y, yaw, Q, *ws, opt, starts, req);
+    const wrc::EquilibriumResult e = solve_equilibrium(w->model->contact_model(), {y, yaw, Q}, *ws, opt, starts, req);
     return make_result(out, e.converged, e.converged ? "" : "wrc_equilibrium: " + failure_message(e), e);
   });
 }
@@ -472,7 +473,7 @@ wrc_status wrc_trajectory_wheel_with(wrc_trajectory* trajectory, int side, doubl
     for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
     const std::optional<wrc::RollingRequest> rolling = rolling_options(options, "wrc_trajectory_wheel");
     std::lock_guard lock(t->mutex);
-    const wrc::WheelResult res = t->trajectory->wheel(side, y, yaw, roll, Fz, rolling);
+    const wrc::WheelResult res = t->trajectory->wheel({side, y, yaw, roll, Fz}, rolling);
     return make_result(out, res.converged, res.converged ? "" : "wrc_trajectory_wheel: " + failure_message(res), res);
   });
 }

@@ -100,7 +100,7 @@ class SweepRun {
       ContactRequest req;
       const bool rolling = opt_.rolling.has_value() && reported;
       req.keep_grids = (opt_.keep_grids || rolling) && reported;  // the tangential step needs the pressure
-      e = solve_equilibrium(model_, sc.y, sc.yaw, opt_.Q, ws, opt_.equilibrium, starts, req);
+      e = solve_equilibrium(model_, {sc.y, sc.yaw, opt_.Q}, ws, opt_.equilibrium, starts, req);
       ok = e.converged;
       if (ok && rolling) {  // creep forces at the (frictionless) equilibrium's pose
         add_rolling(model_, e.contact, *opt_.rolling, ws);
@@ -158,6 +158,7 @@ SweepPlan plan_sweep(const std::vector<double>& ys, const std::vector<double>& y
 SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const std::vector<int>& chunks,
                       const SweepOptions& opt, const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace) {
   if (!(opt.Q > 0) || !std::isfinite(opt.Q)) fail("sweep: Q = {} N must be a positive number", opt.Q);
+  opt.equilibrium.validate("sweep");  // once here rather than as every case's error
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult out;
   std::vector<bool> taken(plan.chunks.size(), false);
@@ -212,7 +213,7 @@ SweepOptions read_sweep_options(OptionReader& r) {
   o.rigid = r.boolean("rigid").value_or(false);
   o.keep_grids = r.boolean("grids").value_or(false);
   o.chain = r.integer("chain", 0, 100000000).value_or(0);
-  o.equilibrium = read_equilibrium_options(r);
+  o.equilibrium = read_newton_options(r);
   o.rolling = read_rolling_request(r);
   return o;
 }

@@ -1,4 +1,4 @@
-// A wheelset followed along a trajectory (equilibrium/trajectory.hpp).
+// A wheelset followed along a trajectory (wrc/equilibrium/trajectory.hpp).
 #include "wrc/equilibrium/trajectory.hpp"
 
 #include "wrc/core/error.hpp"
@@ -39,12 +39,13 @@ ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingR
   }
 }
 
-WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, double Fz,
-                              const std::optional<RollingRequest>& rolling) {
-  EquilibriumOptions opt;
-  opt.normal_tolerance = options_.tolerance;
+WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingRequest>& rolling) {
+  c.validate("wheel");  // as solve_wheel would, before the side indexes the approaches
+  const int side = c.side;
+  WheelOptions opt;
+  opt.limits.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
-  opt.max_penetration = options_.max_penetration;
+  opt.limits.max_penetration = options_.max_penetration;
   // The secant's iterates are no time steps: start each from the last alone (the evaluations then keep no older
   // areas, so a later contact() step cannot extrapolate across them either).
   workspace_->extrapolate = false;
@@ -54,13 +55,13 @@ WheelResult Trajectory::wheel(int side, double y, double yaw, double roll, doubl
   if (start && before_approach_[side] && options_.extrapolate) start = 2 * *start - *before_approach_[side];
   WheelResult r;
   try {
-    r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, start, rolling);
+    r = solve_wheel(wheelset_->contact_model(), c, *workspace_, opt, start, rolling);
   } catch (const Error&) {
     r.converged = false;
   }
   if (!r.converged) {  // a cold start before failing, as contact() (the result is then the cold solve's)
     workspace_->forget();
-    r = solve_wheel(wheelset_->contact_model(), side, y, yaw, roll, Fz, *workspace_, opt, std::nullopt, rolling);
+    r = solve_wheel(wheelset_->contact_model(), c, *workspace_, opt, std::nullopt, rolling);
   }
   before_approach_[side] = r.converged ? last_approach_[side] : std::nullopt;
   last_approach_[side] = r.converged ? std::optional<double>(r.approach) : std::nullopt;

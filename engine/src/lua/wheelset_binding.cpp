@@ -93,21 +93,6 @@ int wheelset_contact(lua_State* L) {
   return 1;
 }
 
-// {side =, y =, yaw =, roll =, Fz =} of a wheel with its vertical force given.
-struct WheelCase {
-  int side;
-  double y, yaw, roll, Fz;
-};
-WheelCase read_wheel_case(OptionReader& r, const char* ctx) {
-  WheelCase c;
-  c.side = parse_side(r.string("side").value_or(""), ctx);
-  c.y = r.number("y", 0.0);
-  c.yaw = r.number("yaw", 0.0);
-  c.roll = r.number("roll", 0.0);
-  c.Fz = r.need_number("Fz");
-  return c;
-}
-
 bool returns_failures(OptionReader& r) {
   return r.choice("on_failure", {"error", "return"}).value_or("error") == "return";
 }
@@ -117,8 +102,8 @@ int wheelset_equilibrium(lua_State* L) {
   const char* ctx = "wheelset:equilibrium";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const double y = a.reader.need_number("y"), yaw = a.reader.number("yaw", 0.0), Q = a.reader.need_number("Q");
-  const EquilibriumOptions opt = read_equilibrium_options(a.reader);
+  const EquilibriumCase c = read_equilibrium_case(a.reader);
+  const NewtonOptions opt = read_newton_options(a.reader);
   std::vector<Start> starts;
   if (auto s = a.reader.table("start")) {
     starts.push_back(Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
@@ -128,25 +113,24 @@ int wheelset_equilibrium(lua_State* L) {
   ContactRequest req;
   req.keep_grids = a.reader.boolean("grids").value_or(true);
   a.reader.finish();
-  const EquilibriumResult e = solve_equilibrium(w.model->contact_model(), y, yaw, Q, workspace(L, w), opt, starts, req);
+  const EquilibriumResult e = solve_equilibrium(w.model->contact_model(), c, workspace(L, w), opt, starts, req);
   if (!e.converged && !ret) fail("{}: {} (on_failure = \"return\" gives the result)", ctx, failure_message(e));
   push_result(L, e);
   return 1;
 }
 
-// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, tolerances, rolling keys}: one wheel-rail pair, vertical force
-// prescribed.
+// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, force_tolerance=, max_iterations=, max_evaluations=,
+// max_penetration=, rolling keys}: one wheel-rail pair, vertical force prescribed.
 int wheelset_wheel(lua_State* L) {
   const char* ctx = "wheelset:wheel";
   LuaWheelset& w = self(L, ctx);
   Args a(L, ctx);
-  const WheelCase c = read_wheel_case(a.reader, ctx);
-  const EquilibriumOptions opt = read_equilibrium_options(a.reader);
+  const WheelCase c = read_wheel_case(a.reader);
+  const WheelOptions opt = read_wheel_options(a.reader);
   const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
   const bool ret = returns_failures(a.reader);
   a.reader.finish();
-  const WheelResult r = solve_wheel(w.model->contact_model(), c.side, c.y, c.yaw, c.roll, c.Fz, workspace(L, w), opt, std::nullopt,
-                                    rolling);
+  const WheelResult r = solve_wheel(w.model->contact_model(), c, workspace(L, w), opt, std::nullopt, rolling);
   if (!r.converged && !ret) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;
@@ -311,10 +295,10 @@ int trajectory_wheel(lua_State* L) {
   const char* ctx = "trajectory:wheel";
   LuaTrajectory& t = trajectory_self(L, ctx);
   Args a(L, ctx);
-  const WheelCase c = read_wheel_case(a.reader, ctx);
+  const WheelCase c = read_wheel_case(a.reader);
   const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
   a.reader.finish();
-  const WheelResult r = t.trajectory->wheel(c.side, c.y, c.yaw, c.roll, c.Fz, rolling);
+  const WheelResult r = t.trajectory->wheel(c, rolling);
   if (!r.converged) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;

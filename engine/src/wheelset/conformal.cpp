@@ -1,6 +1,6 @@
-// The conformal path: a contact area on the rail's surface unrolled (wrc/wheelset/conformal.hpp says what and why;
-// docs/design.md section 3). The planar path is contact.cpp; both share contact_internal.hpp.
-#include "contact_internal.hpp"
+// The conformal surface (surface.hpp): a contact area on the rail's surface unrolled (wrc/wheelset/conformal.hpp says
+// what and why; docs/design.md section 3).
+#include "surface.hpp"
 
 #include "wrc/core/error.hpp"
 
@@ -15,7 +15,7 @@ const char* surface_name(ContactSurface surface) {
   return surface == ContactSurface::conformal ? "conformal" : "planar";
 }
 
-namespace contact_detail {
+namespace areas {
 namespace {
 
 // One rail line of the reference curve across an area: its arc length, its point, the wheel's normal at its
@@ -129,11 +129,7 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
   }
   for (SurfaceLine& l : lines) {
     if (!l.h.arcs.empty()) continue;
-    const LineApproach a = line_approach(wheel, st.frame(), l.y, l.z);
-    const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
-    l.h.R = arc_radius(sp, st.pose().yaw);
-    l.h.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
-    l.h.x_apex = a.x;
+    const LineApproach a = arc_through_deepest(wheel, st, l.y, l.z, l.h);
     l.n = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z}));
   }
   for (int r = rlo; r <= rhi; ++r) {
@@ -233,147 +229,128 @@ Eigen::Vector3d surface_point(const ConformalSurface& surf, const halfspace::Gri
   return {x, (1 - t) * surf.y[a] + t * surf.y[b], (1 - t) * surf.z[a] + t * surf.z[b]};
 }
 
-// Forces, moment, directions and measures of a solved conformal area.
-void conformal_results(const WheelCones& wheel, const PoseFrame& f, PatchContact& pc) {
-  const halfspace::NormalSolution& sol = pc.solution;
-  ConformalSurface& surf = *pc.conformal;
-  pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
-  pc.regions = contact_regions(sol);
-  const Eigen::Vector3d c(0, f.y, f.z);
-  std::vector<double> P, Q;
-  row_sums(sol.grid, sol.pressure, surf.x0, P, Q);
-  row_wrench(surf, P, Q, c, pc.force, pc.moment);
-  pc.normal_force = pc.force.norm();
-  const int j0 = std::clamp(static_cast<int>(std::lround(-sol.grid.y0 / sol.grid.dy)), 0, sol.grid.ny - 1);
-  pc.normal = pc.normal_force > 0 ? Eigen::Vector3d(pc.force / pc.normal_force) : surf.normal(j0);
-  pc.angle = contact_angle(pc.side, pc.normal);
-  pc.angle_min = pc.angle_max = contact_angle(pc.side, surf.normal(j0));
-  bool first = true;
-  for (int j = 0; j < surf.rows(); ++j) {
-    if (!(P[static_cast<std::size_t>(j)] > 0)) continue;
-    const double a = contact_angle(pc.side, surf.normal(j));
-    pc.angle_min = first ? a : std::min(pc.angle_min, a);
-    pc.angle_max = first ? a : std::max(pc.angle_max, a);
-    first = false;
-  }
-  // Centre of pressure on the surface (sol.cop_x, cop_y: the pressure's centroid in the unrolled coordinates).
-  pc.point = sol.force > 0 ? surface_point(surf, sol.grid, surf.x0 + sol.cop_x, sol.cop_y) : pc.origin;
-  pc.rolling_radius = wheel_surface_at(wheel, f.to_wheelset(pc.point).y()).radius;
+// The grid's row nearest to its origin: the area's reference frame.
+int origin_row(const halfspace::Grid& grid) {
+  return std::clamp(static_cast<int>(std::lround(-grid.y0 / grid.dy)), 0, grid.ny - 1);
 }
 
-}  // namespace
+// A surface fixed on the rail's lattice: a deeper pose differs from a shallower one only by h, so the sensitivities
+// hold the surface fixed (and so do ws:wheel's predictions).
+class ConformalAreaSurface final : public AreaSurface {
+ public:
+  const char* name() const override { return "conformal"; }
 
-PatchContact solve_conformal_area(const ContactModel& model, const LocationState& st, int side,
-                                  const std::vector<SegmentInfo>& all, const Patch& first, ContactWorkspace& ws,
-                                  const ContactRequest& request, std::vector<ContactWorkspace::Previous>& next_previous) {
-  const GeometryModel& g = model.geometry();
-  const ContactOptions& opt = model.options();
-  PatchContact pc;
-  pc.side = side;
-  pc.nominal = first.point;
-  pc.nominal_angle = contact_angle(side, -first.normal);  // Patch::normal points out of the wheel
-  pc.conformal.emplace();
-  ConformalSurface& surf = *pc.conformal;
-  halfspace::Grid grid;
-  Plane pl;  // the area in unrolled coordinates (x, s, 0): the warm-start helpers' plane
-  std::vector<double> deepening;  // per row, dh/dz
-  {
-    PhaseTimer t(ws, ws.times.geometry);
-    const std::vector<double>& arc = model.rail_arc(side);
+  AreaLayout lay_out(const AreaInput& in, PatchContact& pc) const override {
+    const std::vector<SegmentInfo>& all = in.segments;
+    const std::vector<double>& arc = in.model.rail_arc(in.side);
     std::vector<double> S(all.size());
     for (std::size_t k = 0; k < all.size(); ++k) S[k] = arc[static_cast<std::size_t>(all[k].line)];
     const Eigen::Vector2d o = surface_origin(all, S);
-    pl = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
-    grid = surface_grid(opt, all, S, o, model.rail_lattice_origin(side), side, st.pose());
-    const auto lines = surface_lines(g, st, side, arc, all, o.y() + grid.y(0), o.y() + grid.y(grid.ny - 1));
-    lay_rows(lines, grid, o, surf, deepening, pc.h);
+    AreaLayout l;
+    l.frame = {Eigen::Vector3d(o.x(), o.y(), 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
+               Eigen::Vector3d::UnitY()};
+    l.grid = surface_grid(in.model.options(), all, S, o, in.model.rail_lattice_origin(in.side), in.side,
+                          in.located.pose());
+    const halfspace::Grid& grid = l.grid;
+    const auto lines = surface_lines(in.model.geometry(), in.located, in.side, arc, all, o.y() + grid.y(0),
+                                     o.y() + grid.y(grid.ny - 1));
+    ConformalSurface& surf = pc.conformal.emplace();
+    lay_rows(lines, grid, o, surf, l.deepening, pc.h);
     surf.x0 = o.x();
     surf.s0 = o.y();
-    const int j0 = std::clamp(static_cast<int>(std::lround(-grid.y0 / grid.dy)), 0, grid.ny - 1);
+    const int j0 = origin_row(grid);
     pc.origin = surface_point(surf, grid, o.x(), 0.0);
     pc.t1 = Eigen::Vector3d::UnitX();
     pc.t2 = surf.t2(j0);
     pc.normal = surf.normal(j0);
+    l.vertical = surf.normal_z;
+    return l;
   }
-  pc.solution = solve_area_normal(model, request, side, pl, grid, pc.h, surf.normal_z, deepening, ws);
-  {
-    PhaseTimer t(ws, ws.times.results);
-    conformal_results(g.side[side].wheel, st.frame(), pc);
-    ++ws.times.areas;
-    ws.times.elements += grid.size();
-    ws.times.iterations += pc.solution.iterations + pc.solution.coarse_iterations;
-  }
-  if (request.sensitivity) {
-    PhaseTimer t(ws, ws.times.sensitivity);
-    conformal_sensitivity(model, st.pose(), pc, ws);
-  }
-  next_previous.push_back({pl.O, pl.t1, pl.t2, pl.n, pc.solution.grid, pc.solution.pressure,
-                           std::move(pc.solution.displacement)});
-  return pc;
-}
 
-// d(force, moment)/d(z, roll) of a solved conformal area, its surface held fixed. A rigid motion of the wheelset moves
-// its surface point X by dX = dz e_z + droll a x (X - c) (a = Rz(yaw) e_x the roll axis, c the centre); element
-// (i, j) measures h along n_j, so dh = -dX . n_j (the wheel moving against the normal goes deeper). The pressure
-// response on the contact set gives each row's dP and dQ, whose wrench (row_wrench) is the response; the moment
-// about the centre also changes because the centre moves with z: - e_z x F.
-void conformal_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
-  const halfspace::NormalSolution& sol = pc.solution;
-  const ConformalSurface& surf = *pc.conformal;
-  pc.sensitivity.setZero();
-  if (!(sol.force > 0)) return;
-  if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
-  const halfspace::Grid& grid = sol.grid;
-  const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
-  std::vector<double> dh(static_cast<std::size_t>(grid.size())), P, Q;
-  for (int col = 0; col < 2; ++col) {
+  // Each row's integral and first moment pushed along its normal; the normal force is the resultant's magnitude, its
+  // direction the contact angle; the loaded rows give the angle range.
+  void resultant(const PoseFrame& f, PatchContact& pc) const override {
+    const halfspace::NormalSolution& sol = pc.solution;
+    const ConformalSurface& surf = *pc.conformal;
+    const Eigen::Vector3d c(0, f.y, f.z);
+    std::vector<double> P, Q;
+    row_sums(sol.grid, sol.pressure, surf.x0, P, Q);
+    row_wrench(surf, P, Q, c, pc.force, pc.moment);
+    pc.normal_force = pc.force.norm();
+    const int j0 = origin_row(sol.grid);
+    pc.normal = pc.normal_force > 0 ? Eigen::Vector3d(pc.force / pc.normal_force) : surf.normal(j0);
+    pc.angle = contact_angle(pc.side, pc.normal);
+    pc.angle_min = pc.angle_max = contact_angle(pc.side, surf.normal(j0));
+    bool first = true;
+    for (int j = 0; j < surf.rows(); ++j) {
+      if (!(P[static_cast<std::size_t>(j)] > 0)) continue;
+      const double a = contact_angle(pc.side, surf.normal(j));
+      pc.angle_min = first ? a : std::min(pc.angle_min, a);
+      pc.angle_max = first ? a : std::max(pc.angle_max, a);
+      first = false;
+    }
+    // Centre of pressure on the surface (sol.cop_x, cop_y: the pressure's centroid in the unrolled coordinates).
+    pc.point = sol.force > 0 ? surface_point(surf, sol.grid, surf.x0 + sol.cop_x, sol.cop_y) : pc.origin;
+  }
+
+  // Element (i, j) measures h along n_j, so a rigid motion dX = dz e_z + droll a x (X - c) (a = Rz(yaw) e_x the roll
+  // axis, c the centre) changes it by -dX . n_j; for the roll, -(a x (X - c)) . n = -a . ((X_j - c) x n) - x a . (e_x x n)
+  // at X = (x, y_j, z_j).
+  void motion(const PatchContact& pc, const Pose& pose, int column, std::vector<double>& dh) const override {
+    const ConformalSurface& surf = *pc.conformal;
+    const halfspace::Grid& grid = pc.solution.grid;
+    const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
     for (int j = 0; j < grid.ny; ++j) {
       const Eigen::Vector3d n = surf.normal(j);
-      // roll: -(a x (X - c)) . n = -a . ((X_j - c) x n) - x a . (e_x x n)
-      const double k0 = col == 0 ? n.z() : a.dot((surf.point(j, 0.0) - c).cross(n));
-      const double k1 = col == 0 ? 0.0 : a.dot(Eigen::Vector3d::UnitX().cross(n));
+      const double k0 = column == 0 ? n.z() : a.dot((surf.point(j, 0.0) - c).cross(n));
+      const double k1 = column == 0 ? 0.0 : a.dot(Eigen::Vector3d::UnitX().cross(n));
       for (int i = 0; i < grid.nx; ++i)
         dh[static_cast<std::size_t>(grid.index(i, j))] = -(k0 + k1 * (surf.x0 + grid.x(i)));
     }
-    // A Jacobian for Newton steps needs a few digits (as the planar path's).
-    const halfspace::NormalResponse r = model.options().dense
-                                          ? halfspace::normal_response_dense(model.material(), sol, dh)
-                                          : model.solver().response(sol, dh, ws.normal, 1e-2);
-    row_sums(grid, r.pressure, surf.x0, P, Q);
-    Eigen::Vector3d dF, dM;
-    row_wrench(surf, P, Q, c, dF, dM);
-    if (col == 0) dM -= Eigen::Vector3d::UnitZ().cross(pc.force);  // the centre moves with z
-    pc.sensitivity.block<3, 1>(0, col) = dF;
-    pc.sensitivity.block<3, 1>(3, col) = dM;
   }
-}
 
-// The conformal fields of an area: the rows (s, y, z, normal_y, normal_z, angle per grid row: the normals of its
-// elements) and, with the grids, the contact angle of every element.
-void describe_conformal(const PatchContact& pc, FieldSink& out) {
-  const ConformalSurface& surf = *pc.conformal;
-  const halfspace::Grid& grid = pc.solution.grid;
-  std::vector<double> s(static_cast<std::size_t>(surf.rows())), angle(s.size());
-  for (int j = 0; j < surf.rows(); ++j) {
-    s[static_cast<std::size_t>(j)] = surf.s0 + grid.y(j);
-    angle[static_cast<std::size_t>(j)] = contact_angle(pc.side, surf.normal(j));
+  // Each row's dP and dQ, pushed along its normal (row_wrench).
+  void response(const PatchContact& pc, const Pose& pose, int column, const halfspace::NormalResponse& r,
+                Eigen::Vector3d& dF, Eigen::Vector3d& dM) const override {
+    const ConformalSurface& surf = *pc.conformal;
+    std::vector<double> P, Q;
+    row_sums(pc.solution.grid, r.pressure, surf.x0, P, Q);
+    row_wrench(surf, P, Q, Eigen::Vector3d(0, pose.y, pose.z), dF, dM);
+    if (column == 0) dM -= Eigen::Vector3d::UnitZ().cross(pc.force);  // the centre moves with z
   }
-  out.begin("rows");
-  out.numbers("s", s.data(), s.size());
-  out.numbers("y", surf.y.data(), surf.y.size());
-  out.numbers("z", surf.z.data(), surf.z.size());
-  out.numbers("normal_y", surf.normal_y.data(), surf.normal_y.size());
-  out.numbers("normal_z", surf.normal_z.data(), surf.normal_z.size());
-  out.numbers("angle", angle.data(), angle.size());
-  out.end();
-  if (!pc.solution.pressure.empty()) {
+
+  // The rows (s, y, z, normal_y, normal_z, angle per grid row: the normals of its elements) and, with the grids, the
+  // contact angle of every element.
+  void describe(const PatchContact& pc, FieldSink& out) const override {
+    const ConformalSurface& surf = *pc.conformal;
+    const halfspace::Grid& grid = pc.solution.grid;
+    std::vector<double> s(static_cast<std::size_t>(surf.rows())), angle(s.size());
+    for (int j = 0; j < surf.rows(); ++j) {
+      s[static_cast<std::size_t>(j)] = surf.s0 + grid.y(j);
+      angle[static_cast<std::size_t>(j)] = contact_angle(pc.side, surf.normal(j));
+    }
+    out.begin("rows");
+    out.numbers("s", s.data(), s.size());
+    out.numbers("y", surf.y.data(), surf.y.size());
+    out.numbers("z", surf.z.data(), surf.z.size());
+    out.numbers("normal_y", surf.normal_y.data(), surf.normal_y.size());
+    out.numbers("normal_z", surf.normal_z.data(), surf.normal_z.size());
+    out.numbers("angle", angle.data(), angle.size());
+    out.end();
+    if (pc.solution.pressure.empty()) return;
     std::vector<double> grid_angle(static_cast<std::size_t>(grid.size()));
     for (int j = 0; j < grid.ny; ++j)
       std::fill_n(grid_angle.begin() + static_cast<std::ptrdiff_t>(grid.index(0, j)), grid.nx,
                   angle[static_cast<std::size_t>(j)]);
     out.grid("angles", grid_angle.data(), grid.nx, grid.ny);
   }
-}
+};
 
-}  // namespace contact_detail
+const ConformalAreaSurface kConformal;
+
+}  // namespace
+
+const AreaSurface& conformal_surface() { return kConformal; }
+
+}  // namespace areas
 }  // namespace wrc

@@ -34,10 +34,9 @@ class Trajectory {
   // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed). A step
   // that fails warm is evaluated again cold before it throws.
   ContactResult contact(const Pose& pose, const std::optional<RollingRequest>& rolling = std::nullopt);
-  // One wheel with its vertical force Fz (N) prescribed (as solve_wheel, `rolling` included), from the previous
-  // steps' approach; a step that fails (or throws) so is solved again from a cold start, whose result it returns.
-  WheelResult wheel(int side, double y, double yaw, double roll, double Fz,
-                    const std::optional<RollingRequest>& rolling = std::nullopt);
+  // One wheel with its vertical force prescribed (as solve_wheel, `rolling` included), from the previous steps'
+  // approach; a step that fails (or throws) so is solved again from a cold start, whose result it returns.
+  WheelResult wheel(const WheelCase& c, const std::optional<RollingRequest>& rolling = std::nullopt);
   // Forget the previous steps.
   void reset();
   const TrajectoryOptions& options() const { return options_; }

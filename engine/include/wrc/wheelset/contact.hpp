@@ -49,7 +49,7 @@ namespace wrc {
 inline constexpr double kElementMin = 1e-6, kElementMax = 0.01;
 
 // The deepest inter-penetration of the undeformed profiles an evaluation accepts by default (m; ContactRequest and
-// EquilibriumOptions::max_penetration). Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075
+// SolveLimits::max_penetration). Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075
 // mm at 100 kN per wheel, 0.24 mm for 367 kN on the flange root); at 1 mm the contact is tens of mm long on a 0.45 m
 // wheel, where the half-space model no longer holds (Hertz: ~5 MN).
 inline constexpr double kMaxPenetration = 1e-3;
@@ -214,22 +214,16 @@ struct ContactRequest {
   bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems)
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
-  double tolerance = 0;      // > 0: the normal solver's tolerance for this evaluation (inexact Newton steps)
+  double tolerance = 0;      // in ]0, 1e-2]: the normal solver's tolerance for this evaluation (inexact Newton
+                             // steps); 0: the model's
   std::optional<RollingRequest> rolling;  // also solve the tangential problem of every area (wheelset/tangential.hpp)
-  // With only_side: solve that wheel's area for this vertical force (N) rather than for the pose's penetration, each
-  // element weighted by the vertical part of its normal (normal.hpp's weighted force). Its solution's approach is
-  // then the further vertical approach (m, the wheel moving down) that carries the force on the pose's own grid:
-  // solve_wheel's predictor; such a result is not the pose's contact. A wheel with several areas, or with normals
-  // less than kVerticalWeightMin upright, is solved for the penetration as usual (its solutions' load says which).
-  std::optional<double> vertical_force;
-  // The normal problems without a warm start only estimated (NormalOptions::estimate: the coarse grid's solution,
-  // interpolated): a predictor's cheap first step; such a result is not the pose's contact either.
-  bool estimate = false;
   // A wheel whose undeformed profiles inter-penetrate deeper than this (m) is an error naming the depth, the limit and
   // the option max_penetration, before its areas are gridded (a pose far too deep is a mistake: 17.5 mm gave 120 MN
   // and 68 GPa). The solvers that search a pose (solve_equilibrium, solve_wheel) pass infinity for their iterates and
-  // check their solution against their own EquilibriumOptions::max_penetration.
+  // check their solution against their own SolveLimits::max_penetration (equilibrium/limits.hpp).
   double max_penetration = kMaxPenetration;
+  // Throws wrc::Error naming the member, its value and its range (evaluate_contact calls it first).
+  void validate() const;
 };
 
 // Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),
@@ -237,9 +231,6 @@ struct ContactRequest {
 ContactRequest read_contact_request(OptionReader& options);
 // Reads max_penetration (m, finite and > 0) over `fallback`.
 double read_max_penetration(OptionReader& options, double fallback = kMaxPenetration);
-
-// The least vertical part of the normals (their cosine to the vertical) over an area solved for a vertical force.
-inline constexpr double kVerticalWeightMin = 0.05;
 
 // Locates the contact at `pose` and solves the normal problem of every area. Throws wrc::Error on bad input (a pose
 // that check_pose refuses), a wheel deeper than request.max_penetration, or a potential contact area beyond

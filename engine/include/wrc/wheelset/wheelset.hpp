@@ -4,7 +4,8 @@
 // make_workspace(): the model/data split of MuJoCo.
 //
 // The operations are engine functions on the model (contact_model()): evaluate_contact (wheelset/contact.hpp),
-// solve_wheel, solve_equilibrium, solve_rigid, run_sweep (equilibrium/equilibrium.hpp), and locate below.
+// solve_wheel (equilibrium/wheel.hpp), solve_equilibrium (equilibrium/newton.hpp), run_sweep
+// (equilibrium/equilibrium.hpp), solve_rigid (kinematics/rigid.hpp), and locate below.
 #pragma once
 
 #include "wrc/core/fields.hpp"

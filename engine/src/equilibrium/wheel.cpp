@@ -1,0 +1,298 @@
+// One wheel with its vertical force given (wrc/equilibrium/wheel.hpp): predictions of the approach from the wheel's
+// normal problem solved for Fz itself, then secant steps on evaluations of the pose.
+#include "wrc/equilibrium/wheel.hpp"
+
+#include "pose_solve.hpp"
+#include "wheelset/vertical_load.hpp"
+
+#include "wrc/core/error.hpp"
+#include "wrc/core/roots.hpp"
+#include "wrc/kinematics/rigid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wrc {
+namespace {
+
+using pose_solve::deepest;
+using pose_solve::EvaluationBudget;
+using pose_solve::UnreachableLoad;
+
+// The height at which one wheel just touches its rail (radial overlap 0) at y, yaw and roll. The overlap of the
+// deepest line falls almost one for one as z rises: Illinois steps on a wide bracket take a few evaluations.
+double touch_height(const GeometryModel& g, int side, double y, double yaw, double roll) {
+  auto pen = [&](double z) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
+  const double fa = pen(-0.02), fb = pen(0.02);
+  if (!(fa > 0 && fb < 0)) fail("wheel: the {} wheel does not touch its rail within z = +-20 mm", side_name(side));
+  bool ok = false;
+  return bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-12, 200, ok);
+}
+
+// One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
+//
+// Predictions (predict) bring a within ~1e-6 of the load's in two evaluations. From there, or without them:
+// phi(a) = Fz(a)^(2/3) - Fz^(2/3) is close to linear and passes through (0, -Fz^(2/3)): a Hertz contact has F ~ a^1.5
+// (a conformal one grows a little faster or slower). Secant steps on it, kept inside the bracket once the load is
+// passed, converge in a few evaluations without sensitivities.
+//
+// The normal problems are solved only as well as the step needs: to 1e-2 while > 5 % off the load (their force is then
+// ~1e-3 off, well within what the step needs; 1e-3 solves cost 10 % more in all), to normal_tolerance while > 1e-3 off,
+// then at the model's own tolerance (the result's). Only an evaluation at normal_tolerance or tighter may conclude,
+// and one at normal_tolerance is evaluated once more at the model's tolerance first; a looser one brackets only when it
+// is more than 10x its tolerance off the load (nearer, its side of the load is not sure), but its secant step counts.
+class WheelSolver {
+ public:
+  WheelSolver(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
+              WheelResult& res)
+      : model_(model), c_(c), ws_(ws), opt_(opt), res_(res) {
+    z_touch_ = touch_height(model.geometry(), c.side, c.y, c.yaw, c.roll);
+    target_ = std::cbrt(c.Fz * c.Fz);
+    tight_ = std::max(opt.limits.normal_tolerance, model.options().normal.tolerance);
+    loose_ = std::max(tight_, 1e-2);
+    final_ = opt.final_at_model_tolerance ? model.options().normal.tolerance : tight_;
+    ftol_ = (2.0 / 3.0) * opt.limits.force_tolerance * target_;  // |F - Fz| <= tol Fz, in phi's units
+  }
+
+  // Two predictions first: one on the grid of the start (cold: only estimated on the coarse grid, a few per cent off),
+  // then one at normal_tolerance on the grid the first leads to, which corrects what the first one's grid, coarseness
+  // and linearised geometry missed. The conformal grid's elements stay on the rail's lattice, so the second one's model
+  // differs from the evaluation of the pose it predicts only by h's curvature in z (second order in its step) and its
+  // solve's ~1e-6: the evaluation at the model's tolerance that follows concludes (3 evaluations in all) but where the
+  // step is large (deep in the flange), and then the secant steps go on from it, as they do for a wheel with several
+  // areas or steep normals (no prediction). From a close start (a trajectory's last approach) the first step is within
+  // 1e-3 of the approach and the second is skipped. True when converged frictionless.
+  bool solve(std::optional<double> start) {
+    const double cold = opt_.wheel_approach * std::cbrt((c_.Fz / 100e3) * (c_.Fz / 100e3));  // Hertz: a ~ F^(2/3)
+    double a1 = std::min(start && *start > 0 ? *start : cold, opt_.limits.max_penetration);
+    const double from = a1;
+    bool predicted = opt_.limits.max_evaluations >= 4 && predict(a1, start ? tight_ : loose_, !start);
+    if (predicted && std::abs(a1 - from) > 1e-3 * a1) predicted = predict(a1, tight_);
+    const double f1 = phi(a1, predicted ? final_ : start ? tight_ : loose_);
+    return secant(a1, f1);
+  }
+
+  // With friction the creep forces' vertical part joins Fz (a tilted contact plane turns lateral creep forces partly
+  // vertical): from the frictionless approach, secant steps on the total vertical force with the tangential problems
+  // solved (the first with the Hertz stiffness dFz/da = 1.5 Fz / a). True when converged.
+  bool with_friction(const RollingRequest& rolling) {
+    ContactRequest fr;
+    fr.only_side = c_.side;
+    fr.rolling = rolling;
+    fr.max_penetration = INFINITY;
+    auto error = [&](double at) {
+      evaluate_at(at, fr);
+      return wheel_force() - c_.Fz;
+    };
+    double a = a1_, e = error(a), k = 1.5 * c_.Fz / a;
+    for (int it = 0; std::abs(e) > opt_.limits.force_tolerance * c_.Fz; ++it) {
+      if (it >= opt_.limits.max_iterations) {
+        res_.message = fmt::format("no convergence in {} iterations with the creep forces", opt_.limits.max_iterations);
+        return false;
+      }
+      const double next = a - e / k, en = error(next);
+      if (en != e) k = (en - e) / (next - a);
+      a = next, e = en;
+    }
+    return true;
+  }
+
+  // The result from the last evaluation: converged only within the force tolerance and max_penetration.
+  void finish() {
+    const SolveLimits& l = opt_.limits;
+    res_.iterations = evaluations_;
+    res_.residual = wheel_force() - c_.Fz;
+    res_.converged = res_.converged && std::abs(res_.residual) <= l.force_tolerance * c_.Fz;
+    if (res_.converged && deepest(cur_, c_.side) > l.max_penetration) {  // the creep forces' steps are not held within
+      res_.converged = false;
+      res_.message = pose_solve::too_deep(deepest(cur_, c_.side), l.max_penetration);
+    }
+    if (!res_.converged && res_.message.empty())
+      res_.message = fmt::format("the last evaluation is {:.4g} N off, beyond force_tolerance x Fz = {:.4g} N",
+                                 res_.residual, l.force_tolerance * c_.Fz);
+    res_.wheel = std::move(cur_.wheel[c_.side]);
+  }
+
+ private:
+  // An approach and phi there; a0, f0 the one before (first: the exact point of no contact); lo, hi the bracket.
+  struct Secant {
+    double a0, f0, a1, f1;
+    double lo = 0, hi = INFINITY;
+  };
+
+  double wheel_force() const { return cur_.wheel[c_.side].force.z(); }
+
+  // The wheel pressed in by a, within the budget; `load`: the predictor's evaluation.
+  void evaluate_at(double a, const ContactRequest& req, const areas::VerticalLoad* load = nullptr) {
+    if (evaluations_++ >= opt_.limits.max_evaluations)
+      throw EvaluationBudget(
+          fmt::format("gave up after {} contact evaluations (max_evaluations)", opt_.limits.max_evaluations));
+    const Pose pose{c_.y, z_touch_ - a, c_.roll, c_.yaw};
+    cur_ = load ? areas::evaluate_vertical_load(model_, pose, ws_, req, *load)
+                : evaluate_contact(model_, pose, ws_, req);
+    res_.z = z_touch_ - a;
+    res_.approach = a;
+  }
+
+  // Frictionless, the normal problems solved to tol.
+  void evaluate(double a, double tol, const areas::VerticalLoad* load = nullptr) {
+    ContactRequest req;
+    req.only_side = c_.side;
+    req.max_penetration = INFINITY;  // the approach is held within max_penetration, the result checked by finish
+    req.tolerance = tolerance_ = tol;
+    evaluate_at(a, req, load);
+  }
+
+  double phi(double a, double tol) {
+    evaluate(a, tol);
+    return std::cbrt(std::pow(std::max(wheel_force(), 0.0), 2)) - target_;
+  }
+
+  // A prediction: the wheel's area solved for Fz itself on the grid of approach a (its normals' vertical parts as
+  // weights, the approach deepening h as it does), whose multiplier is the further approach that carries Fz there; a
+  // moves on by it. False when the wheel has several areas or steep normals (the pipeline then solved the penetration)
+  // or the step is unusable.
+  bool predict(double& a, double tol, bool estimate = false) {
+    const areas::VerticalLoad load{c_.Fz, estimate};
+    evaluate(a, tol, &load);
+    const auto& patches = cur_.wheel[c_.side].patches;
+    if (patches.size() != 1 || patches[0].solution.load.control != halfspace::NormalLoad::Control::force) return false;
+    const double next = a + patches[0].solution.approach;
+    if (!(next > 0)) return false;
+    a = std::min(next, opt_.limits.max_penetration);
+    return true;
+  }
+
+  double tolerance_for(double error) const { return error > 0.05 ? loose_ : error > 1e-3 ? tight_ : final_; }
+
+  // Secant steps on phi from the start (a1, f1) until an evaluation at the final tolerance carries Fz; the approach
+  // ends in a1_. True when converged.
+  bool secant(double a1, double f1) {
+    Secant s{0, -target_, a1, f1};
+    for (int it = 0;; ++it) {
+      const double error = std::abs(wheel_force() - c_.Fz) / c_.Fz;
+      const bool settled = tolerance_ <= tight_;  // a looser evaluation may be off by about its tolerance
+      if (settled && std::abs(s.f1) <= ftol_) {
+        if (tolerance_ <= final_) break;
+        // The result at the model's own tolerance (the forces evaluate_contact gives at the solved pose, from the
+        // converged pressures in a few CG iterations); its force may move out of the tolerance by the noise of the
+        // looser solve, and then the steps go on from it.
+        s.f1 = phi(s.a1, final_);
+        continue;
+      }
+      if (it >= opt_.limits.max_iterations) {
+        res_.message = fmt::format("no convergence in {} iterations", opt_.limits.max_iterations);
+        break;
+      }
+      // F grows with the approach: no approach within max_penetration carries Fz.
+      if (s.f1 < 0 && s.a1 >= opt_.limits.max_penetration)
+        throw UnreachableLoad(pose_solve::unreachable("Fz", c_.Fz, wheel_force(), cur_.pose, deepest(cur_, c_.side),
+                                                      opt_.limits.max_penetration));
+      if (settled || error > 10 * tolerance_) (s.f1 < 0 ? s.lo : s.hi) = s.a1;
+      advance(s);
+      // A settled evaluation within 10x its own tolerance of the load is within the noise of its normal solve (a
+      // trajectory's 1e-6 solves against the 1e-6 force tolerance): the next is solved 10x tighter, or the secant
+      // would wander in that noise.
+      const double next = settled && error < 10 * tolerance_ ? std::min(tolerance_for(error), 0.1 * tolerance_)
+                                                             : tolerance_for(error);
+      s.f1 = phi(s.a1, next);
+    }
+    a1_ = s.a1;
+    return tolerance_ <= final_ && std::abs(s.f1) <= ftol_;
+  }
+
+  // The secant's next approach: inside the bracket once there is one, at most 4x the last before.
+  void advance(Secant& s) const {
+    double a = s.f1 != s.f0 ? s.a1 - s.f1 * (s.a1 - s.a0) / (s.f1 - s.f0) : 2 * s.a1;
+    if (!std::isfinite(s.hi)) a = std::clamp(a, s.lo, 4 * s.a1);
+    if (std::isfinite(s.hi) && !(a > s.lo && a < s.hi)) a = 0.5 * (s.lo + s.hi);
+    s.a0 = s.a1, s.f0 = s.f1, s.a1 = std::min(a, opt_.limits.max_penetration);
+  }
+
+  const ContactModel& model_;
+  const WheelCase& c_;
+  ContactWorkspace& ws_;
+  const WheelOptions& opt_;
+  WheelResult& res_;
+  double z_touch_ = 0;     // the height at which the wheel just touches (m)
+  double target_ = 0;      // Fz^(2/3)
+  double tight_ = 0, loose_ = 0, final_ = 0;  // the normal solves' tolerances (tolerance_for)
+  double ftol_ = 0;        // the force tolerance in phi's units
+  int evaluations_ = 0;
+  double tolerance_ = 0;   // of the last frictionless evaluation
+  double a1_ = 0;          // the approach the secant ended at
+  ContactResult cur_;      // the last evaluation
+};
+
+}  // namespace
+
+void WheelCase::validate(std::string_view context) const {
+  if (side != kLeft && side != kRight)
+    fail("{}: side = {} must be {} (left) or {} (right)", context, side, +kLeft, +kRight);
+  pose_solve::check_position(y, yaw, context);
+  if (!std::isfinite(roll) || std::abs(roll) > 0.3)
+    fail("{}: roll = {} rad must be finite and within +-0.3 rad", context, roll);
+  pose_solve::check_load("Fz", Fz, context);
+}
+
+void WheelOptions::validate(std::string_view context) const {
+  limits.validate(context);
+  if (!(wheel_approach > 0 && wheel_approach <= 0.01))
+    fail("{}: wheel_approach = {} m must be in ]0, 0.01] m", context, wheel_approach);
+}
+
+WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
+                        std::optional<double> start, const std::optional<RollingRequest>& rolling) {
+  c.validate("wheel");
+  opt.validate("wheel");
+  WheelResult res;
+  res.side = c.side;
+  res.Fz = c.Fz;
+  WheelSolver solver(model, c, ws, opt, res);
+  try {
+    res.converged = solver.solve(start);
+    if (res.converged && rolling) res.converged = solver.with_friction(*rolling);
+  } catch (const EvaluationBudget& e) {
+    res.message = e.what();
+  } catch (const UnreachableLoad& e) {
+    res.message = e.what();
+  }
+  solver.finish();
+  return res;
+}
+
+// ---- options, messages, fields ----
+
+WheelCase read_wheel_case(OptionReader& r) {
+  WheelCase c;
+  c.side = parse_side(r.string("side").value_or(""), r.context());
+  c.y = r.number("y", c.y);
+  c.yaw = r.number("yaw", c.yaw);
+  c.roll = r.number("roll", c.roll);
+  c.Fz = r.need_number("Fz");
+  return c;
+}
+
+WheelOptions read_wheel_options(OptionReader& r) {
+  WheelOptions o;
+  o.limits = read_solve_limits(r);
+  o.validate(r.context());
+  return o;
+}
+
+std::string failure_message(const WheelResult& w) {
+  return fmt::format("the {} wheel's vertical force {:.6g} N was not reached: {}; last iterate z = {:.6f} mm, residual "
+                     "{:.4g} N", side_name(w.side), w.Fz, w.message, w.z * 1e3, w.residual);
+}
+
+void describe(const WheelResult& w, FieldSink& out) {
+  describe(w.wheel, out);
+  out.boolean("converged", w.converged);
+  if (!w.message.empty()) out.string("error", w.message);
+  out.number("z", w.z);
+  out.number("approach", w.approach);
+  out.number("residual", w.residual);
+  out.integer("iterations", w.iterations);
+}
+
+}  // namespace wrc

@@ -1,0 +1,174 @@
+// The area pipeline (area.hpp): lay out on the surface, solve the normal problem, resultant, sensitivities, memory.
+#include "area.hpp"
+
+#include "warm_start.hpp"
+
+#include "wrc/core/error.hpp"
+#include "wrc/core/union_find.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wrc::areas {
+namespace {
+
+// The located patches of a group and their segments, copied (the result must not depend on the workspace).
+void copy_located(const AreaInput& in, PatchContact& pc) {
+  const auto& patches = in.located.patches(in.side);
+  const auto& segs = in.located.segments(in.side);
+  for (int p : in.patches) {
+    Patch patch = patches[static_cast<std::size_t>(p)];
+    const int first = static_cast<int>(pc.segments.size());
+    pc.segments.insert(pc.segments.end(), segs.begin() + patch.first_segment,
+                       segs.begin() + patch.first_segment + patch.segment_count);
+    patch.longest += first - patch.first_segment;
+    patch.first_segment = first;
+    pc.located.push_back(patch);
+  }
+}
+
+// The load of an area: its penetration, or the predictor's vertical force with the rows' vertical normal parts n_z as
+// weights. The vertical force is sum n_z p dA, and a vertical approach a deepens h by a times `deepening` (to first
+// order; on a plane n_z itself; on the curved surface the z part of the wheel's normal, along which h is measured,
+// up to a few per mille from the row's bisector normal at the flange root): the solution is the pose's penetration
+// problem with h + a deepening, a the multiplier. Rows less upright than kVerticalWeightMin: the penetration.
+halfspace::NormalLoad area_load(const AreaSolve& how, const halfspace::Grid& grid, const std::vector<double>& vertical,
+                                const std::vector<double>& deepening) {
+  if (!how.vertical_force) return halfspace::NormalLoad::penetration();
+  // Per element, its row's value (gap weights only where the deepening differs from the weights: the curved surface).
+  const bool own_gap = deepening != vertical;
+  auto per_element = [&](const std::vector<double>& rows) {
+    std::vector<double> e(static_cast<std::size_t>(grid.size()));
+    for (int j = 0; j < grid.ny; ++j) std::fill_n(e.begin() + grid.index(0, j), grid.nx, rows[static_cast<std::size_t>(j)]);
+    return e;
+  };
+  for (int j = 0; j < grid.ny; ++j)
+    if (!(vertical[static_cast<std::size_t>(j)] >= kVerticalWeightMin) ||
+        !(deepening[static_cast<std::size_t>(j)] >= kVerticalWeightMin))
+      return halfspace::NormalLoad::penetration();
+  halfspace::NormalLoad load = halfspace::NormalLoad::normal_force(*how.vertical_force, per_element(vertical));
+  if (own_gap) load.gap_weights = per_element(deepening);
+  return load;
+}
+
+// The normal problem of one area on its layout, at the evaluation's tolerance, warm-started from the workspace's last
+// evaluation of that side (extrapolated with the one before when the workspace extrapolates).
+halfspace::NormalSolution solve_normal(const ContactModel& model, const AreaSolve& how, int side, const AreaLayout& l,
+                                       const std::vector<double>& h, ContactWorkspace& ws) {
+  PhaseTimer t(ws, ws.times.solve);
+  const ContactOptions& opt = model.options();
+  halfspace::NormalOptions nopt = opt.normal;
+  if (how.tolerance > 0) nopt.tolerance = how.tolerance;
+  nopt.estimate = how.estimate;
+  std::vector<double> start, displacement;
+  if (warm_start(ws, side, l.frame, l.grid, start, displacement)) {
+    nopt.initial_pressure = start;
+    nopt.initial_displacement = displacement;
+  }
+  const halfspace::NormalLoad load = area_load(how, l.grid, l.vertical, l.deepening);
+  return opt.dense ? halfspace::solve_normal_dense(model.material(), l.grid, h, load, nopt)
+                   : model.solver().solve(l.grid, h, load, ws.normal, nopt);
+}
+
+}  // namespace
+
+// Separate contact regions of a solution: 8-connected components of {p > 0} carrying >= 0.1 % of the force. The
+// contact is cut into runs (maximal intervals of a row in contact); runs of neighbouring rows whose columns touch or
+// overlap diagonally are one region.
+int contact_regions(const halfspace::NormalSolution& sol) {
+  const halfspace::Grid& g = sol.grid;
+  if (sol.pressure.empty() || !(sol.force > 0)) return 0;
+  struct Run {
+    int i0, i1;    // columns
+    double force;  // N
+  };
+  std::vector<Run> runs;
+  std::vector<std::size_t> row_start(static_cast<std::size_t>(g.ny) + 1, 0);
+  const double dA = g.element_area();
+  for (int j = 0; j < g.ny; ++j) {
+    row_start[static_cast<std::size_t>(j)] = runs.size();
+    const double* p = sol.pressure.data() + static_cast<std::size_t>(g.index(0, j));
+    for (int i = 0; i < g.nx;) {
+      if (!(p[i] > 0)) {
+        ++i;
+        continue;
+      }
+      Run r{i, i, 0.0};
+      for (; i < g.nx && p[i] > 0; ++i) r.force += p[i] * dA;
+      r.i1 = i - 1;
+      runs.push_back(r);
+    }
+  }
+  row_start[static_cast<std::size_t>(g.ny)] = runs.size();
+  UnionFind sets;
+  sets.reset(static_cast<int>(runs.size()));
+  for (std::size_t j = 1; j < static_cast<std::size_t>(g.ny); ++j)
+    for (std::size_t a = row_start[j - 1]; a < row_start[j]; ++a)
+      for (std::size_t b = row_start[j]; b < row_start[j + 1]; ++b)
+        if (runs[b].i0 <= runs[a].i1 + 1 && runs[b].i1 >= runs[a].i0 - 1)
+          sets.unite(static_cast<int>(a), static_cast<int>(b));
+  std::vector<double> force(runs.size(), 0.0);
+  const auto root = [&](std::size_t r) { return static_cast<std::size_t>(sets.find(static_cast<int>(r))); };
+  for (std::size_t r = 0; r < runs.size(); ++r) force[root(r)] += runs[r].force;
+  int regions = 0;
+  for (std::size_t r = 0; r < runs.size(); ++r) regions += root(r) == r && force[r] >= 1e-3 * sol.force;
+  return regions;
+}
+
+PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorkspace& ws,
+                        std::vector<ContactWorkspace::Previous>& next_previous) {
+  const AreaSurface& surface = surface_for(in.model.options().surface);
+  PatchContact pc;
+  pc.side = in.side;
+  pc.nominal = in.first.point;
+  pc.nominal_angle = contact_angle(in.side, -in.first.normal);  // Patch::normal points out of the wheel
+  AreaLayout layout;
+  {
+    PhaseTimer t(ws, ws.times.geometry);
+    layout = surface.lay_out(in, pc);
+  }
+  pc.solution = solve_normal(in.model, how, in.side, layout, pc.h, ws);
+  {
+    PhaseTimer t(ws, ws.times.results);
+    const PoseFrame& f = in.located.frame();
+    copy_located(in, pc);
+    surface.resultant(f, pc);
+    pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
+    pc.regions = contact_regions(pc.solution);
+    pc.rolling_radius = wheel_surface_at(in.model.geometry().side[in.side].wheel, f.to_wheelset(pc.point).y()).radius;
+    ++ws.times.areas;
+    ws.times.elements += layout.grid.size();
+    ws.times.iterations += pc.solution.iterations + pc.solution.coarse_iterations;
+  }
+  if (how.sensitivity) {
+    PhaseTimer t(ws, ws.times.sensitivity);
+    area_sensitivity(in.model, in.located.pose(), pc, ws);
+  }
+  const Plane& k = layout.frame;
+  next_previous.push_back({k.O, k.t1, k.t2, k.n, pc.solution.grid, pc.solution.pressure,
+                           std::move(pc.solution.displacement)});
+  return pc;
+}
+
+void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
+  const AreaSurface& surface = surface_of(pc);
+  const halfspace::NormalSolution& sol = pc.solution;
+  pc.sensitivity.setZero();
+  if (!(sol.force > 0)) return;
+  if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
+  std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()));
+  for (int col = 0; col < 2; ++col) {
+    surface.motion(pc, pose, col, dh);
+    // A Jacobian for Newton steps needs a few digits: at 1e-2 the response agrees with a 1e-8 one to ~1e-5.
+    const halfspace::NormalResponse r = model.options().dense
+                                            ? halfspace::normal_response_dense(model.material(), sol, dh)
+                                            : model.solver().response(sol, dh, ws.normal, 1e-2);
+    Eigen::Vector3d dF, dM;
+    surface.response(pc, pose, col, r, dF, dM);
+    pc.sensitivity.block<3, 1>(0, col) = dF;
+    pc.sensitivity.block<3, 1>(3, col) = dM;
+  }
+}
+
+}  // namespace wrc::areas

@@ -1,0 +1,137 @@
+// The located segments of a contact area (segments.hpp): their arcs, weights and normals, the plane through them,
+// the grid's index spans and its cap.
+#include "segments.hpp"
+
+#include "wrc/core/error.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace wrc::areas {
+namespace {
+
+// Lateral spacing of rail line r: half the distance between its neighbours (one-sided at the ends).
+double line_spacing(const RailLines& rail, int r) {
+  const int n = rail.count();
+  const int a = std::max(0, r - 1), b = std::min(n - 1, r + 1);
+  const double d = std::hypot(rail.y[b] - rail.y[a], rail.z[b] - rail.z[a]);
+  return b - a == 2 ? 0.5 * d : d;
+}
+
+}  // namespace
+
+// Radius of the wheel's section along a rail line at a wheelset-frame lateral position: the paper's radius /
+// cos(conicity) of the rolling direction, divided by cos^2(yaw) because a yawed wheel meets the line at the yaw
+// angle (normal curvature cos^2 of the rolling one; the lateral profile curvature's sin^2 share is left out,
+// as the paper leaves the yaw out). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of force
+// at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
+double arc_radius(const WheelSurfacePoint& s, double yaw) {
+  const double c = std::cos(yaw);
+  return s.radius / (std::max(s.normal_r, 0.05) * c * c);
+}
+
+void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
+                      std::vector<SegmentInfo>& out) {
+  const PoseFrame& f = st.frame();
+  const WheelCones& w = g.side[side].wheel;
+  const auto& segs = st.segments(side);
+  for (int k = p.first_segment; k < p.first_segment + p.segment_count; ++k) {
+    const Segment& s = segs[k];
+    SegmentInfo info;
+    info.line = s.line;
+    info.y = s.y;
+    info.z = s.z;
+    info.L = s.length();
+    info.xm = 0.5 * (s.x_t + s.x_l);
+    info.mid = {info.xm, s.y, s.z};
+    const double Yt = f.to_wheelset({s.x_t, s.y, s.z}).y(), Yl = f.to_wheelset({s.x_l, s.y, s.z}).y();
+    const double yaw = st.pose().yaw;
+    const double Rt = arc_radius(wheel_surface_at(w, Yt), yaw);
+    info.R = 0.5 * (Rt + (Yl == Yt ? Rt : arc_radius(wheel_surface_at(w, Yl), yaw)));  // equal at yaw 0
+    info.sagitta = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
+    info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
+    info.normal = wheel_inward_normal(w, f, info.mid);
+    out.push_back(info);
+  }
+}
+
+Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
+  Plane pl;
+  double W = 0;
+  Eigen::Vector3d O = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
+  for (const auto& s : infos) {
+    W += s.weight;
+    O += s.weight * s.mid;
+    n += s.weight * s.normal;
+  }
+  if (W > 0 && n.norm() > 0) {
+    pl.O = O / W;
+    pl.n = n.normalized();
+  } else {  // only tangencies: the paper's nominal point
+    pl.O = fallback.point;
+    pl.n = -fallback.normal;
+  }
+  Eigen::Vector3d t1 = Eigen::Vector3d::UnitX() - pl.n.x() * pl.n;
+  if (t1.norm() < 1e-6) t1 = Eigen::Vector3d::UnitY() - pl.n.y() * pl.n;  // a normal along x: not for wheels
+  pl.t1 = t1.normalized();
+  pl.t2 = pl.n.cross(pl.t1);
+  return pl;
+}
+
+Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) {
+  Bounds b;
+  for (const auto& s : infos)
+    for (double x : {s.xm - 0.5 * s.L, s.xm + 0.5 * s.L}) {
+      const Eigen::Vector3d d = Eigen::Vector3d(x, s.y, s.z) - pl.O;
+      b.umin = std::min(b.umin, d.dot(pl.t1));
+      b.umax = std::max(b.umax, d.dot(pl.t1));
+      b.vmin = std::min(b.vmin, d.dot(pl.t2));
+      b.vmax = std::max(b.vmax, d.dot(pl.t2));
+    }
+  return b;
+}
+
+LineApproach arc_through_deepest(const WheelCones& wheel, const LocationState& st, double y, double z, LineProfile& lp) {
+  const LineApproach a = line_approach(wheel, st.frame(), y, z);
+  const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
+  lp.R = arc_radius(sp, st.pose().yaw);
+  lp.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
+  lp.x_apex = a.x;
+  return a;
+}
+
+// The potential contact area of a pose exceeds max_elements: either the grid is too fine for the cap or the pose is
+// far deeper than any elastic approach (a solve that lost its way, an unreachable load).
+void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,
+                                    const Pose& pose, double nx, double ny) {
+  double depth = 0;
+  for (const auto& s : all) depth = std::max(depth, s.sagitta);
+  const double n = nx * ny;
+  const std::string area = fmt::format(
+      "the {} wheel's potential contact area at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad, yaw = {:.4f} mrad "
+      "needs {:.0f} x {:.0f} = {:.0f} elements (about {:.0f} MB), more than max_elements = {}", side_name(side),
+      pose.y * 1e3, pose.z * 1e3, pose.roll * 1e3, pose.yaw * 1e3, nx, ny, n, n * kBytesPerElement / 1e6,
+      opt.max_elements);
+  if (depth > 1e-3)
+    fail("contact: {}: the pose is far too deep ({:.2f} mm of inter-penetration; elastic approaches are a fraction of "
+         "a mm)", area, depth * 1e3);
+  fail("contact: {}: the grid ({:.4g} mm) is too fine for the cap; raise max_elements (about {:.0f} bytes per "
+       "element) or use a coarser grid", area, opt.element * 1e3, kBytesPerElement);
+}
+
+halfspace::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
+                          const std::vector<SegmentInfo>& all, int side, const Pose& pose) {
+  if (!(x.count * y.count <= opt.max_elements)) too_many_elements(opt, all, side, pose, x.count, y.count);
+  halfspace::Grid grid;
+  grid.nx = static_cast<int>(x.count);  // each at most max_elements (an int) now
+  grid.ny = static_cast<int>(y.count);
+  grid.dx = grid.dy = opt.element;
+  grid.x0 = x.first * opt.element;
+  grid.y0 = y.first * opt.element;
+  return grid;
+}
+
+}  // namespace wrc::areas

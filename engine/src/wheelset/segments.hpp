@@ -1,0 +1,106 @@
+// The located segments of a contact area as the surfaces lay it out (surface.hpp; wrc/wheelset/contact.hpp says how):
+// each segment's arc, volume weight and wheel normal, the plane through them, h along one rail line, the index spans
+// of a grid and its cap. Small pieces that the planar and conformal surfaces and the grouping of areas (contact.cpp)
+// share; none of them calls a surface or the area pipeline. Internal, not installed.
+#pragma once
+
+#include "wrc/geometry/location.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
+#include "wrc/halfspace/normal.hpp"
+#include "wrc/wheelset/contact.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+// The internals of the contact areas of a wheelset pose: from the located patches of a wheel to solved areas.
+namespace wrc::areas {
+
+// What the plane and h need of one segment.
+struct SegmentInfo {
+  int line = 0;
+  double y = 0, z = 0;         // rail line (track frame)
+  double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
+  double weight = 0;           // share of the inter-penetration volume (m^3)
+  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
+  double sagitta = 0;          // arc height at the mid-point (m)
+};
+
+// The segments of a located patch, appended to `out`.
+void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
+                      std::vector<SegmentInfo>& out);
+
+inline double arc_height(double R, double dx) {
+  const double q = R * R - dx * dx;
+  return q > 0 ? std::sqrt(q) : -R;  // beyond the arc's reach: far below (any negative h means "no contact")
+}
+
+// Radius of the wheel's section along a rail line at a wheelset-frame lateral position (segments.cpp says why).
+double arc_radius(const WheelSurfacePoint& s, double yaw);
+
+struct Plane {
+  Eigen::Vector3d O, n, t1, t2;
+};
+
+// The plane tangent to the wheel at the segments' weighted mid-point (wrc/wheelset/contact.hpp); the paper's nominal
+// point of `fallback` when only tangencies are left.
+Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback);
+
+// The rectangle of a plane's coordinates (u along t1, v along t2) that holds the segments' end points.
+struct Bounds {
+  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
+};
+Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl);
+
+// h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point.
+struct LineProfile {
+  double v = 0, u0 = 0;          // plane coordinates: v of the line, u of its point at x = 0
+  std::vector<const SegmentInfo*> arcs;
+  double apex = 0, x_apex = 0, R = 1;  // no segment: arc with height `apex` (< 0) at x_apex
+  double height(double x) const {
+    if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
+    double h = -INFINITY;
+    for (const SegmentInfo* s : arcs) h = std::max(h, arc_height(s->R, x - s->xm) - (s->R - s->sagitta));
+    return h;
+  }
+  // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises).
+  void heights(const double* x, std::size_t n, double* out) const {
+    if (arcs.empty()) {
+      for (std::size_t i = 0; i < n; ++i) out[i] = height(x[i]);
+      return;
+    }
+    std::fill_n(out, n, -INFINITY);
+    for (const SegmentInfo* s : arcs) {
+      const double drop = s->R - s->sagitta;
+      for (std::size_t i = 0; i < n; ++i) out[i] = std::max(out[i], arc_height(s->R, x[i] - s->xm) - drop);
+    }
+  }
+};
+
+// h along the rail line (y, z) that has no segment: the arc through the line's deepest point, whose (negative) height
+// is the exact radial gap times cos(conicity), so that h is continuous when the line starts to penetrate. Sets lp's
+// apex, x_apex and R; returns the deepest point.
+LineApproach arc_through_deepest(const WheelCones& wheel, const LocationState& st, double y, double z, LineProfile& lp);
+
+// The element indices of a lattice of element e that cover [lo, hi] (m) plus `margin` elements on each side: the
+// first index and the count, in double -- a grid of 1e-30 m would overflow any integer type, and the count must be
+// compared with max_elements before it is converted.
+struct IndexSpan {
+  double first = 0, count = 0;
+};
+inline IndexSpan index_span(double lo, double hi, double e, int margin) {
+  const double first = std::floor(lo / e) - margin;
+  return {first, std::ceil(hi / e) + margin - first + 1};
+}
+// A potential contact area of nx x ny elements exceeds max_elements: an error that says whether the grid is too fine
+// for the cap or the pose far too deep.
+[[noreturn]] void too_many_elements(const ContactOptions& opt, const std::vector<SegmentInfo>& all, int side,
+                                    const Pose& pose, double nx, double ny);
+// The grid of two index spans (x along the first axis, y along the second) of element e, or too_many_elements when it
+// holds more than max_elements.
+halfspace::Grid span_grid(const ContactOptions& opt, const IndexSpan& x, const IndexSpan& y,
+                          const std::vector<SegmentInfo>& all, int side, const Pose& pose);
+
+}  // namespace wrc::areas
