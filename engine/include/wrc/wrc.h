@@ -108,7 +108,8 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * deeper than max_penetration (m, default 1e-3; an option), or |y|, |z| beyond the wheel radius, |roll|, |yaw| beyond
  * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity, max_penetration; with
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
- * vy (m/s), yaw_rate (rad/s), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
+ * vy (m/s), yaw_rate (rad/s), slip_reference (deformed or undeformed: where the rigid slip is taken,
+ * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
  * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,

@@ -60,15 +60,17 @@ struct AreaSlip {
 
 // Where an element of the area is and its tangent frame: on a plane, the plane's frame everywhere and the point in
 // the plane; on a conformal area (wheelset/conformal.hpp), row j's frame (e_x, t2(j), n(j)) and the point on the
-// rail's surface. `contact_point` moves the point to midway between the undeformed surfaces (h: their overlap).
+// rail's surface. `contact_point` moves the point along n to where the slip is taken: midway between the undeformed
+// surfaces (h: their overlap), or onto the wheel's undeformed surface (SlipReference).
 struct ElementFrame {
   Eigen::Vector3d t1, t2, n;
 };
 
 class AreaGeometry {
  public:
-  AreaGeometry(const ContactModel& model, const Pose& pose, const PatchContact& pc)
-      : pc_(pc), wheel_(model.geometry().side[pc.side].wheel), frame_(pose) {}
+  AreaGeometry(const ContactModel& model, const Pose& pose, const PatchContact& pc, SlipReference reference)
+      : pc_(pc), wheel_(model.geometry().side[pc.side].wheel), frame_(pose),
+        below_rail_(reference == SlipReference::undeformed ? 1.0 : 0.5) {}
   ElementFrame frame(int j) const {
     if (!pc_.conformal) return {pc_.t1, pc_.t2, pc_.normal};
     return {Eigen::Vector3d::UnitX(), pc_.conformal->t2(j), pc_.conformal->normal(j)};
@@ -78,12 +80,12 @@ class AreaGeometry {
     if (pc_.conformal) {  // on the rail's surface: the wheel's is h below it along the row's normal
       const ConformalSurface& s = *pc_.conformal;
       const int r = std::clamp(j, 0, s.rows() - 1);  // (the reference point is on the grid; kept on it regardless)
-      return s.point(r, s.x0 + g.x(i)) - 0.5 * h * s.normal(r);
+      return s.point(r, s.x0 + g.x(i)) - below_rail_ * h * s.normal(r);
     }
     Eigen::Vector3d X = pc_.origin;
     X += g.x(i) * pc_.t1;
     X += g.y(j) * pc_.t2;
-    X += (wheel_offset(wheel_, frame_, X, pc_.normal) + 0.5 * h) * pc_.normal;
+    X += (wheel_offset(wheel_, frame_, X, pc_.normal) + (1 - below_rail_) * h) * pc_.normal;  // from the wheel's surface
     return X;
   }
 
@@ -91,6 +93,7 @@ class AreaGeometry {
   const PatchContact& pc_;
   const WheelCones& wheel_;
   PoseFrame frame_;
+  double below_rail_;  // the slip point's depth below the rail's surface along n, as a share of h
 };
 
 AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq) {
@@ -102,7 +105,7 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   }
   const Kinematics& k = *rq.kinematics;
   a.V = k.V;
-  const AreaGeometry geo(model, pose, pc);
+  const AreaGeometry geo(model, pose, pc, k.slip_reference);
   const VelocityField field = velocity_field(k, model.geometry().track->params.radius, pose);
   const halfspace::Grid& g = pc.solution.grid;
   const double speed = std::abs(k.V);
@@ -287,7 +290,7 @@ namespace {
 // The creepages prescribed, or the kinematics; sets q.V.
 void read_slip(OptionReader& r, RollingRequest& q) {
   if (auto t = r.table("creepage")) {
-    for (const char* key : {"omega", "vy", "yaw_rate"})
+    for (const char* key : {"omega", "vy", "yaw_rate", "slip_reference"})
       if (r.has(key)) fail("{}: 'creepage' prescribes the creepages; '{}' (kinematics) cannot be given with it", r.context(), key);
     q.creepage = halfspace::Creepages{t->number("xi", 0.0), t->number("eta", 0.0), t->number("phi", 0.0)};
     t->finish();
@@ -299,6 +302,8 @@ void read_slip(OptionReader& r, RollingRequest& q) {
     k.omega = r.number("omega");
     k.vy = r.number("vy", 0.0);
     k.yaw_rate = r.number("yaw_rate", 0.0);
+    if (r.choice("slip_reference", {"deformed", "undeformed"}).value_or("deformed") == "undeformed")
+      k.slip_reference = SlipReference::undeformed;
     q.kinematics = k;
     q.V = k.V;
   }
@@ -326,7 +331,7 @@ halfspace::Friction read_friction(OptionReader& r) {
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   bool any = r.has("creepage");
-  for (const char* key : {"V", "omega", "vy", "yaw_rate"}) any |= r.has(key);
+  for (const char* key : {"V", "omega", "vy", "yaw_rate", "slip_reference"}) any |= r.has(key);
   for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance"})
     if (r.has(key) && !any)
       fail("{}: '{}' is given but neither V (the wheelset's kinematics) nor creepage: friction needs one of them",

@@ -8,12 +8,16 @@
 // contact frame (t1, t2, n of PatchContact; t1 the rolling direction) it is the w of halfspace/creep.hpp. It is
 // evaluated at every element's contact point: the element's position in the plane moved along n to midway between
 // the wheel's and the rail's undeformed surfaces, so that the rolling radius varying across a wide or curved patch
-// (and the spin varying with the surface's slope) enters the slip of each element. The area's creepages (xi, eta,
+// (and the spin varying with the surface's slope) enters the slip of each element. Midway is where the wheel's
+// material sits in the deformed contact (two bodies of one material each yield h / 2 along n): a material point
+// turns about the axle at its deformed radius, and the flat half-space, whose tangential displacements leave out the
+// wheel's curvature, would miss that the compressed rim is shorter (-omega h / 2 per element) if the rigid slip were
+// taken on the undeformed wheel (SlipReference below; docs/design.md section 2). The area's creepages (xi, eta,
 // phi) are this slip at the plane's origin (the reference point) and the spin omega . n / |V|. Materials roll through
 // the contact toward -t1 when V > 0 (rolling direction +1), toward +t1 when V < 0.
 //
 // On a conformal area (wheelset/conformal.hpp) every element has its row's frame (e_x, t2(j), n(j)) and its contact
-// point is its point on the rail's surface moved along -n(j) by h / 2; the reference point is the grid's origin (at
+// point is its point on the rail's surface moved along -n(j) by h / 2 (by h with SlipReference::undeformed); the reference point is the grid's origin (at
 // a row, j0), its frame (e_x, t2(j0), n(j0)); the slip and traction components are along e_x and each row's t2, on
 // the unrolled grid (x, s), with the flat half-space's coefficients as for the normal problem (docs/design.md
 // section 2).
@@ -33,12 +37,20 @@
 
 namespace wrc {
 
+// Where the rigid slip of an element is taken along its normal: `deformed` (default) midway between the undeformed
+// surfaces, where the wheel's material point is in the deformed contact; `undeformed` on the wheel's undeformed
+// surface, h (the element's overlap) deeper, CONTACT's convention (its rigid slip on the actual wheel and rail
+// surfaces): the rolling radius is then larger by h / 2 cos(contact angle), xi smaller by about h / (2 r) (1.2e-4 on
+// S1002/60E1 under 100 kN).
+enum class SlipReference { deformed, undeformed };
+
 struct Kinematics {
   double V = 0;                  // forward speed of the wheelset centre along track x (m/s), != 0
   std::optional<double> omega;   // axle angular velocity about the wheelset's y axis (rad/s); none: V / r0, pure
                                  // rolling at the nominal radius
   double vy = 0;                 // lateral velocity of the centre (m/s)
   double yaw_rate = 0;           // rad/s, about track z
+  SlipReference slip_reference = SlipReference::deformed;
 };
 
 enum class RollingMethod { exact, fastsim };
@@ -52,7 +64,8 @@ struct RollingRequest {
   double tolerance = 1e-6;                       // the exact solver's (halfspace/rolling.hpp)
 };
 
-// Reads a call's rolling keys: V, omega, vy, yaw_rate (kinematics) or creepage = {xi, eta, phi} (with V optional),
+// Reads a call's rolling keys: V, omega, vy, yaw_rate, slip_reference ("deformed" | "undeformed") (kinematics) or
+// creepage = {xi, eta, phi} (with V optional),
 // and mu or mu_static and mu_kinetic, method ("exact" | "fastsim"), rolling_tolerance. Returns nothing when none of
 // V, omega, vy, yaw_rate, creepage, mu, mu_static, mu_kinetic, method is given (a frictionless call). Throws
 // wrc::Error naming the key on: V = 0 (the creepages are slip velocities divided by V: undefined), kinematics keys
