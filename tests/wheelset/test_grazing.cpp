@@ -24,6 +24,7 @@ std::shared_ptr<const Wheelset> paper_wheelset() {
   auto load = [](const char* name, ProfileKind kind) {
     LoadOptions o;
     o.kind = kind;
+    o.polyline = true;  // the poses below were found on the polyline through these points
     return load_profile_file(fmt::format("{}/{}.csv", WRC_TEST_PROFILES, name), o);
   };
   WheelsetProfiles p;

@@ -190,7 +190,10 @@ LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
     shift->finish();
   }
   if (auto crop = r.table("crop")) o.crop = read_crop(*crop);
-  o.smooth = r.number("smooth");
+  if (const OptionValue* v = r.value("smooth"); v && v->type == OptionValue::Type::boolean && !v->boolean)
+    o.polyline = true;  // smooth = false: keep the points as a polyline
+  else
+    o.smooth = r.number("smooth");
   if (o.smooth && !(*o.smooth >= 0 && *o.smooth <= 1.0))
     fail("{}: smooth = {} must be a smoothing length in metres, 0 .. 1 (0: interpolating cubic spline)", r.context(),
          *o.smooth);
@@ -234,6 +237,18 @@ RawProfile read_raw_profile(OptionReader& r) {
   raw.transforms = r.strings("transforms").value_or(std::vector<std::string>{});
   r.finish();
   return raw;
+}
+
+// A file's points without `smooth`: the interpolating cubic spline through them (docs/guide/profiles.md, "Profiles
+// as smooth curves": on coarse points it follows the true curve where a polyline puts all curvature in its vertices).
+// Points that no spline can pass through without folding back stay a polyline, with a warning that says so.
+Profile default_spline(Profile p) {
+  try {
+    return smooth_profile(p, 0.0);
+  } catch (const Error& e) {
+    p.transforms.push_back(fmt::format("kept as a polyline: no interpolating spline ({})", e.what()));
+    return p;
+  }
 }
 
 Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& source, const std::string& reader_id) {
@@ -299,7 +314,10 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
   transforms.insert(transforms.end(), p.transforms.begin(), p.transforms.end());
   p.transforms = std::move(transforms);
   p.metadata = std::move(raw.metadata);
-  if (o.smooth) p = smooth_profile(p, *o.smooth);
+  if (o.smooth)
+    p = smooth_profile(p, *o.smooth);
+  else if (!o.polyline)
+    p = default_spline(std::move(p));
   p.warnings = orientation_warnings(p);
   return p;
 }

@@ -65,6 +65,7 @@ struct LoadOptions {
   std::optional<std::string> reader;      // reader id; default: chosen by the file's extension
   std::optional<std::string> name;        // overrides the profile's name
   std::optional<double> smooth;           // smoothing spline, smoothing length (m; 0: interpolating; spline.hpp)
+  bool polyline = false;                  // smooth = false: a file's points stay a polyline (default: smooth = 0)
   std::vector<std::pair<std::string, std::string>> reader_options;
 };
 
