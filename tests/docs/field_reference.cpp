@@ -72,6 +72,8 @@ std::vector<Section> sections(const std::string& root) {
     WheelResult exact = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::exact, false));
     const WheelResult fastsim = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::fastsim, false));
     const WheelResult plain = solve_wheel(planar->contact_model(), c, *pws);
+    Trajectory tr(conformal);
+    const WheelResult step = tr.wheel(c, rolling(RollingMethod::fastsim, false));
     WheelResult failed = exact;
     failed.converged = false;
     failed.message = "example";
@@ -79,7 +81,8 @@ std::vector<Section> sections(const std::string& root) {
     out.push_back({"Wheel", "`ws:wheel{...}`, `tr:wheel{...}`; `wrc_wheel`, `wrc_trajectory_wheel`",
                    "One wheel with its vertical force prescribed.",
                    {[=](FieldSink& s) { describe(exact, s); }, [=](FieldSink& s) { describe(fastsim, s); },
-                    [=](FieldSink& s) { describe(plain, s); }, [=](FieldSink& s) { describe(failed, s); }}});
+                    [=](FieldSink& s) { describe(plain, s); }, [=](FieldSink& s) { describe(step, s); },
+                    [=](FieldSink& s) { describe(failed, s); }}});
   }
   // A rolling contact at a prescribed pose: kinematics and creepages, sensitivities; planar.
   {
@@ -91,11 +94,13 @@ std::vector<Section> sections(const std::string& root) {
     req.rolling = rolling(RollingMethod::fastsim, true);
     const ContactResult creep = evaluate_contact(cm, pose, *ws, req);
     const ContactResult plain = evaluate_contact(planar->contact_model(), pose, *pws);
+    Trajectory tr(conformal);
+    const ContactResult step = tr.contact(pose, rolling(RollingMethod::fastsim, false));
     out.push_back({"Contact", "`ws:contact{...}`, `tr:contact{...}`; `wrc_contact`, `wrc_trajectory_contact`",
                    "The contact at a prescribed pose; `sensitivity` only when asked for, the tangential fields only with "
                    "rolling keys (kinematics or creepages).",
                    {[=](FieldSink& s) { describe(kin, s, true); }, [=](FieldSink& s) { describe(creep, s, true); },
-                    [=](FieldSink& s) { describe(plain, s, false); }}});
+                    [=](FieldSink& s) { describe(plain, s, false); }, [=](FieldSink& s) { describe(step, s); }}});
   }
   // An equilibrium; failed and past flange climb.
   {
@@ -121,7 +126,9 @@ std::vector<Section> sections(const std::string& root) {
     r.elastic[1].flange_climb = "example";
     out.push_back({"Sweep case", "the entries of `ws:sweep{...}`",
                    "Each entry of a sweep is an equilibrium (above) with its case number and, with `rigid = true`, the "
-                   "rigid reference; with rolling keys the creep forces at the equilibrium pose.",
+                   "rigid reference; with rolling keys the creep forces at the equilibrium pose. Beside the entries "
+                   "the Lua binding sets `seconds`, `threads`, `threads_note` and `failed` (cases not converged) "
+                   "on the sweep's table.",
                    {[=](FieldSink& s) { describe_case(r, 0, s); }, [=](FieldSink& s) { describe_case(r, 1, s); }}});
   }
   // Rigid contact: roll free (forces), roll fixed; failed.
