@@ -53,3 +53,82 @@ TEST_CASE("fields: documentation reaches document() before each value, undocumen
       "doc z [N] z component", "number z", "end"};
   CHECK(r.log == expected);
 }
+
+// ---- DocSink (wrc/core/field_reference.hpp) ----
+
+#include "wrc/core/field_reference.hpp"
+
+namespace {
+
+// A result with a list and the two wheels' tables, as the engine's descriptions write them.
+void describe_wheels(FieldSink& out, bool second_patch_documented) {
+  for (const char* side : {"left", "right"}) {
+    out.begin(side, {"", "the wheel on that side"});
+    out.begin_list("patches", 2, {"", "contact areas"});
+    for (int k = 0; k < 2; ++k) {
+      out.item();
+      if (k == 1 && !second_patch_documented) out.number("pmax", 1.0);
+      else out.number("pmax", 1.0, {"Pa", "peak pressure"});
+      out.end();
+    }
+    out.end();
+    out.end();
+  }
+  out.number("Y", 0.0, {"N", "lateral force"});
+}
+
+std::vector<std::string> rows(const DocSink& s) {
+  std::vector<std::string> out;
+  for (const FieldEntry& e : s.entries()) out.push_back(e.lua + " " + e.c + " " + e.kind + " [" + e.unit + "] " + e.meaning);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("fields: DocSink records one pattern per field, list items as N and the wheels as <side>") {
+  DocSink s;
+  describe_wheels(s, true);
+  const std::vector<std::string> expected = {
+      "<side> <side> table [] the wheel on that side", "<side>.patches <side>.patches list [] contact areas",
+      "<side>.patches[N].pmax <side>.patches.N.pmax number [Pa] peak pressure", "Y Y number [N] lateral force"};
+  CHECK(rows(s) == expected);
+  CHECK(s.problems().empty());
+}
+
+TEST_CASE("fields: DocSink reports a field written without documentation, once") {
+  DocSink s;
+  describe_wheels(s, false);
+  REQUIRE(s.problems().size() == 1);
+  CHECK(s.problems()[0] == "<side>.patches.N.pmax: written without a FieldDoc (unit and meaning)");
+}
+
+TEST_CASE("fields: DocSink reports a number without a unit, a flag with one, an empty meaning, a path documented twice") {
+  DocSink s;
+  FieldSink& out = s;
+  out.number("a", 1.0, {"", "no unit"});
+  out.boolean("b", true, {"m", "a flag with a unit"});
+  out.string("c", "x", {"", ""});
+  out.number("d", 1.0, {"m", "one way"});
+  s.restart();
+  out.number("d", 1.0, {"m", "another way"});
+  out.integer("e", 3, {"-", "a count"});
+  const std::vector<std::string> expected = {
+      "a: a number without a unit (\"-\" for a pure number, an index or a count)",
+      "b: a boolean with the unit \"m\" (text, flags and lists have none)", "c: no meaning",
+      "d: documented two ways: number [m] \"one way\" and number [m] \"another way\""};
+  CHECK(s.problems() == expected);
+}
+
+TEST_CASE("fields: DocSink places a field first seen in a later description after the field written before it") {
+  DocSink s;
+  FieldSink& out = s;
+  out.boolean("converged", true, {"", "solved"});
+  out.number("z", 0.0, {"m", "height"});
+  s.restart();
+  out.boolean("converged", false, {"", "solved"});
+  out.string("error", "why", {"", "why not"});
+  out.number("z", 0.0, {"m", "height"});
+  REQUIRE(s.entries().size() == 3);
+  CHECK(s.entries()[1].c == "error");
+  CHECK(s.entries()[2].c == "z");
+}

@@ -185,7 +185,8 @@ wrc_status wrc_wheelset_conicity(wrc_wheelset* wheelset, const char* options, wr
 wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* options, wrc_result** out);
 
 /* ---- results: fields by path, as the Lua tables have them ("Y", "z", "left.force.z", "left.patches.1.pmax",
- * "left.patches.1.pressure"; lists are 1-based). Booleans and integers read as numbers. ---- */
+ * "left.patches.1.pressure"; lists are 1-based). Booleans and integers read as numbers. Every path of every result,
+ * with its type, unit, sign and meaning: docs/reference/fields.md (generated from the code that fills results). ---- */
 
 /* A number (or boolean: 0/1, or integer). */
 wrc_status wrc_result_number(const wrc_result* result, const char* path, double* value);

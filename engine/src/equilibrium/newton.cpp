@@ -495,35 +495,37 @@ std::string failure_message(const EquilibriumResult& e) {
 }
 
 void describe(const EquilibriumResult& e, FieldSink& out) {
-  out.boolean("converged", e.converged);
-  if (!e.message.empty()) out.string("error", e.message);
-  out.boolean("flange_climb", !e.flange_climb.empty());
-  if (!e.flange_climb.empty()) out.string("flange_climb_reason", e.flange_climb);
-  out.number("y", e.y);
-  out.number("yaw", e.yaw);
-  out.number("Q", e.Q);
-  out.number("z", e.z);
-  out.number("roll", e.roll);
-  out.number("Y", e.Y);
-  out.number("My", e.My);
-  out.number("Mz", e.Mz);
-  out.number("Y_Q", e.Q > 0 ? e.Y / e.Q : 0.0);
-  out.integer("iterations", e.iterations);
-  out.integer("evaluations", e.evaluations);
-  out.begin("residual");
-  out.number("force", e.residual_force);
-  out.number("moment", e.residual_moment);
+  out.boolean("converged", e.converged, {"", "the equilibrium was found"});
+  if (!e.message.empty()) out.string("error", e.message, {"", "why it was not (only when not converged)"});
+  out.boolean("flange_climb", !e.flange_climb.empty(), {"", "a wheel is past flange climb"});
+  if (!e.flange_climb.empty())
+    out.string("flange_climb_reason", e.flange_climb, {"", "which wheel and why (only when flange_climb)"});
+  out.number("y", e.y, {"m", "lateral position of the wheelset centre, + toward the left rail"});
+  out.number("yaw", e.yaw, {"rad", "yaw, > 0 counter-clockwise seen from above"});
+  out.number("Q", e.Q, {"N", "vertical load on the wheelset"});
+  out.number("z", e.z, {"m", "solved height of the centre (or the last iterate), < 0 pressed into the rails"});
+  out.number("roll", e.roll, {"rad", "solved roll (or the last iterate), > 0 lifts the left wheel"});
+  out.number("Y", e.Y, {"N", "lateral force a support at the centre applies, -sum Fy: > 0 pushes toward the left rail"});
+  out.number("My", e.My, {"N m", "moment about y the support applies, -sum My"});
+  out.number("Mz", e.Mz, {"N m", "moment about z the support applies, -sum Mz"});
+  out.number("Y_Q", e.Q > 0 ? e.Y / e.Q : 0.0, {"-", "derailment quotient Y / Q"});
+  out.integer("iterations", e.iterations, {"-", "Newton iterations"});
+  out.integer("evaluations", e.evaluations, {"-", "contact evaluations, line-search trials included"});
+  out.begin("residual", {"", "the equilibrium's residuals at the result"});
+  out.number("force", e.residual_force, {"N", "sum Fz - Q"});
+  out.number("moment", e.residual_moment, {"N m", "sum Mx"});
   out.end();
   for (int s : {kLeft, kRight}) {
-    out.begin(side_name(s));
+    out.begin(side_name(s), {"", "the contact of the wheel on that side (left: +y)"});
     describe(e.contact.wheel[s], out);
     out.end();
   }
   // Only with both wheels loaded: a lifted wheel has no rolling radius (Δr would be a wheel radius).
   if (e.contact.wheel[kLeft].force.z() > 0 && e.contact.wheel[kRight].force.z() > 0)
-    out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius);
-  out.vec3("force", e.contact.force);
-  out.vec3("moment", e.contact.moment);
+    out.number("rolling_radius_difference", e.contact.wheel[kLeft].rolling_radius - e.contact.wheel[kRight].rolling_radius,
+               {"m", "left minus right wheel's rolling radius (only with both wheels loaded)"});
+  out.vec3("force", e.contact.force, {"N", "contact forces of both wheels summed (track frame)"});
+  out.vec3("moment", e.contact.moment, {"N m", "their moment about the wheelset centre (track axes)"});
   describe(e.contact.creep, out);
 }
 

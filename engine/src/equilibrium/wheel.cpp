@@ -287,12 +287,12 @@ std::string failure_message(const WheelResult& w) {
 
 void describe(const WheelResult& w, FieldSink& out) {
   describe(w.wheel, out);
-  out.boolean("converged", w.converged);
-  if (!w.message.empty()) out.string("error", w.message);
-  out.number("z", w.z);
-  out.number("approach", w.approach);
-  out.number("residual", w.residual);
-  out.integer("iterations", w.iterations);
+  out.boolean("converged", w.converged, {"", "the vertical force was reached"});
+  if (!w.message.empty()) out.string("error", w.message, {"", "why it was not (only when not converged)"});
+  out.number("z", w.z, {"m", "solved height of the wheelset centre (or the last iterate)"});
+  out.number("approach", w.approach, {"m", "how far z is below the height at which the wheel just touches its rail"});
+  out.number("residual", w.residual, {"N", "the wheel's vertical force minus the prescribed Fz"});
+  out.integer("iterations", w.iterations, {"-", "contact evaluations"});
 }
 
 }  // namespace wrc

@@ -188,13 +188,13 @@ StrategyCheckOptions read_strategy_check_options(OptionReader& r) {
 }
 
 void describe(const StrategyCheckResult& r, FieldSink& out) {
-  out.integer("poses", r.poses);
-  out.integer("threads", r.threads);
-  out.integer("contact_poses", r.contact_poses);
-  out.integer("patches", r.patches);
-  out.integer("tests", r.tests);
-  out.integer("brute_tests", r.brute_tests);
-  out.number("seconds", r.seconds);
+  out.integer("poses", r.poses, {"-", "poses checked (all equal to brute force)"});
+  out.integer("threads", r.threads, {"-", "worker threads used"});
+  out.integer("contact_poses", r.contact_poses, {"-", "poses where brute force found an inter-penetration area"});
+  out.integer("patches", r.patches, {"-", "areas found over all poses, both wheels"});
+  out.integer("tests", r.tests, {"-", "closed-form line-cone tests of the strategy"});
+  out.integer("brute_tests", r.brute_tests, {"-", "closed-form tests of brute force"});
+  out.number("seconds", r.seconds, {"s", "wall time"});
 }
 
 }  // namespace wrc

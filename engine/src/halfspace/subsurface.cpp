@@ -6,6 +6,7 @@
 #include "wrc/core/error.hpp"
 
 #include <fftw3.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
@@ -14,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <tuple>
 
 namespace wrc::halfspace {
 namespace {
@@ -450,51 +452,70 @@ const char* regime_name(ShakedownRegime r) {
 
 namespace {
 
-void describe_max(FieldSink& out, std::string_view name, const StressMaximum& m, bool with_z) {
-  const std::string key(name);
-  out.number(key, m.value);
-  out.number(key + "_x", m.x);
-  out.number(key + "_y", m.y);
-  if (with_z) out.number(key + "_z", m.z);
+// The keys of a maximum: its value, its place (x, y in the grid's frame) and its depth (over all depths).
+struct MaxKeys {
+  const char *value, *x, *y, *z;
+};
+constexpr MaxKeys kVonMises{"von_mises_max", "von_mises_max_x", "von_mises_max_y", "von_mises_max_z"};
+constexpr MaxKeys kTresca{"tresca_max", "tresca_max_x", "tresca_max_y", "tresca_max_z"};
+
+// `what` names the stress; the depth only for the maximum over all depths (with_z).
+void describe_max(FieldSink& out, const MaxKeys& k, const StressMaximum& m, bool with_z, std::string_view what) {
+  const char* where = with_z ? "over all depths" : "at this depth";
+  out.number(k.value, m.value, {"Pa", fmt::format("largest {} {}", what, where).c_str()});
+  out.number(k.x, m.x, {"m", fmt::format("x of the largest {} (grid frame, along t1)", what).c_str()});
+  out.number(k.y, m.y, {"m", fmt::format("y of the largest {} (grid frame, along t2)", what).c_str()});
+  if (with_z) out.number(k.z, m.z, {"m", fmt::format("depth of the largest {}", what).c_str()});
 }
 
 void describe(const SubsurfaceDepth& d, const Grid& g, FieldSink& out) {
-  out.number("z", d.z);
-  describe_max(out, "von_mises_max", d.von_mises_max, false);
-  describe_max(out, "tresca_max", d.tresca_max, false);
+  out.number("z", d.z, {"m", "depth below the surface, into the stressed body"});
+  describe_max(out, kVonMises, d.von_mises_max, false, "von Mises stress");
+  describe_max(out, kTresca, d.tresca_max, false, "Tresca stress");
   if (d.sxx.empty()) return;
-  const std::pair<const char*, const std::vector<double>*> grids[] = {
-      {"sigma_xx", &d.sxx}, {"sigma_yy", &d.syy}, {"sigma_zz", &d.szz}, {"sigma_xy", &d.sxy},
-      {"sigma_xz", &d.sxz}, {"sigma_yz", &d.syz}, {"sigma_1", &d.s1},   {"sigma_2", &d.s2},
-      {"sigma_3", &d.s3},   {"von_mises", &d.von_mises}, {"tresca", &d.tresca}};
-  for (const auto& [name, v] : grids) out.grid(name, v->data(), g.nx, g.ny);
+  // Stresses per element of the load's grid, tension positive; x along t1, y along t2, z the depth.
+  const std::tuple<const char*, const std::vector<double>*, const char*> grids[] = {
+      {"sigma_xx", &d.sxx, "normal stress along x, tension positive (x along t1, y along t2, z the depth)"},
+      {"sigma_yy", &d.syy, "normal stress along y, tension positive"},
+      {"sigma_zz", &d.szz, "normal stress along the depth z, tension positive (-p at the surface)"},
+      {"sigma_xy", &d.sxy, "shear stress xy"},
+      {"sigma_xz", &d.sxz, "shear stress xz"},
+      {"sigma_yz", &d.syz, "shear stress yz"},
+      {"sigma_1", &d.s1, "largest principal stress"},
+      {"sigma_2", &d.s2, "middle principal stress"},
+      {"sigma_3", &d.s3, "smallest principal stress"},
+      {"von_mises", &d.von_mises, "von Mises stress"},
+      {"tresca", &d.tresca, "Tresca stress sigma_1 - sigma_3"}};
+  for (const auto& [name, v, meaning] : grids) out.grid(name, v->data(), g.nx, g.ny, {"Pa", meaning});
   std::vector<double> tau(d.tresca.size());
   for (std::size_t k = 0; k < tau.size(); ++k) tau[k] = 0.5 * d.tresca[k];
-  out.grid("max_shear", tau.data(), g.nx, g.ny);
+  out.grid("max_shear", tau.data(), g.nx, g.ny, {"Pa", "maximum shear stress tau_1 = (sigma_1 - sigma_3) / 2"});
 }
 
 }  // namespace
 
 void describe(const SubsurfaceResult& r, FieldSink& out) {
-  out.string("body", body_name(r.body));
-  out.string("method", method_name(r.method));
-  out.number("nu", r.nu);
-  describe_max(out, "von_mises_max", r.von_mises_max, true);
-  describe_max(out, "tresca_max", r.tresca_max, true);
-  out.number("tau1_max", 0.5 * r.tresca_max.value);
+  out.string("body", body_name(r.body), {"", "the stressed body: wheel (the tractions as solved) or rail (reversed)"});
+  out.string("method", method_name(r.method), {"", "the method used: fft or direct"});
+  out.number("nu", r.nu, {"-", "Poisson's ratio"});
+  describe_max(out, kVonMises, r.von_mises_max, true, "von Mises stress");
+  describe_max(out, kTresca, r.tresca_max, true, "Tresca stress");
+  out.number("tau1_max", 0.5 * r.tresca_max.value, {"Pa", "largest maximum shear stress tau_1 (at tresca_max's place)"});
   const ShakedownPoint& s = r.shakedown;
-  out.begin("shakedown");
-  out.number("p0", s.p0);
-  out.number("shear_yield", s.shear_yield);
-  out.number("load_factor", s.load_factor);
-  out.number("traction_coefficient", s.traction_coefficient);
-  if (std::isfinite(s.elastic_limit)) out.number("elastic_limit", s.elastic_limit);
-  out.number("subsurface_limit", s.subsurface_limit);
-  if (std::isfinite(s.surface_limit)) out.number("surface_limit", s.surface_limit);
-  out.string("map", map_name(s.map));
-  out.string("regime", regime_name(s.regime));
+  out.begin("shakedown", {"", "the patch's point on Johnson's shakedown map"});
+  out.number("p0", s.p0, {"Pa", "the patch's peak pressure"});
+  out.number("shear_yield", s.shear_yield, {"Pa", "shear yield stress k"});
+  out.number("load_factor", s.load_factor, {"-", "p0 / k"});
+  out.number("traction_coefficient", s.traction_coefficient, {"-", "mu = |(Fx, Fy)| / Fn of the tractions (0 without load)"});
+  if (std::isfinite(s.elastic_limit))
+    out.number("elastic_limit", s.elastic_limit, {"-", "p0 / k at first yield, sqrt(3) p0 / von_mises_max (absent without stress)"});
+  out.number("subsurface_limit", s.subsurface_limit, {"-", "the map's subsurface shakedown limit of p0 / k"});
+  if (std::isfinite(s.surface_limit))
+    out.number("surface_limit", s.surface_limit, {"-", "the surface limit 1 / mu (absent for mu = 0)"});
+  out.string("map", map_name(s.map), {"", "which of Johnson's maps: point or line contact"});
+  out.string("regime", regime_name(s.regime), {"", "elastic, elastic shakedown, plastic shakedown or ratchetting"});
   out.end();
-  out.begin_list("depths", r.depths.size());
+  out.begin_list("depths", r.depths.size(), {"", "one entry per requested depth, in the request's order"});
   for (const SubsurfaceDepth& d : r.depths) {
     out.item();
     describe(d, r.grid, out);

@@ -308,13 +308,14 @@ DeltaRFunction read_delta_r(OptionReader& r) {
 }
 
 void describe(const ConicityResult& r, FieldSink& out) {
-  out.string("method", to_string(r.method));
-  out.number("centre", r.centre);
-  out.numbers("yhat", r.yhat.data(), r.yhat.size());
-  out.numbers("tan_gamma", r.tan_gamma.data(), r.tan_gamma.size());
-  out.numbers("y_min", r.y_min.data(), r.y_min.size());
-  out.numbers("y_max", r.y_max.data(), r.y_max.size());
-  out.numbers("wavelength", r.wavelength.data(), r.wavelength.size());
+  out.string("method", to_string(r.method), {"", "integral, harmonic, regression or simple (EN 15302)"});
+  out.number("centre", r.centre, {"m", "y0, where the rolling radius difference rises through zero"});
+  out.numbers("yhat", r.yhat.data(), r.yhat.size(), {"m", "the amplitudes"});
+  out.numbers("tan_gamma", r.tan_gamma.data(), r.tan_gamma.size(), {"-", "equivalent conicity tan(gamma_e), one per amplitude"});
+  out.numbers("y_min", r.y_min.data(), r.y_min.size(), {"m", "lowest y the method used (integral: the turning point)"});
+  out.numbers("y_max", r.y_max.data(), r.y_max.size(), {"m", "highest y the method used (integral: the turning point)"});
+  out.numbers("wavelength", r.wavelength.data(), r.wavelength.size(),
+              {"m", "Klingel wavelength of tan_gamma with r0 and contact_distance"});
 }
 
 }  // namespace wrc

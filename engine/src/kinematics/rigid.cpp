@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace wrc {
 namespace {
@@ -453,41 +454,48 @@ RigidOptions read_rigid_options(OptionReader& r) {
 }
 
 void describe(const RigidContactPoint& c, FieldSink& out) {
-  out.number("gap", c.gap);
-  out.integer("line", c.line + 1);
-  out.vec3("point", c.point);
-  out.vec3("wheel_point", c.wheel_point);
-  out.vec3("normal", c.normal);
-  out.number("angle", c.angle);
-  out.number("rolling_radius", c.rolling_radius);
-  for (auto [key, v] : {std::pair{"wheel_profile", c.wheel_profile}, {"rail_profile", c.rail_profile}}) {
-    out.begin(key);
-    out.number("y", v.x());
-    out.number("z", v.y());
+  out.number("gap", c.gap, {"m", "gap of the point: 0 at the touching point, <= two_point_tolerance at a second one"});
+  out.integer("line", c.line + 1, {"-", "rail line of the gap's minimum (1-based)"});
+  out.vec3("point", c.point, {"m", "the contact point (track frame)"});
+  out.vec3("wheel_point", c.wheel_point, {"m", "the contact point in the wheelset frame"});
+  out.vec3("normal", c.normal, {"-", "the wheel's unit normal there, into the wheel (track frame)"});
+  out.number("angle", c.angle, {"rad", "contact angle, > 0 tilted toward the track centre"});
+  out.number("rolling_radius", c.rolling_radius, {"m", "wheel radius at the point"});
+  const std::tuple<const char*, Eigen::Vector2d, const char*> profiles[] = {
+      {"wheel_profile", c.wheel_profile, "the point on the wheel profile as loaded: y = s from the tape circle, z"},
+      {"rail_profile", c.rail_profile, "the point on the rail profile as loaded (before cant and placement)"}};
+  for (const auto& [key, v, meaning] : profiles) {
+    out.begin(key, {"", meaning});
+    out.number("y", v.x(), {"m", "lateral coordinate in the profile's frame, + toward the field side"});
+    out.number("z", v.y(), {"m", "vertical coordinate in the profile's frame"});
     out.end();
   }
-  out.number("wheel_curvature", c.wheel_curvature);
-  out.number("rail_curvature", c.rail_curvature);
-  if (c.wheel_curvature != 0) out.number("wheel_lateral_radius", 1 / c.wheel_curvature);
-  if (c.rail_curvature != 0) out.number("rail_lateral_radius", 1 / c.rail_curvature);
+  out.number("wheel_curvature", c.wheel_curvature, {"1/m", "lateral curvature of the wheel profile there (> 0 convex)"});
+  out.number("rail_curvature", c.rail_curvature, {"1/m", "lateral curvature of the rail profile there (> 0 convex)"});
+  if (c.wheel_curvature != 0)
+    out.number("wheel_lateral_radius", 1 / c.wheel_curvature, {"m", "1 / wheel_curvature (only when not 0)"});
+  if (c.rail_curvature != 0)
+    out.number("rail_lateral_radius", 1 / c.rail_curvature, {"m", "1 / rail_curvature (only when not 0)"});
 }
 
 namespace {
 
 void describe_wheel(const RigidResult& r, const RigidWheel& w, FieldSink& out) {
-  out.boolean("lifted", w.lifted);
+  out.boolean("lifted", w.lifted, {"", "no rail under the wheel: no contact point (the wheel's other fields absent)"});
   if (w.lifted) return;
-  out.number("z", w.z);
-  out.number("gap", w.gap);
-  out.boolean("two_point", w.contacts.size() > 1);
-  out.vec3("point", w.point);
-  out.vec3("normal", w.normal);
-  out.number("angle", w.angle);
-  out.number("rolling_radius", w.rolling_radius);
-  if (r.has_forces()) out.number("normal_force", w.normal_force);
-  out.number("overlap", w.overlap);
-  out.integer("line", w.line + 1);
-  out.begin_list("contacts", w.contacts.size());
+  out.number("z", w.z, {"m", "height of the wheelset centre at which this wheel touches"});
+  out.number("gap", w.gap, {"m", "roll fixed: the wheel's clearance when the wheelset rests at its z"});
+  out.boolean("two_point", w.contacts.size() > 1, {"", "the wheel has a second contact point"});
+  out.vec3("point", w.point, {"m", "contact point on the deepest rail line (track frame)"});
+  out.vec3("normal", w.normal, {"-", "unit normal there, into the wheel (track frame)"});
+  out.number("angle", w.angle, {"rad", "contact angle, > 0 tilted toward the track centre"});
+  out.number("rolling_radius", w.rolling_radius, {"m", "wheel radius at the contact point"});
+  if (r.has_forces())
+    out.number("normal_force", w.normal_force, {"N", "normal force from the force balance (roll free and converged)"});
+  out.number("overlap", w.overlap, {"m", "radial overlap at the deepest point (0 at the solution)"});
+  out.integer("line", w.line + 1, {"-", "the deepest rail line (1-based)"});
+  out.begin_list("contacts", w.contacts.size(),
+                 {"", "the contact points between the lines: the touching point first, then by increasing gap"});
   for (const RigidContactPoint& c : w.contacts) {
     out.item();
     describe(c, out);
@@ -499,24 +507,28 @@ void describe_wheel(const RigidResult& r, const RigidWheel& w, FieldSink& out) {
 }  // namespace
 
 void describe(const RigidResult& r, FieldSink& out) {
-  out.boolean("converged", r.converged);
-  out.boolean("tension", r.tension);
-  if (!r.message.empty()) out.string("error", r.message);
-  out.string("roll_mode", r.roll_mode == RollMode::free ? "free" : "fixed");
-  out.number("y", r.y);
-  out.number("yaw", r.yaw);
-  out.number("Q", r.Q);
-  out.number("z", r.z);
-  out.number("roll", r.roll);
-  if (r.touching()) out.number("rolling_radius_difference", r.rolling_radius_difference());
+  out.boolean("converged", r.converged, {"", "both wheels touch (the kinematic constraint holds)"});
+  out.boolean("tension", r.tension,
+              {"", "a wheel would need a pulling normal force to carry Q with no roll moment: no equilibrium"});
+  if (!r.message.empty()) out.string("error", r.message, {"", "why there is no solution (only then)"});
+  out.string("roll_mode", r.roll_mode == RollMode::free ? "free" : "fixed",
+             {"", "free (roll solved: both wheels touch) or fixed (roll held)"});
+  out.number("y", r.y, {"m", "lateral position of the wheelset centre, + toward the left rail"});
+  out.number("yaw", r.yaw, {"rad", "yaw, > 0 counter-clockwise seen from above"});
+  out.number("Q", r.Q, {"N", "vertical load the normal forces carry (roll free)"});
+  out.number("z", r.z, {"m", "height of the centre at which the wheelset rests on the rails"});
+  out.number("roll", r.roll, {"rad", "roll, > 0 lifts the left wheel"});
+  if (r.touching())
+    out.number("rolling_radius_difference", r.rolling_radius_difference(),
+               {"m", "left minus right rolling radius at the touching points (when both touch)"});
   if (r.has_forces()) {
-    out.number("Y", r.Y);
-    out.number("My", r.My);
-    out.number("Mz", r.Mz);
-    out.number("Y_Q", r.Y / r.Q);
+    out.number("Y", r.Y, {"N", "lateral force a support at the centre applies, -sum Fy (roll free and converged)"});
+    out.number("My", r.My, {"N m", "moment about y the support applies, -sum My (roll free and converged)"});
+    out.number("Mz", r.Mz, {"N m", "moment about z the support applies, -sum Mz (roll free and converged)"});
+    out.number("Y_Q", r.Y / r.Q, {"-", "Y / Q (roll free and converged)"});
   }
   for (int s : {kLeft, kRight}) {
-    out.begin(side_name(s));
+    out.begin(side_name(s), {"", "the rigid contact of the wheel on that side (left: +y)"});
     describe_wheel(r, r.wheel[s], out);
     out.end();
   }

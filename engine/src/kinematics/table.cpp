@@ -305,41 +305,45 @@ WheelsetConicityOptions read_wheelset_conicity_options(OptionReader& r) {
 
 void describe(const WheelsetConicity& c, FieldSink& out) {
   describe(c.conicity, out);
-  out.string("roll_mode", c.table.roll_mode == RollMode::free ? "free" : "fixed");
-  out.begin("dr");
-  out.numbers("y", c.dr.y.data(), c.dr.y.size());
-  out.numbers("dr", c.dr.dr.data(), c.dr.dr.size());
+  out.string("roll_mode", c.table.roll_mode == RollMode::free ? "free" : "fixed",
+             {"", "roll of the table's rows: fixed (held at 0 unless given) or free"});
+  out.begin("dr", {"", "the rolling-radius difference table the conicity used"});
+  out.numbers("y", c.dr.y.data(), c.dr.y.size(), {"m", "lateral positions of the wheelset, + toward the left rail"});
+  out.numbers("dr", c.dr.dr.data(), c.dr.dr.size(), {"m", "rolling radius difference r_left - r_right at each y"});
   std::vector<long long> f(c.dr.flange.begin(), c.dr.flange.end());
-  out.integers("flange", f.data(), f.size());
+  out.integers("flange", f.data(), f.size(), {"-", "1 where a touching point is steeper than flange_angle (flange contact)"});
   out.end();
 }
 
 void describe(const GeometryTable& t, FieldSink& out) {
-  out.number("yaw", t.yaw);
-  out.string("roll_mode", t.roll_mode == RollMode::free ? "free" : "fixed");
-  out.number("roll", t.roll);
-  out.number("seconds", t.seconds);
-  out.integer("threads", t.threads);
-  if (!t.threads_note.empty()) out.string("threads_note", t.threads_note);
-  out.begin_list("rows", t.rows.size());
+  out.number("yaw", t.yaw, {"rad", "yaw of every row, > 0 counter-clockwise seen from above"});
+  out.string("roll_mode", t.roll_mode == RollMode::free ? "free" : "fixed", {"", "free (roll solved) or fixed (held)"});
+  out.number("roll", t.roll, {"rad", "the held roll (roll fixed)"});
+  out.number("seconds", t.seconds, {"s", "wall time"});
+  out.integer("threads", t.threads, {"-", "worker threads used"});
+  if (!t.threads_note.empty())
+    out.string("threads_note", t.threads_note, {"", "why fewer threads ran than asked for (only then)"});
+  out.begin_list("rows", t.rows.size(), {"", "one rigid contact result per y, in order"});
   for (const RigidResult& r : t.rows) {
     out.item();
     describe(r, out);
     out.end();
   }
   out.end();
-  out.begin_list("jumps", t.jumps.size());
+  out.begin_list("jumps", t.jumps.size(), {"", "jumps of a wheel's touching point between rows, by y then side"});
   for (const ContactJump& j : t.jumps) {
     out.item();
-    out.string("side", side_name(j.side));
-    out.number("y_before", j.y_before);
-    out.number("y_after", j.y_after);
-    out.number("wheel_jump", j.after.wheel_profile.x() - j.before.wheel_profile.x());
-    out.number("rail_jump", j.after.rail_profile.x() - j.before.rail_profile.x());
-    out.begin("before");
+    out.string("side", side_name(j.side), {"", "the wheel: left or right"});
+    out.number("y_before", j.y_before, {"m", "y just before the jump (bisected to 1e-8 m)"});
+    out.number("y_after", j.y_after, {"m", "y just after the jump"});
+    out.number("wheel_jump", j.after.wheel_profile.x() - j.before.wheel_profile.x(),
+               {"m", "move of the touching point along the wheel profile (profile y after minus before)"});
+    out.number("rail_jump", j.after.rail_profile.x() - j.before.rail_profile.x(),
+               {"m", "move of the touching point along the rail profile (profile y after minus before)"});
+    out.begin("before", {"", "the touching point before the jump"});
     describe(j.before, out);
     out.end();
-    out.begin("after");
+    out.begin("after", {"", "the touching point after the jump"});
     describe(j.after, out);
     out.end();
     out.end();

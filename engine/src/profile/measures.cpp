@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace wrc {
 namespace {
@@ -60,14 +61,19 @@ FlangeMeasures flange_measures(const Profile& p, double tape_offset, double sd_h
 }
 
 void describe(const FlangeMeasures& m, FieldSink& out) {
-  out.number("Sh", m.Sh);
-  out.number("Sd", m.Sd);
-  out.number("qR", m.qR);
-  out.number("tape_offset", m.tape_offset);
-  for (auto [key, v] : {std::pair{"tape", m.tape}, {"tip", m.tip}, {"sd_point", m.sd_point}, {"qr_point", m.qr_point}}) {
-    out.begin(key);
-    out.number("y", v.x());
-    out.number("z", v.y());
+  out.number("Sh", m.Sh, {"m", "flange height: radial distance from the tape circle to the flange tip"});
+  out.number("Sd", m.Sd, {"m", "flange thickness: inner face to the flange face 10 mm radially outward of the tape circle"});
+  out.number("qR", m.qR, {"m", "flange slope measure: lateral distance of the Sd point and the face point 2 mm radially inward of the tip"});
+  out.number("tape_offset", m.tape_offset, {"m", "the tape circle's distance from the inner face (at s = -tape_offset)"});
+  const std::tuple<const char*, Eigen::Vector2d, const char*> points[] = {
+      {"tape", m.tape, "the tape circle point (s = 0)"},
+      {"tip", m.tip, "the flange tip (the lowest point of the flange)"},
+      {"sd_point", m.sd_point, "the flange face point of Sd"},
+      {"qr_point", m.qr_point, "the flange face point of qR, 2 mm radially inward of the tip"}};
+  for (const auto& [key, v, meaning] : points) {
+    out.begin(key, {"", meaning});
+    out.number("y", v.x(), {"m", "s, lateral from the tape circle, + toward the field side (profile frame)"});
+    out.number("z", v.y(), {"m", "radius offset with the sign of a height (profile frame)"});
     out.end();
   }
 }

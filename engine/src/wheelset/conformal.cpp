@@ -329,20 +329,22 @@ class ConformalAreaSurface final : public AreaSurface {
       s[static_cast<std::size_t>(j)] = surf.s0 + grid.y(j);
       angle[static_cast<std::size_t>(j)] = contact_angle(pc.side, surf.normal(j));
     }
-    out.begin("rows");
-    out.numbers("s", s.data(), s.size());
-    out.numbers("y", surf.y.data(), surf.y.size());
-    out.numbers("z", surf.z.data(), surf.z.size());
-    out.numbers("normal_y", surf.normal_y.data(), surf.normal_y.size());
-    out.numbers("normal_z", surf.normal_z.data(), surf.normal_z.size());
-    out.numbers("angle", angle.data(), angle.size());
+    out.begin("rows", {"", "conformal: the grid's rows across the rail profile, one value per row"});
+    out.numbers("s", s.data(), s.size(), {"m", "arc length of the row along the rail profile (from its first line)"});
+    out.numbers("y", surf.y.data(), surf.y.size(), {"m", "y of the row's reference point on the rail surface (track frame)"});
+    out.numbers("z", surf.z.data(), surf.z.size(), {"m", "z of the row's reference point on the rail surface (track frame)"});
+    out.numbers("normal_y", surf.normal_y.data(), surf.normal_y.size(),
+                {"-", "y component of the row's unit normal from the rail into the wheel"});
+    out.numbers("normal_z", surf.normal_z.data(), surf.normal_z.size(),
+                {"-", "z component of the row's unit normal from the rail into the wheel"});
+    out.numbers("angle", angle.data(), angle.size(), {"rad", "contact angle of the row's normal"});
     out.end();
     if (pc.solution.pressure.empty()) return;
     std::vector<double> grid_angle(static_cast<std::size_t>(grid.size()));
     for (int j = 0; j < grid.ny; ++j)
       std::fill_n(grid_angle.begin() + static_cast<std::ptrdiff_t>(grid.index(0, j)), grid.nx,
                   angle[static_cast<std::size_t>(j)]);
-    out.grid("angles", grid_angle.data(), grid.nx, grid.ny);
+    out.grid("angles", grid_angle.data(), grid.nx, grid.ny, {"rad", "conformal: contact angle of each element (its row's)"});
   }
 };
 

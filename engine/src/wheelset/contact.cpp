@@ -340,8 +340,8 @@ void drop_grids(ContactResult& result) {
 
 void describe(const PatchContact& pc, FieldSink& out) {
   if (!pc.located.empty()) describe_patch_fields(pc.located.front(), out);
-  else out.string("side", side_name(pc.side));
-  out.begin_list("segments", pc.segments.size());
+  else out.string("side", side_name(pc.side), {"", "the wheel of the area: left or right"});
+  out.begin_list("segments", pc.segments.size(), {"", "the inter-penetration segments of the area's rail lines"});
   for (const Segment& s : pc.segments) {
     out.item();
     describe(s, out);
@@ -349,56 +349,69 @@ void describe(const PatchContact& pc, FieldSink& out) {
   }
   out.end();
   const halfspace::NormalSolution& s = pc.solution;
-  out.integer("merged", static_cast<long long>(pc.located.size()));
-  out.number("normal_force", pc.normal_force);
-  out.number("pressure_integral", s.force);  // sum p dA: the normal force, or more where the normals turn
-  out.vec3("force", pc.force);
-  out.vec3("moment", pc.moment);
-  out.vec3("point", pc.point);
-  out.vec3("normal", pc.normal);
-  out.number("angle", pc.angle);
+  out.integer("merged", static_cast<long long>(pc.located.size()),
+              {"-", "inter-penetration patches solved together as this area"});
+  out.number("normal_force", pc.normal_force,
+             {"N", "normal force of the area (conformal: the magnitude of its pressure's resultant)"});
+  out.number("pressure_integral", s.force,  // sum p dA: the normal force, or more where the normals turn
+             {"N", "sum of p dA: the normal force on a plane, more than normal_force where the normals turn"});
+  out.vec3("force", pc.force, {"N", "force of the rail on the wheel through this area, creep force included (track frame)"});
+  out.vec3("moment", pc.moment, {"N m", "moment of the area's tractions about the wheelset centre (track axes)"});
+  out.vec3("point", pc.point, {"m", "centre of pressure (track frame)"});
+  out.vec3("normal", pc.normal,
+           {"-", "unit normal from the rail into the wheel (track frame; conformal: direction of the normal resultant)"});
+  out.number("angle", pc.angle, {"rad", "contact angle of the normal, > 0 tilted toward the track centre"});
   const AreaSurface& surface = surface_of(pc);
-  out.string("surface", surface.name());
-  out.number("angle_min", pc.angle_min);
-  out.number("angle_max", pc.angle_max);
-  out.number("nominal_angle", pc.nominal_angle);
-  out.number("area", s.area);
-  out.number("pmax", s.max_pressure);
-  out.integer("elements", s.elements_in_contact);
-  out.integer("regions", pc.regions);
-  out.number("penetration", pc.penetration);
-  out.number("rolling_radius", pc.rolling_radius);
-  out.integer("iterations", s.iterations);
-  out.number("complementarity", s.residual.relative);
-  out.begin("frame");  // the contact plane: grid coordinates (u, v) are at origin + u t1 + v t2
-  out.vec3("origin", pc.origin);
-  out.vec3("t1", pc.t1);
-  out.vec3("t2", pc.t2);
+  out.string("surface", surface.name(), {"", "the potential contact area: planar (a plane) or conformal (curved)"});
+  out.number("angle_min", pc.angle_min, {"rad", "smallest contact angle of the directions the pressure acts in (planar: angle)"});
+  out.number("angle_max", pc.angle_max, {"rad", "largest contact angle of the directions the pressure acts in (planar: angle)"});
+  out.number("nominal_angle", pc.nominal_angle, {"rad", "contact angle of the wheel's normal at the paper's nominal point"});
+  out.number("area", s.area, {"m^2", "contact area: elements in contact times the element area"});
+  out.number("pmax", s.max_pressure, {"Pa", "peak pressure"});
+  out.integer("elements", s.elements_in_contact, {"-", "elements in contact (p > 0)"});
+  out.integer("regions", pc.regions,
+              {"-", "separate contact regions of the area (p > 0, 8-connected, each >= 0.1 % of the force)"});
+  out.number("penetration", pc.penetration, {"m", "deepest undeformed inter-penetration of the area (max h)"});
+  out.number("rolling_radius", pc.rolling_radius, {"m", "wheel radius at the centre of pressure"});
+  out.integer("iterations", s.iterations, {"-", "iterations of the normal solver (CG, or active set for the dense one)"});
+  out.number("complementarity", s.residual.relative,
+             {"-", "relative residual of the normal solution: max |gap| in contact or max overlap outside / max(h + approach)"});
+  // The contact plane: grid coordinates (u, v) are at origin + u t1 + v t2.
+  out.begin("frame", {"", "the contact plane (conformal: the local frame at the grid's origin): grid (u, v) at origin + u t1 + v t2"});
+  out.vec3("origin", pc.origin, {"m", "origin of the frame, the area's reference point (track frame)"});
+  out.vec3("t1", pc.t1, {"-", "unit rolling direction, the grid's x axis (track frame)"});
+  out.vec3("t2", pc.t2, {"-", "unit lateral direction n x t1, the grid's y axis (track frame)"});
   out.end();
-  out.begin("grid");
-  out.integer("nx", s.grid.nx);
-  out.integer("ny", s.grid.ny);
-  out.number("dx", s.grid.dx);
-  out.number("dy", s.grid.dy);
-  out.number("x0", s.grid.x0);
-  out.number("y0", s.grid.y0);
+  out.begin("grid", {"", "the potential contact area's grid of square elements"});
+  out.integer("nx", s.grid.nx, {"-", "elements along t1"});
+  out.integer("ny", s.grid.ny, {"-", "elements along t2 (conformal: along the rail profile)"});
+  out.number("dx", s.grid.dx, {"m", "element size along t1"});
+  out.number("dy", s.grid.dy, {"m", "element size along t2"});
+  out.number("x0", s.grid.x0, {"m", "u of the first element's centre (from the frame's origin)"});
+  out.number("y0", s.grid.y0, {"m", "v of the first element's centre (from the frame's origin)"});
   out.end();
-  if (!s.pressure.empty()) out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny);
-  if (!pc.h.empty()) out.grid("h", pc.h.data(), s.grid.nx, s.grid.ny);
+  if (!s.pressure.empty())
+    out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny, {"Pa", "normal pressure per element, >= 0 (with grids)"});
+  if (!pc.h.empty())
+    out.grid("h", pc.h.data(), s.grid.nx, s.grid.ny,
+             {"m", "undeformed distance per element, > 0 where the profiles inter-penetrate (with grids)"});
   if (pc.rolling) describe(*pc.rolling, out);
   surface.describe(pc, out);
 }
 
 void describe(const WheelContact& wc, FieldSink& out) {
-  out.boolean("lifted", !(wc.force.z() > 0));  // the wheel carries no load
-  out.boolean("flange_climb", !wc.flange_climb.empty());
-  if (!wc.flange_climb.empty()) out.string("flange_climb_reason", wc.flange_climb);
-  out.vec3("force", wc.force);
-  out.vec3("moment", wc.moment);
-  out.number("angle", wc.angle);
-  out.number("rolling_radius", wc.rolling_radius);
+  out.boolean("lifted", !(wc.force.z() > 0), {"", "the wheel carries no load (vertical force <= 0)"});
+  out.boolean("flange_climb", !wc.flange_climb.empty(),
+              {"", "the wheel is past flange climb (beyond the flange's steepest part, Nadal's limit, or lifted off)"});
+  if (!wc.flange_climb.empty())
+    out.string("flange_climb_reason", wc.flange_climb, {"", "why the wheel is past flange climb (only when it is)"});
+  out.vec3("force", wc.force, {"N", "force of the rail on the wheel, creep forces included (track frame)"});
+  out.vec3("moment", wc.moment, {"N m", "moment of the wheel's contact forces about the wheelset centre (track axes)"});
+  out.number("angle", wc.angle, {"rad", "contact angle of the wheel's resultant force, > 0 toward the track centre"});
+  out.number("rolling_radius", wc.rolling_radius,
+             {"m", "normal-force weighted mean of the areas' rolling radii (0 without contact)"});
   describe(wc.creep, out);
-  out.begin_list("patches", wc.patches.size());
+  out.begin_list("patches", wc.patches.size(), {"", "the wheel's contact areas"});
   for (const PatchContact& pc : wc.patches) {
     out.item();
     describe(pc, out);
@@ -408,32 +421,33 @@ void describe(const WheelContact& wc, FieldSink& out) {
 }
 
 void describe_sensitivity(const Sensitivity& S, FieldSink& out) {
-  out.begin("sensitivity");
+  out.begin("sensitivity", {"", "derivatives of (Fx, Fy, Fz, Mx, My, Mz), both wheels, by the pose (only when asked for)"});
   for (int col = 0; col < 2; ++col) {
     const double v[6] = {S(0, col), S(1, col), S(2, col), S(3, col), S(4, col), S(5, col)};
-    out.numbers(col == 0 ? "z" : "roll", v, 6);
+    if (col == 0) out.numbers("z", v, 6, {"N/m, N m/m", "d(Fx, Fy, Fz, Mx, My, Mz)/dz of the normal problem"});
+    else out.numbers("roll", v, 6, {"N/rad, N m/rad", "d(Fx, Fy, Fz, Mx, My, Mz)/droll of the normal problem"});
   }
   out.end();
 }
 
 void describe(const Pose& p, FieldSink& out) {
-  out.begin("pose");
-  out.number("y", p.y);
-  out.number("z", p.z);
-  out.number("roll", p.roll);
-  out.number("yaw", p.yaw);
+  out.begin("pose", {"", "the wheelset's pose (docs/design.md section 2)"});
+  out.number("y", p.y, {"m", "lateral position of the wheelset centre, + toward the left rail"});
+  out.number("z", p.z, {"m", "height of the centre: 0 the centred wheelset just touches, < 0 pressed into the rails"});
+  out.number("roll", p.roll, {"rad", "roll about x, > 0 lifts the left wheel"});
+  out.number("yaw", p.yaw, {"rad", "yaw about z, > 0 counter-clockwise seen from above"});
   out.end();
 }
 
 void describe(const ContactResult& c, FieldSink& out, bool sensitivity) {
   if (sensitivity) describe_sensitivity(c.sensitivity, out);
   for (int s : {kLeft, kRight}) {
-    out.begin(side_name(s));
+    out.begin(side_name(s), {"", "the contact of the wheel on that side (left: +y)"});
     describe(c.wheel[s], out);
     out.end();
   }
-  out.vec3("force", c.force);
-  out.vec3("moment", c.moment);
+  out.vec3("force", c.force, {"N", "contact forces of both wheels summed (track frame)"});
+  out.vec3("moment", c.moment, {"N m", "their moment about the wheelset centre (track axes)"});
   describe(c.creep, out);
   describe(c.pose, out);
 }

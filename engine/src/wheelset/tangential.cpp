@@ -236,25 +236,25 @@ void drop_grids(PatchRolling& r) {
 }
 
 void describe(const PatchRolling& r, FieldSink& out) {
-  out.string("method", method_name(r.method));
-  out.begin("mu");
-  out.number("static", r.friction.static_coefficient);
-  out.number("kinetic", r.friction.kinetic_coefficient);
+  out.string("method", method_name(r.method), {"", "tangential solver: exact or fastsim (with rolling keys)"});
+  out.begin("mu", {"", "the friction coefficients"});
+  out.number("static", r.friction.static_coefficient, {"-", "static coefficient: |traction| <= mu p in adhesion"});
+  out.number("kinetic", r.friction.kinetic_coefficient, {"-", "kinetic coefficient: |traction| = mu p in slip"});
   out.end();
-  out.number("V", r.V);
-  out.begin("creepage");
-  out.number("xi", r.creepage.xi);
-  out.number("eta", r.creepage.eta);
-  out.number("phi", r.creepage.phi);
+  out.number("V", r.V, {"m/s", "forward speed, which scales the slip velocities and the power (with creepage alone: 1)"});
+  out.begin("creepage", {"", "the creepages at the area's reference point (frame.origin)"});
+  out.number("xi", r.creepage.xi, {"-", "longitudinal creepage along t1, > 0 braking (wheel surface slower than the rail's)"});
+  out.number("eta", r.creepage.eta, {"-", "lateral creepage along t2"});
+  out.number("phi", r.creepage.phi, {"1/m", "spin creepage about the normal"});
   out.end();
-  out.number("Fx", r.fx);
-  out.number("Fy", r.fy);
-  out.number("Mz", r.mz);
-  out.vec3("creep_force", r.force);
-  out.vec3("creep_moment", r.moment);
-  out.number("adhesion", r.adhesion);
-  out.number("power", r.power);
-  out.integer("creep_iterations", r.solution.iterations);
+  out.number("Fx", r.fx, {"N", "tangential force on the wheel along t1 (braking: < 0)"});
+  out.number("Fy", r.fy, {"N", "tangential force on the wheel along t2"});
+  out.number("Mz", r.mz, {"N m", "moment of the tangential tractions about the reference point, along the normal"});
+  out.vec3("creep_force", r.force, {"N", "the area's creep force on the wheel (track frame)"});
+  out.vec3("creep_moment", r.moment, {"N m", "moment of the area's tangential tractions about the wheelset centre"});
+  out.number("adhesion", r.adhesion, {"-", "fraction of the contact area in adhesion"});
+  out.number("power", r.power, {"W", "frictional power of the area, >= 0"});
+  out.integer("creep_iterations", r.solution.iterations, {"-", "iterations of the tangential solver"});
   const halfspace::TangentialSolution& s = r.solution;
   if (s.px.empty()) return;
   const int nx = s.grid.nx, ny = s.grid.ny;
@@ -268,21 +268,21 @@ void describe(const PatchRolling& r, FieldSink& out) {
     wx[k] = speed * r.rigid_x[k];
     wy[k] = speed * r.rigid_y[k];
   }
-  out.grid("px", s.px.data(), nx, ny);
-  out.grid("py", s.py.data(), nx, ny);
-  out.grid("slip_x", vx.data(), nx, ny);
-  out.grid("slip_y", vy.data(), nx, ny);
-  out.grid("adhesion_map", map.data(), nx, ny);
-  out.grid("power_density", density.data(), nx, ny);
-  out.grid("rigid_slip_x", wx.data(), nx, ny);
-  out.grid("rigid_slip_y", wy.data(), nx, ny);
+  out.grid("px", s.px.data(), nx, ny, {"Pa", "tangential traction on the wheel along t1 (with grids)"});
+  out.grid("py", s.py.data(), nx, ny, {"Pa", "tangential traction on the wheel along t2 (conformal: the row's t2)"});
+  out.grid("slip_x", vx.data(), nx, ny, {"m/s", "slip velocity of the wheel relative to the rail along t1"});
+  out.grid("slip_y", vy.data(), nx, ny, {"m/s", "slip velocity of the wheel relative to the rail along t2"});
+  out.grid("adhesion_map", map.data(), nx, ny, {"-", "element state: 0 outside the contact, 1 adhesion, 2 slip"});
+  out.grid("power_density", density.data(), nx, ny, {"W/m^2", "frictional power density, -(traction . slip) >= 0"});
+  out.grid("rigid_slip_x", wx.data(), nx, ny, {"m/s", "rigid slip velocity along t1 of the elements in contact (0 outside)"});
+  out.grid("rigid_slip_y", wy.data(), nx, ny, {"m/s", "rigid slip velocity along t2 of the elements in contact (0 outside)"});
 }
 
 void describe(const CreepTotals& c, FieldSink& out) {
   if (!c.solved) return;
-  out.vec3("creep_force", c.force);
-  out.vec3("creep_moment", c.moment);
-  out.number("power", c.power);
+  out.vec3("creep_force", c.force, {"N", "the areas' creep forces summed (track frame; with rolling keys)"});
+  out.vec3("creep_moment", c.moment, {"N m", "their moment about the wheelset centre (track axes)"});
+  out.number("power", c.power, {"W", "frictional power summed over the areas"});
 }
 
 namespace {

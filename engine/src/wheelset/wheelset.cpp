@@ -59,26 +59,30 @@ Pose read_pose(OptionReader& r) {
 }
 
 void describe(const WheelsetParams& p, FieldSink& out) {
-  out.number("radius", p.track.radius);
-  out.number("back_to_back", p.track.back_to_back);
-  out.number("tape_offset", p.track.tape_offset);
-  out.number("gauge", p.track.gauge);
-  out.number("gauge_depth", p.track.gauge_depth);
-  out.string("gauge_point", p.track.gauge_rule == TrackParams::GaugeRule::first ? "first" : "innermost");
-  out.number("cant", p.track.cant);
-  out.number("E", p.material.E);
-  out.number("nu", p.material.nu);
-  out.number("grid", p.contact.element);
-  out.integer("margin", p.contact.margin);
-  out.integer("max_elements", p.contact.max_elements);
-  out.number("tolerance", p.contact.normal.tolerance);
-  out.number("merge_tolerance", p.contact.merge_tolerance);
-  out.number("merge_angle", p.contact.merge_angle);
-  out.string("solver", p.contact.dense ? "dense" : "fast");
-  out.string("surface", surface_name(p.contact.surface));
-  out.string("strategy", p.strategy);
-  out.integer("check_strategy", p.check_strategy);
-  out.boolean("check_setup", p.check_setup);
+  out.number("radius", p.track.radius, {"m", "wheel nominal radius r0 at the tape circle"});
+  out.number("back_to_back", p.track.back_to_back, {"m", "distance between the flange backs"});
+  out.number("tape_offset", p.track.tape_offset, {"m", "tape circle from the flange back"});
+  out.number("gauge", p.track.gauge, {"m", "track gauge between the gauge points"});
+  out.number("gauge_depth", p.track.gauge_depth, {"m", "gauge points this far below the top of each rail"});
+  out.string("gauge_point", p.track.gauge_rule == TrackParams::GaugeRule::first ? "first" : "innermost",
+             {"", "which gauge-face point is the gauge point: first or innermost"});
+  out.number("cant", p.track.cant, {"-", "rail inclination (tan of the angle), the head tilted toward the track centre"});
+  out.number("E", p.material.E, {"Pa", "Young's modulus of wheel and rail"});
+  out.number("nu", p.material.nu, {"-", "Poisson's ratio of wheel and rail"});
+  out.number("grid", p.contact.element, {"m", "element size of the potential contact areas"});
+  out.integer("margin", p.contact.margin, {"-", "elements around the projected inter-penetration area"});
+  out.integer("max_elements", p.contact.max_elements, {"-", "largest potential contact area accepted (elements)"});
+  out.number("tolerance", p.contact.normal.tolerance,
+             {"-", "normal solver: max |gap| over the contact set relative to max(h + approach)"});
+  out.number("merge_tolerance", p.contact.merge_tolerance,
+             {"-", "relative force error of solving two areas apart that merges them"});
+  out.number("merge_angle", p.contact.merge_angle, {"rad", "areas whose normals differ more are never merged"});
+  out.string("solver", p.contact.dense ? "dense" : "fast", {"", "normal solver: fast or dense (the reference)"});
+  out.string("surface", surface_name(p.contact.surface), {"", "potential contact areas: conformal or planar"});
+  out.string("strategy", p.strategy, {"", "the contact location strategy's name"});
+  out.integer("check_strategy", p.check_strategy,
+              {"-", "random poses checked against brute force when the wheelset was built (0: none)"});
+  out.boolean("check_setup", p.check_setup, {"", "the set-up's plausibility for a railway wheelset was checked when built"});
 }
 
 namespace {
@@ -171,32 +175,33 @@ LocateResult locate_with(const Wheelset& wheelset, const Pose& pose, PoseSearch&
 }
 
 void describe_patch_fields(const Patch& p, FieldSink& out) {
-  out.string("side", side_name(p.side));
-  out.vec3("nominal_point", p.point);  // "point" is the centre of pressure of the normal-contact stage
-  out.vec3("nominal_normal", p.normal);
-  out.vec3("wheel_point", p.wheel_point);
-  out.integer("cone", p.cone + 1);
-  out.number("eps", p.eps);
-  out.number("wheel_radius", p.wheel_radius);
-  out.number("depth", p.depth);
-  out.integer("first_line", p.first_line + 1);
-  out.integer("last_line", p.last_line + 1);
-  out.integer("longest", p.longest - p.first_segment + 1);
+  out.string("side", side_name(p.side), {"", "the wheel of the area: left or right"});
+  // "point" is the centre of pressure of the normal-contact stage.
+  out.vec3("nominal_point", p.point, {"m", "the paper's nominal point: mid-point of the longest segment (track frame)"});
+  out.vec3("nominal_normal", p.normal, {"-", "the wheel's outward unit normal at the nominal point (track frame)"});
+  out.vec3("wheel_point", p.wheel_point, {"m", "the nominal point in the wheelset frame"});
+  out.integer("cone", p.cone + 1, {"-", "the wheel cone under the nominal point (1-based)"});
+  out.number("eps", p.eps, {"rad", "angle of the nominal point about the axle from the lowest point toward +x (paper eq. 1)"});
+  out.number("wheel_radius", p.wheel_radius, {"m", "radius of that cone at the nominal point"});
+  out.number("depth", p.depth, {"m", "wheel radius minus the nominal point's distance to the axle"});
+  out.integer("first_line", p.first_line + 1, {"-", "first rail line the patch spans (1-based)"});
+  out.integer("last_line", p.last_line + 1, {"-", "last rail line the patch spans (1-based)"});
+  out.integer("longest", p.longest - p.first_segment + 1, {"-", "the patch's longest segment (1-based, in its segments)"});
 }
 
 void describe(const Segment& s, FieldSink& out) {
-  out.integer("line", s.line + 1);
-  out.number("y", s.y);
-  out.number("z", s.z);
-  out.number("x_t", s.x_t);
-  out.number("x_l", s.x_l);
+  out.integer("line", s.line + 1, {"-", "the rail line (1-based)"});
+  out.number("y", s.y, {"m", "the rail line's y (track frame)"});
+  out.number("z", s.z, {"m", "the rail line's z (track frame)"});
+  out.number("x_t", s.x_t, {"m", "trailing end of the segment inside the wheel (track x)"});
+  out.number("x_l", s.x_l, {"m", "leading end of the segment inside the wheel (track x), >= x_t"});
   const long long cones[2] = {s.cone_t + 1, s.cone_l + 1};
-  out.integers("cones", cones, 2);
+  out.integers("cones", cones, 2, {"-", "the wheel cones crossed at the trailing and the leading end (1-based)"});
 }
 
 void describe(const Patch& p, const std::vector<Segment>& segments, FieldSink& out) {
   describe_patch_fields(p, out);
-  out.begin_list("segments", static_cast<std::size_t>(p.segment_count));
+  out.begin_list("segments", static_cast<std::size_t>(p.segment_count), {"", "the patch's segments, by line then x"});
   for (int i = 0; i < p.segment_count; ++i) {
     out.item();
     describe(segments[static_cast<std::size_t>(p.first_segment + i)], out);
@@ -209,24 +214,24 @@ void describe(const LocateResult& r, FieldSink& out) {
   long long tests = 0;
   for (int s : {kLeft, kRight}) {
     const SideLocation& l = r.side[s];
-    out.begin(side_name(s));
-    out.begin_list("patches", l.patches.size());
+    out.begin(side_name(s), {"", "the location on that side's wheel (left: +y)"});
+    out.begin_list("patches", l.patches.size(), {"", "the inter-penetration patches of the undeformed profiles"});
     for (const Patch& p : l.patches) {
       out.item();
       describe(p, l.segments, out);
       out.end();
     }
     out.end();
-    out.integer("tests", l.counters.tests);
-    out.integer("coarse_tests", l.counters.coarse_tests);
-    out.integer("bounds", l.counters.bounds);
-    out.integer("lines_visited", l.counters.lines);
-    out.integer("grazes", l.grazes);
+    out.integer("tests", l.counters.tests, {"-", "closed-form line-cone tests on that side"});
+    out.integer("coarse_tests", l.counters.coarse_tests, {"-", "closed-form tests of the coarse pre-search"});
+    out.integer("bounds", l.counters.bounds, {"-", "bound checks of the walk (each decides a range of cones)"});
+    out.integer("lines_visited", l.counters.lines, {"-", "rail lines visited by the searches"});
+    out.integer("grazes", l.grazes, {"-", "graze crossings dropped"});
     tests += l.counters.tests;
     out.end();
   }
   describe(r.pose, out);
-  out.integer("tests", tests);
+  out.integer("tests", tests, {"-", "closed-form line-cone tests, both sides"});
 }
 
 }  // namespace wrc

@@ -13,8 +13,10 @@
 
 namespace wrc {
 
-// What a field is: its unit ("m", "N", "Pa", "rad", "N m", "1" for a pure number, "" for text, flags, counts and
-// tables) and one line of meaning (signs and frames by docs/design.md, section 2).
+// What a field is: its unit (SI: "m", "N", "Pa", "rad", "N m"; "-" for a pure number, an index or a count; "" for
+// text, flags and lists) and one line of meaning (signs and frames by docs/design.md, section 2). Every field of the
+// engine's results has one: DocSink (core/field_reference.hpp) writes them into docs/reference/fields.md, and the
+// test that regenerates that page fails on a field without.
 struct FieldDoc {
   const char* unit = "";
   const char* meaning = "";
