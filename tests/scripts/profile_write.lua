@@ -170,7 +170,8 @@ check.fails(function() w:write(tmp .. "x.txt", {format = "vampyre"}) end,
             "unknown format 'vampyre'; the formats are: text (.txt .dat), csv (.csv), simpack (.prw .prr), miniprof (.whl .ban), vampire (.whe .rai)",
             "an unknown format")
 check.fails(function() w:write(tmp .. "x.prof") end, "cannot tell the format from the extension", "an unknown extension")
-check.fails(function() w:write(tmp .. "x.prr") end, "a wheel profile is written as .prw, not .prr", "a wheel as a rail file")
+check.fails(function() w:write(tmp .. "x.prr") end, "profile:write '" .. tmp .. "x.prr': a wheel profile is written as .prw, not .prr",
+            "a wheel as a rail file (the message names the file)")
 check.fails(function() e60:write(tmp .. "x.whe") end, "a rail profile is written as .rai, not .whe", "a rail as a wheel file")
 check.fails(function() w:write(tmp .. "x.whl", {format = "simpack"}) end, "the extension .whl is the miniprof format's, not simpack's",
             "an extension of another format")

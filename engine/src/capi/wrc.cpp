@@ -327,7 +327,7 @@ wrc_status wrc_profile_write(const wrc_profile* profile, const char* path, const
   return guard("wrc_profile_write", [&] {
     const auto p = registry().get(profile, "profile");
     if (!path) invalid("the path is NULL");
-    wrc::write_profile(*p->profile, path, options_of(options, "wrc_profile_write: options"), "options");
+    wrc::write_profile(*p->profile, path, options_of(options, "wrc_profile_write: options"), "file");
     return WRC_OK;
   });
 }

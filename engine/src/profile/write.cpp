@@ -112,13 +112,13 @@ std::string write_miniprof(const Profile& p, OptionReader& r) {
 }
 
 // The gauge side's point `depth` below the top of a rail: the first crossing walking from the highest point toward -y.
-double gauge_side_y(const Profile& p, double depth) {
+double gauge_side_y(const Profile& p, double depth, const std::string& context) {
   const std::size_t top = static_cast<std::size_t>(std::max_element(p.z.begin(), p.z.end()) - p.z.begin());
   const double level = p.z[top] - depth;
   for (std::size_t i = top; i > 0; --i)
     if (p.z[i - 1] <= level) return p.y[i - 1] + (p.y[i] - p.y[i - 1]) * (level - p.z[i - 1]) / (p.z[i] - p.z[i - 1]);
-  fail("the rail does not reach gauge_depth = {} m below its top on its gauge side (-y): it cannot be put in the track "
-       "for a VAMPIRE file", depth);
+  fail("{}: the rail does not reach gauge_depth = {} m below its top on its gauge side (-y): it cannot be put in the "
+       "track for a VAMPIRE file", context, depth);
 }
 
 // VAMPIRE: the pair (left mirrored, right), Y from the track centre, wheel Z toward the flange tip, rail Z up
@@ -142,7 +142,7 @@ std::string write_vampire(const Profile& p, OptionReader& r) {
     if (!(gauge > 0.3 && gauge < 5)) fail("{}: gauge must lie in (0.3, 5) m, got {}", r.context(), gauge);
     s += depth == 0.014 ? "GAUGEPOINT EUROPEAN\n" : fmt::format("GAUGEPOINT CUSTOM {}\n", mm(depth));
     s += fmt::format("GAUGE {}\n", mm(gauge));
-    offset = gauge / 2 - gauge_side_y(p, depth);
+    offset = gauge / 2 - gauge_side_y(p, depth, r.context());
   }
   const double zs = wheel ? -1.0 : 1.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -163,13 +163,14 @@ std::string format_profile(const Profile& p, const std::string& format, OptionRe
   fail("{}: unknown format '{}'; the formats are: {}", r.context(), format, format_list());
 }
 
-std::string write_profile(const Profile& p, const std::string& path, const OptionTable& options, std::string_view context) {
-  OptionReader r(options, std::string(context));
+std::string write_profile(const Profile& p, const std::string& path, const OptionTable& options, std::string_view call) {
+  const std::string context = fmt::format("{} '{}'", call, path);  // every message names the file
+  OptionReader r(options, context);
   const std::string ext = file_extension(path);
   const std::optional<std::string> asked = r.string("format", {"", "text | csv | simpack | miniprof | vampire"});
   const Format* f = asked ? find_format(*asked) : format_of_extension(ext);
   if (asked && !f) fail("{}: unknown format '{}'; the formats are: {}", context, *asked, format_list());
-  if (!f) fail("{}: cannot tell the format from the extension of '{}'; pass format = ..., one of: {}", context, path, format_list());
+  if (!f) fail("{}: cannot tell the format from the extension '{}'; pass format = ..., one of: {}", context, ext, format_list());
   const Format* by_ext = format_of_extension(ext);
   if (by_ext && by_ext != f)
     fail("{}: the extension {} is the {} format's, not {}'s (the file would be read back with another reader)", context, ext,

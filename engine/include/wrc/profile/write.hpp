@@ -24,9 +24,9 @@ std::string format_profile(const Profile& profile, const std::string& format, Op
 // .prw .prr | .whl .ban | .whe .rai); tape_offset (m, 0.070: miniprof and vampire wheels, the tape circle from the flange
 // back); flange_back (m, 1.360: vampire wheels, the flange backs' distance); gauge (m, 1.435) and gauge_depth (m, 0.014:
 // vampire rails, where the rail is put in the track frame). A known extension must be the format's and, for the formats
-// with a wheel and a rail extension, the profile's kind. Returns the format written. Throws wrc::Error naming `context`
-// (an unknown format or extension lists the known ones).
+// with a wheel and a rail extension, the profile's kind. Returns the format written. Throws wrc::Error naming `call`
+// and the path (an unknown format or extension lists the known ones).
 std::string write_profile(const Profile& profile, const std::string& path, const OptionTable& options,
-                          std::string_view context);
+                          std::string_view call);
 
 }  // namespace wrc
