@@ -9,7 +9,7 @@
 // head, US = 5/8 in, CUSTOM <mm>.
 //
 // Variants read: every datum keyword above (any letter case); fields separated by blanks or commas; `!`, `%` or `"`
-// starting a comment; blank lines among the rows. Rows must hold the four numbers.
+// starting a comment (on any line but the title); blank lines among the rows. Rows must hold the four numbers.
 //
 // To the engine frame (left-side frame, y toward the field side): the option side = "left" (default) takes the
 // columns yl zl, with d = -yl the lateral distance from the track centre; side = "right" takes yr zr, d = yr.
@@ -27,6 +27,7 @@ namespace {
 const char* const kExtensions[] = {".whe", ".rai", nullptr};
 const char* const kOptions[] = {"side", nullptr};
 constexpr double kInch = 25.4;  // mm
+constexpr std::string_view kComment = "!%\"";  // each starts a comment (not on the title line)
 
 std::string upper(std::string_view s) {
   std::string r(s);
@@ -63,7 +64,7 @@ double length_mm(std::string_view field, int line, std::string_view what, double
 
 // `KEYWORD value...` on a header line: the words after the keyword (which must be the first word).
 std::vector<std::string_view> keyword_line(const Line& ln, std::string_view keyword, std::string_view expected) {
-  const auto f = split_fields(trim(ln.text), ' ');
+  const auto f = split_fields(trim(strip_comment(ln.text, kComment)), ' ');
   if (f.empty() || upper(f[0]) != keyword)
     fail_at(ln.number, "expected `{} {}` on line {}, got {}", keyword, expected, ln.number, quoted(trim(ln.text)));
   return {f.begin() + 1, f.end()};
@@ -98,7 +99,7 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, bool right) {
   std::vector<Row> rows;
   for (std::size_t i = 4; i < lines.size(); ++i) {
     const Line& ln = lines[i];
-    std::string s(trim(strip_comment(ln.text, "!%\"")));
+    std::string s(trim(strip_comment(ln.text, kComment)));
     if (s.empty()) continue;
     reject_decimal_commas(s, ln.number);
     std::replace(s.begin(), s.end(), ',', ' ');

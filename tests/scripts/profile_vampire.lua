@@ -72,11 +72,13 @@ for _, c in ipairs(datums) do
   same(wrc.profile.load(path, {side = "right"}), s1002, -0.3e-3, "wheel " .. c.line .. ", right")
 end
 
--- Comments starting with % and ", and Windows line ends.
+-- Comments starting with % and " (on the header lines too), and Windows line ends.
 do
   local body = rows(s1002, function(s) return 750 + s end, function(z) return -z end, 0, " ", "% note")
   body = body:gsub("\n", " \" quoted note\r\n", 3)
-  local path = write("wheel_comments.whe", "WHEELPROFILE\r\ncomments\r\nTREADDATUM EUROPEAN\r\nFLANGEBACK 1360\r\n" .. body)
+  local path = write("wheel_comments.whe",
+                     "WHEELPROFILE\r\n! a title\r\nTREADDATUM EUROPEAN ! 70 mm\r\nFLANGEBACK 1360 % mm\r\n" .. body)
+  check.ok(wrc.profile.load(path).metadata.title == "! a title", "the title line is the title, whatever it holds")
   same(wrc.profile.load(path), s1002, 0, "wheel with % and \" comments, CRLF")
 end
 
