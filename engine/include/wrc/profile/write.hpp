@@ -1,7 +1,8 @@
 // Writing a profile in the formats the reader plugins read (docs/guide/profiles.md "Writing profiles"), so that a worn,
 // resampled or transformed profile goes back to the tools a user has. Each writer is the inverse of its reader
 // (plugins/<format>): the file, read back with the default options (and `kind` for text), gives the same points
-// within the written precision (kWrittenDigits decimals of a millimetre).
+// within the written precision (kWrittenDigits decimals of a millimetre); a VAMPIRE rail comes back with its highest
+// point as the origin (the format locates a rail in the track, not its origin).
 #pragma once
 
 #include "wrc/core/options.hpp"
