@@ -476,3 +476,45 @@ TEST_CASE("rolling contact through the C API: creep forces, grids and the option
   }
   CHECK(last().find("mu_kinetic") != std::string::npos);
 }
+
+TEST_CASE("wrc_profile_write: each format read back by wrc_profile_load gives the points, bad calls a status") {
+  Fixture f;
+  const auto dir = std::filesystem::temp_directory_path() / ("wrc_capi_write_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::size_t n = 0;
+  REQUIRE(wrc_profile_points(f.wheel, nullptr, nullptr, 0, &n) == WRC_TOO_SMALL);
+  std::vector<double> y(n), z(n), y2(n), z2(n);
+  REQUIRE(wrc_profile_points(f.wheel, y.data(), z.data(), n, &n) == WRC_OK);
+  for (const char* ext : {".txt", ".csv", ".prw", ".whl", ".whe"}) {
+    const std::string path = (dir / (std::string("wheel") + ext)).string();
+    REQUIRE_MESSAGE(wrc_profile_write(f.wheel, path.c_str(), nullptr) == WRC_OK, last());
+    wrc_profile* back = nullptr;
+    const char* options = std::strcmp(ext, ".txt") == 0 || std::strcmp(ext, ".csv") == 0 ? "kind=wheel" : nullptr;
+    REQUIRE_MESSAGE(wrc_profile_load(path.c_str(), options, &back) == WRC_OK, last());
+    std::size_t m = 0;
+    REQUIRE(wrc_profile_points(back, y2.data(), z2.data(), n, &m) == WRC_OK);
+    CHECK(m == n);
+    double worst = 0;
+    for (std::size_t i = 0; i < n; ++i) worst = std::max({worst, std::abs(y2[i] - y[i]), std::abs(z2[i] - z[i])});
+    CHECK_MESSAGE(worst <= 0.51e-9, std::string(ext) << ": largest difference " << worst << " m (6 decimals of a mm)");
+    wrc_profile_free(back);
+  }
+  // A VAMPIRE wheel with the flange backs 1.435 m apart and the tape circle 72 mm from the flange back.
+  const std::string custom = (dir / "custom.whe").string();
+  REQUIRE_MESSAGE(wrc_profile_write(f.wheel, custom.c_str(), "flange_back=1.435 tape_offset=0.072") == WRC_OK, last());
+  std::ifstream in(custom);
+  std::string l1, l2, l3, l4;
+  std::getline(in, l1), std::getline(in, l2), std::getline(in, l3), std::getline(in, l4);
+  CHECK(l3 == "TREADDATUM CUSTOM 72.000000");
+  CHECK(l4 == "FLANGEBACK 1435.000000");
+
+  const std::string bad = (dir / "bad.whe").string();
+  CHECK(wrc_profile_write(f.wheel, nullptr, nullptr) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_profile_write(nullptr, bad.c_str(), nullptr) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_profile_write(f.wheel, bad.c_str(), "format=gensys") == WRC_ERROR);
+  CHECK_MESSAGE(last().find("unknown format 'gensys'; the formats are: text (.txt .dat), csv") != std::string::npos, last());
+  CHECK(wrc_profile_write(f.rail, bad.c_str(), nullptr) == WRC_ERROR);
+  CHECK_MESSAGE(last().find("a rail profile is written as .rai, not .whe") != std::string::npos, last());
+  CHECK_FALSE(std::filesystem::exists(bad));
+  std::filesystem::remove_all(dir);
+}

@@ -79,6 +79,22 @@ std::string miniprof(const std::string& rows, int xypoints) {
 }
 constexpr int kMiniprofFirstRow = 5;
 
+// A VAMPIRE rail: the arc rows "y z" become "yl zl yr zr" (the same arc on both sides).
+std::string vampire(const std::string& rows) {
+  std::string s = "RAILPROFILE\narc\nGAUGEPOINT EUROPEAN\nGAUGE 1435\n";
+  std::size_t start = 0;
+  while (start < rows.size()) {
+    const std::size_t end = rows.find('\n', start);
+    const std::string row = rows.substr(start, end - start);
+    const std::size_t gap = row.find_first_of(" \t;,");
+    const std::string y = row.substr(0, gap), mirrored = y[0] == '-' ? y.substr(1) : "-" + y;
+    s += mirrored + " " + row.substr(gap + 1) + " " + row + "\n";
+    start = end + 1;
+  }
+  return s;
+}
+constexpr int kVampireFirstRow = 5;
+
 }  // namespace
 
 TEST_CASE("the built plugins are there") {
@@ -88,6 +104,7 @@ TEST_CASE("the built plugins are there") {
   CHECK(r.find("text") != nullptr);
   CHECK(r.find("simpack") != nullptr);
   CHECK(r.find("miniprof") != nullptr);
+  CHECK(r.find("vampire") != nullptr);
   CHECK(r.rejected().empty());
 }
 
@@ -221,7 +238,8 @@ TEST_CASE("every reader skips a UTF-8 byte-order mark: the same points as withou
   const Case cases[] = {{".txt", arc_rows(" "), rail},  // headerless: the first point used to become a "header"
                         {".csv", "y_mm,z_mm\n" + arc_rows(","), rail},
                         {".prr", simpack(arc_rows(" ")), {}},
-                        {".ban", miniprof(arc_rows("\t"), 31), {}}};
+                        {".ban", miniprof(arc_rows("\t"), 31), {}},
+                        {".rai", vampire(arc_rows(" ")), {}}};
   for (const Case& c : cases) {
     INFO(c.ext);
     const Profile plain = load(std::string("plain") + c.ext, c.text, c.options);
@@ -257,6 +275,7 @@ TEST_CASE("every reader: decimal commas are named as such") {
   check_error("decimal_header.csv", "y;z\n" + comma_rows(";"), 2, "looks written with decimal commas", rail);
   check_error("decimal.prr", simpack(comma_rows(" ")), kSimpackFirstPoint, "looks written with decimal commas");
   check_error("decimal.ban", miniprof(comma_rows("\t"), 31), kMiniprofFirstRow, "looks written with decimal commas");
+  check_error("decimal.rai", vampire(comma_rows(" ")), kVampireFirstRow, "looks written with decimal commas");
   // One row among decimal points, and one value of a key.
   check_error("decimal_row.prr", simpack("0 0\n1 0.1\n2 0,2\n"), kSimpackFirstPoint + 2, "'2 0,2' looks written with decimal commas");
   check_error("decimal_key.prr", simpack(arc_rows(" "), "1000,0"), 6,

@@ -83,6 +83,11 @@ wrc_status wrc_profile_from_points(const char* kind, const double* y, const doub
 /* Copies the points into caller-owned arrays of `capacity` values; *n = the number of points (WRC_TOO_SMALL when
  * capacity < *n; y and z may be NULL with capacity 0 to ask for the size). */
 wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, size_t capacity, size_t* n);
+/* Writes the profile to `path` in a format a reader plugin reads back (docs/guide/profiles.md "Writing profiles"),
+ * whole or not at all: a failure leaves no file (or the old one). Options: those of p:write (format = "text", "csv",
+ * "simpack", "miniprof" or "vampire", default from the extension; tape_offset, flange_back, gauge, gauge_depth). The
+ * profile stays the caller's; nothing is allocated for the caller. */
+wrc_status wrc_profile_write(const wrc_profile* profile, const char* path, const char* options);
 /* Releases a profile (NULL: nothing to do). */
 wrc_status wrc_profile_free(wrc_profile* profile);
 

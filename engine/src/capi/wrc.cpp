@@ -12,6 +12,7 @@
 #include "wrc/lua/definitions.hpp"
 #include "wrc/profile/load.hpp"
 #include "wrc/profile/measures.hpp"
+#include "wrc/profile/write.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 
 #include <cmath>
@@ -318,6 +319,15 @@ wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, 
     if (!y || !z) invalid("the point arrays are NULL");
     std::copy(p->profile->y.begin(), p->profile->y.end(), y);
     std::copy(p->profile->z.begin(), p->profile->z.end(), z);
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_profile_write(const wrc_profile* profile, const char* path, const char* options) {
+  return guard("wrc_profile_write", [&] {
+    const auto p = registry().get(profile, "profile");
+    if (!path) invalid("the path is NULL");
+    wrc::write_profile(*p->profile, path, options_of(options, "wrc_profile_write: options"), "file");
     return WRC_OK;
   });
 }

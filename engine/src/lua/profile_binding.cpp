@@ -8,6 +8,7 @@
 #include "wrc/lua/definitions.hpp"
 #include "wrc/profile/load.hpp"
 #include "wrc/profile/reader.hpp"
+#include "wrc/profile/write.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -169,6 +170,16 @@ int profile_readers(lua_State* L) {
   return 2;
 }
 
+// p:write(path, {format =, ...}) -> the format written. Not in the sandbox of definitions (which write no files).
+int profile_write(lua_State* L) {
+  const char* ctx = "profile:write";
+  const auto& p = check_profile(L, 1, ctx);
+  const std::string path = check_string(L, 2, ctx);
+  const OptionTable t = to_options(L, 3, ctx);
+  lua_pushstring(L, write_profile(*p, path, t, ctx).c_str());
+  return 1;
+}
+
 }  // namespace
 
 void open_profile(lua_State* L) {
@@ -194,6 +205,7 @@ void open_profile(lua_State* L) {
                               {"arc_length", guarded<profile_api::method_arc_length>},
                               {"bounds", guarded<profile_api::method_bounds>},
                               {"transform", guarded<profile_api::method_transform>},
+                              {"write", guarded<profile_write>},
                               {nullptr, nullptr}};
   register_profile_methods(L, methods);
 
