@@ -217,8 +217,11 @@ class Recorder final : public FieldSink {
   void integers(std::string_view k, const long long*, std::size_t n) override { arrays[path(k)] = n; }
   void grid(std::string_view k, const double* v, int nx, int ny) override { numbers(k, v, std::size_t(nx) * ny); }
   void begin(std::string_view k) override { prefix.push_back(path(k) + "."); }
-  void begin_list(std::string_view k, std::size_t) override { begin(k); }
-  void item() override {}
+  void begin_list(std::string_view k, std::size_t) override {
+    begin(k);
+    items.push_back(0);
+  }
+  void item() override { prefix.push_back(prefix.back() + std::to_string(++items.back()) + "."); }
   void end() override { prefix.pop_back(); }
 
  protected:
@@ -227,6 +230,7 @@ class Recorder final : public FieldSink {
  private:
   std::string path(std::string_view k) const { return (prefix.empty() ? "" : prefix.back()) + std::string(k); }
   std::vector<std::string> prefix;
+  std::vector<int> items;
 };
 
 }  // namespace
@@ -241,18 +245,18 @@ TEST_CASE("describe(PatchDamage): every field documented, values as computed") {
     describe(d, rec);
     CHECK(rec.finite);
     std::size_t fields = rec.nums.size() + rec.strs.size() + rec.arrays.size();
-    CHECK(rec.docs.size() == fields + 2);  // and the two tables
+    CHECK(rec.docs.size() == fields);
     for (const auto& [key, doc] : rec.docs) {
       CAPTURE(key);
       CHECK(std::string(doc.meaning).size() > 3);
     }
     CHECK(rec.nums.at("Tgamma") == d.Tgamma);
-    CHECK(rec.nums.at("wear.wear_volume") == d.wear_volume);
-    CHECK(rec.nums.at("fatigue.fi_surf") == *d.fi_surf);
-    CHECK(rec.arrays.at("wear.wear_depth") == static_cast<std::size_t>(s.h.grid.ny));
-    CHECK(rec.arrays.at("wear.wear_rate") == static_cast<std::size_t>(s.h.grid.size()));
-    CHECK(rec.arrays.count("wear.wear_coefficient") == (model == WearModel::archard ? 1u : 0u));
-    CHECK(std::string(rec.docs.at("wear.wear_volume").unit) == "m^3/m");
+    CHECK(rec.nums.at("wear_volume") == d.wear_volume);
+    CHECK(rec.nums.at("fi_surf") == *d.fi_surf);
+    CHECK(rec.arrays.at("wear_depth") == static_cast<std::size_t>(s.h.grid.ny));
+    CHECK(rec.arrays.at("wear_rate") == static_cast<std::size_t>(s.h.grid.size()));
+    CHECK(rec.arrays.count("wear_coefficient") == (model == WearModel::archard ? 1u : 0u));
+    CHECK(std::string(rec.docs.at("wear_volume").unit) == "m^3/m");
     CHECK(std::string(rec.docs.at("Tgamma").unit) == "N");
   }
 }
@@ -309,6 +313,14 @@ TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) o
           dissipated += d.tgamma_density[k] * g.element_area();
         }
         CHECK(dissipated == doctest::Approx(t.power_per_speed).epsilon(1e-9));
+        // The fields sit beside the area's own (p.Tgamma, p.wear_volume): no name in common.
+        Recorder area_rec, damage_rec;
+        describe(pc, area_rec);
+        describe(d, damage_rec);
+        for (const auto& [key, doc] : damage_rec.docs) {
+          CAPTURE(key);
+          CHECK(area_rec.nums.count(key) + area_rec.strs.count(key) + area_rec.arrays.count(key) == 0);
+        }
         MESSAGE(fmt::format("y = {} mm: Tgamma {:.2f} N, spin {:.2f} N, rigid work {:.2f} N, dissipated {:.2f} N, "
                             "wear {:.3e} m^3/m, FI {:.3f}",
                             y * 1e3, d.Tgamma, d.Tgamma_spin, work_rigid, dissipated, d.wear_volume, d.fi_surf.value_or(0)));

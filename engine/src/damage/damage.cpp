@@ -138,14 +138,13 @@ PatchDamage compute_damage(const AreaFields& f, const DamageOptions& options) {
 void describe(const PatchDamage& d, FieldSink& out) {
   out.number("Tgamma", d.Tgamma, {"N", "|Fx xi| + |Fy eta|: frictional work per metre rolled (J/m)"});
   out.number("Tgamma_spin", d.Tgamma_spin, {"N", "Tgamma + |Mz phi|"});
-  out.number("Tgamma_per_area", d.Tgamma_per_area, {"Pa", "Tgamma / contact_area (USFD's T gamma / A; N/m^2)"});
-  out.number("normal_force", d.normal_force, {"N", "sum of p dA over the area"});
-  out.number("contact_area", d.contact_area, {"m^2", "elements with p > 0"});
+  out.number("Tgamma_per_area", d.Tgamma_per_area, {"Pa", "Tgamma / contact area (USFD's T gamma / A; N/m^2)"});
   const int nx = d.grid.nx, ny = d.grid.ny;
-  out.begin("wear", {"", "the wear model's results (damage/wear.hpp)"});
-  out.string("model", model_name(d.model), {"", "\"archard\" or \"usfd\""});
-  if (d.model == WearModel::archard) out.boolean("map", d.map, {"", "true: k by the KTH map; false: a constant k"});
-  else out.string("usfd_regime", regime_name(d.usfd_regime), {"", "mild, severe or catastrophic at Tgamma_per_area"});
+  out.string("wear_model", model_name(d.model), {"", "\"archard\" or \"usfd\" (the call's wear.model)"});
+  if (d.model == WearModel::archard)
+    out.boolean("wear_map", d.map, {"", "true: Archard's k by the KTH map; false: a constant k"});
+  else
+    out.string("usfd_regime", regime_name(d.usfd_regime), {"", "mild, severe or catastrophic at Tgamma_per_area"});
   out.number("wear_volume", d.wear_volume, {"m^3/m", "volume worn off per metre rolled: sum of wear_rate dA"});
   out.number("wear_depth_max", d.wear_depth_max, {"m", "the largest of wear_depth"});
   out.numbers("wear_depth", d.wear_depth.data(), d.wear_depth.size(),
@@ -155,17 +154,14 @@ void describe(const PatchDamage& d, FieldSink& out) {
     out.grid("wear_coefficient", d.wear_coefficient.data(), nx, ny, {"1", "per element: Archard's k (0 outside)"});
   out.grid("tgamma_density", d.tgamma_density.data(), nx, ny,
            {"Pa", "per element: |px sx| + |py sy|, the local T gamma / A (power density / |V|)"});
-  out.end();
-  out.begin("fatigue", {"", "rolling contact fatigue indices (damage/fatigue.hpp)"});
   out.number("rcf_damage", d.rcf_damage, {"1", "Burstow's RCF damage of the rail per passage, from Tgamma"});
   out.string("rcf_regime", regime_name(d.rcf_regime), {"", "none, rcf, rcf and wear, or wear (Burstow's ranges)"});
-  out.number("traction_coefficient", d.traction_coefficient, {"1", "|(Fx, Fy)| / normal_force"});
-  out.number("a", d.a, {"m", "equivalent semi-axis along x: pi a b = contact_area, a / b the extents' ratio"});
-  out.number("b", d.b, {"m", "equivalent semi-axis along y"});
-  out.number("shear_yield", d.shear_yield, {"Pa", "k of Ekberg's index"});
+  out.number("traction_coefficient", d.traction_coefficient, {"1", "|(Fx, Fy)| / (sum of p dA)"});
+  out.number("fi_a", d.a, {"m", "FI_surf's semi-axis along x: pi a b = contact area, a / b the extents' ratio"});
+  out.number("fi_b", d.b, {"m", "FI_surf's semi-axis along y"});
+  out.number("shear_yield", d.shear_yield, {"Pa", "k of Ekberg's FI_surf"});
   if (d.fi_surf)
     out.number("fi_surf", *d.fi_surf, {"1", "Ekberg's FI_surf = mu - 2 pi a b k / (3 Fz); > 0: surface fatigue"});
-  out.end();
 }
 
 }  // namespace wrc::damage

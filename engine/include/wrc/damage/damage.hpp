@@ -73,10 +73,11 @@ struct PatchDamage {
 // finite, a negative pressure, V = 0 or not finite, creepages or forces not finite; and invalid options.
 PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& options);
 
-// Fields (Lua and C, with the call layer): Tgamma, Tgamma_spin, Tgamma_per_area, normal_force, contact_area, wear =
-// {model, map (Archard), wear_volume, wear_depth_max, wear_depth (per row), usfd_regime (USFD) and the grids
-// wear_rate, wear_coefficient (Archard), tgamma_density}, fatigue = {rcf_damage, rcf_regime, traction_coefficient,
-// a, b, shear_yield, fi_surf (with contact)}; each with its FieldDoc.
+// Fields (Lua and C, with the call layer), flat so that they sit beside an area's own (p.Tgamma, p.wear_volume) with
+// no name in common: Tgamma, Tgamma_spin, Tgamma_per_area, wear_model, wear_map (Archard) or usfd_regime (USFD),
+// wear_volume, wear_depth_max, wear_depth (per row), the grids wear_rate, wear_coefficient (Archard), tgamma_density,
+// then rcf_damage, rcf_regime, traction_coefficient, fi_a, fi_b, shear_yield and fi_surf (with contact); each with
+// its FieldDoc.
 void describe(const PatchDamage& damage, FieldSink& out);
 
 }  // namespace wrc::damage
