@@ -52,6 +52,7 @@ TEST_CASE("USFD wear function: the rate in each regime against the published lin
   CHECK(usfd_wear_rate(77.2e6) == rel(55.0 * to_si, 1e-12));
   CHECK(usfd_regime(77.3e6) == UsfdRegime::catastrophic);
   CHECK(usfd_wear_rate(77.3e6) == rel((61.9 * 77.3 - 4778.7) * to_si, 1e-9));  // 6.17
+  CHECK(usfd_wear_rate(77.2001e6) == 0);  // the line's -0.02 at the transition: no negative wear
   CHECK(usfd_wear_rate(100e6) == rel(1411.3 * to_si, 1e-12));
   CHECK(usfd_wear_rate(0) == 0);
 }

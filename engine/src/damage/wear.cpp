@@ -1,5 +1,6 @@
 #include "wrc/damage/wear.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace wrc::damage {
@@ -21,7 +22,9 @@ double usfd_wear_rate(double t) {
   switch (usfd_regime(t)) {
     case UsfdRegime::mild: w = kUsfdMildSlope * x; break;
     case UsfdRegime::severe: w = kUsfdSevereRate; break;
-    case UsfdRegime::catastrophic: w = kUsfdCatastrophicSlope * x - kUsfdCatastrophicOffset; break;
+    case UsfdRegime::catastrophic:  // the line is -0.02 at 77.2: no negative wear
+      w = std::max(0.0, kUsfdCatastrophicSlope * x - kUsfdCatastrophicOffset);
+      break;
   }
   return w * 1e-3;  // 1 ug/(m mm^2) = 1e-9 kg / (1 m 1e-6 m^2)
 }

@@ -30,10 +30,10 @@
 //   mild          T gamma / A < 10.4           W = 5.3 T gamma / A
 //   severe        10.4 <= T gamma / A <= 77.2  W = 55.0
 //   catastrophic  T gamma / A > 77.2           W = 61.9 T gamma / A - 4778.7
-// (as published: the catastrophic line starts near 0 at 77.2 and passes 55 at 78.1, a dip the fit leaves). Applied
-// per element with the local T gamma / A = |px sx| + |py sy| (Pa = N/m^2: traction times slip per |V|; the power
-// density over |V|), the depth per metre rolled is d = W / rho (W in kg/m^3 = kg per metre rolled per m^2; rho the
-// steel's density).
+// (as published: the catastrophic line starts at -0.02 at 77.2, taken as 0, and passes 55 at 78.1, a dip the fit
+// leaves). Applied per element with the local T gamma / A = |px sx| + |py sy| (Pa = N/m^2: traction times slip per
+// |V|; the power density over |V|), the depth per metre rolled is d = W / rho (W in kg/m^3 = kg per metre rolled per
+// m^2; rho the steel's density).
 #pragma once
 
 #include "wrc/core/options.hpp"
