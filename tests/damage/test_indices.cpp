@@ -124,7 +124,7 @@ TEST_CASE("damage options: defaults, reading, and errors that name the key") {
   CHECK(k_usfd.find("'k' belongs to the archard model") != std::string::npos);
   CHECK(error_of([&] { read(OptionTable{}.set("density", OptionValue::of(7800.0))); })
             .find("'density' belongs to the usfd model") != std::string::npos);
-  CHECK(error_of([&] { read(OptionTable{}.set("k", OptionValue::of(2.0))); }).find("wear: k = 2") != std::string::npos);
+  CHECK(error_of([&] { read(OptionTable{}.set("k", OptionValue::of(2.0))); }).find("ws:contact: 'wear': k = 2 must be in ]0, 1]") != std::string::npos);
   CHECK(error_of([&] { read(OptionTable{}.set("hardness", OptionValue::of(-1.0))); })
             .find("hardness = -1 Pa") != std::string::npos);
   CHECK(error_of([&] { read(OptionTable{}.set("hardnes", OptionValue::of(2e9))); }).find("'hardness'") !=

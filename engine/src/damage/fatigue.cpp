@@ -31,15 +31,15 @@ double surface_fatigue_index(double mu, double a, double b, double shear_yield, 
   return mu - 2 * std::numbers::pi * a * b * shear_yield / (3 * fz);
 }
 
-void FatigueOptions::validate() const {
+void FatigueOptions::validate(std::string_view context) const {
   if (!(shear_yield > 0 && std::isfinite(shear_yield)))
-    fail("fatigue: shear_yield = {} Pa must be finite and > 0 (wheel steel ER7: 300e6)", shear_yield);
+    fail("{}: shear_yield = {} Pa must be finite and > 0 (wheel steel ER7: 300e6)", context, shear_yield);
   const BurstowFunction& f = burstow;
   if (!(std::isfinite(f.limit) && f.threshold >= 0 && f.threshold < f.peak && f.peak < f.limit))
-    fail("fatigue: threshold = {}, peak = {}, limit = {} N must be finite with 0 <= threshold < peak < limit "
-         "(Burstow: 15, 65, 175)", f.threshold, f.peak, f.limit);
+    fail("{}: threshold = {}, peak = {}, limit = {} N must be finite with 0 <= threshold < peak < limit "
+         "(Burstow: 15, 65, 175)", context, f.threshold, f.peak, f.limit);
   if (!(f.peak_damage > 0 && f.peak_damage <= 1))
-    fail("fatigue: peak_damage = {} must be in ]0, 1] (Burstow: 5e-5 per passage)", f.peak_damage);
+    fail("{}: peak_damage = {} must be in ]0, 1] (Burstow: 5e-5 per passage)", context, f.peak_damage);
 }
 
 FatigueOptions read_fatigue_options(OptionReader& r) {
@@ -50,6 +50,7 @@ FatigueOptions read_fatigue_options(OptionReader& r) {
   f.peak = r.number("peak", {"N", "Burstow: the T gamma of the largest RCF damage"}, f.peak);
   f.limit = r.number("limit", {"N", "Burstow: the T gamma above which wear removes all RCF damage"}, f.limit);
   f.peak_damage = r.number("peak_damage", {"1", "Burstow: the RCF damage per passage at the peak"}, f.peak_damage);
+  if (!r.documenting()) o.validate(r.context());
   return o;
 }
 

@@ -29,13 +29,13 @@ double usfd_wear_rate(double t) {
   return w * 1e-3;  // 1 ug/(m mm^2) = 1e-9 kg / (1 m 1e-6 m^2)
 }
 
-void WearOptions::validate() const {
+void WearOptions::validate(std::string_view context) const {
   if (k && !(*k > 0 && *k <= 1))
-    fail("wear: k = {} must be in ]0, 1] (Archard's dimensionless coefficient; wheel on rail 1e-4 .. 4e-2)", *k);
+    fail("{}: k = {} must be in ]0, 1] (Archard's dimensionless coefficient; wheel on rail 1e-4 .. 4e-2)", context, *k);
   if (!(hardness >= 1e8 && hardness <= 1e11))
-    fail("wear: hardness = {} Pa must be in [1e8, 1e11] (wheel and rail steel: 2.5e9 .. 4e9 Pa)", hardness);
+    fail("{}: hardness = {} Pa must be in [1e8, 1e11] (wheel and rail steel: 2.5e9 .. 4e9 Pa)", context, hardness);
   if (!(density >= 1000 && density <= 30000))
-    fail("wear: density = {} kg/m^3 must be in [1000, 30000] (steel: 7850)", density);
+    fail("{}: density = {} kg/m^3 must be in [1000, 30000] (steel: 7850)", context, density);
 }
 
 WearOptions read_wear_options(OptionReader& r) {
@@ -53,6 +53,7 @@ WearOptions read_wear_options(OptionReader& r) {
     if (key && r.has(key))
       fail("{}: '{}' belongs to the {} model; model = \"{}\" does not use it", r.context(), key,
            w.model == WearModel::usfd ? "archard" : "usfd", model_name(w.model));
+  w.validate(r.context());
   return w;
 }
 

@@ -26,8 +26,9 @@ struct DamageOptions {
   void validate() const;
 };
 
-// Reads a call's `wear` and `fatigue` tables (both optional; their keys: wear.hpp, fatigue.hpp), finishing them.
-// Leaves the caller's own reader's finish() and validate() to the caller.
+// Reads and validates a call's `wear` and `fatigue` tables (both optional; their keys: wear.hpp, fatigue.hpp),
+// finishing them; messages name the reader's context ("ws:contact: 'wear': k = 2 must be ..."). Leaves the caller's
+// own reader's finish() to the caller.
 DamageOptions read_damage_options(OptionReader& options);
 
 // What the indices read of a solved area: spans over the caller's storage (index i + nx j).

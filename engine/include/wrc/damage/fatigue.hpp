@@ -30,6 +30,8 @@
 #include "wrc/halfspace/creep.hpp"
 #include "wrc/halfspace/subsurface.hpp"
 
+#include <string_view>
+
 namespace wrc::damage {
 
 // T gamma (N) of creep forces Fx, Fy (N) at creepages xi, eta; with the spin moment Mz (N m) and spin phi (1/m).
@@ -56,9 +58,10 @@ double surface_fatigue_index(double mu, double a, double b, double shear_yield, 
 struct FatigueOptions {
   double shear_yield = halfspace::kDefaultShearYield;  // k (Pa), finite and > 0 (300 MPa, ER7: subsurface.hpp)
   BurstowFunction burstow;
-  // Throws wrc::Error naming the key, its value and its range.
-  void validate() const;
+  // Throws wrc::Error "<context>: <key> = <value> must be ..." (its range).
+  void validate(std::string_view context = "fatigue") const;
 };
+// Reads the keys of the `fatigue` table and validates them under the reader's context; leaves finish() to the caller.
 FatigueOptions read_fatigue_options(OptionReader& options);
 
 const char* regime_name(BurstowRegime regime);

@@ -39,6 +39,7 @@
 #include "wrc/core/options.hpp"
 
 #include <optional>
+#include <string_view>
 
 namespace wrc::damage {
 
@@ -76,12 +77,13 @@ struct WearOptions {
   std::optional<double> k;            // Archard: a constant coefficient (-) in ]0, 1]; none: the KTH map
   double hardness = kDefaultHardness; // Archard: H (Pa), in [1e8, 1e11]
   double density = kSteelDensity;     // USFD: rho (kg/m^3), in [1000, 30000]
-  // Throws wrc::Error naming the key, its value and its range.
-  void validate() const;
+  // Throws wrc::Error "<context>: <key> = <value> must be ..." (its range).
+  void validate(std::string_view context = "wear") const;
 };
 
-// Reads the keys of the `wear` table (model, k, hardness, density); k and hardness belong to Archard, density to
-// USFD: one given with the other model is an error naming it. Leaves finish() and validate() to the caller.
+// Reads the keys of the `wear` table (model, k, hardness, density) and validates them under the reader's context;
+// k and hardness belong to Archard, density to USFD: one given with the other model is an error naming it. Leaves
+// finish() to the caller.
 WearOptions read_wear_options(OptionReader& options);
 
 const char* model_name(WearModel model);
