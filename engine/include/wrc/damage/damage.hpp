@@ -1,0 +1,84 @@
+// The damage indices of one rolling-contact area, per element and per area: T gamma, wear (Archard with the KTH map
+// or a constant k, or the USFD function: damage/wear.hpp), Burstow's RCF damage and Ekberg's surface fatigue index
+// (damage/fatigue.hpp). All from the fields a solved area holds (pressure, tractions, slip, creepages, creep forces):
+// O(elements), no solve. docs/guide/damage.md, "Wear and fatigue indices".
+#pragma once
+
+#include "wrc/core/fields.hpp"
+#include "wrc/core/options.hpp"
+#include "wrc/damage/fatigue.hpp"
+#include "wrc/damage/wear.hpp"
+#include "wrc/halfspace/grid.hpp"
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace wrc {
+struct PatchContact;
+}
+
+namespace wrc::damage {
+
+struct DamageOptions {
+  WearOptions wear;
+  FatigueOptions fatigue;
+  void validate() const;
+};
+
+// Reads and validates a call's `wear` and `fatigue` tables (both optional; their keys: wear.hpp, fatigue.hpp),
+// finishing them; messages name the reader's context ("ws:contact: 'wear': k = 2 must be ..."). Leaves the caller's
+// own reader's finish() to the caller.
+DamageOptions read_damage_options(OptionReader& options);
+
+// What the indices read of a solved area: spans over the caller's storage (index i + nx j).
+struct AreaFields {
+  halfspace::Grid grid;                    // m: x the rolling direction
+  std::span<const double> pressure;        // Pa, >= 0 (p > 0: the contact)
+  std::span<const double> px, py;          // Pa: traction on the wheel
+  std::span<const double> sx, sy;          // slip per |V| (-), 0 in adhesion
+  double V = 0;                            // m/s, != 0: the rolling speed (slip velocity = |V| s)
+  halfspace::Creepages creepage;           // at the reference point: -, -, 1/m
+  double fx = 0, fy = 0, mz = 0;           // N, N, N m: the area's creep forces and spin moment (rolling.hpp)
+};
+
+// The fields of a PatchContact with a tangential solution and its grids; throws wrc::Error when it has neither.
+AreaFields area_fields(const PatchContact& area);
+
+struct PatchDamage {
+  halfspace::Grid grid;
+  double Tgamma = 0, Tgamma_spin = 0;  // N (= J/m)
+  double normal_force = 0;             // N: sum p dA
+  double contact_area = 0;             // m^2: elements with p > 0
+  double Tgamma_per_area = 0;          // Pa (= N/m^2): Tgamma / contact_area (0 without contact)
+  // Wear (WearOptions::model).
+  WearModel model = WearModel::archard;
+  bool map = false;                    // Archard with the KTH map (false: constant k)
+  double wear_volume = 0;              // m^3/m: volume worn per metre rolled
+  double wear_depth_max = 0;           // m: the largest of wear_depth
+  std::vector<double> wear_rate;       // per element: depth per metre rolled (m/m)
+  std::vector<double> wear_depth;      // per grid row j: depth worn in one passage, sum_i wear_rate dx (m)
+  std::vector<double> wear_coefficient;  // Archard: k per element (-; 0 outside the contact); USFD: empty
+  std::vector<double> tgamma_density;  // per element |px sx| + |py sy| (Pa): the local T gamma / A
+  UsfdRegime usfd_regime = UsfdRegime::mild;  // USFD: the regime of the area's Tgamma_per_area
+  // Fatigue.
+  double rcf_damage = 0;               // Burstow: per passage, from Tgamma
+  BurstowRegime rcf_regime = BurstowRegime::none;
+  double traction_coefficient = 0;     // mu = |(Fx, Fy)| / normal_force (0 without contact)
+  double a = 0, b = 0;                 // m: the equivalent semi-axes, pi a b = contact_area (0 without contact)
+  double shear_yield = 0;              // k (Pa)
+  std::optional<double> fi_surf;       // Ekberg's FI_surf (-); none without contact
+};
+
+// The indices of one area. Throws wrc::Error naming what is wrong: an invalid grid, a field of the wrong size or not
+// finite, a negative pressure, V = 0 or not finite, creepages or forces not finite; and invalid options.
+PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& options);
+
+// Fields (Lua and C, with the call layer), flat so that they sit beside an area's own (p.Tgamma, p.wear_volume) with
+// no name in common: Tgamma, Tgamma_spin, Tgamma_per_area, wear_model, wear_map (Archard) or usfd_regime (USFD),
+// wear_volume, wear_depth_max, wear_depth (per row), the grids wear_rate, wear_coefficient (Archard), tgamma_density,
+// then rcf_damage, rcf_regime, traction_coefficient, fi_a, fi_b, shear_yield and fi_surf (with contact); each with
+// its FieldDoc.
+void describe(const PatchDamage& damage, FieldSink& out);
+
+}  // namespace wrc::damage
