@@ -92,8 +92,8 @@ function M.sweep_row(r)
     row[side .. "_contact_regions"] = region_count(w)
     row[side .. "_Fy_kN"] = w.force.y / 1e3
     row[side .. "_Fz_kN"] = w.force.z / 1e3
-    row[side .. "_angle_deg"] = w.angle * deg
-    row[side .. "_rolling_radius_mm"] = w.rolling_radius * 1e3
+    row[side .. "_angle_deg"] = w.angle and w.angle * deg  -- nil (an empty cell): a lifted wheel
+    row[side .. "_rolling_radius_mm"] = w.rolling_radius and w.rolling_radius * 1e3
   end
   local a, an = max_angle(r.left), max_angle(r.left, "nominal_angle")
   row.left_max_patch_angle_deg = a and a * deg

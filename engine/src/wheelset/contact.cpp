@@ -395,8 +395,10 @@ void describe(const WheelContact& wc, FieldSink& out) {
   if (!wc.flange_climb.empty()) out.string("flange_climb_reason", wc.flange_climb);
   out.vec3("force", wc.force);
   out.vec3("moment", wc.moment);
-  out.number("angle", wc.angle);
-  out.number("rolling_radius", wc.rolling_radius);
+  if (wc.force.z() > 0) {  // a lifted wheel has no contact angle nor rolling radius: absent, never 0
+    out.number("angle", wc.angle);
+    out.number("rolling_radius", wc.rolling_radius);
+  }
   describe(wc.creep, out);
   out.begin_list("patches", wc.patches.size());
   for (const PatchContact& pc : wc.patches) {

@@ -125,7 +125,7 @@ struct WheelContact {
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // about the wheelset centre (N m)
   std::vector<PatchContact> patches;
   double angle = 0;           // contact angle of the resultant force (rad)
-  double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); 0 without contact
+  double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); not described when lifted
   Sensitivity sensitivity = Sensitivity::Zero();
   std::string flange_climb;   // why the wheel is past flange climb (wheelset/plausibility.hpp); "" when it is not
   CreepTotals creep;
@@ -253,7 +253,7 @@ void add_rolling(const ContactModel& model, ContactResult& result, const Rolling
 void drop_grids(ContactResult& result);
 
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
-// flange_climb_reason when true), force, moment, angle, rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
+// flange_climb_reason when true), force, moment, angle and rolling_radius (absent when lifted), patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
 // iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
 // also its fields (wheelset/tangential.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
