@@ -89,6 +89,26 @@ TEST_CASE("an equilibrium through the C API carries Q with no roll moment, and i
   CHECK(wrc_result_free(e) == WRC_OK);
 }
 
+TEST_CASE("grids=false is accepted alike by wrc_contact, wrc_equilibrium and wrc_wheel, and drops the grids") {
+  Fixture f;
+  for (const char* options : {"grids=false", "grids=true"}) {
+    const bool kept = std::string(options) == "grids=true";
+    wrc_result *c = nullptr, *e = nullptr, *w = nullptr;
+    REQUIRE_MESSAGE(wrc_contact(f.ws, 2e-3, -0.05e-3, 0, 0, options, &c) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_equilibrium(f.ws, 2e-3, 0.0, 100e3, options, &e) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_wheel(f.ws, 0, 2e-3, 0, 0, 50e3, options, &w) == WRC_OK, last());
+    for (auto [r, prefix] : {std::pair{c, "left."}, {e, "left."}, {w, ""}}) {
+      CAPTURE(options);
+      CAPTURE(prefix);
+      const std::string patch = std::string(prefix) + "patches.1.";
+      CHECK(number(r, (patch + "normal_force").c_str()) > 0);  // the area is there, with or without its grids
+      size_t count = 0;
+      CHECK((wrc_result_numbers(r, (patch + "pressure").c_str(), nullptr, 0, &count) != WRC_NOT_FOUND) == kept);
+    }
+    for (wrc_result* r : {c, e, w}) wrc_result_free(r);
+  }
+}
+
 TEST_CASE("bad input: a status and a message that names what is wrong") {
   Fixture f;
   wrc_result* r = nullptr;

@@ -110,6 +110,7 @@ class WheelSolver {
     if (!res_.converged && res_.message.empty())
       res_.message = fmt::format("the last evaluation is {:.4g} N off, beyond force_tolerance x Fz = {:.4g} N",
                                  res_.residual, l.force_tolerance * c_.Fz);
+    if (!opt_.keep_grids) drop_grids(cur_);
     res_.wheel = std::move(cur_.wheel[c_.side]);
   }
 
@@ -276,6 +277,7 @@ WheelCase read_wheel_case(OptionReader& r) {
 WheelOptions read_wheel_options(OptionReader& r) {
   WheelOptions o;
   o.limits = read_solve_limits(r);
+  o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
   o.validate(r.context());
   return o;
 }
