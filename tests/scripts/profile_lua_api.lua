@@ -80,7 +80,7 @@ check.fails(function() wrc.profile.load("profiles/s1002.lua", {kind = "rail"}) e
 -- as read.
 local err = check.fails(function() wrc.profile.load("profiles/60e1.lua", {unit = "m"}) end,
                         "unknown option 'unit' for the Lua definition (did you mean 'units'?)", "'unit' on a definition")
-check.ok(err:find("it reads: step, depth", 1, true), "the message lists what 60e1.lua reads: " .. err)
+check.ok(err:find("it reads: depth, step;", 1, true), "the message lists what 60e1.lua reads: " .. err)
 check.fails(function() wrc.profile.load("profiles/s1002.lua", {step = 0.5e-3, form = -0.06}) end,
             "(did you mean 'from'?)", "a misspelt option of s1002.lua")
 check.ok(#wrc.profile.load("profiles/s1002.lua", {step = 0.5e-3, from = -0.06, mirror_y = false}) == 241,

@@ -179,8 +179,8 @@ int text_load(lua_State* L) {
 Profile run(const std::string& path, const OptionTable& options, Budget& budget, int depth);
 
 // A definition's options reach it as a proxy that records the keys it reads (upvalue 1: the options, 2: the keys
-// read), so that a key nobody reads is an unknown option (check_options_read), as for a file's reader.
-// longjmp-safe: keeps no C++ object alive; a memory error here is the definition's Lua error
+// read), so that a key nobody reads is an unknown option (check_options_read), as for a file's reader. It keeps no
+// C++ object alive: a memory error here is the definition's Lua error.
 int read_option(lua_State* L) {
   lua_pushvalue(L, 2);
   lua_pushboolean(L, 1);
@@ -249,6 +249,7 @@ void check_options_read(lua_State* L, int read, const OptionTable& options, cons
   for (const auto& [key, value] : options.entries)
     if (std::find(known.begin(), known.end(), key) == known.end()) unknown.push_back(key);
   if (unknown.empty()) return;
+  std::sort(known.begin() + static_cast<std::ptrdiff_t>(load_option_keys().size()), known.end());  // not hash order
   const std::string near = closest_name(unknown.front(), known);
   fail("wrc.profile.load: {}: unknown option '{}' for the Lua definition{} (it reads: {}; wrc.profile.load takes: {})",
        path, unknown.front(), near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),

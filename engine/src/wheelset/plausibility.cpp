@@ -18,6 +18,10 @@ struct Extent {
 // plus some of the flange back; a rail head 30-50 mm, a whole rail section 130-190 mm.
 constexpr Extent kWheelWidth{5e-3, 0.25}, kWheelHeight{0, 0.1}, kRailWidth{5e-3, 0.2}, kRailHeight{0, 0.2};
 constexpr double kFieldSideDrop = 10e-3;  // m: a wheel's radius may grow this much toward the field side (hollow wear)
+// m: a rail head falls on its field side (60E1: 30 mm; a crowned test rail R450 over +-25 mm: 0.7 mm), where a wheel
+// read as a rail ends at its highest point
+constexpr double kHeadCornerDrop = 0.1e-3;
+constexpr double kFieldSideRise = 1e-3;   // m: and does not rise again toward its field-side end by more than this
 
 std::string describe_profile(const Profile& p, int side) {
   return fmt::format("the {} {} profile '{}' ({})", side_name(side), to_string(p.kind), p.name, p.source);
@@ -53,6 +57,34 @@ void check_field_side(const Profile& p, int side) {
            "Is it a rail profile given as a wheel, or a wheel whose y axis is reversed (mirror_y)?",
            describe_profile(p, side), (z0 - p.z[i]) * 1e3, p.y[i] * 1e3);
   }
+}
+
+// A rail head falls on its field side, past the head's field corner, and keeps falling (rail frame: y toward the
+// field side, z up). A wheel's profile read as a rail does neither: its z (the radius offset, docs/design.md section
+// 2) grows toward the field side, where its tread ends, or, hollow-worn, falls over the false flange and rises again
+// to the tread's end; its lowest point is the flange tip, on the gauge side. The highest point is taken as far toward
+// the field side as it reaches (a flat top). The shape alone decides, whatever the file's format.
+void check_head(const Profile& p, int side) {
+  std::size_t top = 0;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (p.z[i] >= p.z[top]) top = i;
+  double low = p.z[top], rise = 0;  // the lowest point beyond the top so far, and the largest rise after one
+  for (std::size_t i = top; i < p.size(); ++i) {
+    low = std::min(low, p.z[i]);
+    rise = std::max(rise, p.z[i] - low);
+  }
+  const double drop = p.z[top] - low;
+  const std::size_t tip = static_cast<std::size_t>(std::min_element(p.z.begin(), p.z.end()) - p.z.begin());
+  // A rise on the field side is a hollow wheel's only with a flange on the gauge side: a rail with two crowns (a
+  // test geometry) has its lowest point between them.
+  const bool flange = tip < top && p.z[top] - p.z[tip] > kMinFlangeHeight;
+  if (drop >= kHeadCornerDrop && (rise <= kFieldSideRise || !flange)) return;
+  fail("wrc.wheelset: {} falls {:.1f} mm on the field side of its highest point (y = {:+.1f} mm) and rises again by "
+       "{:.1f} mm toward its field-side end; a rail head falls more than {:.1f} mm on its field side (60E1: 30 mm) and "
+       "does not rise again, a wheel's tread rises toward its field side. Its lowest point, {:.1f} mm below the top at "
+       "y = {:+.1f} mm, is where a wheel's flange tip would be. Is it a wheel profile given as a rail (kind = \"rail\")?",
+       describe_profile(p, side), drop * 1e3, p.y[top] * 1e3, rise * 1e3, kHeadCornerDrop * 1e3,
+       (p.z[top] - p.z[tip]) * 1e3, p.y[tip] * 1e3);
 }
 
 // back_to_back + both flange thicknesses must be less than the gauge, or the flanges sit on the rails.
@@ -109,6 +141,7 @@ void check_setup(const Track& t) {
     check_extent(t.wheel[s], s);
     check_extent(t.rail[s], s);
     check_field_side(t.wheel[s], s);
+    check_head(t.rail[s], s);
   }
   check_flangeway(t);
 }

@@ -31,7 +31,8 @@ Flange flange_of(const Profile& wheel);
 
 // Throws wrc::Error when a set-up cannot be what the user meant: a profile far too wide or tall for its kind (wrong
 // units), a "wheel" whose radius grows by more than 10 mm toward the field side (a rail profile, or a wheel with
-// reversed y), flanges that do not fit between the rails (back_to_back + both flange thicknesses >= gauge).
+// reversed y), a "rail" that does not fall by 0.1 mm on the field side of its highest point or rises again there by
+// more than 1 mm (a wheel profile: its tread rises toward the field side), flanges that do not fit between the rails (back_to_back + both flange thicknesses >= gauge).
 void check_setup(const Track& track);
 
 // Lateral position in the profile frame of a wheelset-frame lateral position Y of that side.
