@@ -19,16 +19,6 @@ using pose_solve::deepest;
 using pose_solve::EvaluationBudget;
 using pose_solve::UnreachableLoad;
 
-// The height at which one wheel just touches its rail (radial overlap 0) at y, yaw and roll. The overlap of the
-// deepest line falls almost one for one as z rises: Illinois steps on a wide bracket take a few evaluations.
-double touch_height(const GeometryModel& g, int side, double y, double yaw, double roll) {
-  auto pen = [&](double z) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
-  const double fa = pen(-0.02), fb = pen(0.02);
-  if (!(fa > 0 && fb < 0)) fail("wheel: the {} wheel does not touch its rail within z = +-20 mm", side_name(side));
-  bool ok = false;
-  return bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-12, 200, ok);
-}
-
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
 //
 // Predictions (predict) bring a within ~1e-6 of the load's in two evaluations. From there, or without them:
@@ -46,7 +36,7 @@ class WheelSolver {
   WheelSolver(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
               WheelResult& res)
       : model_(model), c_(c), ws_(ws), opt_(opt), res_(res) {
-    z_touch_ = touch_height(model.geometry(), c.side, c.y, c.yaw, c.roll);
+    z_touch_ = touch_height(model.geometry(), c.side, c.y, c.yaw, c.roll, "wheel");
     target_ = std::cbrt(c.Fz * c.Fz);
     tight_ = std::max(opt.limits.normal_tolerance, model.options().normal.tolerance);
     loose_ = std::max(tight_, 1e-2);
