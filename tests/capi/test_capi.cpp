@@ -109,6 +109,24 @@ TEST_CASE("grids=false is accepted alike by wrc_contact, wrc_equilibrium and wrc
   }
 }
 
+TEST_CASE("implausible magnitudes are refused with their unit, as in Lua, unless check_setup=false") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  CHECK(wrc_equilibrium(f.ws, 0, 0, 200, nullptr, &r) == WRC_ERROR);  // kN meant
+  CHECK(last().find("Q = 200 N is implausible for a wheelset load") != std::string::npos);
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 100, nullptr, &r) == WRC_ERROR);
+  CHECK(last().find("Fz = 100 N is implausible for a wheel load") != std::string::npos);
+  CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "V=300 mu=0.3", &r) == WRC_ERROR);  // km/h meant
+  CHECK(last().find("V = 300 m/s is implausible") != std::string::npos);
+  wrc_wheelset* w2 = nullptr;
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 E=210", &w2) == WRC_ERROR);  // GPa meant
+  CHECK(last().find("E = 210 Pa is implausible") != std::string::npos);
+  REQUIRE(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=1e-3 check_setup=false", &w2) == WRC_OK);
+  CHECK(wrc_contact(w2, 0, -0.05e-3, 0, 0, "V=300 mu=0.3 grids=false", &r) == WRC_OK);
+  wrc_result_free(r);
+  wrc_wheelset_free(w2);
+}
+
 TEST_CASE("bad input: a status and a message that names what is wrong") {
   Fixture f;
   wrc_result* r = nullptr;
@@ -167,7 +185,12 @@ TEST_CASE("issue 14's options through the C API: check_strategy, max_elements, m
   CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 gauge=1.42", &w2) == WRC_ERROR);
   CHECK(last().find("the flanges do not fit between the rails") != std::string::npos);
   wrc_result* r = nullptr;
-  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_NOT_CONVERGED);
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_ERROR);
+  CHECK(last().find("Fz = 1e+09 N is implausible for a wheel load") != std::string::npos);
+  // Without the set-up checks the load reaches the solver, which stops: out of reach within max_penetration.
+  REQUIRE(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=0.5e-3 check_setup=false", &w2) == WRC_OK);
+  CHECK(wrc_wheel(w2, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_NOT_CONVERGED);
+  wrc_wheelset_free(w2);
   char msg[512];
   size_t len = 0;
   REQUIRE(wrc_result_string(r, "error", msg, sizeof msg, &len) == WRC_OK);

@@ -6,6 +6,7 @@
 #include "wheelset/vertical_load.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 #include "wrc/core/roots.hpp"
 #include "wrc/kinematics/rigid.hpp"
 
@@ -217,13 +218,14 @@ class WheelSolver {
 
 }  // namespace
 
-void WheelCase::validate(std::string_view context) const {
+void WheelCase::validate(std::string_view context, bool plausible) const {
   if (side != kLeft && side != kRight)
     fail("{}: side = {} must be {} (left) or {} (right)", context, side, +kLeft, +kRight);
   pose_solve::check_position(y, yaw, context);
   if (!std::isfinite(roll) || std::abs(roll) > 0.3)
     fail("{}: roll = {} rad must be finite and within +-0.3 rad", context, roll);
   pose_solve::check_load("Fz", Fz, context);
+  if (plausible) check_plausible(context, "Fz", Fz, kWheelLoad);
 }
 
 void WheelOptions::validate(std::string_view context) const {
@@ -234,7 +236,7 @@ void WheelOptions::validate(std::string_view context) const {
 
 WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
                         std::optional<double> start, const std::optional<RollingRequest>& rolling) {
-  c.validate("wheel");
+  c.validate("wheel", model.options().check_magnitudes);
   opt.validate("wheel");
   WheelResult res;
   res.side = c.side;

@@ -205,7 +205,7 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
 // evaluate_contact, with the predictor's load when given: locate, then each wheel's areas.
 ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorkspace& ws, const ContactRequest& request,
                        const VerticalLoad* load) {
-  request.validate();
+  request.validate(model.options().check_magnitudes);
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);
@@ -261,7 +261,10 @@ ContactRequest read_contact_request(OptionReader& r) {
   return req;
 }
 
-void ContactRequest::validate() const {
+void ContactRequest::validate(bool plausible) const {
+  if (plausible && rolling) {
+    check_plausible("contact", "V", rolling->kinematics ? rolling->kinematics->V : rolling->V, kTrainSpeed);
+  }
   if (!(max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", max_penetration);
   if (!(tolerance >= 0 && tolerance <= 1e-2))
     fail("contact: tolerance = {} must be in [0, 1e-2] (relative; 0: the model's)", tolerance);

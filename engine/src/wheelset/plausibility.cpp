@@ -3,6 +3,8 @@
 
 #include "wrc/core/error.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -102,6 +104,17 @@ void check_flangeway(const Track& t) {
 }
 
 }  // namespace
+
+void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& r) {
+  if (!std::isfinite(value) || (std::abs(value) >= r.lo && std::abs(value) <= r.hi)) return;  // NaN: the range checks
+  fail("{}: {} = {:.6g} {} is implausible for {} ({:.3g} .. {:.3g} {}): is it in another unit? wrc takes SI units ({}); "
+       "check_setup = false on the wheelset accepts it", context, key, value, r.unit, r.what, r.lo, r.hi, r.unit, r.hint);
+}
+
+void check_plausible(const TrackParams& track, const halfspace::Material& material) {
+  check_plausible("wrc.wheelset", "radius", track.radius, kWheelRadius);
+  check_plausible("wrc.wheelset", "E", material.E, kSteelModulus);
+}
 
 void check_setup(const Track& t) {
   for (int s : {kLeft, kRight}) {

@@ -20,8 +20,9 @@ struct WheelCase {
   double yaw = 0;    // rad, within +-0.3
   double roll = 0;   // rad, within +-0.3
   double Fz = 0;     // the wheel's vertical force (N), in ]0, kMaxLoad]
-  // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range.
-  void validate(std::string_view context) const;
+  // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range;
+  // `plausible`: also for an Fz no railway wheel carries (kWheelLoad, wheelset/plausibility.hpp).
+  void validate(std::string_view context, bool plausible = false) const;
 };
 
 // The wheel solver's settings.

@@ -59,6 +59,9 @@ struct ContactOptions {
   int margin = 2;                 // elements around the projected inter-penetration area
   double merge_tolerance = 0.01;  // relative force error of solving two areas apart that triggers a merge
   double merge_angle = 0.26;      // rad (15 deg): areas whose normals differ more are never merged
+  // The calls' loads and speeds checked against a railway wheelset's (wheelset/plausibility.hpp); the wheelset sets it
+  // from WheelsetParams::check_setup.
+  bool check_magnitudes = true;
   bool dense = false;             // the dense reference solver instead of the fast one (tests)
   // Largest potential contact area (elements, ~kBytesPerElement each): a larger one is an error naming the grid as too
   // fine for the cap, or the pose as far too deep. 2^22: the paper's poses (S1002/60E1, Q = 200 kN, y = -8 .. 8 mm,
@@ -223,7 +226,8 @@ struct ContactRequest {
   // check their solution against their own SolveLimits::max_penetration (equilibrium/limits.hpp).
   double max_penetration = kMaxPenetration;
   // Throws wrc::Error naming the member, its value and its range (evaluate_contact calls it first).
-  void validate() const;
+  // `plausible`: the speed checked against a train's too (ContactOptions::check_magnitudes).
+  void validate(bool plausible = false) const;
 };
 
 // Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),

@@ -5,8 +5,10 @@
 
 #include "wrc/geometry/flange.hpp"
 #include "wrc/geometry/track.hpp"
+#include "wrc/halfspace/material.hpp"
 
 #include <string>
+#include <string_view>
 
 namespace wrc {
 
@@ -16,5 +18,25 @@ namespace wrc {
 // more than 1 mm (a wheel profile: its tread rises toward the field side), flanges that do not fit between the rails
 // (back_to_back + both flange thicknesses >= gauge).
 void check_setup(const Track& track);
+
+// The magnitudes a railway wheelset's inputs have (SI units). A value outside was almost surely given in another unit
+// (kN for N, GPa for Pa, mm for m, km/h for m/s): refused with the unit in the message, unless check_setup = false.
+// The options' validate() functions call check_plausible, so that Lua and C callers get the same checks.
+struct Plausible {
+  const char* what;  // "a wheelset load"
+  const char* unit;  // "N"
+  double lo, hi;     // the plausible range of |value| (SI)
+  const char* hint;  // "200 kN is 200e3"
+};
+inline constexpr Plausible kWheelsetLoad{"a wheelset load", "N", 2e3, 2e6, "200 kN is Q = 200e3"};
+inline constexpr Plausible kWheelLoad{"a wheel load", "N", 1e3, 1e6, "100 kN is Fz = 100e3"};
+inline constexpr Plausible kSteelModulus{"Young's modulus of wheel and rail steel", "Pa", 5e10, 5e11,
+                                         "210 GPa is E = 2.1e11"};
+inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 1.5, "450 mm is radius = 0.45"};
+inline constexpr Plausible kTrainSpeed{"a train's speed", "m/s", 0, 160, "300 km/h is V = 83.3"};
+void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range);
+
+// The wheelset's parameters (wrc.wheelset{}): radius and E.
+void check_plausible(const TrackParams& track, const halfspace::Material& material);
 
 }  // namespace wrc
