@@ -109,6 +109,21 @@ TEST_CASE("grids=false is accepted alike by wrc_contact, wrc_equilibrium and wrc
   }
 }
 
+TEST_CASE("an error names the C function once (was 'wrc_wheel: wrc_wheel: unknown key')") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  wrc_wheelset* w2 = nullptr;
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e5, "raduis=1", &r) == WRC_ERROR);
+  CHECK(last().rfind("wrc_wheel: unknown key 'raduis'", 0) == 0);
+  CHECK(wrc_equilibrium(f.ws, 0, 0, 2e5, "raduis=1", &r) == WRC_ERROR);
+  CHECK(last().rfind("wrc_equilibrium: unknown key 'raduis'", 0) == 0);
+  CHECK(wrc_contact(f.ws, 0, 0, 0, 0, "raduis=1", &r) == WRC_ERROR);
+  CHECK(last().rfind("wrc_contact: unknown key 'raduis'", 0) == 0);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "raduis=0.45", &w2) == WRC_ERROR);
+  CHECK(last().rfind("wrc_wheelset_new: ", 0) == 0);
+  CHECK(last().find("wrc_wheelset_new: wrc_wheelset_new") == std::string::npos);
+}
+
 TEST_CASE("implausible magnitudes are refused with their unit, as in Lua, unless check_setup=false") {
   Fixture f;
   wrc_result* r = nullptr;
