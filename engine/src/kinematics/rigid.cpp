@@ -391,7 +391,7 @@ void flag_flange_climb(const GeometryModel& g, RigidResult& res) {
   if (!res.converged) return;
   for (int s : {kLeft, kRight}) {
     RigidWheel& w = res.wheel[s];
-    const Flange flange = flange_of(g.track->wheel[s]);
+    const Flange& flange = g.side[s].flange;
     for (const RigidContactPoint& c : w.contacts)
       if (w.flange_climb.empty()) w.flange_climb = beyond_steepest(flange, c.wheel_profile.x());
     if (w.flange_climb.empty() && res.has_forces() && !res.tension && !w.contacts.empty()) {

@@ -45,7 +45,7 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
   if (!geometry_) fail("contact model: no geometry");
   if (geometry_->track)
-    for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = flange_of(geometry_->track->wheel[s]);
+    for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = geometry_->side[s].flange;
   for (int s : {kLeft, kRight}) {
     const RailLines& rail = geometry_->side[s].rail;
     std::vector<double>& S = rail_arc_[static_cast<std::size_t>(s)];
