@@ -35,6 +35,13 @@ local function plain_path(path)
   return path:match("^[%w_./]") and path or ("./" .. path)
 end
 local function gp_path(path) return gp_string(plain_path(path)) end
+-- A figure's script names its data and picture by their file names alone and runs in their folder, so that it can be
+-- run again from there (`gnuplot fig.gp` in the output folder), wherever the study was started.
+local function leaf(path) return (tostring(path):match("[^/]*$")) end
+local function folder(path)
+  local d = tostring(path):match("^(.*)/[^/]*$")
+  return d == nil and "." or (d == "" and "/" or d)
+end
 
 -- mkdir -p
 function M.mkdir(path) return wrc.fs.mkdir(path) end
@@ -182,14 +189,15 @@ end
 -- temporary picture, renamed once gnuplot succeeded.
 local function gnuplot(file, script)
   local base = file:gsub("%.[^./]+$", "")
-  M.text(base .. ".gp", (script:gsub("@OUTPUT@", function() return gp_path(file) end)))
+  M.text(base .. ".gp", (script:gsub("@OUTPUT@", function() return gp_path(leaf(file)) end)))
   -- Temporary names of wrc's own pattern (wrc.fs.is_temporary): a killed run's are recognised and removed.
   local tmp_png, tmp_gp, tmp_log = wrc.fs.temporary_name(file), wrc.fs.temporary_name(base .. ".gp"),
                                    wrc.fs.temporary_name(base .. ".log")
   local f = assert(io.open(tmp_gp, "w"))
-  f:write((script:gsub("@OUTPUT@", function() return gp_path(tmp_png) end)))
+  f:write((script:gsub("@OUTPUT@", function() return gp_path(leaf(tmp_png)) end)))
   f:close()
-  local ok = os.execute("gnuplot " .. shell_quote(plain_path(tmp_gp)) .. " 2>" .. shell_quote(tmp_log))
+  local ok = os.execute("(cd " .. shell_quote(plain_path(folder(tmp_gp))) .. " && gnuplot " ..
+                        shell_quote(plain_path(leaf(tmp_gp))) .. ") 2>" .. shell_quote(tmp_log))
   local lf = io.open(tmp_log)
   local log = lf and lf:read("a") or ""
   if lf then lf:close() end
@@ -249,7 +257,7 @@ function M.plot(o)
       end
     end
     f:write("\n\n")
-    parts[#parts + 1] = string.format("%s index %d using 1:2 with %s title %s", gp_path(data), k - 1,
+    parts[#parts + 1] = string.format("%s index %d using 1:2 with %s title %s", gp_path(leaf(data)), k - 1,
                                       se.style or "lines", gp_string(se.title or ""))
   end
   f:close()
@@ -285,7 +293,7 @@ function M.map(o)
     s[#s + 1] = "set view map"
     s[#s + 1] = "set size ratio -1"
   end
-  s[#s + 1] = "splot " .. gp_path(data) .. " using 1:2:3 with pm3d notitle"
+  s[#s + 1] = "splot " .. gp_path(leaf(data)) .. " using 1:2:3 with pm3d notitle"
   gnuplot(o.file, table.concat(s, "\n") .. "\n")
 end
 
@@ -310,7 +318,7 @@ function M.scatter3d(o)
   s[#s + 1] = "set palette rgbformulae 33,13,10"
   s[#s + 1] = "set view " .. (o.view or "65,35")
   s[#s + 1] = "set ticslevel 0"
-  s[#s + 1] = "splot " .. gp_path(data) .. " using 1:2:3:4 with points pt 7 ps 0.3 palette notitle"
+  s[#s + 1] = "splot " .. gp_path(leaf(data)) .. " using 1:2:3:4 with points pt 7 ps 0.3 palette notitle"
   gnuplot(o.file, table.concat(s, "\n") .. "\n")
 end
 

@@ -92,8 +92,8 @@ function M.sweep_row(r)
     row[side .. "_contact_regions"] = region_count(w)
     row[side .. "_Fy_kN"] = w.force.y / 1e3
     row[side .. "_Fz_kN"] = w.force.z / 1e3
-    row[side .. "_angle_deg"] = w.angle * deg
-    row[side .. "_rolling_radius_mm"] = w.rolling_radius * 1e3
+    row[side .. "_angle_deg"] = w.angle and w.angle * deg  -- nil (an empty cell): a lifted wheel
+    row[side .. "_rolling_radius_mm"] = w.rolling_radius and w.rolling_radius * 1e3
   end
   local a, an = max_angle(r.left), max_angle(r.left, "nominal_angle")
   row.left_max_patch_angle_deg = a and a * deg
@@ -307,9 +307,15 @@ local function scaled(grid, k, floor)
   return v
 end
 
--- The grid's second axis: across the contact plane, or along the rail's profile (a conformal area).
-local function across(p)
-  return p.surface == "conformal" and "arc length along the rail profile (mm)" or "lateral, in the contact plane (mm)"
+-- The grid's second axis: across the contact plane, or along the rail's profile (a conformal area), and which way it
+-- points across the rail: toward the field side (away from the track centre: +y on the left rail, -y on the right)
+-- or the gauge side. A map draws it upward.
+local function across(p, side)
+  local d = p.frame.t2.y
+  if p.rows and #p.rows.y > 1 then d = p.rows.y[#p.rows.y] - p.rows.y[1] end
+  local up = d * (side == "left" and 1 or -1) >= 0 and "field" or "gauge"
+  local what = p.surface == "conformal" and "arc length along the rail profile" or "lateral, in the contact plane"
+  return string.format("%s (mm): %s side up, %s side down", what, up, up == "field" and "gauge" or "field")
 end
 
 -- Figures 6 and 7: pressure and undeformed distance of every contact area of an equilibrium.
@@ -322,10 +328,10 @@ function M.plot_patches(dir, tag, e)
         out.map{file = string.format("%s/fig6_pressure_%s.png", dir, name), x = xs, y = ys, value = scaled(p.pressure, 1e-6),
                 title = string.format("pressure (MPa), %s wheel, %s: N = %.1f kN, angle %.1f deg", side, tag,
                                       p.normal_force / 1e3, p.angle * deg),
-                xlabel = "x, rolling direction (mm)", ylabel = across(p), cblabel = "MPa"}
+                xlabel = "x, rolling direction (mm)", ylabel = across(p, side), cblabel = "MPa"}
         out.map{file = string.format("%s/fig7_h_%s.png", dir, name), x = xs, y = ys, value = scaled(p.h, 1e3, -0.05),
                 title = string.format("undeformed distance h (mm, > 0 inter-penetration), %s wheel, %s", side, tag),
-                xlabel = "x, rolling direction (mm)", ylabel = across(p), cblabel = "mm"}
+                xlabel = "x, rolling direction (mm)", ylabel = across(p, side), cblabel = "mm"}
       end
     end
   end
@@ -360,7 +366,9 @@ local function rail_surface_mapper(p)
   end
 end
 
--- Figure 8: the pressure of the left wheel's contact areas on the rail surface, in the track frame.
+-- Figure 8: the pressure of the left wheel's contact areas on the rail surface, in the track frame (docs/design.md
+-- section 2: origin at the centre of the centred wheelset, x along the track, y toward the left rail, z up; the rail
+-- surface lies about r0 below the origin), which the caption names.
 function M.plot_rail_pressure(dir, name, title, e)
   local points = {}
   for _, p in ipairs(e.left.patches) do
@@ -378,8 +386,10 @@ function M.plot_rail_pressure(dir, name, title, e)
     end
   end
   out.scatter3d{file = dir .. "/" .. name .. "_rail_pressure.png", points = points, width = 900, height = 700,
-                title = "Fig. 8: pressure on the left rail surface, " .. title, xlabel = "x (mm)", ylabel = "y (mm)",
-                zlabel = "z (mm)", cblabel = "MPa"}
+                title = "Fig. 8: pressure on the left rail surface, " .. title ..
+                        " (track frame: origin at the centred wheelset's centre, y toward the left rail, z up)",
+                xlabel = "x along the track (mm)", ylabel = "y, track frame (mm): + field side, - gauge side",
+                zlabel = "z, track frame (mm; the rail top about r0 below the centre)", cblabel = "MPa"}
 end
 
 return M

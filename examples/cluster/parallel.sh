@@ -10,7 +10,8 @@
 #              the study script at the same path, and the output folder on a shared file system; remote jobs run
 #              in this working directory.
 #
-# Environment: WRC, the wrc executable (default: `wrc` on the PATH). A shard that was stopped is simply run again:
+# Environment: WRC, the wrc executable (default: `wrc` on the PATH, else build/wrc of the source tree this script is
+# in, as the README builds it). A shard that was stopped is simply run again:
 # it resumes after its last finished block. Exit status: that of the merge (0, or 3 when cases failed).
 set -euo pipefail
 
@@ -31,7 +32,12 @@ if [ $# -lt 1 ]; then
 fi
 study=$1
 shift
-wrc=${WRC:-wrc}
+wrc=${WRC:-}
+if [ -z "$wrc" ]; then
+  wrc=$(command -v wrc || true)
+  [ -n "$wrc" ] || wrc=$(cd "$(dirname "$(readlink -f "$0")")/../.." && pwd)/build/wrc
+fi
+command -v "$wrc" >/dev/null || { echo "parallel.sh: no wrc: not on the PATH nor at $wrc; set WRC=/path/to/wrc" >&2; exit 2; }
 command -v parallel >/dev/null || { echo "parallel.sh: GNU parallel is not installed (Debian: apt install parallel)" >&2; exit 2; }
 
 # The shard command's words reach the jobs in an environment variable (shell-quoted by printf %q), not on GNU

@@ -89,6 +89,59 @@ TEST_CASE("an equilibrium through the C API carries Q with no roll moment, and i
   CHECK(wrc_result_free(e) == WRC_OK);
 }
 
+TEST_CASE("grids=false is accepted alike by wrc_contact, wrc_equilibrium and wrc_wheel, and drops the grids") {
+  Fixture f;
+  for (const char* options : {"grids=false", "grids=true"}) {
+    const bool kept = std::string(options) == "grids=true";
+    wrc_result *c = nullptr, *e = nullptr, *w = nullptr;
+    REQUIRE_MESSAGE(wrc_contact(f.ws, 2e-3, -0.05e-3, 0, 0, options, &c) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_equilibrium(f.ws, 2e-3, 0.0, 100e3, options, &e) == WRC_OK, last());
+    REQUIRE_MESSAGE(wrc_wheel(f.ws, 0, 2e-3, 0, 0, 50e3, options, &w) == WRC_OK, last());
+    for (auto [r, prefix] : {std::pair{c, "left."}, {e, "left."}, {w, ""}}) {
+      CAPTURE(options);
+      CAPTURE(prefix);
+      const std::string patch = std::string(prefix) + "patches.1.";
+      CHECK(number(r, (patch + "normal_force").c_str()) > 0);  // the area is there, with or without its grids
+      size_t count = 0;
+      CHECK((wrc_result_numbers(r, (patch + "pressure").c_str(), nullptr, 0, &count) != WRC_NOT_FOUND) == kept);
+    }
+    for (wrc_result* r : {c, e, w}) wrc_result_free(r);
+  }
+}
+
+TEST_CASE("an error names the C function once (was 'wrc_wheel: wrc_wheel: unknown key')") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  wrc_wheelset* w2 = nullptr;
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e5, "raduis=1", &r) == WRC_ERROR);
+  CHECK(last().rfind("wrc_wheel: unknown key 'raduis'", 0) == 0);
+  CHECK(wrc_equilibrium(f.ws, 0, 0, 2e5, "raduis=1", &r) == WRC_ERROR);
+  CHECK(last().rfind("wrc_equilibrium: unknown key 'raduis'", 0) == 0);
+  CHECK(wrc_contact(f.ws, 0, 0, 0, 0, "raduis=1", &r) == WRC_ERROR);
+  CHECK(last().rfind("wrc_contact: unknown key 'raduis'", 0) == 0);
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "raduis=0.45", &w2) == WRC_ERROR);
+  CHECK(last().rfind("wrc_wheelset_new: ", 0) == 0);
+  CHECK(last().find("wrc_wheelset_new: wrc_wheelset_new") == std::string::npos);
+}
+
+TEST_CASE("implausible magnitudes are refused with their unit, as in Lua, unless check_setup=false") {
+  Fixture f;
+  wrc_result* r = nullptr;
+  CHECK(wrc_equilibrium(f.ws, 0, 0, 200, nullptr, &r) == WRC_ERROR);  // kN meant
+  CHECK(last().find("Q = 200 N is implausible for a wheelset load") != std::string::npos);
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 100, nullptr, &r) == WRC_ERROR);
+  CHECK(last().find("Fz = 100 N is implausible for a wheel load") != std::string::npos);
+  CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "V=300 mu=0.3", &r) == WRC_ERROR);  // km/h meant
+  CHECK(last().find("V = 300 m/s is implausible") != std::string::npos);
+  wrc_wheelset* w2 = nullptr;
+  CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 E=210", &w2) == WRC_ERROR);  // GPa meant
+  CHECK(last().find("E = 210 Pa is implausible") != std::string::npos);
+  REQUIRE(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=1e-3 check_setup=false", &w2) == WRC_OK);
+  CHECK(wrc_contact(w2, 0, -0.05e-3, 0, 0, "V=300 mu=0.3 grids=false", &r) == WRC_OK);
+  wrc_result_free(r);
+  wrc_wheelset_free(w2);
+}
+
 TEST_CASE("bad input: a status and a message that names what is wrong") {
   Fixture f;
   wrc_result* r = nullptr;
@@ -147,7 +200,12 @@ TEST_CASE("issue 14's options through the C API: check_strategy, max_elements, m
   CHECK(wrc_wheelset_new(f.wheel, f.rail, "cant=0 gauge=1.42", &w2) == WRC_ERROR);
   CHECK(last().find("the flanges do not fit between the rails") != std::string::npos);
   wrc_result* r = nullptr;
-  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_NOT_CONVERGED);
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_ERROR);
+  CHECK(last().find("Fz = 1e+09 N is implausible for a wheel load") != std::string::npos);
+  // Without the set-up checks the load reaches the solver, which stops: out of reach within max_penetration.
+  REQUIRE(wrc_wheelset_new(f.wheel, f.rail, "cant=0 grid=0.5e-3 check_setup=false", &w2) == WRC_OK);
+  CHECK(wrc_wheel(w2, WRC_LEFT, 0, 0, 0, 1e9, "max_penetration=1e-3", &r) == WRC_NOT_CONVERGED);
+  wrc_wheelset_free(w2);
   char msg[512];
   size_t len = 0;
   REQUIRE(wrc_result_string(r, "error", msg, sizeof msg, &len) == WRC_OK);

@@ -23,4 +23,17 @@ done
 [ ! -e ran_perl ] || fail "GNU parallel ran Perl code from an argument"
 ls -d pr_1 pr_2 2>/dev/null && fail "out=pr_{} was split by shard"
 expect_status 2 "$SRC/examples/cluster/parallel.sh" -n 0 "$CASES"
+
+echo "== without WRC and without wrc on the PATH, parallel.sh runs the build tree's build/wrc (the README's build)"
+mkdir -p tree/examples/cluster tree/build
+cp "$SRC/examples/cluster/parallel.sh" tree/examples/cluster/
+ln -s "$WRC" tree/build/wrc
+system=/usr/bin:/bin  # the Debian packages' folders: no wrc there unless installed system-wide
+! PATH=$system command -v wrc >/dev/null || fail "a wrc in $system: this check needs a machine without one"
+env -u WRC PATH="$system" timeout 600 tree/examples/cluster/parallel.sh -n 2 -j 2 "$CASES" cases=6 plots=false out=tree_out \
+  >parallel.out 2>parallel.err || { cat parallel.err >&2; fail "parallel.sh without WRC failed"; }
+[ "$(wc -l < tree_out/rigid.csv)" -eq 7 ] || fail "the build tree's wrc did not write the study"
+rm tree/build/wrc
+env -u WRC PATH="$system" tree/examples/cluster/parallel.sh -n 2 "$CASES" >last.out 2>last.err && fail "no wrc: ran anyway"
+expect_err "parallel.sh: no wrc: not on the PATH nor at $PWD/tree/build/wrc; set WRC=/path/to/wrc"
 echo "GNU parallel ok"

@@ -58,7 +58,9 @@ print(("largest potential area of the paper's poses at 0.02 mm: %d elements (y =
 check.ok(at_centre > 1048576 * 0.9, ("y = 0 at 0.02 mm: ~%d elements, about the old cap 2^20"):format(at_centre))
 
 -- ---- hopeless loads ----
-local coarse = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
+-- (check_setup = false: with it, loads beyond 2 MN per wheelset are refused at the call as implausible, before the
+-- solve; the solvers' own stop is tested here.)
+local coarse = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3, check_setup = false}
 local q = coarse:equilibrium{y = 0, Q = 1e9, on_failure = "return"}
 check.ok(not q.converged and q.error:find("the load is out of reach: Q = 1e+09 N", 1, true), tostring(q.error))
 check.ok(q.error:find("(max_penetration = 1 mm) and still carry only", 1, true), q.error)

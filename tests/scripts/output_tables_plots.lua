@@ -30,6 +30,17 @@ check.ok(assert(io.open(dir .. "/m.png", "rb")):read("a"):sub(2, 4) == "PNG", "a
 out.map{file = dir .. "/q.png", x = {0, 1}, y = {0, 1}, value = {{0, 1}, {1, 2}}, title = "the rail's profile",
         ylabel = "s along the rail's profile (mm)", palette = "defined (0 'white', 1 '#3060c0', 2 '#d03020')"}
 check.ok(assert(io.open(dir .. "/q.png", "rb")):read("a"):sub(2, 4) == "PNG", "a label with a quote, a palette")
+-- A figure's script runs again from its own folder (issue 28: it named its data by the path the study was started
+-- with): it names the data and the picture by their file names alone. Rerun here from the folder, into a fresh PNG.
+for _, name in ipairs{"p", "m"} do
+  local gp = assert(io.open(dir .. "/" .. name .. ".gp")):read("a")
+  check.ok(not gp:find(dir, 1, true), name .. ".gp does not name the folder it was written from")
+  os.remove(dir .. "/" .. name .. ".png")
+  local q = "'" .. dir:gsub("'", "'\\''") .. "'"
+  check.ok(os.execute("cd " .. q .. " && gnuplot " .. name .. ".gp 2>/dev/null"), "gnuplot " .. name .. ".gp in its folder")
+  local again = io.open(dir .. "/" .. name .. ".png", "rb")
+  check.ok(again and again:read("a"):sub(2, 4) == "PNG", name .. ".png written again by its script")
+end
 print("output ok")
 
 -- CSV cells: text with commas, quotes or line breaks quoted and read back; a non-finite number names the file, the

@@ -75,6 +75,24 @@ check.fails(function() wrc.profile.load("profiles/s1002.lua", {units = "m"}) end
 check.fails(function() wrc.profile.load("profiles/s1002.lua", {kind = "rail"}) end, "is a wheel profile but the option kind",
             "kind contradicting a definition")
 
+-- A definition's options are checked as a file's are (issue 28): a key that neither the definition reads nor
+-- wrc.profile.load takes is an error naming the closest known one; an options table passed on to a nested load counts
+-- as read.
+local err = check.fails(function() wrc.profile.load("profiles/60e1.lua", {unit = "m"}) end,
+                        "unknown option 'unit' for the Lua definition (did you mean 'units'?)", "'unit' on a definition")
+check.ok(err:find("it reads: depth, step;", 1, true), "the message lists what 60e1.lua reads: " .. err)
+check.fails(function() wrc.profile.load("profiles/s1002.lua", {step = 0.5e-3, form = -0.06}) end,
+            "(did you mean 'from'?)", "a misspelt option of s1002.lua")
+check.ok(#wrc.profile.load("profiles/s1002.lua", {step = 0.5e-3, from = -0.06, mirror_y = false}) == 241,
+         "the options s1002.lua reads and a load option are accepted")
+local pass_on = H.write(H.tmpdir() .. "/profile_lua_api_pass_on.lua", [[
+local opt = ...
+return wrc.profile.load("profiles/60e1.lua", opt)]])
+check.ok(#wrc.profile.load(pass_on, {step = 1e-3, depth = 0.02}) < #wrc.profile.load("profiles/60e1.lua"),
+         "options passed on to a nested load reach it")
+check.fails(function() wrc.profile.load(pass_on, {step = 1e-3, dept = 0.02}) end, "unknown option 'dept'",
+            "a misspelt option passed on is refused by the definition that finally reads")
+
 -- p:transform and option type errors.
 local r = wrc.profile.load("profiles/60e1.lua")
 local t = r:transform{crop = {z = {-0.010, 0.001}}, shift = {y = 0.002}, name = "head"}

@@ -77,14 +77,19 @@ std::string without_traceback(std::string message) {
 
 template <class F>
 wrc_status guard(const char* function, F&& body) {
+  // The function's name once: the engine's readers name their context, which is often the function itself.
+  auto named = [function](std::string message) {
+    const std::string prefix = std::string(function) + ": ";
+    return message.rfind(prefix, 0) == 0 ? message : prefix + message;
+  };
   try {
     last_error.clear();
     return body();
   } catch (const Failure& f) {
-    last_error = std::string(function) + ": " + f.message;
+    last_error = named(f.message);
     return f.status;
   } catch (const wrc::Error& e) {
-    last_error = std::string(function) + ": " + without_traceback(e.what());
+    last_error = named(without_traceback(e.what()));
     return WRC_ERROR;
   } catch (const std::bad_alloc&) {
     last_error = std::string(function) + ": out of memory";

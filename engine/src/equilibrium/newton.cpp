@@ -400,9 +400,10 @@ void finish_result(const ContactModel& model, ContactWorkspace& ws, const Contac
 
 }  // namespace
 
-void EquilibriumCase::validate(std::string_view context) const {
+void EquilibriumCase::validate(std::string_view context, bool plausible) const {
   pose_solve::check_position(y, yaw, context);
   pose_solve::check_load("Q", Q, context);
+  if (plausible) check_plausible(context, "Q", Q, kWheelsetLoad);
 }
 
 void NewtonOptions::validate(std::string_view context) const {
@@ -420,7 +421,7 @@ void NewtonOptions::validate(std::string_view context) const {
 EquilibriumResult solve_equilibrium(const ContactModel& model, const EquilibriumCase& c, ContactWorkspace& ws,
                                     const NewtonOptions& opt, const std::vector<Start>& starts,
                                     const ContactRequest& frictional) {
-  c.validate("equilibrium");
+  c.validate("equilibrium", model.options().check_magnitudes);
   opt.validate("equilibrium");
   const double y = c.y, yaw = c.yaw, Q = c.Q;
   ContactRequest request = frictional;

@@ -1,5 +1,6 @@
 // Sweeps of equilibria with continuation along y, on worker threads (equilibrium.hpp).
 #include "wrc/core/error.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 #include "wrc/core/parallel.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
@@ -158,6 +159,7 @@ SweepPlan plan_sweep(const std::vector<double>& ys, const std::vector<double>& y
 SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const std::vector<int>& chunks,
                       const SweepOptions& opt, const std::function<std::unique_ptr<ContactWorkspace>()>& make_workspace) {
   if (!(opt.Q > 0) || !std::isfinite(opt.Q)) fail("sweep: Q = {} N must be a positive number", opt.Q);
+  if (model.options().check_magnitudes) check_plausible("sweep", "Q", opt.Q, kWheelsetLoad);
   opt.equilibrium.validate("sweep");  // once here rather than as every case's error
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult out;

@@ -6,6 +6,7 @@
 #include "wheelset/vertical_load.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 #include "wrc/core/roots.hpp"
 #include "wrc/kinematics/rigid.hpp"
 
@@ -18,16 +19,6 @@ namespace {
 using pose_solve::deepest;
 using pose_solve::EvaluationBudget;
 using pose_solve::UnreachableLoad;
-
-// The height at which one wheel just touches its rail (radial overlap 0) at y, yaw and roll. The overlap of the
-// deepest line falls almost one for one as z rises: Illinois steps on a wide bracket take a few evaluations.
-double touch_height(const GeometryModel& g, int side, double y, double yaw, double roll) {
-  auto pen = [&](double z) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
-  const double fa = pen(-0.02), fb = pen(0.02);
-  if (!(fa > 0 && fb < 0)) fail("wheel: the {} wheel does not touch its rail within z = +-20 mm", side_name(side));
-  bool ok = false;
-  return bracketed_root(pen, -0.02, 0.02, fa, fb, 1e-12, 200, ok);
-}
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
 //
@@ -46,7 +37,7 @@ class WheelSolver {
   WheelSolver(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
               WheelResult& res)
       : model_(model), c_(c), ws_(ws), opt_(opt), res_(res) {
-    z_touch_ = touch_height(model.geometry(), c.side, c.y, c.yaw, c.roll);
+    z_touch_ = touch_height(model.geometry(), c.side, c.y, c.yaw, c.roll, "wheel");
     target_ = std::cbrt(c.Fz * c.Fz);
     tight_ = std::max(opt.limits.normal_tolerance, model.options().normal.tolerance);
     loose_ = std::max(tight_, 1e-2);
@@ -110,6 +101,7 @@ class WheelSolver {
     if (!res_.converged && res_.message.empty())
       res_.message = fmt::format("the last evaluation is {:.4g} N off, beyond force_tolerance x Fz = {:.4g} N",
                                  res_.residual, l.force_tolerance * c_.Fz);
+    if (!opt_.keep_grids) drop_grids(cur_);
     res_.wheel = std::move(cur_.wheel[c_.side]);
   }
 
@@ -226,13 +218,14 @@ class WheelSolver {
 
 }  // namespace
 
-void WheelCase::validate(std::string_view context) const {
+void WheelCase::validate(std::string_view context, bool plausible) const {
   if (side != kLeft && side != kRight)
     fail("{}: side = {} must be {} (left) or {} (right)", context, side, +kLeft, +kRight);
   pose_solve::check_position(y, yaw, context);
   if (!std::isfinite(roll) || std::abs(roll) > 0.3)
     fail("{}: roll = {} rad must be finite and within +-0.3 rad", context, roll);
   pose_solve::check_load("Fz", Fz, context);
+  if (plausible) check_plausible(context, "Fz", Fz, kWheelLoad);
 }
 
 void WheelOptions::validate(std::string_view context) const {
@@ -243,7 +236,7 @@ void WheelOptions::validate(std::string_view context) const {
 
 WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
                         std::optional<double> start, const std::optional<RollingRequest>& rolling) {
-  c.validate("wheel");
+  c.validate("wheel", model.options().check_magnitudes);
   opt.validate("wheel");
   WheelResult res;
   res.side = c.side;
@@ -276,6 +269,7 @@ WheelCase read_wheel_case(OptionReader& r) {
 WheelOptions read_wheel_options(OptionReader& r) {
   WheelOptions o;
   o.limits = read_solve_limits(r);
+  o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
   o.validate(r.context());
   return o;
 }

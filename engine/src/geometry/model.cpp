@@ -389,6 +389,7 @@ GeometryModel build_geometry(std::shared_ptr<const Track> track, const std::arra
     g.wheel_r2_max = *std::max_element(g.wheel.r2.begin(), g.wheel.r2.end());
     g.wheel_curve = profile_curve(track->wheel[s]);
     g.rail_curve = profile_curve(track->rail[s]);
+    g.flange = flange_of(track->wheel[s]);
 
     if (d.coarse_every > 0) {
       if (d.coarse_every < 2) fail("wrc.wheelset: coarse 'every' must be >= 2 fine lines per cell, got {}", d.coarse_every);

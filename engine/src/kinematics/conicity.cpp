@@ -48,6 +48,9 @@ class Table {
     find_centre();
   }
   double centre() const { return y0_; }
+  // The zone around the centre where Δr is exactly zero (a worn pair's flat zone; empty: flat_lo == flat_hi).
+  double flat_lo() const { return flat_lo_; }
+  double flat_hi() const { return flat_hi_; }
   double front() const { return y_.front(); }
   double back() const { return y_.back(); }
   double dr(double x) const {
@@ -116,15 +119,30 @@ class Table {
     const double t = x - y_[i], s = (d_[i + 1] - d_[i]) / (y_[i + 1] - y_[i]);
     return C_[i] + d_[i] * t + 0.5 * s * t * t;
   }
-  // The rising zero of Δr nearest y = 0 (the motion's centre).
+  // The rising zero of Δr nearest y = 0 (the motion's centre). Where Δr rises through a run of knots at exactly zero
+  // (a flat zone), the centre is the middle of that zone.
   void find_centre() {
     bool found = false, falling = false;
-    for (std::size_t i = 0; i + 1 < y_.size(); ++i) {
+    const std::size_t n = y_.size();
+    auto candidate = [&](double z, double lo, double hi) {
+      if (found && std::abs(z) >= std::abs(y0_)) return;
+      y0_ = z, flat_lo_ = lo, flat_hi_ = hi;
+      found = true;
+    };
+    for (std::size_t i = 0; i + 1 < n; ++i) {
       const double a = d_[i], b = d_[i + 1];
-      if ((a <= 0 && b > 0) || (a < 0 && b >= 0)) {
+      if (a < 0 && b > 0) {
         const double z = y_[i] + (0 - a) / (b - a) * (y_[i + 1] - y_[i]);
-        if (!found || std::abs(z) < std::abs(y0_)) y0_ = z;
-        found = true;
+        candidate(z, z, z);
+      } else if ((a < 0 || i == 0) && a <= 0 && b == 0) {  // into a run of zeros (from the table's start when a = 0)
+        const std::size_t first = a == 0 ? i : i + 1;
+        std::size_t last = i + 1;
+        while (last + 1 < n && d_[last + 1] == 0) ++last;
+        if (last + 1 == n ? a < 0 : d_[last + 1] > 0) candidate(0.5 * (y_[first] + y_[last]), y_[first], y_[last]);
+        else falling = falling || a == 0;  // from zero at the start down: falls
+        i = last - 1;
+      } else if (i == 0 && a == 0 && b > 0) {
+        candidate(y_[0], y_[0], y_[0]);
       } else if ((a >= 0 && b < 0) || (a > 0 && b <= 0)) {
         falling = true;
       }
@@ -145,6 +163,7 @@ class Table {
   const std::vector<bool>& flange_;
   std::vector<double> C_;  // integral of Δr from y_[0] at the knots
   double y0_ = 0, G0_ = 0;
+  double flat_lo_ = 0, flat_hi_ = 0;
 };
 
 // Integral method: the turning points y1 < y0 < y2 of the motion with y2 - y1 = 2 yhat, and I = the integral of
@@ -252,11 +271,19 @@ ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOption
   ConicityResult r;
   r.method = o.method;
   r.centre = t.centre();
+  r.flat_zone = {t.flat_lo(), t.flat_hi()};
+  const double flat_half = 0.5 * (t.flat_hi() - t.flat_lo());
+  if (flat_half > 0)
+    r.note = fmt::format("Δr = 0 over y = {:.4f} .. {:.4f} mm around the centre: no restoring Δr within it, so tan γe = 0 "
+                         "(an infinite wavelength; EN 15302) for amplitudes up to {:.4f} mm",
+                         t.flat_lo() * 1e3, t.flat_hi() * 1e3, flat_half * 1e3);
   for (double a : o.yhat) {
     if (!(a > 0) || !std::isfinite(a) || a > 0.05)
       fail("{}: the amplitude yhat = {} m must be a positive number of metres (up to 0.05)", kCtx, a);
     double lo = r.centre - a, hi = r.centre + a, tg = 0;
-    if (o.method == ConicityMethod::integral) {
+    if (a <= flat_half * (1 + 1e-12)) {
+      // The wheelset moves freely inside the flat zone: Δr = 0 over the whole motion, every method gives 0.
+    } else if (o.method == ConicityMethod::integral) {
       integral_method(t, a, lo, hi, tg);
     } else {
       t.check_inside(lo, hi, a);
@@ -270,7 +297,8 @@ ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOption
     r.y_min.push_back(lo);
     r.y_max.push_back(hi);
     const double e = 0.5 * o.contact_distance;
-    r.wavelength.push_back(tg > 0 ? 2 * std::numbers::pi * std::sqrt(e * o.r0 / tg) : 0.0);
+    r.wavelength.push_back(tg > 0 ? 2 * std::numbers::pi * std::sqrt(e * o.r0 / tg)
+                                  : a <= flat_half * (1 + 1e-12) ? INFINITY : 0.0);
   }
   return r;
 }
@@ -316,6 +344,11 @@ void describe(const ConicityResult& r, FieldSink& out) {
   out.numbers("y_max", r.y_max.data(), r.y_max.size(), {"m", "highest y the method used (integral: the turning point)"});
   out.numbers("wavelength", r.wavelength.data(), r.wavelength.size(),
               {"m", "Klingel wavelength of tan_gamma with r0 and contact_distance"});
+  if (!r.note.empty()) {
+    out.string("note", r.note, {"", "why some amplitudes have tan_gamma = 0 (a flat zone of zero rolling radius difference)"});
+    out.numbers("flat_zone", r.flat_zone.data(), r.flat_zone.size(),
+                {"m", "the band of y around the centre where the rolling radius difference is exactly zero"});
+  }
 }
 
 }  // namespace wrc

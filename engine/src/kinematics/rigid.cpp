@@ -132,6 +132,22 @@ Eigen::Vector2d overlap_gradient(const WheelCones& w, const PoseFrame& f, const 
   return {grad(dq_dz), grad(dq_dr)};
 }
 
+// A bracket [a, b] = [-w, w] with f(a) > 0 > f(b): w = `first`, then `reach` when the first does not hold a root.
+struct Bracket {
+  double a, b, fa, fb;
+  bool found;
+};
+
+template <class F>
+Bracket widening_bracket(F&& f, double first, double reach) {
+  Bracket k{-first, first, f(-first), f(first), false};
+  k.found = k.fa > 0 && k.fb < 0;
+  if (k.found || !(reach > first)) return k;
+  k = {-reach, reach, f(-reach), f(reach), false};
+  k.found = k.fa > 0 && k.fb < 0;
+  return k;
+}
+
 // Overlaps of both wheels at (z, roll) with their Jacobian.
 struct Depths {
   Eigen::Vector2d P = Eigen::Vector2d::Zero();
@@ -179,8 +195,8 @@ class RigidSolver {
     return false;
   }
 
-  // The height at which one wheel touches at a held roll: Newton (the overlap falls one to one with z), then a
-  // bracket over +-20 mm. Throws when the wheel does not touch within it.
+  // The height at which one wheel touches at a held roll: Newton (the overlap falls one to one with z), then the
+  // brackets of touch_height. Throws when the wheel does not touch within them.
   double touch_z(int side, double roll, double z) const {
     for (int it = 0; it < 8; ++it) {
       const PoseFrame f = frame(z, roll);
@@ -190,15 +206,9 @@ class RigidSolver {
       const double slope = overlap_gradient(g_.side[side].wheel, f, b.point)(0);
       if (!(slope < -0.1)) break;
       z -= b.overlap / slope;
-      if (!(std::abs(z) <= 0.02)) break;  // the bracket's range: farther, no rail under the wheel
+      if (!(std::abs(z) <= kTouchWindow)) break;  // the first bracket's range: farther, the brackets decide
     }
-    auto f = [&](double zz) { return overlap(side, zz, roll); };
-    const double a = -0.02, b = 0.02, fa = f(a), fb = f(b);
-    if (!(fa > 0 && fb < 0))
-      fail("rigid contact: the {} wheel does not touch its rail within z = +-20 mm at y = {} m, roll = {} rad",
-           side_name(side), y_, roll);
-    bool ok = false;
-    return bracketed_root(f, a, b, fa, fb, kTouch, 200, ok);
+    return touch_height(g_, side, y_, yaw_, roll, "rigid contact");
   }
 
   // Where Newton stalls on a jump of the contact point: nested brackets. For a roll, the height at which the first
@@ -206,17 +216,20 @@ class RigidSolver {
   void nested(double& z, double& roll) const {
     auto first_touch = [&](double rr) {
       auto f = [&](double zz) { return std::max(overlap(kLeft, zz, rr), overlap(kRight, zz, rr)); };
-      const double a = -0.02, b = 0.02, fa = f(a), fb = f(b);
-      if (!(fa > 0 && fb < 0)) fail("rigid contact: no touching height within +-20 mm at y = {}, yaw = {}", y_, yaw_);
+      const Bracket b = widening_bracket(f, kTouchWindow, touch_reach(g_, rr));
+      if (!b.found)
+        fail("rigid contact: no touching height within +-{:.0f} mm at y = {}, yaw = {}", b.a * -1e3, y_, yaw_);
       bool ok = false;
-      return bracketed_root(f, a, b, fa, fb, kTouch, 200, ok);
+      return bracketed_root(f, b.a, b.b, b.fa, b.fb, kTouch, 200, ok);
     };
     auto diff = [&](double rr) {
       const double zz = first_touch(rr);
       return overlap(kLeft, zz, rr) - overlap(kRight, zz, rr);
     };
-    const double a = -0.02, b = 0.02, fa = diff(a), fb = diff(b);
-    if (!(fa > 0 && fb < 0)) fail("rigid contact: no roll within +-20 mrad puts both wheels on their rails");
+    const Bracket r = widening_bracket(diff, kTouchRollWindow, touch_roll_reach(g_));
+    const double a = r.a, b = r.b, fa = r.fa, fb = r.fb;
+    if (!r.found)
+      fail("rigid contact: no roll within +-{:.0f} mrad puts both wheels on their rails", r.b * 1e3);
     bool ok = false;
     roll = bracketed_root(diff, a, b, fa, fb, kTouch, 200, ok);
     if (!ok) fail("rigid contact: the roll that puts both wheels on their rails was not found to 1e-12 m");
@@ -372,6 +385,26 @@ void solve_free(const GeometryModel& g, double y, double yaw, const RigidOptions
   balance_forces(res);
 }
 
+// The flange-climb flags of a solved result (geometry/flange.hpp), the conditions of the elastic results applied to
+// the rigid contact points: a touching point beyond the steepest part of the flange, L/V beyond Nadal's limit with
+// the balance's normal forces, a wheel lifted above its rail by more than its flange height.
+void flag_flange_climb(const GeometryModel& g, RigidResult& res) {
+  if (!res.converged) return;
+  for (int s : {kLeft, kRight}) {
+    RigidWheel& w = res.wheel[s];
+    const Flange& flange = g.side[s].flange;
+    for (const RigidContactPoint& c : w.contacts)
+      if (w.flange_climb.empty()) w.flange_climb = beyond_steepest(flange, c.wheel_profile.x());
+    if (w.flange_climb.empty() && res.has_forces() && !res.tension && !w.contacts.empty()) {
+      const Eigen::Vector3d F = w.normal_force * w.normal;
+      if (w.normal_force > 0) w.flange_climb = nadal_exceeded(flange, s, F.y(), F.z());
+    }
+    if (w.flange_climb.empty() && !w.lifted) w.flange_climb = lifted_off(flange, w.gap);
+    if (!w.flange_climb.empty() && res.flange_climb.empty())
+      res.flange_climb = fmt::format("{} wheel: {}", side_name(s), w.flange_climb);
+  }
+}
+
 void solve_fixed(const GeometryModel& g, double y, double yaw, const RigidOptions& o, RigidResult& res) {
   const RigidSolver solver(g, y, yaw);
   res.roll = o.roll;
@@ -389,7 +422,8 @@ void solve_fixed(const GeometryModel& g, double y, double yaw, const RigidOption
   }
   if (res.wheel[kLeft].lifted && res.wheel[kRight].lifted) {
     res.z = 0;
-    res.message = fmt::format("rigid contact: neither wheel touches its rail within z = +-20 mm at y = {} m", y);
+    res.message = fmt::format("rigid contact: neither wheel touches its rail within z = +-{:.0f} mm at y = {} m",
+                              touch_reach(g, o.roll) * 1e3, y);
     return;
   }
   for (int s : {kLeft, kRight})
@@ -398,6 +432,34 @@ void solve_fixed(const GeometryModel& g, double y, double yaw, const RigidOption
 }
 
 }  // namespace
+
+double touch_reach(const GeometryModel& g, double roll) {
+  double reach = 0;
+  for (int s : {kLeft, kRight}) {
+    const Profile &w = g.track->wheel[s], &r = g.track->rail[s];
+    const auto [wlo, whi] = std::minmax_element(w.z.begin(), w.z.end());
+    const auto [rlo, rhi] = std::minmax_element(r.z.begin(), r.z.end());
+    const auto [ylo, yhi] = std::minmax_element(w.y.begin(), w.y.end());
+    const double lateral = g.track->place[s].tape_y + std::max(std::abs(*ylo), std::abs(*yhi));
+    reach = std::max(reach, (*whi - *wlo) + (*rhi - *rlo) + std::abs(std::sin(roll)) * lateral);
+  }
+  return reach + 1e-3;
+}
+
+double touch_roll_reach(const GeometryModel& g) {
+  const double span = g.track->place[kLeft].tape_y + g.track->place[kRight].tape_y;
+  return std::max(kTouchRollWindow, std::min(0.1, touch_reach(g, 0.0) / span));
+}
+
+double touch_height(const GeometryModel& g, int side, double y, double yaw, double roll, std::string_view context) {
+  auto pen = [&](double z) { return deepest_point(g, side, {y, z, roll, yaw}).overlap; };
+  const Bracket b = widening_bracket(pen, kTouchWindow, touch_reach(g, roll));
+  if (!b.found)
+    fail("{}: the {} wheel does not touch its rail within z = +-{:.0f} mm (as far as the profiles reach) at y = {} m, "
+         "roll = {} rad: no rail under it", context, side_name(side), b.b * 1e3, y, roll);
+  bool ok = false;
+  return bracketed_root(pen, b.a, b.b, b.fa, b.fb, kTouch, 200, ok);
+}
 
 RigidWheel deepest_point(const GeometryModel& g, int side, const Pose& pose) {
   const PoseFrame f(pose);
@@ -418,6 +480,7 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, const Rigi
   try {
     if (o.roll_mode == RollMode::free) solve_free(g, y, yaw, o, res);
     else solve_fixed(g, y, yaw, o, res);
+    flag_flange_climb(g, res);
   } catch (const Error& e) {
     res.converged = false;
     res.message = e.what();
@@ -482,6 +545,10 @@ namespace {
 
 void describe_wheel(const RigidResult& r, const RigidWheel& w, FieldSink& out) {
   out.boolean("lifted", w.lifted, {"", "no rail under the wheel: no contact point (the wheel's other fields absent)"});
+  out.boolean("flange_climb", !w.flange_climb.empty(),
+              {"", "the wheel is past flange climb (beyond the flange's steepest part, Nadal's limit, or lifted off), as elastic results say"});
+  if (!w.flange_climb.empty())
+    out.string("flange_climb_reason", w.flange_climb, {"", "why it is past flange climb (only when it is)"});
   if (w.lifted) return;
   out.number("z", w.z, {"m", "height of the wheelset centre at which this wheel touches"});
   out.number("gap", w.gap, {"m", "roll fixed: the wheel's clearance when the wheelset rests at its z"});
@@ -510,6 +577,10 @@ void describe(const RigidResult& r, FieldSink& out) {
   out.boolean("converged", r.converged, {"", "both wheels touch (the kinematic constraint holds)"});
   out.boolean("tension", r.tension,
               {"", "a wheel would need a pulling normal force to carry Q with no roll moment: no equilibrium"});
+  out.boolean("flange_climb", !r.flange_climb.empty(),
+              {"", "a wheel is past flange climb (beyond the flange's steepest part, Nadal's limit, or lifted off), as elastic results say"});
+  if (!r.flange_climb.empty())
+    out.string("flange_climb_reason", r.flange_climb, {"", "why it is past flange climb (only when it is)"});
   if (!r.message.empty()) out.string("error", r.message, {"", "why there is no solution (only then)"});
   out.string("roll_mode", r.roll_mode == RollMode::free ? "free" : "fixed",
              {"", "free (roll solved: both wheels touch) or fixed (roll held)"});

@@ -8,10 +8,14 @@
 #include "lua/convert.hpp"
 #include "lua/profile_binding.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/core/options.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/load.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <cstdlib>
 #include <cstring>
@@ -174,6 +178,85 @@ int text_load(lua_State* L) {
 
 Profile run(const std::string& path, const OptionTable& options, Budget& budget, int depth);
 
+// A definition's options reach it as a proxy that records the keys it reads (upvalue 1: the options, 2: the keys
+// read), so that a key nobody reads is an unknown option (check_options_read), as for a file's reader. It keeps no
+// C++ object alive: a memory error here is the definition's Lua error.
+int read_option(lua_State* L) {
+  lua_pushvalue(L, 2);
+  lua_pushboolean(L, 1);
+  lua_rawset(L, lua_upvalueindex(2));
+  lua_pushvalue(L, 2);
+  lua_rawget(L, lua_upvalueindex(1));
+  return 1;
+}
+
+// pairs(options) reads every key.
+int pairs_options(lua_State* L) {
+  lua_pushnil(L);
+  while (lua_next(L, lua_upvalueindex(1)) != 0) {
+    lua_pop(L, 1);
+    lua_pushvalue(L, -1);
+    lua_pushboolean(L, 1);
+    lua_rawset(L, lua_upvalueindex(2));
+  }
+  lua_getglobal(L, "next");
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_pushnil(L);
+  return 3;
+}
+
+// Pushes the keys-read table, then the proxy of the options table on the top (which it replaces).
+void push_option_proxy(lua_State* L) {
+  const int options = lua_gettop(L);
+  lua_createtable(L, 0, 4);  // keys read
+  lua_createtable(L, 0, 0);  // the proxy
+  lua_createtable(L, 0, 3);  // its metatable
+  for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"__index", read_option}, {"__pairs", pairs_options}}) {
+    lua_pushvalue(L, options);
+    lua_pushvalue(L, options + 1);
+    lua_pushcclosure(L, fn, 2);
+    lua_setfield(L, -2, name);
+  }
+  lua_pushvalue(L, options);  // a nested wrc.profile.load given the proxy passes the options themselves on
+  lua_setfield(L, -2, "__options");
+  lua_setmetatable(L, -2);
+  lua_remove(L, options);  // [keys read, proxy]
+}
+
+// A proxy passed to a nested wrc.profile.load stands for all of its options (all read).
+void unwrap_option_proxy(lua_State* L, int index) {
+  if (!lua_getmetatable(L, index)) return;
+  if (lua_getfield(L, -1, "__options") == LUA_TTABLE) {
+    lua_getfield(L, -2, "__pairs");
+    lua_call(L, 0, 3);  // marks every key read
+    lua_pop(L, 3);
+    lua_replace(L, index);
+    lua_pop(L, 1);
+    return;
+  }
+  lua_pop(L, 2);
+}
+
+// Every option given is read by the definition or is one of wrc.profile.load's own (load_option_keys), or the
+// load fails as an unknown key does for a file's reader. `read` is the index of the keys-read table.
+void check_options_read(lua_State* L, int read, const OptionTable& options, const std::string& path) {
+  std::vector<std::string> known = load_option_keys(), unknown;
+  lua_pushnil(L);
+  while (lua_next(L, read) != 0) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) known.emplace_back(lua_tostring(L, -1));
+  }
+  for (const auto& [key, value] : options.entries)
+    if (std::find(known.begin(), known.end(), key) == known.end()) unknown.push_back(key);
+  if (unknown.empty()) return;
+  std::sort(known.begin() + static_cast<std::ptrdiff_t>(load_option_keys().size()), known.end());  // not hash order
+  const std::string near = closest_name(unknown.front(), known);
+  fail("wrc.profile.load: {}: unknown option '{}' for the Lua definition{} (it reads: {}; wrc.profile.load takes: {})",
+       path, unknown.front(), near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
+       fmt::join(known.begin() + static_cast<std::ptrdiff_t>(load_option_keys().size()), known.end(), ", "),
+       fmt::join(load_option_keys(), ", "));
+}
+
 // The loader of the definitions a definition at `depth` loads: the same budget, one level deeper.
 DefinitionLoader nested_definitions(Budget& budget, int depth) {
   return [&budget, depth](const std::string& path, const OptionTable& options) {
@@ -183,6 +266,7 @@ DefinitionLoader nested_definitions(Budget& budget, int depth) {
 
 // wrc.profile.load inside a definition: the shipped profiles only, as the same rule names them.
 int nested_load(lua_State* L) {
+  if (lua_istable(L, 2)) unwrap_option_proxy(L, 2);  // before any C++ object lives (it calls Lua)
   const char* ctx = "wrc.profile.load";
   Sandbox& s = sandbox_of(L);
   const std::string given = check_string(L, 1, ctx);
@@ -291,6 +375,7 @@ Profile run(const std::string& path, const OptionTable& options, Budget& budget,
   lua_pushcfunction(L, open_sandbox);
   if (lua_pcall(L, 0, 0, 0) != LUA_OK) fail("wrc.profile.load: {}: cannot set up the sandbox: {}", path, error_message(L));
   push_option(L, OptionValue::of(options));
+  push_option_proxy(L);  // [keys read, proxy]
   s.in_call = 0;
   int status = luaL_loadfilex(L, path.c_str(), "t");
   if (status == LUA_OK) {
@@ -304,6 +389,7 @@ Profile run(const std::string& path, const OptionTable& options, Budget& budget,
   if (!ud || !*ud)
     fail("wrc.profile.load: the definition {} returned a {}, expected a wrc.Profile (return wrc.profile.points{{...}})",
          path, type_name(L, -1));
+  check_options_read(L, lua_gettop(L) - 1, options, path);
   return **ud;
 }
 

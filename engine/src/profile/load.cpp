@@ -178,6 +178,12 @@ CropWindow read_crop(OptionReader& crop) {
 
 }  // namespace
 
+const std::vector<std::string>& load_option_keys() {
+  static const std::vector<std::string> keys{"mirror_y", "mirror_z", "name", "kind", "shift", "crop", "smooth",
+                                             "reader", "units"};
+  return keys;
+}
+
 LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
   LoadOptions o;
   o.mirror_y = r.boolean("mirror_y").value_or(false);

@@ -45,7 +45,7 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
   if (!geometry_) fail("contact model: no geometry");
   if (geometry_->track)
-    for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = flange_of(geometry_->track->wheel[s]);
+    for (int s : {kLeft, kRight}) flange_[static_cast<std::size_t>(s)] = geometry_->side[s].flange;
   for (int s : {kLeft, kRight}) {
     const RailLines& rail = geometry_->side[s].rail;
     std::vector<double>& S = rail_arc_[static_cast<std::size_t>(s)];
@@ -205,7 +205,7 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
 // evaluate_contact, with the predictor's load when given: locate, then each wheel's areas.
 ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorkspace& ws, const ContactRequest& request,
                        const VerticalLoad* load) {
-  request.validate();
+  request.validate(model.options().check_magnitudes);
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);
@@ -261,7 +261,10 @@ ContactRequest read_contact_request(OptionReader& r) {
   return req;
 }
 
-void ContactRequest::validate() const {
+void ContactRequest::validate(bool plausible) const {
+  if (plausible && rolling) {
+    check_plausible("contact", "V", rolling->kinematics ? rolling->kinematics->V : rolling->V, kTrainSpeed);
+  }
   if (!(max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", max_penetration);
   if (!(tolerance >= 0 && tolerance <= 1e-2))
     fail("contact: tolerance = {} must be in [0, 1e-2] (relative; 0: the model's)", tolerance);
@@ -407,9 +410,11 @@ void describe(const WheelContact& wc, FieldSink& out) {
     out.string("flange_climb_reason", wc.flange_climb, {"", "why the wheel is past flange climb (only when it is)"});
   out.vec3("force", wc.force, {"N", "force of the rail on the wheel, creep forces included (track frame)"});
   out.vec3("moment", wc.moment, {"N m", "moment of the wheel's contact forces about the wheelset centre (track axes)"});
-  out.number("angle", wc.angle, {"rad", "contact angle of the wheel's resultant force, > 0 toward the track centre"});
-  out.number("rolling_radius", wc.rolling_radius,
-             {"m", "normal-force weighted mean of the areas' rolling radii (0 without contact)"});
+  if (wc.force.z() > 0) {  // a lifted wheel has no contact angle nor rolling radius: absent, never 0
+    out.number("angle", wc.angle, {"rad", "contact angle of the wheel's resultant force, > 0 toward the track centre"});
+    out.number("rolling_radius", wc.rolling_radius,
+               {"m", "normal-force weighted mean of the areas' rolling radii (only when the wheel carries load)"});
+  }
   describe(wc.creep, out);
   out.begin_list("patches", wc.patches.size(), {"", "the wheel's contact areas"});
   for (const PatchContact& pc : wc.patches) {

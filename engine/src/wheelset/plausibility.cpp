@@ -3,13 +3,14 @@
 
 #include "wrc/core/error.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace wrc {
 namespace {
 
-constexpr double kDeg = 180.0 / M_PI;
 
 struct Extent {
   double lo, hi;  // plausible range of a profile's width and height (m)
@@ -18,6 +19,10 @@ struct Extent {
 // plus some of the flange back; a rail head 30-50 mm, a whole rail section 130-190 mm.
 constexpr Extent kWheelWidth{5e-3, 0.25}, kWheelHeight{0, 0.1}, kRailWidth{5e-3, 0.2}, kRailHeight{0, 0.2};
 constexpr double kFieldSideDrop = 10e-3;  // m: a wheel's radius may grow this much toward the field side (hollow wear)
+// m: a rail head falls on its field side (60E1: 30 mm; a crowned test rail R450 over +-25 mm: 0.7 mm), where a wheel
+// read as a rail ends at its highest point
+constexpr double kHeadCornerDrop = 0.1e-3;
+constexpr double kFieldSideRise = 1e-3;   // m: and does not rise again toward its field-side end by more than this
 
 std::string describe_profile(const Profile& p, int side) {
   return fmt::format("the {} {} profile '{}' ({})", side_name(side), to_string(p.kind), p.name, p.source);
@@ -55,6 +60,34 @@ void check_field_side(const Profile& p, int side) {
   }
 }
 
+// A rail head falls on its field side, past the head's field corner, and keeps falling (rail frame: y toward the
+// field side, z up). A wheel's profile read as a rail does neither: its z (the radius offset, docs/design.md section
+// 2) grows toward the field side, where its tread ends, or, hollow-worn, falls over the false flange and rises again
+// to the tread's end; its lowest point is the flange tip, on the gauge side. The highest point is taken as far toward
+// the field side as it reaches (a flat top). The shape alone decides, whatever the file's format.
+void check_head(const Profile& p, int side) {
+  std::size_t top = 0;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (p.z[i] >= p.z[top]) top = i;
+  double low = p.z[top], rise = 0;  // the lowest point beyond the top so far, and the largest rise after one
+  for (std::size_t i = top; i < p.size(); ++i) {
+    low = std::min(low, p.z[i]);
+    rise = std::max(rise, p.z[i] - low);
+  }
+  const double drop = p.z[top] - low;
+  const std::size_t tip = static_cast<std::size_t>(std::min_element(p.z.begin(), p.z.end()) - p.z.begin());
+  // A rise on the field side is a hollow wheel's only with a flange on the gauge side: a rail with two crowns (a
+  // test geometry) has its lowest point between them.
+  const bool flange = tip < top && p.z[top] - p.z[tip] > kMinFlangeHeight;
+  if (drop >= kHeadCornerDrop && (rise <= kFieldSideRise || !flange)) return;
+  fail("wrc.wheelset: {} falls {:.1f} mm on the field side of its highest point (y = {:+.1f} mm) and rises again by "
+       "{:.1f} mm toward its field-side end; a rail head falls more than {:.1f} mm on its field side (60E1: 30 mm) and "
+       "does not rise again, a wheel's tread rises toward its field side. Its lowest point, {:.1f} mm below the top at "
+       "y = {:+.1f} mm, is where a wheel's flange tip would be. Is it a wheel profile given as a rail (kind = \"rail\")?",
+       describe_profile(p, side), drop * 1e3, p.y[top] * 1e3, rise * 1e3, kHeadCornerDrop * 1e3,
+       (p.z[top] - p.z[tip]) * 1e3, p.y[tip] * 1e3);
+}
+
 // back_to_back + both flange thicknesses must be less than the gauge, or the flanges sit on the rails.
 void check_flangeway(const Track& t) {
   const std::array<Flange, 2> f{flange_of(t.wheel[kLeft]), flange_of(t.wheel[kRight])};
@@ -72,36 +105,15 @@ void check_flangeway(const Track& t) {
 
 }  // namespace
 
-Flange flange_of(const Profile& w) {
-  Flange f;
-  const double z0 = interpolate_z(w, 0.0);
-  std::size_t tip = w.size();
-  for (std::size_t i = 0; i < w.size() && w.y[i] <= 0; ++i)
-    if (tip == w.size() || w.z[i] <= w.z[tip]) tip = i;  // the lowest z; the last of equals (nearest the tape circle)
-  if (tip == w.size() || z0 - w.z[tip] <= kMinFlangeHeight) return f;
-  f.present = true;
-  f.tip_y = w.y[tip];
-  f.tip_z = w.z[tip];
-  f.height = z0 - f.tip_z;
-  f.face_y = f.tip_y;
-  std::size_t end = tip;  // the last point of the face: the last with y <= 0
-  while (end + 1 < w.size() && w.y[end + 1] <= 0) ++end;
-  std::vector<double> angle;
-  for (std::size_t i = tip; i < end; ++i) angle.push_back(std::atan2(w.z[i + 1] - w.z[i], w.y[i + 1] - w.y[i]));
-  if (angle.empty()) return f;
-  f.max_angle = *std::max_element(angle.begin(), angle.end());
-  for (std::size_t k = 0; k < angle.size(); ++k)
-    if (angle[k] >= f.max_angle - kSteepBand) {
-      f.steep_y = w.y[tip + k];
-      break;
-    }
-  const double level = z0 - kFlangeThicknessHeight;
-  for (std::size_t i = end; i > tip; --i)  // from the tape circle toward the tip: the first crossing of the level
-    if (w.z[i - 1] <= level && w.z[i] > level) {
-      f.face_y = w.y[i - 1] + (level - w.z[i - 1]) / (w.z[i] - w.z[i - 1]) * (w.y[i] - w.y[i - 1]);
-      break;
-    }
-  return f;
+void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& r) {
+  if (!std::isfinite(value) || (std::abs(value) >= r.lo && std::abs(value) <= r.hi)) return;  // NaN: the range checks
+  fail("{}: {} = {:.6g} {} is implausible for {} ({:.3g} .. {:.3g} {}): is it in another unit? wrc takes SI units ({}); "
+       "check_setup = false on the wheelset accepts it", context, key, value, r.unit, r.what, r.lo, r.hi, r.unit, r.hint);
+}
+
+void check_plausible(const TrackParams& track, const halfspace::Material& material) {
+  check_plausible("wrc.wheelset", "radius", track.radius, kWheelRadius);
+  check_plausible("wrc.wheelset", "E", material.E, kSteelModulus);
 }
 
 void check_setup(const Track& t) {
@@ -109,30 +121,9 @@ void check_setup(const Track& t) {
     check_extent(t.wheel[s], s);
     check_extent(t.rail[s], s);
     check_field_side(t.wheel[s], s);
+    check_head(t.rail[s], s);
   }
   check_flangeway(t);
-}
-
-std::string beyond_steepest(const Flange& f, double y) {
-  if (!f.present || y >= f.steep_y) return "";
-  return fmt::format("contact at y = {:.2f} mm on the wheel profile, beyond the steepest part of the flange face "
-                     "({:.1f} deg, ends at y = {:.2f} mm; tip at {:.2f} mm): the wheel climbs its flange",
-                     y * 1e3, f.max_angle * kDeg, f.steep_y * 1e3, f.tip_y * 1e3);
-}
-
-std::string nadal_exceeded(const Flange& f, int side, double Fy, double Fz) {
-  if (!f.present || f.max_angle >= 0.5 * M_PI) return "";
-  const double L = -side_sign(side) * Fy;  // toward the track centre: -y for the left wheel
-  const double limit = std::tan(f.max_angle);
-  if (Fz > 0 && L <= limit * Fz) return "";
-  return fmt::format("L/V = {:.3g} exceeds Nadal's limit tan({:.1f} deg) = {:.3f} of the frictionless flange",
-                     Fz > 0 ? L / Fz : INFINITY, f.max_angle * kDeg, limit);
-}
-
-std::string lifted_off(const Flange& f, double gap) {
-  if (!f.present || gap <= f.height) return "";
-  return fmt::format("lifted {:.1f} mm off its rail, more than its flange height ({:.1f} mm): the flange no longer "
-                     "guides it (derailed)", gap * 1e3, f.height * 1e3);
 }
 
 }  // namespace wrc

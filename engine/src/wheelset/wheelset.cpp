@@ -111,6 +111,7 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
                    std::shared_ptr<const LocationStrategy> strategy)
     : params_(params), strategy_(std::move(strategy)) {
   if (!strategy_) fail("wheelset: no location strategy");
+  if (params.check_setup) check_plausible(params.track, params.material);  // radius and E in their units
   track_ = std::make_shared<const Track>(assemble_track(profiles.wheel, profiles.rail, params.track));
   if (params.check_setup) check_setup(*track_);  // sizes and shapes for their kind, flanges against the gauge
   std::array<SideDiscretisation, 2> sides;
@@ -121,7 +122,9 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
     info.make_search = [st] { return st->make_search(); };
   }
   geometry_ = std::make_shared<const GeometryModel>(build_geometry(track_, sides, std::move(info)));
-  contact_ = std::make_shared<const ContactModel>(geometry_, params.material, params.contact);
+  ContactOptions contact = params.contact;
+  contact.check_magnitudes = params.check_setup;
+  contact_ = std::make_shared<const ContactModel>(geometry_, params.material, contact);
   check_grid_cap(*contact_);
   if (params.check_strategy > 0) {
     StrategyCheckOptions o;

@@ -37,8 +37,9 @@ struct EquilibriumCase {
   double y = 0;    // lateral position of the centre (m), within +-0.1
   double yaw = 0;  // rad, within +-0.3
   double Q = 0;    // vertical load at the centre (N), in ]0, kMaxLoad]
-  // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range.
-  void validate(std::string_view context) const;
+  // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range;
+  // `plausible`: also for a Q no railway wheelset carries (kWheelsetLoad, wheelset/plausibility.hpp).
+  void validate(std::string_view context, bool plausible = false) const;
 };
 
 // The Newton solver's settings.

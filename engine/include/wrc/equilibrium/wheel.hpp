@@ -20,8 +20,9 @@ struct WheelCase {
   double yaw = 0;    // rad, within +-0.3
   double roll = 0;   // rad, within +-0.3
   double Fz = 0;     // the wheel's vertical force (N), in ]0, kMaxLoad]
-  // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range.
-  void validate(std::string_view context) const;
+  // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range;
+  // `plausible`: also for an Fz no railway wheel carries (kWheelLoad, wheelset/plausibility.hpp).
+  void validate(std::string_view context, bool plausible = false) const;
 };
 
 // The wheel solver's settings.
@@ -34,6 +35,7 @@ struct WheelOptions {
   // Evaluate the solved pose once more at the model's own tolerance (the forces ws:contact gives there); a
   // trajectory, content with limits.normal_tolerance, turns it off.
   bool final_at_model_tolerance = true;
+  bool keep_grids = true;  // the result's pressure and h grids (`grids`, as ws:contact and ws:equilibrium have it)
   // Throws wrc::Error naming the first member out of its range (its key, value, unit and range).
   void validate(std::string_view context) const;
 };
@@ -67,7 +69,7 @@ WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWo
 // into a case (validated by the solver).
 WheelCase read_wheel_case(OptionReader& options);
 // The wheel options as Lua and the C API give them: force_tolerance, max_iterations, max_evaluations, max_penetration
-// (read_solve_limits); validated.
+// (read_solve_limits), grids (default true); validated.
 WheelOptions read_wheel_options(OptionReader& options);
 std::string failure_message(const WheelResult& result);
 

@@ -11,6 +11,7 @@
 //  - optionally a coarse level for the pre-search of the paper's Fig. 3 (see CoarseLevel).
 #pragma once
 
+#include "wrc/geometry/flange.hpp"
 #include "wrc/geometry/track.hpp"
 #include "wrc/profile/profile.hpp"
 #include "wrc/profile/spline.hpp"
@@ -117,6 +118,7 @@ struct SideGeometry {
   // `smooth`, else the interpolating cubic spline through their points (profile/spline.hpp). The lateral curvature
   // at a rigid contact point is read from them (a polyline has none).
   std::shared_ptr<const ProfileSpline> wheel_curve, rail_curve;
+  Flange flange;  // of the wheel profile as given (geometry/flange.hpp), for the flange-climb flags of the results
 };
 
 // A strategy's option values (numbers, strings, booleans), kept so that a worker thread can rebuild the strategy.

@@ -17,7 +17,9 @@
 //  - "regression" (EN 15302 Annex C): half the slope of the least-squares line through Δr over y0 +- yhat (on the
 //    piecewise-linear Δr, so independent of the grid).
 //  - "simple": (Δr(y0 + yhat) - Δr(y0 - yhat)) / (4 yhat), i.e. Δr(yhat) / (2 yhat) for an odd Δr.
-// For a pure cone pair (Δr = 2 gamma (y - y0)) all four give gamma at every amplitude.
+// For a pure cone pair (Δr = 2 gamma (y - y0)) all four give gamma at every amplitude. Where Δr rises through a run of
+// knots at exactly zero (a flat zone), y0 is the zone's middle and amplitudes within the zone give 0 (no restoring
+// Δr: EN 15302's infinite wavelength), with a note in the result.
 //
 // Bad input is an error naming it: fewer than 3 points, y not strictly increasing, a value that is not finite,
 // values out of any plausible range (y beyond +-0.1 m, |Δr| beyond 0.05 m: probably millimetres), Δr without a
@@ -30,6 +32,7 @@
 #include "wrc/core/fields.hpp"
 #include "wrc/core/options.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -55,7 +58,12 @@ struct ConicityResult {
   std::vector<double> yhat;           // m
   std::vector<double> tan_gamma;      // tan(gamma_e), one per amplitude
   std::vector<double> y_min, y_max;   // the range of y the method used (integral: the turning points) (m)
-  std::vector<double> wavelength;     // Klingel wavelength of tan(gamma_e) with r0 and e (m)
+  std::vector<double> wavelength;     // Klingel wavelength of tan(gamma_e) with r0 and e (m); infinite in a flat zone
+  // A flat zone: Δr exactly 0 over [flat_zone[0], flat_zone[1]] (m) around the centre (a worn pair), y0 its middle.
+  // Amplitudes within it (yhat <= half its width) have tan(gamma_e) = 0 and an infinite wavelength (no restoring Δr;
+  // EN 15302), and `note` says so ("" without a flat zone).
+  std::array<double, 2> flat_zone{0.0, 0.0};
+  std::string note;
 };
 
 ConicityResult equivalent_conicity(const DeltaRFunction& dr, const ConicityOptions& options);
@@ -66,7 +74,8 @@ ConicityOptions read_conicity_options(OptionReader& options);
 // {y = {...}, dr = {...}, flange = {booleans}} (a Lua table or C arrays).
 DeltaRFunction read_delta_r(OptionReader& table);
 
-// method, centre, yhat, tan_gamma, y_min, y_max, wavelength (arrays, one per amplitude).
+// method, centre, yhat, tan_gamma, y_min, y_max, wavelength (arrays, one per amplitude); note and flat_zone = {from,
+// to} with a flat zone.
 void describe(const ConicityResult& r, FieldSink& out);
 
 }  // namespace wrc

@@ -22,6 +22,7 @@
 #include "wrc/core/fields.hpp"
 #include "wrc/core/options.hpp"
 #include "wrc/geometry/cone_line.hpp"
+#include "wrc/geometry/flange.hpp"
 #include "wrc/geometry/model.hpp"
 
 #include <Eigen/Core>
@@ -29,6 +30,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace wrc {
@@ -74,6 +76,7 @@ struct RigidWheel {
   double z = 0;                       // height of the wheelset centre at which this wheel touches (m)
   double gap = 0;                     // roll fixed: clearance of this wheel when the wheelset rests at its z (m)
   std::vector<RigidContactPoint> contacts;  // the touching point first, then the others by increasing gap
+  std::string flange_climb;  // why the wheel is past flange climb (geometry/flange.hpp), "" when it is not
 };
 
 struct RigidResult {
@@ -87,6 +90,10 @@ struct RigidResult {
   // than ~57 deg, whose line of action passes below the centre): the kinematics hold, the forces are no
   // equilibrium of a wheelset resting on its rails.
   bool tension = false;
+  // The first wheel past flange climb, as the elastic results define it (geometry/flange.hpp): a contact point beyond
+  // the steepest part of the flange face, L/V beyond Nadal's limit (roll free: the normal forces), or a wheel lifted
+  // higher than its flange (roll fixed: its gap); "<side> wheel: <why>", "" when none is.
+  std::string flange_climb;
   std::array<RigidWheel, 2> wheel;
   bool has_forces() const { return roll_mode == RollMode::free && converged; }
   bool touching() const { return converged && !wheel[0].contacts.empty() && !wheel[1].contacts.empty(); }
@@ -105,12 +112,24 @@ RigidResult solve_rigid(const GeometryModel& geometry, double y, double yaw, dou
 // The deepest rail line of one side at a pose (radial overlap > 0 inside the wheel), its point and normal.
 RigidWheel deepest_point(const GeometryModel& geometry, int side, const Pose& pose);
 
+// The searches for a touching height (m) bracket z within +-kTouchWindow first, where a wheelset on its rails touches,
+// and then within +-touch_reach: as far as the profiles reach at that roll (the wheels' radial and the rails'
+// vertical extent, e.g. a flange riding on the rail's top, plus what the roll moves the farthest wheel point, plus
+// 1 mm). The roll of both wheels touching is searched within +-kTouchRollWindow, then +-touch_roll_reach (the roll
+// that lifts one wheel by the profiles' reach over the distance between the tape circles).
+inline constexpr double kTouchWindow = 0.02, kTouchRollWindow = 0.02;
+double touch_reach(const GeometryModel& geometry, double roll);
+double touch_roll_reach(const GeometryModel& geometry);
+// The height of a pose at which one wheel just touches its rail (deepest overlap 0), at y, yaw and roll, searched as
+// above; throws wrc::Error naming the wheel and the window when it touches nowhere (no rail under it).
+double touch_height(const GeometryModel& geometry, int side, double y, double yaw, double roll, std::string_view context);
+
 // Options as Lua and the C API give them: roll ("free", "fixed" or a number: fixed at that roll, rad), Q,
 // two_point_tolerance, start = {z =, roll =}.
 RigidOptions read_rigid_options(OptionReader& options);
 
-// converged, tension, error, roll_mode, y, yaw, Q, z, roll, rolling_radius_difference (when both wheels touch),
-// Y, My, Mz, Y_Q (roll free), left/right = {lifted, z, gap, two_point, point, normal, angle, rolling_radius,
+// converged, tension, flange_climb (and flange_climb_reason when true), error, roll_mode, y, yaw, Q, z, roll, rolling_radius_difference (when both wheels touch),
+// Y, My, Mz, Y_Q (roll free), left/right = {lifted, flange_climb (flange_climb_reason), z, gap, two_point, point, normal, angle, rolling_radius,
 // normal_force (roll free), overlap, line, contacts = {{gap, line, point, wheel_point, normal, angle,
 // rolling_radius, wheel_profile = {y, z}, rail_profile = {y, z}, wheel_curvature, rail_curvature,
 // wheel_lateral_radius, rail_lateral_radius (1 / curvature, when not zero)}, ...}} (docs/guide/geometry.md).

@@ -75,6 +75,8 @@ struct LoadOptions {
 // allowed and the reader is finished; otherwise every other key goes to the reader as text (checked by the host
 // against the reader's own options when it reads).
 LoadOptions read_load_options(OptionReader& options, bool geometric_only);
+// The keys read_load_options reads; a Lua definition must read every other key it is given (engine/src/lua/sandbox.cpp).
+const std::vector<std::string>& load_option_keys();
 
 // True when `path` is loaded as a Lua definition: a .lua file not given to a reader (`reader = "<id>"`).
 bool is_definition(const std::string& path, const LoadOptions& options);

@@ -59,6 +59,9 @@ struct ContactOptions {
   int margin = 2;                 // elements around the projected inter-penetration area
   double merge_tolerance = 0.01;  // relative force error of solving two areas apart that triggers a merge
   double merge_angle = 0.26;      // rad (15 deg): areas whose normals differ more are never merged
+  // The calls' loads and speeds checked against a railway wheelset's (wheelset/plausibility.hpp); the wheelset sets it
+  // from WheelsetParams::check_setup.
+  bool check_magnitudes = true;
   bool dense = false;             // the dense reference solver instead of the fast one (tests)
   // Largest potential contact area (elements, ~kBytesPerElement each): a larger one is an error naming the grid as too
   // fine for the cap, or the pose as far too deep. 2^22: the paper's poses (S1002/60E1, Q = 200 kN, y = -8 .. 8 mm,
@@ -125,7 +128,7 @@ struct WheelContact {
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // about the wheelset centre (N m)
   std::vector<PatchContact> patches;
   double angle = 0;           // contact angle of the resultant force (rad)
-  double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); 0 without contact
+  double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); not described when lifted
   Sensitivity sensitivity = Sensitivity::Zero();
   std::string flange_climb;   // why the wheel is past flange climb (wheelset/plausibility.hpp); "" when it is not
   CreepTotals creep;
@@ -223,7 +226,8 @@ struct ContactRequest {
   // check their solution against their own SolveLimits::max_penetration (equilibrium/limits.hpp).
   double max_penetration = kMaxPenetration;
   // Throws wrc::Error naming the member, its value and its range (evaluate_contact calls it first).
-  void validate() const;
+  // `plausible`: the speed checked against a train's too (ContactOptions::check_magnitudes).
+  void validate(bool plausible = false) const;
 };
 
 // Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),
@@ -253,7 +257,7 @@ void add_rolling(const ContactModel& model, ContactResult& result, const Rolling
 void drop_grids(ContactResult& result);
 
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
-// flange_climb_reason when true), force, moment, angle, rolling_radius, patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
+// flange_climb_reason when true), force, moment, angle and rolling_radius (absent when lifted), patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
 // iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
 // also its fields (wheelset/tangential.hpp) and, for a wheel and the result, creep_force, creep_moment, power.

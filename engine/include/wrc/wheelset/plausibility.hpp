@@ -1,51 +1,42 @@
-// Plausibility of a wheelset set-up and of its results (docs/guide/robustness.md):
-// the profiles' sizes and shapes for their kind and the flanges against the gauge, checked when the wheelset is
-// built; results past flange climb flagged.
+// Plausibility of a wheelset set-up (docs/guide/robustness.md): the profiles' sizes and shapes for their kind and the
+// flanges against the gauge, checked when the wheelset is built. Results past flange climb are flagged by the
+// definitions of geometry/flange.hpp.
 #pragma once
 
+#include "wrc/geometry/flange.hpp"
 #include "wrc/geometry/track.hpp"
+#include "wrc/halfspace/material.hpp"
 
 #include <string>
+#include <string_view>
 
 namespace wrc {
 
-// The flange of a wheel profile (left-side profile frame, m; docs/design.md section 2: z = radius offset with the
-// sign of a height, so the flange tip is the lowest z).
-struct Flange {
-  bool present = false;   // the profile reaches more than kMinFlangeHeight below its tape-circle height on the
-                          // gauge side (y < 0)
-  double tip_y = 0;       // the flange tip (largest radius; the one nearest the tape circle when several)
-  double tip_z = 0;
-  double height = 0;      // z at the tape circle - tip_z (m)
-  double max_angle = 0;   // steepest slope of the flange face between the tip and the tape circle (rad)
-  double steep_y = 0;     // the tip-side end of the steepest part of the face (slopes within kSteepBand of it)
-  double face_y = 0;      // the face kFlangeThicknessHeight above the tape-circle level (the tip when lower):
-                          // flange thickness = tape_offset + face_y (EN 15313's Sd at 10 mm)
-};
-
-inline constexpr double kMinFlangeHeight = 5e-3;        // m: a lower rise is a tread, not a flange
-inline constexpr double kFlangeThicknessHeight = 10e-3; // m: where the flange thickness is measured
-inline constexpr double kSteepBand = 0.0175;            // rad (1 deg): slopes this close to the steepest count as it
-
-Flange flange_of(const Profile& wheel);
-
 // Throws wrc::Error when a set-up cannot be what the user meant: a profile far too wide or tall for its kind (wrong
 // units), a "wheel" whose radius grows by more than 10 mm toward the field side (a rail profile, or a wheel with
-// reversed y), flanges that do not fit between the rails (back_to_back + both flange thicknesses >= gauge).
+// reversed y), a "rail" that does not fall by 0.1 mm on the field side of its highest point or rises again there by
+// more than 1 mm (a wheel profile: its tread rises toward the field side), flanges that do not fit between the rails
+// (back_to_back + both flange thicknesses >= gauge).
 void check_setup(const Track& track);
 
-// Lateral position in the profile frame of a wheelset-frame lateral position Y of that side.
-inline double profile_y(const SidePlacement& place, double Y) { return place.sign * Y - place.tape_y; }
+// The magnitudes a railway wheelset's inputs have (SI units). A value outside was almost surely given in another unit
+// (kN for N, GPa for Pa, mm for m, km/h for m/s): refused with the unit in the message, unless check_setup = false.
+// The options' validate() functions call check_plausible, so that Lua and C callers get the same checks.
+struct Plausible {
+  const char* what;  // "a wheelset load"
+  const char* unit;  // "N"
+  double lo, hi;     // the plausible range of |value| (SI)
+  const char* hint;  // "200 kN is 200e3"
+};
+inline constexpr Plausible kWheelsetLoad{"a wheelset load", "N", 2e3, 2e6, "200 kN is Q = 200e3"};
+inline constexpr Plausible kWheelLoad{"a wheel load", "N", 1e3, 1e6, "100 kN is Fz = 100e3"};
+inline constexpr Plausible kSteelModulus{"Young's modulus of wheel and rail steel", "Pa", 5e10, 5e11,
+                                         "210 GPa is E = 2.1e11"};
+inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 1.5, "450 mm is radius = 0.45"};
+inline constexpr Plausible kTrainSpeed{"a train's speed", "m/s", 0, 160, "300 km/h is V = 83.3"};
+void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range);
 
-// Why a loaded wheel is past flange climb, or "" when it is not (flange: that wheel's; no flange: never):
-//  - beyond_steepest: a contact area's centre of pressure (at profile lateral position y) lies beyond the steepest
-//    part of the flange face, toward the tip, where a wheel pushed further climbs;
-//  - nadal: the wheel's L/V (lateral force toward the track centre over vertical force; force on the wheel, track
-//    frame) exceeds Nadal's limit of the frictionless contact, tan(steepest flange angle).
-std::string beyond_steepest(const Flange& flange, double y);
-std::string nadal_exceeded(const Flange& flange, int side, double Fy, double Fz);
-// Why a lifted wheel is off its rail: lifted (radial gap `gap` to its rail, m) by more than its flange height, so
-// that its flange no longer guides it; or "".
-std::string lifted_off(const Flange& flange, double gap);
+// The wheelset's parameters (wrc.wheelset{}): radius and E.
+void check_plausible(const TrackParams& track, const halfspace::Material& material);
 
 }  // namespace wrc
