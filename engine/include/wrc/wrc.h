@@ -180,7 +180,7 @@ wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char*
  * plus "dr.y", "dr.dr", "dr.flange". */
 wrc_status wrc_wheelset_conicity(wrc_wheelset* wheelset, const char* options, wrc_result** out);
 /* EN 15313 flange measures of a wheel profile: fields "Sh", "Sd", "qR" (m), "tip.y", "sd_point.y", ... Options:
- * tape_offset (m, the inner face at s = -tape_offset; default 0.070). */
+ * tape_offset (m, the inner face at s = -tape_offset; default: the wheelset's, 0.070). */
 wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* options, wrc_result** out);
 
 /* ---- results: fields by path, as the Lua tables have them ("Y", "z", "left.force.z", "left.patches.1.pmax",

@@ -410,11 +410,14 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
     const wrc::NewtonOptions opt = wrc::read_newton_options(r);
     std::vector<wrc::Start> starts;
     if (auto s = r.table("start")) {
-      starts.push_back(wrc::Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
+      wrc::Start st;
+      st.z = s->need_number("z");
+      st.roll = s->number("roll", st.roll);
+      starts.push_back(st);
       s->finish();
     }
     wrc::ContactRequest req;
-    req.keep_grids = r.boolean("grids").value_or(true);
+    req.keep_grids = r.boolean("grids").value_or(req.keep_grids);
     r.finish();
     Lease ws(*w);
     const wrc::EquilibriumResult e = solve_equilibrium(w->model->contact_model(), {y, yaw, Q}, *ws, opt, starts, req);
@@ -560,7 +563,7 @@ wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* o
     const auto p = registry().get(profile, "profile");
     const wrc::OptionTable t = options_of(options, "wrc_profile_flange_measures: options");
     wrc::OptionReader r(t, "wrc_profile_flange_measures");
-    const double tape = r.number("tape_offset", 0.070);
+    const double tape = r.number("tape_offset", wrc::kTapeOffset);
     r.finish();
     return make_result(out, true, "", wrc::flange_measures(*p->profile, tape));
   });

@@ -30,13 +30,13 @@ int conicity(lua_State* L) {
   return 2;
 }
 
-// p:flange_measures{tape_offset = 0.070} -> {Sh =, Sd =, qR =, tip =, sd_point =, qr_point =, ...} (m)
+// p:flange_measures{tape_offset = m} -> {Sh =, Sd =, qR =, tip =, sd_point =, qr_point =, ...} (m)
 int profile_flange_measures(lua_State* L) {
   const char* ctx = "profile:flange_measures";
   const auto& p = check_profile(L, 1, ctx);
   const OptionTable t = to_options(L, 2, ctx);
   OptionReader r(t, ctx);
-  const double tape = r.number("tape_offset", 0.070);
+  const double tape = r.number("tape_offset", kTapeOffset);
   r.finish();
   push_result(L, flange_measures(*p, tape));
   return 1;

@@ -107,7 +107,7 @@ RigidWheel deepest_point(const GeometryModel& geometry, int side, const Pose& po
 
 // Options as Lua and the C API give them: roll ("free", "fixed" or a number: fixed at that roll, rad), Q,
 // two_point_tolerance, start = {z =, roll =}.
-RigidOptions read_rigid_options(OptionReader& options);
+RigidOptions read_rigid_options(OptionReader& options, RigidOptions base = {});
 
 // converged, tension, error, roll_mode, y, yaw, Q, z, roll, rolling_radius_difference (when both wheels touch),
 // Y, My, Mz, Y_Q (roll free), left/right = {lifted, z, gap, two_point, point, normal, angle, rolling_radius,
