@@ -284,7 +284,8 @@ void describe(const CreepTotals& c, FieldSink& out) {
 
 namespace {
 
-const OptionDoc kV{"m/s", "forward speed of the wheelset centre (with creepage: scales slip velocities and power)"};
+const OptionDoc kV{"m/s", "forward speed of the wheelset centre (rolling: required with the kinematics; with creepage "
+                          "it scales slip velocities and power, default 1)"};
 
 void check_speed(const OptionReader& r, double V) {
   if (V == 0)
@@ -303,12 +304,14 @@ void read_slip(OptionReader& r, RollingRequest& q) {
     c.phi = t->number("phi", {"1/m", "spin creepage"}, c.phi);
     q.creepage = c;
     t->finish();
-    q.V = r.number("V", kV, q.V);
-    if (!r.documenting()) return check_speed(r, q.V);
+    if (!r.documenting()) {
+      q.V = r.number("V", kV, q.V);
+      return check_speed(r, q.V);
+    }
   }
   if (!r.documenting() && !r.has("V")) fail("{}: the kinematics need the forward speed V (m/s)", r.context());
   Kinematics k;
-  k.V = r.need_number("V", kV);
+  k.V = r.documenting() ? r.number("V", kV).value_or(0) : r.need_number("V", kV);
   k.omega = r.number("omega", {"rad/s", "axle angular velocity (default: V / r0, pure rolling)"});
   k.vy = r.number("vy", {"m/s", "lateral velocity of the wheelset centre"}, k.vy);
   k.yaw_rate = r.number("yaw_rate", {"rad/s", "yaw rate of the wheelset"}, k.yaw_rate);
