@@ -119,3 +119,27 @@ TEST_CASE("operations: the keys Lua and C give, with units, defaults and require
   CHECK(find(api::operation("flange_measures"), "tape_offset").fallback == fmt::format("{}", TrackParams{}.tape_offset));
   CHECK_THROWS_WITH_AS(api::operation("contcat"), doctest::Contains("the operations: contact, wheel"), Error);
 }
+
+TEST_CASE("a request's validate() names the key, the value, the unit and the range (the engine's checks and its own)") {
+  OptionTable t;
+  t.set("y", OptionValue::of(1e-3)).set("Q", OptionValue::of(1e5));
+  api::EquilibriumCall e = api::read<api::EquilibriumCall>(t, "test");
+  CHECK_NOTHROW(e.validate());
+  e.equilibrium.Q = -5;  // a C++ caller's request: no reader saw it
+  CHECK_THROWS_WITH_AS(e.validate(), doctest::Contains("equilibrium: Q = -5 N must be a positive number"), Error);
+  e.equilibrium.Q = 1e5;
+  e.options.moment_tolerance = 2;
+  CHECK_THROWS_WITH_AS(e.validate(), doctest::Contains("moment_tolerance = 2 must be in ]0, 0.1]"), Error);
+  e.options.moment_tolerance = 1e-6;
+  e.starts.push_back(Start{std::nan(""), 0, std::nullopt, false});
+  CHECK_THROWS_WITH_AS(e.validate(), doctest::Contains("start = {z = nan m, roll = 0 rad} must be finite"), Error);
+
+  api::WheelCall w;
+  w.wheel.Fz = 5e4;
+  CHECK_NOTHROW(w.validate());
+  w.options.limits.max_penetration = 0;
+  CHECK_THROWS_WITH_AS(w.validate(), doctest::Contains("wheel: max_penetration = 0 m must be a positive number"), Error);
+  api::ContactCall c;
+  c.request.tolerance = 1;
+  CHECK_THROWS_WITH_AS(c.validate(), doctest::Contains("contact: tolerance = 1 must be in [0, 1e-2]"), Error);
+}

@@ -31,8 +31,11 @@ ContactCall ContactCall::read(OptionReader& r) {
   return c;
 }
 
+void ContactCall::validate() const { request.validate(); }
+
 ContactResult ContactCall::run(const Wheelset& wheelset, ContactWorkspace& ws) const {
   const ContactModel& m = wheelset.contact_model();
+  validate();
   if (!brute) return evaluate_contact(m, pose, ws, request);
   ContactWorkspace own(m, std::make_unique<NativeSearch>(NativePlan{false, NativePlan::Scan::test}));
   return evaluate_contact(m, pose, own, request);
@@ -47,7 +50,13 @@ WheelCall WheelCall::read(OptionReader& r) {
   return c;
 }
 
+void WheelCall::validate() const {
+  wheel.validate("wheel");
+  options.validate("wheel");
+}
+
 WheelResult WheelCall::run(const Wheelset& wheelset, ContactWorkspace& ws) const {
+  validate();
   return solve_wheel(wheelset.contact_model(), wheel, ws, options, std::nullopt, rolling);
 }
 
@@ -68,7 +77,16 @@ EquilibriumCall EquilibriumCall::read(OptionReader& r) {
   return c;
 }
 
+void EquilibriumCall::validate() const {
+  equilibrium.validate("equilibrium");
+  options.validate("equilibrium");
+  for (const Start& s : starts)
+    if (!std::isfinite(s.z) || !std::isfinite(s.roll))
+      fail("equilibrium: start = {{z = {} m, roll = {} rad}} must be finite", s.z, s.roll);
+}
+
 EquilibriumResult EquilibriumCall::run(const Wheelset& wheelset, ContactWorkspace& ws) const {
+  validate();
   return solve_equilibrium(wheelset.contact_model(), equilibrium, ws, options, starts, request);
 }
 
@@ -146,7 +164,12 @@ TrajectoryWheelCall TrajectoryWheelCall::read(OptionReader& r) {
   return c;
 }
 
-WheelResult TrajectoryWheelCall::run(Trajectory& trajectory) const { return trajectory.wheel(wheel, rolling); }
+void TrajectoryWheelCall::validate() const { wheel.validate("wheel"); }
+
+WheelResult TrajectoryWheelCall::run(Trajectory& trajectory) const {
+  validate();
+  return trajectory.wheel(wheel, rolling);
+}
 
 // ---- sweeps, strategy checks ----
 
@@ -177,8 +200,11 @@ SweepCall SweepCall::read(OptionReader& r) {
   return c;
 }
 
+void SweepCall::validate() const { options.equilibrium.validate("sweep"); }
+
 SweepResult SweepCall::run(const Wheelset& wheelset,
                            const std::function<std::unique_ptr<ContactWorkspace>()>& workspace) const {
+  validate();
   return run_sweep(wheelset.contact_model(), plan, chunks, options, workspace);
 }
 

@@ -3,7 +3,9 @@
 // OptionTable (the C API puts the numbers it takes positionally -- y, z, Fz, ... -- into the table under the names
 // Lua uses), reads the request from it (X::read: every key of the operation, with its unit and help), runs it and
 // describes the result into its own FieldSink. A front end writes no default and no check of its own: the defaults are
-// the options structs' members, the checks their validate() (which the engine's solvers call themselves).
+// the options structs' members, the checks their validate() (which the engine's solvers call themselves). A request's
+// validate() makes those checks (with the engine's messages) and its own; run() calls it first. A caller may call it
+// alone, e.g. to check keyword arguments before a long call.
 #pragma once
 
 #include "wrc/core/options.hpp"
@@ -46,6 +48,7 @@ struct ContactCall {
   ContactRequest request;  // grids, sensitivity, max_penetration, the rolling keys
   bool brute = false;      // search = "brute": every rail line against every cone (a check of the strategy)
   static ContactCall read(OptionReader& r);
+  void validate() const;
   ContactResult run(const Wheelset& wheelset, ContactWorkspace& ws) const;
 };
 
@@ -56,6 +59,7 @@ struct WheelCall {
   std::optional<RollingRequest> rolling;
   OnFailure on_failure;
   static WheelCall read(OptionReader& r);
+  void validate() const;
   WheelResult run(const Wheelset& wheelset, ContactWorkspace& ws) const;
 };
 
@@ -67,6 +71,7 @@ struct EquilibriumCall {
   ContactRequest request;     // grids
   OnFailure on_failure;
   static EquilibriumCall read(OptionReader& r);
+  void validate() const;  // also: a start's z and roll finite
   EquilibriumResult run(const Wheelset& wheelset, ContactWorkspace& ws) const;
 };
 
@@ -138,6 +143,7 @@ struct TrajectoryWheelCall {
   WheelCase wheel;
   std::optional<RollingRequest> rolling;
   static TrajectoryWheelCall read(OptionReader& r);
+  void validate() const;
   WheelResult run(Trajectory& trajectory) const;
 };
 
@@ -148,6 +154,7 @@ struct SweepCall {
   SweepOptions options;     // the front end sets options.progress, notice and single_thread
   ProgressAsked progress;
   static SweepCall read(OptionReader& r);
+  void validate() const;
   SweepResult run(const Wheelset& wheelset, const std::function<std::unique_ptr<ContactWorkspace>()>& workspace) const;
 };
 
