@@ -26,7 +26,10 @@
  * or false, a list of numbers "a,b" or a word; dotted keys make nested tables ("shift.y=1e-3"). The keys are those of
  * the Lua API (docs/reference/lua-api.md): an unknown key is an error naming the closest known one. A key given
  * twice, a key of more than 256 characters or 16 dotted levels and a string of more than 32 MB are errors too
- * (WRC_ERROR).
+ * (WRC_ERROR). A function and its Lua twin are one request of the engine (wrc/api/calls.hpp): the numbers it takes
+ * as arguments (y, z, roll, yaw, Fz, Q, the side) join the options under their Lua names, so that one reader checks
+ * all; an argument given again as an option is an error (WRC_ERROR). Lua's on_failure is refused: the status
+ * WRC_NOT_CONVERGED (with the result) reports a failed solve.
  */
 #ifndef WRC_WRC_H
 #define WRC_WRC_H
@@ -109,7 +112,8 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity, max_penetration; with
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
  * vy (m/s), yaw_rate (rad/s), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
- * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
+ * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance; search (strategy, the default, or
+ * brute: every rail line against every cone, a check of the strategy). The areas then hold Fx, Fy, Mz,
  * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
