@@ -296,8 +296,11 @@ DeltaRFunction read_delta_r(OptionReader& r) {
   DeltaRFunction d;
   auto y = r.numbers("y", {"m", "lateral positions of the Δr table (required)"}, false);
   auto dr = r.numbers("dr", {"m", "rolling radius difference left - right at each y (required)"}, false);
-  if (r.documenting()) r.value("flange", "booleans", {"-", "flange contact at each y (optional)"});
-  if ((!y || !dr) && !r.documenting()) fail("{}: the Δr table needs arrays 'y' and 'dr' (m)", r.context());
+  if (r.documenting()) {
+    r.value("flange", "booleans", {"-", "flange contact at each y (optional)"});
+    return d;
+  }
+  if (!y || !dr) fail("{}: the Δr table needs arrays 'y' and 'dr' (m)", r.context());
   d.y = std::move(*y);
   d.dr = std::move(*dr);
   if (const OptionValue* f = r.value("flange")) {
