@@ -576,3 +576,37 @@ TEST_CASE("wrc_profile_write: each format read back by wrc_profile_load gives th
   CHECK_FALSE(std::filesystem::exists(bad));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("the C API reads its arguments and options as one request: search, arguments given twice, on_failure") {
+  Fixture f;
+  wrc_result *a = nullptr, *b = nullptr;
+  // search = "brute" (every rail line against every cone): the same contact as the strategy's.
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 3e-3, -0.1e-3, 0, 1e-3, "grids=false", &a) == WRC_OK, last());
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 3e-3, -0.1e-3, 0, 1e-3, "grids=false search=brute", &b) == WRC_OK, last());
+  for (const char* path : {"left.force.z", "right.force.z", "left.force.y", "right.patches.1.pmax"})
+    CHECK(number(a, path) == doctest::Approx(number(b, path)).epsilon(1e-9));
+  wrc_result_free(a);
+  wrc_result_free(b);
+  wrc_result* r = nullptr;
+  CHECK(wrc_contact(f.ws, 0, 0, 0, 0, "search=fastest", &r) == WRC_ERROR);
+  CHECK(last().find("'search' must be one of \"strategy\", \"brute\"") != std::string::npos);
+  // A number passed as an argument is not an option as well.
+  CHECK(wrc_contact(f.ws, 0, -0.1e-3, 0, 0, "z=-1e-3", &r) == WRC_ERROR);
+  CHECK(last().find("wrc_contact: 'z' is an argument of wrc_contact, not an option") != std::string::npos);
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 5e4, "side=right", &r) == WRC_ERROR);
+  CHECK(wrc_equilibrium(f.ws, 0, 0, 1e5, "Q=2e5", &r) == WRC_ERROR);
+  CHECK(last().find("'Q' is an argument") != std::string::npos);
+  CHECK(wrc_conicity(nullptr, nullptr, 0, "y=1,2,3", &r) == WRC_ERROR);
+  CHECK(last().find("'y' is an argument") != std::string::npos);
+  // The status reports a failed solve: on_failure is Lua's.
+  CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 5e4, "on_failure=return", &r) == WRC_ERROR);
+  CHECK(last().find("'on_failure' is not an option of the C API") != std::string::npos);
+  CHECK(r == nullptr);
+  // The rigid contact with Q alone (wrc_rigid) is the rigid contact call with that Q.
+  REQUIRE_MESSAGE(wrc_rigid(f.ws, 2e-3, 0, 1e5, &a) == WRC_OK, last());
+  REQUIRE_MESSAGE(wrc_rigid_contact(f.ws, 2e-3, 0, "Q=1e5", &b) == WRC_OK, last());
+  CHECK(number(a, "z") == number(b, "z"));
+  CHECK(number(a, "left.normal_force") == number(b, "left.normal_force"));
+  wrc_result_free(a);
+  wrc_result_free(b);
+}

@@ -169,7 +169,9 @@ std::vector<Section> sections(const std::string& root) {
     DeltaRFunction dr;
     dr.y = c.dr.y;
     dr.dr = c.dr.dr;
-    const ConicityResult r = equivalent_conicity(dr, o.conicity);
+    ConicityOptions co;  // r0 and contact_distance of their own (the wheelset's options leave them to the wheelset)
+    co.yhat = o.conicity.yhat;
+    const ConicityResult r = equivalent_conicity(dr, co);
     out.push_back({"Conicity of a Δr table", "`wrc.conicity(dr, options)` (its second value); `wrc_conicity`",
                    "The equivalent conicity of a given rolling-radius difference function.",
                    {[=](FieldSink& s) { describe(r, s); }}});

@@ -26,7 +26,10 @@
  * or false, a list of numbers "a,b" or a word; dotted keys make nested tables ("shift.y=1e-3"). The keys are those of
  * the Lua API (docs/reference/lua-api.md): an unknown key is an error naming the closest known one. A key given
  * twice, a key of more than 256 characters or 16 dotted levels and a string of more than 32 MB are errors too
- * (WRC_ERROR).
+ * (WRC_ERROR). A function and its Lua twin are one request of the engine (wrc/api/calls.hpp): the numbers it takes
+ * as arguments (y, z, roll, yaw, Fz, Q, the side) join the options under their Lua names, so that one reader checks
+ * all; an argument given again as an option is an error (WRC_ERROR). Lua's on_failure is refused: the status
+ * WRC_NOT_CONVERGED (with the result) reports a failed solve.
  */
 #ifndef WRC_WRC_H
 #define WRC_WRC_H
@@ -115,7 +118,8 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
  * vy (m/s), yaw_rate (rad/s), slip_reference (deformed or undeformed: where the rigid slip is taken,
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
- * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance. The areas then hold Fx, Fy, Mz,
+ * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance; search (strategy, the default, or
+ * brute: every rail line against every cone, a check of the strategy). The areas then hold Fx, Fy, Mz,
  * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
@@ -186,7 +190,7 @@ wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char*
  * plus "dr.y", "dr.dr", "dr.flange". */
 wrc_status wrc_wheelset_conicity(wrc_wheelset* wheelset, const char* options, wrc_result** out);
 /* EN 15313 flange measures of a wheel profile: fields "Sh", "Sd", "qR" (m), "tip.y", "sd_point.y", ... Options:
- * tape_offset (m, the inner face at s = -tape_offset; default 0.070). */
+ * tape_offset (m, the inner face at s = -tape_offset; default: the wheelset's, 0.070). */
 wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* options, wrc_result** out);
 
 /* ---- results: fields by path, as the Lua tables have them ("Y", "z", "left.force.z", "left.patches.1.pmax",

@@ -2,18 +2,14 @@
 // point runs its body through `guard`, which turns every C++ exception into a status and a thread-local message.
 #include "wrc/wrc.h"
 
+#include "wrc/api/calls.hpp"
 #include "wrc/core/config.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/core/options.hpp"
-#include "wrc/equilibrium/equilibrium.hpp"
-#include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/host/terminal.hpp"
-#include "wrc/kinematics/table.hpp"
 #include "wrc/lua/definitions.hpp"
 #include "wrc/profile/load.hpp"
-#include "wrc/profile/measures.hpp"
 #include "wrc/profile/write.hpp"
-#include "wrc/wheelset/wheelset.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -168,13 +164,35 @@ wrc::OptionTable options_of(const char* text, const char* context) {
   return text ? wrc::parse_option_text(text, context) : wrc::OptionTable{};
 }
 
-// Options of a trajectory step: the rolling keys of wrc_contact and nothing else (unknown keys are errors).
-std::optional<wrc::RollingRequest> rolling_options(const char* text, const std::string& context) {
-  const wrc::OptionTable o = options_of(text, (context + ": options").c_str());
-  wrc::OptionReader r(o, context);
-  std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
-  r.finish();
-  return rolling;
+// The options of a call: the caller's option text, and the numbers the call takes as arguments under the names Lua
+// gives them (so that one reader, api::X::read, checks them all). An argument must be a finite number and must not be
+// given again as an option.
+void set_argument(wrc::OptionTable& t, const char* function, const char* name, wrc::OptionValue v) {
+  if (t.find(name)) wrc::fail("{}: '{}' is an argument of {}, not an option", function, name, function);
+  t.set(name, std::move(v));
+}
+
+wrc::OptionTable call_options(const char* text, const char* function,
+                              std::initializer_list<std::pair<const char*, double>> arguments) {
+  for (auto [name, v] : arguments) finite(name, v);
+  wrc::OptionTable t = options_of(text, (std::string(function) + ": options").c_str());
+  for (auto [name, v] : arguments) set_argument(t, function, name, wrc::OptionValue::of(v));
+  return t;
+}
+
+// A solve's failure is the status WRC_NOT_CONVERGED with its result: the C API has no on_failure.
+void no_on_failure(const wrc::OptionTable& t, const char* function) {
+  if (t.find("on_failure"))
+    wrc::fail("{}: 'on_failure' is not an option of the C API (a solve that fails returns WRC_NOT_CONVERGED and its "
+              "result)", function);
+}
+
+// A C array as an option value (an array of numbers).
+wrc::OptionValue array_value(const double* v, std::size_t n) {
+  std::vector<wrc::OptionValue> a;
+  a.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) a.push_back(wrc::OptionValue::of(v[i]));
+  return wrc::OptionValue::of(std::move(a));
 }
 
 // A workspace of the wheelset's pool for the duration of one call (returned to the pool after it).
@@ -385,14 +403,10 @@ wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, 
   return guard("wrc_contact", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
-    const wrc::OptionTable t = options_of(options, "wrc_contact: options");
-    wrc::OptionReader r(t, "wrc_contact");
-    const wrc::ContactRequest req = wrc::read_contact_request(r);
-    r.finish();
+    const auto t = call_options(options, "wrc_contact", {{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}});
+    const auto call = wrc::api::read<wrc::api::ContactCall>(t, "wrc_contact");
     Lease ws(*w);
-    const wrc::ContactResult c = evaluate_contact(w->model->contact_model(), {y, z, roll, yaw}, *ws, req);
-    return make_result(out, true, "", c, req.sensitivity);
+    return make_result(out, true, "", call.run(*w->model, *ws), call.request.sensitivity);
   });
 }
 
@@ -402,15 +416,12 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
     check_side(side);
-    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
-    const wrc::OptionTable t = options_of(options, "wrc_wheel: options");
-    wrc::OptionReader r(t, "wrc_wheel");
-    const wrc::WheelOptions opt = wrc::read_wheel_options(r);
-    const std::optional<wrc::RollingRequest> rolling = wrc::read_rolling_request(r);
-    r.finish();
+    auto t = call_options(options, "wrc_wheel", {{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}});
+    no_on_failure(t, "wrc_wheel");
+    set_argument(t, "wrc_wheel", "side", wrc::OptionValue::of(std::string(wrc::side_name(side))));
+    const auto call = wrc::api::read<wrc::api::WheelCall>(t, "wrc_wheel");
     Lease ws(*w);
-    const wrc::WheelResult res =
-        solve_wheel(w->model->contact_model(), {side, y, yaw, roll, Fz}, *ws, opt, std::nullopt, rolling);
+    const wrc::WheelResult res = call.run(*w->model, *ws);
     return make_result(out, res.converged, res.converged ? "" : "wrc_wheel: " + failure_message(res), res);
   });
 }
@@ -419,20 +430,11 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
   return guard("wrc_equilibrium", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"Q", Q}}) finite(name, v);
-    const wrc::OptionTable t = options_of(options, "wrc_equilibrium: options");
-    wrc::OptionReader r(t, "wrc_equilibrium");
-    const wrc::NewtonOptions opt = wrc::read_newton_options(r);
-    std::vector<wrc::Start> starts;
-    if (auto s = r.table("start")) {
-      starts.push_back(wrc::Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
-      s->finish();
-    }
-    wrc::ContactRequest req;
-    req.keep_grids = r.boolean("grids").value_or(true);
-    r.finish();
+    const auto t = call_options(options, "wrc_equilibrium", {{"y", y}, {"yaw", yaw}, {"Q", Q}});
+    no_on_failure(t, "wrc_equilibrium");
+    const auto call = wrc::api::read<wrc::api::EquilibriumCall>(t, "wrc_equilibrium");
     Lease ws(*w);
-    const wrc::EquilibriumResult e = solve_equilibrium(w->model->contact_model(), {y, yaw, Q}, *ws, opt, starts, req);
+    const wrc::EquilibriumResult e = call.run(*w->model, *ws);
     return make_result(out, e.converged, e.converged ? "" : "wrc_equilibrium: " + failure_message(e), e);
   });
 }
@@ -441,8 +443,8 @@ wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc
   return guard("wrc_rigid", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"Q", Q}}) finite(name, v);
-    const wrc::RigidResult r = solve_rigid(w->model->geometry(), y, yaw, Q);
+    const auto t = call_options(nullptr, "wrc_rigid", {{"y", y}, {"yaw", yaw}, {"Q", Q}});
+    const wrc::RigidResult r = wrc::api::read<wrc::api::RigidCall>(t, "wrc_rigid").run(*w->model);
     return make_result(out, r.converged, r.converged ? "" : "wrc_rigid: " + r.message, r);
   });
 }
@@ -451,12 +453,9 @@ wrc_status wrc_trajectory_new(wrc_wheelset* wheelset, const char* options, wrc_t
   return guard("wrc_trajectory_new", [&] {
     set_out(out, "trajectory");
     const auto w = registry().get(wheelset, "wheelset");
-    const wrc::OptionTable t = options_of(options, "wrc_trajectory_new: options");
-    wrc::OptionReader r(t, "wrc_trajectory_new");
-    const wrc::TrajectoryOptions o = wrc::read_trajectory_options(r);
-    r.finish();
+    const auto t = call_options(options, "wrc_trajectory_new", {});
     auto tr = std::make_shared<wrc_trajectory>();
-    tr->trajectory = std::make_unique<wrc::Trajectory>(w->model, o);
+    tr->trajectory = wrc::api::read<wrc::api::TrajectoryCall>(t, "wrc_trajectory_new").run(w->model);
     *out = registry().add(std::move(tr));
     return WRC_OK;
   });
@@ -466,11 +465,11 @@ wrc_status wrc_trajectory_contact_with(wrc_trajectory* trajectory, double y, dou
                                        const char* options, wrc_result** out) {
   return guard("wrc_trajectory_contact", [&] {
     set_out(out, "result");
-    const auto t = registry().get(trajectory, "trajectory");
-    for (auto [name, v] : {std::pair{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}}) finite(name, v);
-    const std::optional<wrc::RollingRequest> rolling = rolling_options(options, "wrc_trajectory_contact");
-    std::lock_guard lock(t->mutex);
-    return make_result(out, true, "", t->trajectory->contact({y, z, roll, yaw}, rolling));
+    const auto tr = registry().get(trajectory, "trajectory");
+    const auto t = call_options(options, "wrc_trajectory_contact", {{"y", y}, {"z", z}, {"roll", roll}, {"yaw", yaw}});
+    const auto call = wrc::api::read<wrc::api::TrajectoryContactCall>(t, "wrc_trajectory_contact");
+    std::lock_guard lock(tr->mutex);
+    return make_result(out, true, "", call.run(*tr->trajectory));
   });
 }
 
@@ -483,12 +482,13 @@ wrc_status wrc_trajectory_wheel_with(wrc_trajectory* trajectory, int side, doubl
                                      const char* options, wrc_result** out) {
   return guard("wrc_trajectory_wheel", [&] {
     set_out(out, "result");
-    const auto t = registry().get(trajectory, "trajectory");
+    const auto tr = registry().get(trajectory, "trajectory");
     check_side(side);
-    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}}) finite(name, v);
-    const std::optional<wrc::RollingRequest> rolling = rolling_options(options, "wrc_trajectory_wheel");
-    std::lock_guard lock(t->mutex);
-    const wrc::WheelResult res = t->trajectory->wheel({side, y, yaw, roll, Fz}, rolling);
+    auto t = call_options(options, "wrc_trajectory_wheel", {{"y", y}, {"yaw", yaw}, {"roll", roll}, {"Fz", Fz}});
+    set_argument(t, "wrc_trajectory_wheel", "side", wrc::OptionValue::of(std::string(wrc::side_name(side))));
+    const auto call = wrc::api::read<wrc::api::TrajectoryWheelCall>(t, "wrc_trajectory_wheel");
+    std::lock_guard lock(tr->mutex);
+    const wrc::WheelResult res = call.run(*tr->trajectory);
     return make_result(out, res.converged, res.converged ? "" : "wrc_trajectory_wheel: " + failure_message(res), res);
   });
 }
@@ -518,12 +518,8 @@ wrc_status wrc_rigid_contact(wrc_wheelset* wheelset, double y, double yaw, const
   return guard("wrc_rigid_contact", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    for (auto [name, v] : {std::pair{"y", y}, {"yaw", yaw}}) finite(name, v);
-    const wrc::OptionTable t = options_of(options, "wrc_rigid_contact: options");
-    wrc::OptionReader r(t, "wrc_rigid_contact");
-    const wrc::RigidOptions o = wrc::read_rigid_options(r);
-    r.finish();
-    const wrc::RigidResult res = solve_rigid(w->model->geometry(), y, yaw, o);
+    const auto t = call_options(options, "wrc_rigid_contact", {{"y", y}, {"yaw", yaw}});
+    const wrc::RigidResult res = wrc::api::read<wrc::api::RigidCall>(t, "wrc_rigid_contact").run(*w->model);
     return make_result(out, res.converged, res.converged ? "" : "wrc_rigid_contact: " + res.message, res);
   });
 }
@@ -532,12 +528,10 @@ wrc_status wrc_geometry_table(wrc_wheelset* wheelset, const char* options, wrc_r
   return guard("wrc_geometry_table", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    const wrc::OptionTable t = options_of(options, "wrc_geometry_table: options");
-    wrc::OptionReader r(t, "wrc_geometry_table");
-    wrc::GeometryTableOptions o = wrc::read_geometry_table_options(r);
-    o.progress = wrc::host::read_progress_line(r, false, "geometry table", "rows");  // the caller's stderr: when asked
-    r.finish();
-    return make_result(out, true, "", wrc::run_geometry_table(w->model->geometry(), o));
+    auto call = wrc::api::read<wrc::api::GeometryTableCall>(call_options(options, "wrc_geometry_table", {}),
+                                                            "wrc_geometry_table");
+    if (call.progress.on(false)) call.options.progress = wrc::host::progress_line("geometry table", "rows");
+    return make_result(out, true, "", call.run(*w->model));
   });
 }
 
@@ -546,14 +540,11 @@ wrc_status wrc_conicity(const double* y, const double* dr, size_t n, const char*
     set_out(out, "result");
     check_count(n, "rows");
     if (n > 0 && (!y || !dr)) invalid("the y or dr array is NULL");
-    wrc::DeltaRFunction d;
-    d.y.assign(y, y + n);
-    d.dr.assign(dr, dr + n);
-    const wrc::OptionTable t = options_of(options, "wrc_conicity: options");
-    wrc::OptionReader r(t, "wrc_conicity");
-    const wrc::ConicityOptions o = wrc::read_conicity_options(r);
-    r.finish();
-    return make_result(out, true, "", wrc::equivalent_conicity(d, o));
+    auto t = call_options(options, "wrc_conicity", {});
+    set_argument(t, "wrc_conicity", "y", array_value(y, n));
+    set_argument(t, "wrc_conicity", "dr", array_value(dr, n));
+    const auto call = wrc::api::read<wrc::api::ConicityCall>(t, "wrc_conicity");
+    return make_result(out, true, "", call.run());
   });
 }
 
@@ -561,11 +552,8 @@ wrc_status wrc_wheelset_conicity(wrc_wheelset* wheelset, const char* options, wr
   return guard("wrc_wheelset_conicity", [&] {
     set_out(out, "result");
     const auto w = registry().get(wheelset, "wheelset");
-    const wrc::OptionTable t = options_of(options, "wrc_wheelset_conicity: options");
-    wrc::OptionReader r(t, "wrc_wheelset_conicity");
-    const wrc::WheelsetConicityOptions o = wrc::read_wheelset_conicity_options(r);
-    r.finish();
-    return make_result(out, true, "", wrc::wheelset_conicity(w->model->geometry(), o));
+    const auto t = call_options(options, "wrc_wheelset_conicity", {});
+    return make_result(out, true, "", wrc::api::read<wrc::api::WheelsetConicityCall>(t, "wrc_wheelset_conicity").run(*w->model));
   });
 }
 
@@ -573,11 +561,9 @@ wrc_status wrc_profile_flange_measures(const wrc_profile* profile, const char* o
   return guard("wrc_profile_flange_measures", [&] {
     set_out(out, "result");
     const auto p = registry().get(profile, "profile");
-    const wrc::OptionTable t = options_of(options, "wrc_profile_flange_measures: options");
-    wrc::OptionReader r(t, "wrc_profile_flange_measures");
-    const double tape = r.number("tape_offset", 0.070);
-    r.finish();
-    return make_result(out, true, "", wrc::flange_measures(*p->profile, tape));
+    const auto t = call_options(options, "wrc_profile_flange_measures", {});
+    const auto call = wrc::api::read<wrc::api::FlangeMeasuresCall>(t, "wrc_profile_flange_measures");
+    return make_result(out, true, "", call.run(*p->profile));
   });
 }
 

@@ -254,6 +254,11 @@ const OptionValue* OptionReader::value(std::string_view key) {
   return table_.find(key);
 }
 
+const OptionValue* OptionReader::value(std::string_view key, std::string_view type, OptionDoc doc, std::string fallback) {
+  if (doc_) note(key, type, doc, std::move(fallback));
+  return value(key);
+}
+
 bool OptionReader::has(std::string_view key) { return value(key) != nullptr; }
 
 void OptionReader::allow(std::initializer_list<std::string_view> keys) {

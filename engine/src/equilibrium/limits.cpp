@@ -23,11 +23,12 @@ void SolveLimits::validate(std::string_view context) const {
 
 SolveLimits read_solve_limits(OptionReader& r) {
   SolveLimits l;
-  l.force_tolerance = r.number("force_tolerance", l.force_tolerance);
-  l.max_iterations = r.integer("max_iterations", 1, kMaxSolveCount).value_or(l.max_iterations);
-  l.max_evaluations = r.integer("max_evaluations", 1, kMaxSolveCount).value_or(l.max_evaluations);
+  l.force_tolerance = r.number("force_tolerance", {"-", "converged: |carried - load| <= this * load"}, l.force_tolerance);
+  l.max_iterations = r.integer("max_iterations", 1, kMaxSolveCount, {"-", "iterations per attempt"}, l.max_iterations);
+  l.max_evaluations =
+      r.integer("max_evaluations", 1, kMaxSolveCount, {"-", "contact evaluations per solve"}, l.max_evaluations);
   l.max_penetration = read_max_penetration(r, l.max_penetration);
-  l.validate(r.context());
+  if (!r.documenting()) l.validate(r.context());
   return l;
 }
 

@@ -467,24 +467,25 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, const Equilibrium
 
 EquilibriumCase read_equilibrium_case(OptionReader& r) {
   EquilibriumCase c;
-  c.y = r.need_number("y");
-  c.yaw = r.number("yaw", c.yaw);
-  c.Q = r.need_number("Q");
+  c.y = r.need_number("y", {"m", "lateral position of the wheelset centre"});
+  c.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, c.yaw);
+  c.Q = r.need_number("Q", {"N", "vertical load at the wheelset centre"});
   return c;
 }
 
 NewtonOptions read_newton_options(OptionReader& r) {
   NewtonOptions o;
   o.limits = read_solve_limits(r);
-  o.moment_tolerance = r.number("moment_tolerance", o.moment_tolerance);
-  if (r.boolean("trace").value_or(false)) {
+  o.moment_tolerance =
+      r.number("moment_tolerance", {"-", "converged: |sum Mx| <= this * Q * 1 m"}, o.moment_tolerance);
+  if (r.boolean("trace", {"-", "print the Newton iterates to stderr"}, false)) {
     o.trace = [](int it, double z, double roll, const ContactResult& c) {
       std::fprintf(stderr, "  newton %2d: z = %+.6f mm, roll = %+.6f mrad, Fz = %.3f kN (left %.3f, right %.3f), Mx = %+.3f N m\n",
                    it, z * 1e3, roll * 1e3, c.force.z() / 1e3, c.wheel[kLeft].force.z() / 1e3,
                    c.wheel[kRight].force.z() / 1e3, c.moment.x());
     };
   }
-  o.validate(r.context());
+  if (!r.documenting()) o.validate(r.context());
   return o;
 }
 

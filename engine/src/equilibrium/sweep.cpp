@@ -210,11 +210,11 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
 
 SweepOptions read_sweep_options(OptionReader& r) {
   SweepOptions o;
-  o.Q = r.need_number("Q");
-  o.threads = r.integer("threads", 0, 256).value_or(0);
-  o.rigid = r.boolean("rigid").value_or(false);
-  o.keep_grids = r.boolean("grids").value_or(false);
-  o.chain = r.integer("chain", 0, 100000000).value_or(0);
+  o.Q = r.need_number("Q", {"N", "vertical load at the wheelset centre"});
+  o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
+  o.rigid = r.boolean("rigid", {"-", "also solve the rigid reference of each case"}, o.rigid);
+  o.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids of every case"}, o.keep_grids);
+  o.chain = r.integer("chain", 0, 100000000, {"-", "reported cases per chunk at most (0: whole chains)"}, o.chain);
   o.equilibrium = read_newton_options(r);
   o.rolling = read_rolling_request(r);
   return o;

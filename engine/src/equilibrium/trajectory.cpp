@@ -7,9 +7,9 @@ namespace wrc {
 
 TrajectoryOptions read_trajectory_options(OptionReader& r) {
   TrajectoryOptions o;
-  o.tolerance = r.number("tolerance", o.tolerance);
-  o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
-  o.extrapolate = r.boolean("extrapolate").value_or(o.extrapolate);
+  o.tolerance = r.number("tolerance", {"-", "normal solver's tolerance of the steps (relative)"}, o.tolerance);
+  o.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the results"}, o.keep_grids);
+  o.extrapolate = r.boolean("extrapolate", {"-", "start a step from the last two (fixed time step)"}, o.extrapolate);
   o.max_penetration = read_max_penetration(r, o.max_penetration);
   return o;
 }

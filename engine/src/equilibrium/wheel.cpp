@@ -258,19 +258,20 @@ WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWo
 
 WheelCase read_wheel_case(OptionReader& r) {
   WheelCase c;
-  c.side = parse_side(r.string("side").value_or(""), r.context());
-  c.y = r.number("y", c.y);
-  c.yaw = r.number("yaw", c.yaw);
-  c.roll = r.number("roll", c.roll);
-  c.Fz = r.need_number("Fz");
+  const std::optional<std::string> side = r.string("side", {"-", "the wheel: \"left\" or \"right\" (required)"});
+  if (!r.documenting()) c.side = parse_side(side.value_or(""), r.context());
+  c.y = r.number("y", {"m", "lateral position of the wheelset centre"}, c.y);
+  c.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, c.yaw);
+  c.roll = r.number("roll", {"rad", "roll angle of the wheelset"}, c.roll);
+  c.Fz = r.need_number("Fz", {"N", "the wheel's vertical force"});
   return c;
 }
 
 WheelOptions read_wheel_options(OptionReader& r) {
   WheelOptions o;
   o.limits = read_solve_limits(r);
-  o.keep_grids = r.boolean("grids").value_or(o.keep_grids);
-  o.validate(r.context());
+  o.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, o.keep_grids);
+  if (!r.documenting()) o.validate(r.context());
   return o;
 }
 

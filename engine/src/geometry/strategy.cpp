@@ -23,7 +23,8 @@ const std::vector<Component>& components() {
   static const std::vector<Component> all = {
       {"brute", {}, {}, false, false, Scan::test},
       {"uniform", {{"step", 0.1e-3}}, {}, true, false, Scan::test},
-      {"constant_slope", {{"step", 0.1e-3}, {"slope_step", 0.01}, {"max_step", 1e-3}}, {}, true, false, Scan::test},
+      {"constant_slope", {{"step", 0.1e-3}, {"slope_step", ConstantSlope{}.slope_step}, {"max_step", ConstantSlope{}.max_step}},
+       {}, true, false, Scan::test},
       {"coarse", {{"coarse_every", 16}, {"coarse_wheel_step", 2e-3}}, {"uniform", "coarse"}, true, true, Scan::none},
       {"topology", {}, {"uniform", "topology"}, false, false, Scan::walk},
       {"accurate", {}, {"uniform", "coarse", "topology"}},

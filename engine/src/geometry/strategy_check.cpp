@@ -171,19 +171,20 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
 
 StrategyCheckOptions read_strategy_check_options(OptionReader& r) {
   StrategyCheckOptions o;
-  o.poses = r.integer("poses", 1, 100'000'000).value_or(100);
-  auto range = [&](const char* key, std::array<double, 2>& v) {
-    if (auto x = r.numbers(key)) {
+  o.poses = r.integer("poses", 1, 100'000'000, {"-", "random poses to check"}, o.poses);
+  auto range = [&](const char* key, std::array<double, 2>& v, OptionDoc doc) {
+    if (auto x = r.numbers(key, doc)) {
       if (x->size() != 2) fail("{}: '{}' must be two numbers {{min, max}}, got {}", r.context(), key, x->size());
       v = {(*x)[0], (*x)[1]};
     }
   };
-  range("y", o.y);
-  range("yaw", o.yaw);
-  range("roll", o.roll);
-  range("depth", o.depth);
-  o.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT_MAX).value_or(1));
-  o.threads = r.integer("threads", 0, 256).value_or(0);
+  range("y", o.y, {"m", "range {min, max} of the lateral position"});
+  range("yaw", o.yaw, {"rad", "range {min, max} of the yaw angle"});
+  range("roll", o.roll, {"rad", "range {min, max} of the roll angle"});
+  range("depth", o.depth, {"m", "range {min, max} below the touching height (log-uniform)"});
+  o.seed = static_cast<std::uint64_t>(
+      r.integer("seed", 0, INT_MAX, {"-", "seed of the random poses"}, static_cast<int>(o.seed)));
+  o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
   return o;
 }
 

@@ -303,24 +303,31 @@ ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOption
   return r;
 }
 
-ConicityOptions read_conicity_options(OptionReader& r) {
-  ConicityOptions o;
-  const auto yhat = r.numbers("yhat");
-  if (!yhat) fail("{}: 'yhat' is required: an amplitude or an array of amplitudes (m)", r.context());
-  o.yhat = *yhat;
-  const std::string m = r.choice("method", {"integral", "harmonic", "regression", "simple"}).value_or("integral");
+ConicityOptions read_conicity_options(OptionReader& r, ConicityOptions o) {
+  const auto yhat = r.numbers("yhat", {"m", "amplitude(s) of the lateral motion (required)"});
+  if (!yhat && !r.documenting()) fail("{}: 'yhat' is required: an amplitude or an array of amplitudes (m)", r.context());
+  if (yhat) o.yhat = *yhat;
+  const std::string m = r.choice("method", {"integral", "harmonic", "regression", "simple"},
+                                 {"-", "how tan(gamma_e) is made of the Δr table (EN 15302)"}, to_string(o.method));
   o.method = m == "integral"   ? ConicityMethod::integral
              : m == "harmonic" ? ConicityMethod::harmonic
              : m == "regression" ? ConicityMethod::regression
                                  : ConicityMethod::simple;
-  o.r0 = r.number("r0", o.r0);
-  o.contact_distance = r.number("contact_distance", o.contact_distance);
+  o.r0 = r.number("r0", {"m", "nominal rolling radius (the wavelength only; 0: the wheelset's)"}, o.r0);
+  o.contact_distance = r.number(
+      "contact_distance", {"m", "distance 2e of the contact points (the wavelength only; 0: the wheelset's)"},
+      o.contact_distance);
   return o;
 }
 
 DeltaRFunction read_delta_r(OptionReader& r) {
   DeltaRFunction d;
-  auto y = r.numbers("y", false), dr = r.numbers("dr", false);
+  auto y = r.numbers("y", {"m", "lateral positions of the Δr table (required)"}, false);
+  auto dr = r.numbers("dr", {"m", "rolling radius difference left - right at each y (required)"}, false);
+  if (r.documenting()) {
+    r.value("flange", "booleans", {"-", "flange contact at each y (optional)"});
+    return d;
+  }
   if (!y || !dr) fail("{}: the Δr table needs arrays 'y' and 'dr' (m)", r.context());
   d.y = std::move(*y);
   d.dr = std::move(*dr);

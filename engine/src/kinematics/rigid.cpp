@@ -494,9 +494,10 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, double Q) 
   return solve_rigid(g, y, yaw, o);
 }
 
-RigidOptions read_rigid_options(OptionReader& r) {
-  RigidOptions o;
-  if (const OptionValue* v = r.value("roll")) {
+RigidOptions read_rigid_options(OptionReader& r, RigidOptions o) {
+  const std::string roll = o.roll_mode == RollMode::free ? "\"free\"" : fmt::format("{}", o.roll);
+  if (const OptionValue* v = r.value("roll", "number or string",
+                                     {"rad", "\"free\" (both wheels touch), \"fixed\" (held at 0) or the roll held"}, roll)) {
     if (v->type == OptionValue::Type::number) {
       o.roll_mode = RollMode::fixed;
       o.roll = v->number;
@@ -507,10 +508,12 @@ RigidOptions read_rigid_options(OptionReader& r) {
            "got {}", r.context(), v->type == OptionValue::Type::string ? "\"" + v->string + "\"" : v->type_name());
     }
   }
-  o.Q = r.number("Q", o.Q);
-  o.two_point_tolerance = r.number("two_point_tolerance", o.two_point_tolerance);
-  if (auto s = r.table("start")) {
-    o.start = Eigen::Vector2d(s->need_number("z"), s->number("roll", 0.0));
+  o.Q = r.number("Q", {"N", "the load the normal forces carry (roll free)"}, o.Q);
+  o.two_point_tolerance = r.number("two_point_tolerance", {"m", "a second gap minimum this close to 0 is a contact"},
+                                   o.two_point_tolerance);
+  if (auto s = r.table("start", {"-", "a start {z, roll} of the iteration"})) {
+    const double z = s->need_number("z", {"m", "height to start from"});
+    o.start = Eigen::Vector2d(z, s->number("roll", {"rad", "roll to start from"}, 0.0));
     s->finish();
   }
   return o;

@@ -123,16 +123,18 @@ GeometryTable run_geometry_table(const GeometryModel& g, const GeometryTableOpti
 
 GeometryTableOptions read_geometry_table_options(OptionReader& r) {
   GeometryTableOptions o;
-  const auto ys = r.number_list("y");
-  if (!ys) fail("{}: 'y' is required (an array, or {{from =, to =, step =}}, m)", r.context());
-  o.y = *ys;
-  o.yaw = r.number("yaw", 0.0);
-  o.rigid = read_rigid_options(r);
-  if (o.rigid.start) fail("{}: 'start' does not apply to a table (each row starts from its neighbours)", r.context());
-  o.threads = r.integer("threads", 0, 256).value_or(0);
-  o.jump_threshold = r.number("jump_threshold", o.jump_threshold);
-  o.csv = r.string("csv").value_or("");
-  o.file = r.string("file").value_or("");
+  const auto ys = r.number_list("y", {"m", "lateral positions (required): an array or {from, to, step}"});
+  if (!ys && !r.documenting()) fail("{}: 'y' is required (an array, or {{from =, to =, step =}}, m)", r.context());
+  if (ys) o.y = *ys;
+  o.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, o.yaw);
+  o.rigid = read_rigid_options(r, o.rigid);
+  if (o.rigid.start && !r.documenting())
+    fail("{}: 'start' does not apply to a table (each row starts from its neighbours)", r.context());
+  o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
+  o.jump_threshold = r.number("jump_threshold", {"m", "a larger move of the touching point between rows is examined"},
+                              o.jump_threshold);
+  o.csv = r.string("csv", {"-", "write the table as CSV to this file"}, o.csv);
+  o.file = r.string("file", {"-", "write the multibody table to this file"}, o.file);
   return o;
 }
 
@@ -287,19 +289,15 @@ WheelsetConicity wheelset_conicity(const GeometryModel& g, WheelsetConicityOptio
 
 WheelsetConicityOptions read_wheelset_conicity_options(OptionReader& r) {
   WheelsetConicityOptions o;
-  o.conicity = read_conicity_options(r);
-  o.conicity.r0 = r.number("r0", 0.0);  // 0: the wheelset's (set when the table is made)
-  o.conicity.contact_distance = r.number("contact_distance", 0.0);
-  if (r.has("y")) o.table.y = *r.number_list("y");
-  o.table.yaw = r.number("yaw", 0.0);
-  o.table.rigid = read_rigid_options(r);
-  if (!r.has("roll")) {  // without roll unless asked: the usual way of EN 15302 tables
-    o.table.rigid.roll_mode = RollMode::fixed;
-    o.table.rigid.roll = 0;
-  }
-  o.table.threads = r.integer("threads", 0, 256).value_or(0);
-  o.flange_angle = r.number("flange_angle", o.flange_angle);
-  if (!(o.flange_angle > 0 && o.flange_angle < 1.5)) fail("{}: flange_angle = {} rad must lie in ]0, 1.5[", r.context(), o.flange_angle);
+  o.conicity = read_conicity_options(r, o.conicity);
+  if (auto y = r.number_list("y", {"m", "lateral positions of the table (default: +-(1.5 max yhat + 1 mm))"}))
+    o.table.y = *y;
+  o.table.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, o.table.yaw);
+  o.table.rigid = read_rigid_options(r, o.table.rigid);
+  o.table.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.table.threads);
+  o.flange_angle =
+      r.number("flange_angle", {"rad", "a touching point steeper than this is flange contact"}, o.flange_angle);
+  if (!r.documenting() && !(o.flange_angle > 0 && o.flange_angle < 1.5)) fail("{}: flange_angle = {} rad must lie in ]0, 1.5[", r.context(), o.flange_angle);
   return o;
 }
 

@@ -5,6 +5,7 @@
 #include "lua/guard.hpp"
 #include "lua/profile_binding.hpp"
 #include "lua/results_binding.hpp"
+#include "wrc/api/calls.hpp"
 #include "wrc/kinematics/conicity.hpp"
 #include "wrc/profile/measures.hpp"
 #include "wrc/profile/spline.hpp"
@@ -17,28 +18,22 @@ namespace {
 int conicity(lua_State* L) {
   const char* ctx = "wrc.conicity";
   const OptionTable dt = table_options(L, 1, ctx);
-  OptionReader dr(dt, std::string(ctx) + ": Δr table");
-  const DeltaRFunction d = read_delta_r(dr);
-  dr.finish();
   const OptionTable ot = table_options(L, 2, ctx);
-  OptionReader o(ot, ctx);
-  const ConicityOptions options = read_conicity_options(o);
+  OptionReader dr(dt, std::string(ctx) + ": Δr table"), o(ot, ctx);
+  const auto call = api::ConicityCall::read(dr, o);
+  dr.finish();
   o.finish();
-  const ConicityResult r = equivalent_conicity(d, options);
+  const ConicityResult r = call.run();
   push_array(L, r.tan_gamma);
   push_result(L, r);
   return 2;
 }
 
-// p:flange_measures{tape_offset = 0.070} -> {Sh =, Sd =, qR =, tip =, sd_point =, qr_point =, ...} (m)
+// p:flange_measures{tape_offset = m} -> {Sh =, Sd =, qR =, tip =, sd_point =, qr_point =, ...} (m)
 int profile_flange_measures(lua_State* L) {
   const char* ctx = "profile:flange_measures";
   const auto& p = check_profile(L, 1, ctx);
-  const OptionTable t = to_options(L, 2, ctx);
-  OptionReader r(t, ctx);
-  const double tape = r.number("tape_offset", 0.070);
-  r.finish();
-  push_result(L, flange_measures(*p, tape));
+  push_result(L, api::read<api::FlangeMeasuresCall>(to_options(L, 2, ctx), ctx).run(*p));
   return 1;
 }
 

@@ -384,9 +384,11 @@ int geometry_constant_slope(lua_State* L) {
   const auto& p = check_profile(L, 1, ctx);
   const OptionTable t = to_options(L, 2, ctx);
   OptionReader r(t, ctx);
-  const double slope_step = r.number("slope_step", 0.01), max_step = r.number("max_step", 1e-3);
+  ConstantSlope o;
+  o.slope_step = r.number("slope_step", {"rad", "turning of the tangent between kept points"}, o.slope_step);
+  o.max_step = r.number("max_step", {"m", "most arc between kept points"}, o.max_step);
   r.finish();
-  push_profile(L, std::make_shared<const Profile>(resample_constant_slope(*p, slope_step, max_step)));
+  push_profile(L, std::make_shared<const Profile>(resample_constant_slope(*p, o.slope_step, o.max_step)));
   return 1;
 }
 

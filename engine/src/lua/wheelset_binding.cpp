@@ -6,10 +6,8 @@
 #include "lua/convert.hpp"
 #include "lua/guard.hpp"
 #include "lua/results_binding.hpp"
-#include "wrc/equilibrium/equilibrium.hpp"
-#include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/api/calls.hpp"
 #include "wrc/host/terminal.hpp"
-#include "wrc/kinematics/table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +35,12 @@ struct Args {
   OptionReader reader;
   Args(lua_State* L, const char* ctx) : table(table_options(L, 2, ctx)), reader(table, ctx) {}
 };
+
+// The request of a method from its options table (argument 2); unknown keys are errors.
+template <class X>
+X read_call(lua_State* L, const char* ctx) {
+  return api::read<X>(table_options(L, 2, ctx), ctx);
+}
 
 int wheelset_new(lua_State* L) {
   const char* ctx = "wrc.wheelset";
@@ -74,64 +78,36 @@ int wheelset_locate(lua_State* L) {
   return 1;
 }
 
-// ws:contact{y=, z=, roll=, yaw=, grids = true, sensitivity = false, max_penetration = 1e-3, search = "strategy" |
-// "brute", and the rolling keys: V=, omega=, vy=, yaw_rate= or creepage = {xi=, eta=, phi=}, mu= (or mu_static=,
-// mu_kinetic=), method=}
+// ws:contact{y=, z=, roll=, yaw=, grids, sensitivity, max_penetration, search = "strategy" | "brute", and the rolling
+// keys} (api::ContactCall)
 int wheelset_contact(lua_State* L) {
   const char* ctx = "wheelset:contact";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  const Pose pose = read_pose(a.reader);
-  const ContactRequest req = read_contact_request(a.reader);
-  const bool brute = a.reader.choice("search", {"strategy", "brute"}).value_or("strategy") == "brute";
-  a.reader.finish();
-  const ContactModel& m = w.model->contact_model();
-  std::unique_ptr<ContactWorkspace> own;
-  if (brute) own = std::make_unique<ContactWorkspace>(m, std::make_unique<NativeSearch>(NativePlan{false, NativePlan::Scan::test}));
-  const ContactResult c = evaluate_contact(m, pose, brute ? *own : workspace(L, w), req);
-  push_result(L, c, req.sensitivity);
+  const auto call = read_call<api::ContactCall>(L, ctx);
+  push_result(L, call.run(*w.model, workspace(L, w)), call.request.sensitivity);
   return 1;
 }
 
-bool returns_failures(OptionReader& r) {
-  return r.choice("on_failure", {"error", "return"}).value_or("error") == "return";
-}
-
-// ws:equilibrium{y=, yaw=, Q=, start = {z=, roll=}, grids = true, trace, on_failure, tolerances, ...}
+// ws:equilibrium{y=, yaw=, Q=, start = {z=, roll=}, grids, trace, on_failure, tolerances, ...} (api::EquilibriumCall)
 int wheelset_equilibrium(lua_State* L) {
   const char* ctx = "wheelset:equilibrium";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  const EquilibriumCase c = read_equilibrium_case(a.reader);
-  const NewtonOptions opt = read_newton_options(a.reader);
-  std::vector<Start> starts;
-  if (auto s = a.reader.table("start")) {
-    starts.push_back(Start{s->need_number("z"), s->number("roll", 0.0), std::nullopt, false});
-    s->finish();
-  }
-  const bool ret = returns_failures(a.reader);
-  ContactRequest req;
-  req.keep_grids = a.reader.boolean("grids").value_or(true);
-  a.reader.finish();
-  const EquilibriumResult e = solve_equilibrium(w.model->contact_model(), c, workspace(L, w), opt, starts, req);
-  if (!e.converged && !ret) fail("{}: {} (on_failure = \"return\" gives the result)", ctx, failure_message(e));
+  const auto call = read_call<api::EquilibriumCall>(L, ctx);
+  const EquilibriumResult e = call.run(*w.model, workspace(L, w));
+  if (!e.converged && !call.on_failure.returns)
+    fail("{}: {} (on_failure = \"return\" gives the result)", ctx, failure_message(e));
   push_result(L, e);
   return 1;
 }
 
-// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure=, force_tolerance=, max_iterations=, max_evaluations=,
-// max_penetration=, rolling keys}: one wheel-rail pair, vertical force prescribed.
+// ws:wheel{side=, y=, yaw=, roll=, Fz=, on_failure, limits, rolling keys}: one wheel-rail pair, vertical force
+// prescribed (api::WheelCall).
 int wheelset_wheel(lua_State* L) {
   const char* ctx = "wheelset:wheel";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  const WheelCase c = read_wheel_case(a.reader);
-  const WheelOptions opt = read_wheel_options(a.reader);
-  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
-  const bool ret = returns_failures(a.reader);
-  a.reader.finish();
-  const WheelResult r = solve_wheel(w.model->contact_model(), c, workspace(L, w), opt, std::nullopt, rolling);
-  if (!r.converged && !ret) fail("{}: {}", ctx, failure_message(r));
+  const auto call = read_call<api::WheelCall>(L, ctx);
+  const WheelResult r = call.run(*w.model, workspace(L, w));
+  if (!r.converged && !call.on_failure.returns) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;
 }
@@ -140,11 +116,7 @@ int wheelset_wheel(lua_State* L) {
 int wheelset_rigid(lua_State* L) {
   const char* ctx = "wheelset:rigid";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  const double y = a.reader.need_number("y"), yaw = a.reader.number("yaw", 0.0);
-  const RigidOptions o = read_rigid_options(a.reader);
-  a.reader.finish();
-  push_result(L, solve_rigid(w.model->geometry(), y, yaw, o));
+  push_result(L, read_call<api::RigidCall>(L, ctx).run(*w.model));
   return 1;
 }
 
@@ -152,12 +124,10 @@ int wheelset_rigid(lua_State* L) {
 int wheelset_geometry_table(lua_State* L) {
   const char* ctx = "wheelset:geometry_table";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  GeometryTableOptions o = read_geometry_table_options(a.reader);
-  o.progress = host::read_progress_line(a.reader, host::stderr_is_terminal(), "geometry table", "rows");
-  o.notice = host::note_printer("geometry table");
-  a.reader.finish();
-  push_result(L, run_geometry_table(w.model->geometry(), o));
+  auto call = read_call<api::GeometryTableCall>(L, ctx);
+  if (call.progress.on(host::stderr_is_terminal())) call.options.progress = host::progress_line("geometry table", "rows");
+  call.options.notice = host::note_printer("geometry table");
+  push_result(L, call.run(*w.model));
   return 1;
 }
 
@@ -165,21 +135,10 @@ int wheelset_geometry_table(lua_State* L) {
 int wheelset_conicity(lua_State* L) {
   const char* ctx = "wheelset:conicity";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  const WheelsetConicityOptions o = read_wheelset_conicity_options(a.reader);
-  a.reader.finish();
-  const WheelsetConicity c = wheelset_conicity(w.model->geometry(), o);
+  const WheelsetConicity c = read_call<api::WheelsetConicityCall>(L, ctx).run(*w.model);
   push_array(L, c.conicity.tan_gamma);
   push_result(L, c);
   return 2;
-}
-
-// The sweep's cases from ws:sweep{...} and ws:sweep_plan{...}: y, yaw, chain.
-SweepPlan read_plan(OptionReader& r, const char* ctx) {
-  const auto ys = r.number_list("y");
-  if (!ys) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", ctx);
-  const std::vector<double> yaws = r.number_list("yaw").value_or(std::vector<double>{0.0});
-  return plan_sweep(*ys, yaws, r.integer("chain", 0, 100000000).value_or(0));
 }
 
 // ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, chain=, chunks=, progress=,
@@ -187,25 +146,14 @@ SweepPlan read_plan(OptionReader& r, const char* ctx) {
 int wheelset_sweep(lua_State* L) {
   const char* ctx = "wheelset:sweep";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  const SweepPlan plan = read_plan(a.reader, ctx);
-  SweepOptions so = read_sweep_options(a.reader);
-  so.progress = host::read_progress_line(a.reader, host::stderr_is_terminal(), "sweep", "cases");
+  auto call = read_call<api::SweepCall>(L, ctx);
+  SweepOptions& so = call.options;
+  if (call.progress.on(host::stderr_is_terminal())) so.progress = host::progress_line("sweep", "cases");
   so.notice = host::note_printer("sweep");
-  std::vector<int> chunks;
-  if (const auto listed = a.reader.numbers("chunks")) {
-    for (double k : *listed) {
-      if (k != std::floor(k)) fail("{}: chunks must be whole numbers (1-based), got {}", ctx, k);
-      chunks.push_back(static_cast<int>(std::clamp(k, -1.0, 1e9)) - 1);
-    }
-  } else {
-    for (std::size_t k = 0; k < plan.chunks.size(); ++k) chunks.push_back(static_cast<int>(k));
-  }
-  a.reader.finish();
   // An inline Lua strategy runs only in this state: one thread, this state's search.
   const bool portable = w.model->strategy().info().portable;
   if (!portable) so.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
-  const SweepResult r = run_sweep(w.model->contact_model(), plan, chunks, so, [&]() -> std::unique_ptr<ContactWorkspace> {
+  const SweepResult r = call.run(*w.model, [&]() -> std::unique_ptr<ContactWorkspace> {
     if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
     return w.model->make_workspace();  // a worker's own Lua state
   });
@@ -230,7 +178,7 @@ int wheelset_sweep_plan(lua_State* L) {
   const char* ctx = "wheelset:sweep_plan";
   self(L, ctx);
   Args a(L, ctx);
-  const SweepPlan plan = read_plan(a.reader, ctx);
+  const SweepPlan plan = api::read_sweep_plan(a.reader);
   a.reader.finish();
   lua_createtable(L, 0, 2);
   set_integer(L, "cases", static_cast<long long>(plan.cases.size()));
@@ -260,13 +208,10 @@ struct LuaTrajectory {
 int wheelset_trajectory(lua_State* L) {
   const char* ctx = "wheelset:trajectory";
   LuaWheelset& w = self(L, ctx);
-  const OptionTable t = to_options(L, 2, ctx);
-  OptionReader r(t, ctx);
-  const TrajectoryOptions o = read_trajectory_options(r);
-  r.finish();
+  const auto call = api::read<api::TrajectoryCall>(to_options(L, 2, ctx), ctx);
   w.strategy->main_search(L);
   auto lt = std::make_shared<LuaTrajectory>();
-  lt->trajectory = std::make_unique<Trajectory>(w.model, o);
+  lt->trajectory = call.run(w.model);
   lt->strategy = w.strategy;
   push_shared(L, std::move(lt), kTrajectoryType);
   return 1;
@@ -282,11 +227,7 @@ LuaTrajectory& trajectory_self(lua_State* L, const char* ctx) {
 int trajectory_contact(lua_State* L) {
   const char* ctx = "trajectory:contact";
   LuaTrajectory& t = trajectory_self(L, ctx);
-  Args a(L, ctx);
-  const Pose pose = read_pose(a.reader);
-  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
-  a.reader.finish();
-  push_result(L, t.trajectory->contact(pose, rolling));
+  push_result(L, read_call<api::TrajectoryContactCall>(L, ctx).run(*t.trajectory));
   return 1;
 }
 
@@ -294,11 +235,7 @@ int trajectory_contact(lua_State* L) {
 int trajectory_wheel(lua_State* L) {
   const char* ctx = "trajectory:wheel";
   LuaTrajectory& t = trajectory_self(L, ctx);
-  Args a(L, ctx);
-  const WheelCase c = read_wheel_case(a.reader);
-  const std::optional<RollingRequest> rolling = read_rolling_request(a.reader);
-  a.reader.finish();
-  const WheelResult r = t.trajectory->wheel(c, rolling);
+  const WheelResult r = read_call<api::TrajectoryWheelCall>(L, ctx).run(*t.trajectory);
   if (!r.converged) fail("{}: {}", ctx, failure_message(r));
   push_result(L, r);
   return 1;
@@ -329,10 +266,9 @@ void open_trajectory(lua_State* L) {
 int wheelset_check_strategy(lua_State* L) {
   const char* ctx = "wheelset:check_strategy";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
-  StrategyCheckOptions o = read_strategy_check_options(a.reader);
-  o.progress = host::read_progress_line(a.reader, host::stderr_is_terminal(), "check_strategy", "poses");
-  a.reader.finish();
+  auto call = read_call<api::StrategyCheckCall>(L, ctx);
+  StrategyCheckOptions& o = call.options;
+  if (call.progress.on(host::stderr_is_terminal())) o.progress = host::progress_line("check_strategy", "poses");
   const bool portable = w.model->strategy().info().portable;
   if (!portable) o.threads = 1;  // an inline Lua strategy runs in this state only
   const auto r = check_strategy(w.model->geometry(), o, [&]() -> std::unique_ptr<PoseSearch> {

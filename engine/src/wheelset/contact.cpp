@@ -247,15 +247,16 @@ void ContactWorkspace::forget() {
 }
 
 double read_max_penetration(OptionReader& r, double fallback) {
-  const double v = r.number("max_penetration", fallback);
+  const double v = r.number("max_penetration", {"m", "deepest inter-penetration of a wheel accepted"}, fallback);
+  if (r.documenting()) return v;
   if (!(v > 0) || !std::isfinite(v)) fail("{}: max_penetration = {} m must be a positive number", r.context(), v);
   return v;
 }
 
 ContactRequest read_contact_request(OptionReader& r) {
   ContactRequest req;
-  req.keep_grids = r.boolean("grids").value_or(req.keep_grids);
-  req.sensitivity = r.boolean("sensitivity").value_or(req.sensitivity);
+  req.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, req.keep_grids);
+  req.sensitivity = r.boolean("sensitivity", {"-", "d(force, moment)/d(z, roll) of every area"}, req.sensitivity);
   req.max_penetration = read_max_penetration(r, req.max_penetration);
   req.rolling = read_rolling_request(r);
   return req;

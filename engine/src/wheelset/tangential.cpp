@@ -287,35 +287,54 @@ void describe(const CreepTotals& c, FieldSink& out) {
 
 namespace {
 
-// The creepages prescribed, or the kinematics; sets q.V.
-void read_slip(OptionReader& r, RollingRequest& q) {
-  if (auto t = r.table("creepage")) {
-    for (const char* key : {"omega", "vy", "yaw_rate", "slip_reference"})
-      if (r.has(key)) fail("{}: 'creepage' prescribes the creepages; '{}' (kinematics) cannot be given with it", r.context(), key);
-    q.creepage = halfspace::Creepages{t->number("xi", 0.0), t->number("eta", 0.0), t->number("phi", 0.0)};
-    t->finish();
-    q.V = r.number("V", 1.0);
-  } else {
-    if (!r.has("V")) fail("{}: the kinematics need the forward speed V (m/s)", r.context());
-    Kinematics k;
-    k.V = r.need_number("V");
-    k.omega = r.number("omega");
-    k.vy = r.number("vy", 0.0);
-    k.yaw_rate = r.number("yaw_rate", 0.0);
-    if (r.choice("slip_reference", {"deformed", "undeformed"}).value_or("deformed") == "undeformed")
-      k.slip_reference = SlipReference::undeformed;
-    q.kinematics = k;
-    q.V = k.V;
-  }
-  if (q.V == 0)
+const OptionDoc kV{"m/s", "forward speed of the wheelset centre (rolling: required with the kinematics; with creepage "
+                          "it scales slip velocities and power, default 1)"};
+
+void check_speed(const OptionReader& r, double V) {
+  if (V == 0)
     fail("{}: V = 0: the creepages are slip velocities divided by the rolling speed V, undefined at V = 0", r.context());
 }
 
+// The creepages prescribed, or the kinematics; sets q.V. A documenting reader goes through both.
+void read_slip(OptionReader& r, RollingRequest& q) {
+  if (auto t = r.table("creepage", {"-", "creepages prescribed at every area's reference point: {xi, eta, phi}"})) {
+    for (const char* key : {"omega", "vy", "yaw_rate", "slip_reference"})
+      if (!r.documenting() && r.has(key))
+        fail("{}: 'creepage' prescribes the creepages; '{}' (kinematics) cannot be given with it", r.context(), key);
+    halfspace::Creepages c;
+    c.xi = t->number("xi", {"-", "longitudinal creepage"}, c.xi);
+    c.eta = t->number("eta", {"-", "lateral creepage"}, c.eta);
+    c.phi = t->number("phi", {"1/m", "spin creepage"}, c.phi);
+    q.creepage = c;
+    t->finish();
+    if (!r.documenting()) {
+      q.V = r.number("V", kV, q.V);
+      return check_speed(r, q.V);
+    }
+  }
+  if (!r.documenting() && !r.has("V")) fail("{}: the kinematics need the forward speed V (m/s)", r.context());
+  Kinematics k;
+  k.V = r.documenting() ? r.number("V", kV).value_or(0) : r.need_number("V", kV);
+  k.omega = r.number("omega", {"rad/s", "axle angular velocity (default: V / r0, pure rolling)"});
+  k.vy = r.number("vy", {"m/s", "lateral velocity of the wheelset centre"}, k.vy);
+  k.yaw_rate = r.number("yaw_rate", {"rad/s", "yaw rate of the wheelset"}, k.yaw_rate);
+  if (r.choice("slip_reference", {"deformed", "undeformed"},
+               {"-", "where the rigid slip is taken: midway between the undeformed surfaces (deformed) or on the "
+                     "wheel's undeformed surface (undeformed, CONTACT's convention)"})
+          .value_or("deformed") == "undeformed")
+    k.slip_reference = SlipReference::undeformed;
+  q.kinematics = k;
+  q.V = k.V;
+  if (!r.documenting()) check_speed(r, q.V);
+}
+
 halfspace::Friction read_friction(OptionReader& r) {
-  const auto mu = r.number("mu");
-  const auto mus = r.number("mu_static"), muk = r.number("mu_kinetic");
-  if (!mu && !mus) fail("{}: the friction coefficient 'mu' (or 'mu_static' and 'mu_kinetic') is required", r.context());
+  const auto mu = r.number("mu", {"-", "friction coefficient (static = kinetic)"});
+  const auto mus = r.number("mu_static", {"-", "static friction coefficient (with mu_kinetic)"});
+  const auto muk = r.number("mu_kinetic", {"-", "kinetic friction coefficient (default: mu_static)"});
   halfspace::Friction f;
+  if (r.documenting()) return f;
+  if (!mu && !mus) fail("{}: the friction coefficient 'mu' (or 'mu_static' and 'mu_kinetic') is required", r.context());
   f.static_coefficient = mus.value_or(mu.value_or(0));
   f.kinetic_coefficient = muk.value_or(mu.value_or(f.static_coefficient));
   for (auto [name, v] : {std::pair{"mu_static", f.static_coefficient}, {"mu_kinetic", f.kinetic_coefficient}})
@@ -330,7 +349,7 @@ halfspace::Friction read_friction(OptionReader& r) {
 }  // namespace
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
-  bool any = r.has("creepage");
+  bool any = r.documenting() || r.has("creepage");
   for (const char* key : {"V", "omega", "vy", "yaw_rate", "slip_reference"}) any |= r.has(key);
   for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance"})
     if (r.has(key) && !any)
@@ -340,10 +359,13 @@ std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   RollingRequest q;
   read_slip(r, q);
   q.friction = read_friction(r);
-  q.method = r.choice("method", {"exact", "fastsim"}).value_or("exact") == "fastsim" ? RollingMethod::fastsim
-                                                                                      : RollingMethod::exact;
-  q.tolerance = r.number("rolling_tolerance", q.tolerance);
-  if (!(q.tolerance > 0 && q.tolerance <= 0.1))
+  const bool fastsim = q.method == RollingMethod::fastsim;
+  q.method = r.choice("method", {"exact", "fastsim"}, {"-", "tangential solver: exact, or FASTSIM"},
+                      fastsim ? "fastsim" : "exact") == "fastsim"
+                 ? RollingMethod::fastsim
+                 : RollingMethod::exact;
+  q.tolerance = r.number("rolling_tolerance", {"-", "the exact tangential solver's tolerance (relative)"}, q.tolerance);
+  if (!r.documenting() && !(q.tolerance > 0 && q.tolerance <= 0.1))
     fail("{}: rolling_tolerance = {} must be in ]0, 0.1]", r.context(), q.tolerance);
   return q;
 }

@@ -9,30 +9,38 @@ namespace wrc {
 WheelsetParams read_wheelset_params(OptionReader& r) {
   WheelsetParams p;
   TrackParams& t = p.track;
-  t.radius = r.number("radius", t.radius);
-  t.back_to_back = r.number("back_to_back", t.back_to_back);
-  t.tape_offset = r.number("tape_offset", t.tape_offset);
-  t.gauge = r.number("gauge", t.gauge);
-  t.gauge_depth = r.number("gauge_depth", t.gauge_depth);
-  if (auto g = r.choice("gauge_point", {"first", "innermost"}))
-    t.gauge_rule = *g == "first" ? TrackParams::GaugeRule::first : TrackParams::GaugeRule::innermost;
-  t.cant = r.number("cant", t.cant);
-  p.material.E = r.number("E", p.material.E);
-  p.material.nu = r.number("nu", p.material.nu);
+  t.radius = r.number("radius", {"m", "wheel nominal radius r0 at the tape circle"}, t.radius);
+  t.back_to_back = r.number("back_to_back", {"m", "flange-back distance of the wheels"}, t.back_to_back);
+  t.tape_offset = r.number("tape_offset", {"m", "tape circle from the flange back"}, t.tape_offset);
+  t.gauge = r.number("gauge", {"m", "track gauge between the gauge points"}, t.gauge);
+  t.gauge_depth = r.number("gauge_depth", {"m", "gauge points this far below the top of each rail"}, t.gauge_depth);
+  const bool first = t.gauge_rule == TrackParams::GaugeRule::first;
+  t.gauge_rule = r.choice("gauge_point", {"first", "innermost"}, {"-", "which gauge-face point is the gauge point"},
+                          first ? "first" : "innermost") == "first"
+                     ? TrackParams::GaugeRule::first
+                     : TrackParams::GaugeRule::innermost;
+  t.cant = r.number("cant", {"-", "rail inclination (tan of the angle; 1/40: 0.025)"}, t.cant);
+  p.material.E = r.number("E", {"Pa", "Young's modulus of wheel and rail"}, p.material.E);
+  p.material.nu = r.number("nu", {"-", "Poisson's ratio of wheel and rail"}, p.material.nu);
   ContactOptions& c = p.contact;
-  c.element = r.number("grid", c.element);
-  c.margin = r.integer("margin", 1, 100).value_or(c.margin);
-  c.max_elements = r.integer("max_elements", 1, 1 << 30).value_or(c.max_elements);
-  c.normal.tolerance = r.number("tolerance", c.normal.tolerance);
-  c.merge_tolerance = r.number("merge_tolerance", c.merge_tolerance);
-  c.merge_angle = r.number("merge_angle", c.merge_angle);
-  c.dense = r.choice("solver", {"fast", "dense"}).value_or(c.dense ? "dense" : "fast") == "dense";
-  c.surface = r.choice("surface", {"planar", "conformal"}).value_or(surface_name(c.surface)) == "conformal"
+  c.element = r.number("grid", {"m", "element size of the potential contact areas"}, c.element);
+  c.margin = r.integer("margin", 1, 100, {"-", "elements around the projected inter-penetration area"}, c.margin);
+  c.max_elements = r.integer("max_elements", 1, 1 << 30, {"-", "largest potential contact area (elements)"},
+                             c.max_elements);
+  c.normal.tolerance = r.number("tolerance", {"-", "normal solver's tolerance (relative)"}, c.normal.tolerance);
+  c.merge_tolerance =
+      r.number("merge_tolerance", {"-", "relative force error of two areas apart that merges them"}, c.merge_tolerance);
+  c.merge_angle = r.number("merge_angle", {"rad", "areas whose normals differ more are never merged"}, c.merge_angle);
+  c.dense = r.choice("solver", {"fast", "dense"}, {"-", "normal solver: fast, or the dense reference"},
+                     c.dense ? "dense" : "fast") == "dense";
+  c.surface = r.choice("surface", {"planar", "conformal"}, {"-", "potential contact area: planar or curved"},
+                       surface_name(c.surface)) == "conformal"
                   ? ContactSurface::conformal
                   : ContactSurface::planar;
-  p.strategy = r.string("strategy").value_or(p.strategy);
-  p.check_strategy = r.integer("check_strategy", 0, 10'000'000).value_or(p.check_strategy);
-  p.check_setup = r.boolean("check_setup").value_or(p.check_setup);
+  p.strategy = r.string("strategy", {"-", "the location strategy (a name; Lua: also a table)"}, p.strategy);
+  p.check_strategy = r.integer("check_strategy", 0, 10'000'000,
+                               {"-", "random poses checked against brute force when built"}, p.check_strategy);
+  p.check_setup = r.boolean("check_setup", {"-", "check the set-up's plausibility when built"}, p.check_setup);
   return p;
 }
 
@@ -51,10 +59,10 @@ WheelsetProfiles read_wheelset_profiles(OptionReader& r) {
 
 Pose read_pose(OptionReader& r) {
   Pose p;
-  p.y = r.number("y", 0.0);
-  p.z = r.number("z", 0.0);
-  p.roll = r.number("roll", 0.0);
-  p.yaw = r.number("yaw", 0.0);
+  p.y = r.number("y", {"m", "lateral position of the wheelset centre"}, p.y);
+  p.z = r.number("z", {"m", "height of the wheelset centre (0: the centred wheelset touches; < 0 presses in)"}, p.z);
+  p.roll = r.number("roll", {"rad", "roll angle of the wheelset"}, p.roll);
+  p.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, p.yaw);
   return p;
 }
 

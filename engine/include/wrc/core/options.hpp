@@ -60,7 +60,7 @@ inline constexpr std::size_t kMaxOptionTextLength = std::size_t{32} << 20;
 OptionTable parse_option_text(std::string_view text, std::string_view context);
 
 // What a key means, beside its name and the default its options struct holds: the unit ("m", "N", "Pa", "rad",
-// "m/s", "1" for a pure number, "" for strings, booleans and tables) and one line of help. Readers pass it with every
+// "m/s"; "-" for pure numbers, strings, booleans and tables) and one line of help. Readers pass it with every
 // key, so that the one reading function is also the description that help texts and docs/reference are made from.
 struct OptionDoc {
   const char* unit = "";
@@ -99,6 +99,9 @@ class OptionReader {
   const std::string& context() const { return context_; }
   bool has(std::string_view key);  // present (and counted as known)
   const OptionValue* value(std::string_view key);  // nullptr when absent
+  // value() of a key that its reader checks itself (e.g. one of several types): a documenting reader records it with
+  // `type` ("number or string"), its doc and the default as text.
+  const OptionValue* value(std::string_view key, std::string_view type, OptionDoc doc, std::string fallback = {});
 
   std::optional<double> number(std::string_view key, OptionDoc doc = {});
   double number(std::string_view key, OptionDoc doc, double fallback);

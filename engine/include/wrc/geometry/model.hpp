@@ -163,6 +163,11 @@ GeometryModel build_geometry(std::shared_ptr<const Track> track, const std::arra
 // of the tangent between consecutive kept points reaches `slope_step` (rad) -- few points on conical parts, many
 // where the curvature is high -- with at most `max_step` (m) of arc between kept points. The end points are kept.
 Profile resample_constant_slope(const Profile& p, double slope_step, double max_step);
+// Its defaults (the native strategy "constant_slope" and wrc.geometry.constant_slope).
+struct ConstantSlope {
+  double slope_step = 0.01;  // rad
+  double max_step = 1e-3;    // m
+};
 
 // An enclosing polyline of the profile's solid dilated by `distance` (m), with points every `step` (m or less) of
 // y over [y_first - distance, y_last + distance]: above the dilated rail (solid below the profile) or, for a

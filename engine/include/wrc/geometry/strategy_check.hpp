@@ -19,7 +19,7 @@
 namespace wrc {
 
 struct StrategyCheckOptions {
-  int poses = 0;                              // random poses to check
+  int poses = 100;                            // random poses to check
   std::array<double, 2> y{-0.010, 0.010};     // lateral position (m), uniform
   std::array<double, 2> yaw{-0.030, 0.030};   // rad, uniform
   std::array<double, 2> roll{-0.010, 0.010};  // rad, uniform

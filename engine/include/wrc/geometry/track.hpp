@@ -3,6 +3,7 @@
 #pragma once
 
 #include "wrc/core/conventions.hpp"
+#include "wrc/profile/measures.hpp"
 #include "wrc/profile/profile.hpp"
 
 #include <Eigen/Core>
@@ -15,7 +16,7 @@ namespace wrc {
 struct TrackParams {
   double radius = 0.45;        // wheel nominal radius r0 at the tape circle (m)
   double back_to_back = 1.360; // flange-back distance (m)
-  double tape_offset = 0.070;  // tape circle from the flange back (m): left tape circle at y_w = 0.750
+  double tape_offset = kTapeOffset;  // tape circle from the flange back (m): left tape circle at y_w = 0.750
   double gauge = 1.435;        // between the gauge points (m)
   double gauge_depth = 0.014;  // gauge points this far below the top of each rail (m)
   // Which point of the gauge face is the gauge point. Both look at the rail as it lies in the track (after the cant;

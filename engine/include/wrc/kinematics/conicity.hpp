@@ -70,7 +70,7 @@ ConicityResult equivalent_conicity(const DeltaRFunction& dr, const ConicityOptio
 
 const char* to_string(ConicityMethod m);
 // yhat (a number or an array, m; required), method, r0, contact_distance.
-ConicityOptions read_conicity_options(OptionReader& options);
+ConicityOptions read_conicity_options(OptionReader& options, ConicityOptions base = {});
 // {y = {...}, dr = {...}, flange = {booleans}} (a Lua table or C arrays).
 DeltaRFunction read_delta_r(OptionReader& table);
 

@@ -126,7 +126,7 @@ double touch_height(const GeometryModel& geometry, int side, double y, double ya
 
 // Options as Lua and the C API give them: roll ("free", "fixed" or a number: fixed at that roll, rad), Q,
 // two_point_tolerance, start = {z =, roll =}.
-RigidOptions read_rigid_options(OptionReader& options);
+RigidOptions read_rigid_options(OptionReader& options, RigidOptions base = {});
 
 // converged, tension, flange_climb (and flange_climb_reason when true), error, roll_mode, y, yaw, Q, z, roll, rolling_radius_difference (when both wheels touch),
 // Y, My, Mz, Y_Q (roll free), left/right = {lifted, flange_climb (flange_climb_reason), z, gap, two_point, point, normal, angle, rolling_radius,

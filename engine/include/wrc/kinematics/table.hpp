@@ -66,9 +66,13 @@ void describe(const GeometryTable& table, FieldSink& out);
 // ---- the equivalent conicity of a wheelset: its rigid Δr table, then conicity.hpp ----
 
 struct WheelsetConicityOptions {
-  ConicityOptions conicity;        // yhat, method; r0 and contact_distance default to the wheelset's (see below)
-  GeometryTableOptions table;      // y (default: +-(1.5 max yhat + 1 mm) every 0.05 mm), roll (default FIXED at 0)
+  ConicityOptions conicity;        // yhat, method; r0 and contact_distance 0: the wheelset's (see below)
+  GeometryTableOptions table;      // y (default: +-(1.5 max yhat + 1 mm) every 0.05 mm), roll (default fixed at 0)
   double flange_angle = 0.7853981633974483;  // rad (45 deg): a touching point steeper than this is flange contact
+  WheelsetConicityOptions() {
+    conicity.r0 = conicity.contact_distance = 0;
+    table.rigid.roll_mode = RollMode::fixed;  // roll held at 0 unless asked: the usual way of EN 15302 tables
+  }
 };
 
 struct WheelsetConicity {

@@ -20,9 +20,13 @@
 
 namespace wrc {
 
+// The tape circle's distance from the inner face of the wheel (m; EN 15313: 70 mm): the one default of the flange
+// measures and of the track's placement of the wheels (TrackParams::tape_offset).
+inline constexpr double kTapeOffset = 0.070;
+
 struct FlangeMeasures {
   double Sh = 0, Sd = 0, qR = 0;            // m
-  double tape_offset = 0.070;               // inner face at s = -tape_offset (m)
+  double tape_offset = kTapeOffset;         // inner face at s = -tape_offset (m)
   Eigen::Vector2d tape = Eigen::Vector2d::Zero();      // the tape circle point (s = 0, z) (m, profile frame)
   Eigen::Vector2d tip = Eigen::Vector2d::Zero();       // flange tip (m)
   Eigen::Vector2d sd_point = Eigen::Vector2d::Zero();  // flange face point of Sd (m)
@@ -31,7 +35,7 @@ struct FlangeMeasures {
 
 // Throws wrc::Error when the profile is not a wheel, does not reach the tape circle, has no flange (tip less than
 // Sd_height + 2 mm below the tape circle) or its flange face does not reach the measuring levels.
-FlangeMeasures flange_measures(const Profile& wheel, double tape_offset = 0.070, double sd_height = 0.010,
+FlangeMeasures flange_measures(const Profile& wheel, double tape_offset = kTapeOffset, double sd_height = 0.010,
                                double qr_depth = 0.002);
 
 // Sh, Sd, qR (m), tape_offset, tape, tip, sd_point, qr_point ({y =, z =}, m).

@@ -24,11 +24,9 @@ namespace wrc {
 // Every parameter of a wheelset with its default: the one definition of the defaults, used by wrc.wheelset{} in
 // Lua, by the C API and by C++ callers.
 struct WheelsetParams {
-  TrackParams track;            // radius 0.45 m, back_to_back 1.360 m, tape_offset 0.070 m, gauge 1.435 m,
-                                // gauge_depth 0.014 m, cant 1/40 (track.hpp)
-  halfspace::Material material;   // E = 2.1e11 Pa, nu = 0.3 for both bodies (halfspace/material.hpp)
-  ContactOptions contact;       // grid 0.2 mm, margin 2 elements, tolerance 1e-8, merge_tolerance 0.01,
-                                // merge_angle 0.26 rad, the fast solver, the conformal surface (wheelset/contact.hpp)
+  TrackParams track;              // radius, back_to_back, tape_offset, gauge, gauge point, cant (geometry/track.hpp)
+  halfspace::Material material;   // E, nu of both bodies (halfspace/material.hpp)
+  ContactOptions contact;         // grid, margin, max_elements, tolerance, merging, solver, surface (contact.hpp)
   // The location strategy: "accurate" (the profiles every 0.1 mm along the arc, coarse pre-search, topology walk).
   // The constant-slope wheel of "fast" stripes the pressure of near-conformal contacts (S1002/60E1 at y = 0), and
   // the search is a small part of an evaluation beside the normal problems.

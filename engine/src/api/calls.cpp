@@ -1,0 +1,218 @@
+// The requests of the call layer (wrc/api/calls.hpp): each reads its operation's keys over the defaults its structs
+// hold and runs the engine, which validates (every solver calls its options' validate() first).
+#include "wrc/api/calls.hpp"
+
+#include "wrc/core/error.hpp"
+#include "wrc/geometry/location.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wrc::api {
+
+void OnFailure::read(OptionReader& r) {
+  returns = r.choice("on_failure", {"error", "return"},
+                     {"-", "a failed solve: an error, or the result with converged = false (C: its status)"},
+                     returns ? "return" : "error") == "return";
+}
+
+void ProgressAsked::read(OptionReader& r) {
+  asked = r.boolean("progress", {"-", "draw a progress line on stderr (Lua: when stderr is a terminal; C: no)"});
+}
+
+// ---- contact, wheel, equilibrium ----
+
+ContactCall ContactCall::read(OptionReader& r) {
+  ContactCall c;
+  c.pose = read_pose(r);
+  c.request = read_contact_request(r);
+  c.brute = r.choice("search", {"strategy", "brute"}, {"-", "locate with the strategy, or by brute force (checks)"},
+                     c.brute ? "brute" : "strategy") == "brute";
+  return c;
+}
+
+void ContactCall::validate() const { request.validate(); }
+
+ContactResult ContactCall::run(const Wheelset& wheelset, ContactWorkspace& ws) const {
+  const ContactModel& m = wheelset.contact_model();
+  validate();
+  if (!brute) return evaluate_contact(m, pose, ws, request);
+  ContactWorkspace own(m, std::make_unique<NativeSearch>(NativePlan{false, NativePlan::Scan::test}));
+  return evaluate_contact(m, pose, own, request);
+}
+
+WheelCall WheelCall::read(OptionReader& r) {
+  WheelCall c;
+  c.wheel = read_wheel_case(r);
+  c.options = read_wheel_options(r);
+  c.rolling = read_rolling_request(r);
+  c.on_failure.read(r);
+  return c;
+}
+
+void WheelCall::validate() const {
+  wheel.validate("wheel");
+  options.validate("wheel");
+}
+
+WheelResult WheelCall::run(const Wheelset& wheelset, ContactWorkspace& ws) const {
+  validate();
+  return solve_wheel(wheelset.contact_model(), wheel, ws, options, std::nullopt, rolling);
+}
+
+EquilibriumCall EquilibriumCall::read(OptionReader& r) {
+  EquilibriumCall c;
+  c.equilibrium = read_equilibrium_case(r);
+  c.options = read_newton_options(r);
+  if (auto s = r.table("start", {"-", "a start {z, roll} tried first"})) {
+    Start st;
+    st.z = s->need_number("z", {"m", "height of the wheelset centre to start from"});
+    st.roll = s->number("roll", {"rad", "roll to start from"}, st.roll);
+    s->finish();
+    c.starts.push_back(st);
+  }
+  c.on_failure.read(r);
+  c.request.keep_grids =
+      r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, c.request.keep_grids);
+  return c;
+}
+
+void EquilibriumCall::validate() const {
+  equilibrium.validate("equilibrium");
+  options.validate("equilibrium");
+  for (const Start& s : starts)
+    if (!std::isfinite(s.z) || !std::isfinite(s.roll))
+      fail("equilibrium: start = {{z = {} m, roll = {} rad}} must be finite", s.z, s.roll);
+}
+
+EquilibriumResult EquilibriumCall::run(const Wheelset& wheelset, ContactWorkspace& ws) const {
+  validate();
+  return solve_equilibrium(wheelset.contact_model(), equilibrium, ws, options, starts, request);
+}
+
+// ---- rigid, tables, conicity, flange measures ----
+
+RigidCall RigidCall::read(OptionReader& r) {
+  RigidCall c;
+  c.y = r.need_number("y", {"m", "lateral position of the wheelset centre"});
+  c.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, c.yaw);
+  c.options = read_rigid_options(r, c.options);
+  return c;
+}
+
+RigidResult RigidCall::run(const Wheelset& wheelset) const { return solve_rigid(wheelset.geometry(), y, yaw, options); }
+
+GeometryTableCall GeometryTableCall::read(OptionReader& r) {
+  GeometryTableCall c;
+  c.options = read_geometry_table_options(r);
+  c.progress.read(r);
+  return c;
+}
+
+GeometryTable GeometryTableCall::run(const Wheelset& wheelset) const {
+  return run_geometry_table(wheelset.geometry(), options);
+}
+
+WheelsetConicityCall WheelsetConicityCall::read(OptionReader& r) {
+  WheelsetConicityCall c;
+  c.options = read_wheelset_conicity_options(r);
+  return c;
+}
+
+WheelsetConicity WheelsetConicityCall::run(const Wheelset& wheelset) const {
+  return wheelset_conicity(wheelset.geometry(), options);
+}
+
+ConicityCall ConicityCall::read(OptionReader& table, OptionReader& options) {
+  ConicityCall c;
+  c.dr = read_delta_r(table);
+  c.options = read_conicity_options(options, c.options);
+  return c;
+}
+
+ConicityResult ConicityCall::run() const { return equivalent_conicity(dr, options); }
+
+FlangeMeasuresCall FlangeMeasuresCall::read(OptionReader& r) {
+  FlangeMeasuresCall c;
+  c.tape_offset = r.number("tape_offset", {"m", "tape circle from the inner face of the wheel"}, c.tape_offset);
+  return c;
+}
+
+FlangeMeasures FlangeMeasuresCall::run(const Profile& wheel) const { return flange_measures(wheel, tape_offset); }
+
+// ---- trajectories ----
+
+TrajectoryCall TrajectoryCall::read(OptionReader& r) { return {read_trajectory_options(r)}; }
+
+std::unique_ptr<Trajectory> TrajectoryCall::run(std::shared_ptr<const Wheelset> wheelset) const {
+  return std::make_unique<Trajectory>(std::move(wheelset), options);
+}
+
+TrajectoryContactCall TrajectoryContactCall::read(OptionReader& r) {
+  TrajectoryContactCall c;
+  c.pose = read_pose(r);
+  c.rolling = read_rolling_request(r);
+  return c;
+}
+
+ContactResult TrajectoryContactCall::run(Trajectory& trajectory) const { return trajectory.contact(pose, rolling); }
+
+TrajectoryWheelCall TrajectoryWheelCall::read(OptionReader& r) {
+  TrajectoryWheelCall c;
+  c.wheel = read_wheel_case(r);
+  c.rolling = read_rolling_request(r);
+  return c;
+}
+
+void TrajectoryWheelCall::validate() const { wheel.validate("wheel"); }
+
+WheelResult TrajectoryWheelCall::run(Trajectory& trajectory) const {
+  validate();
+  return trajectory.wheel(wheel, rolling);
+}
+
+// ---- sweeps, strategy checks ----
+
+SweepPlan read_sweep_plan(OptionReader& r) {
+  const auto ys = r.number_list("y", {"m", "lateral positions (required): an array or {from, to, step}"});
+  if (!ys && !r.documenting()) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", r.context());
+  const std::vector<double> yaws =
+      r.number_list("yaw", {"rad", "yaw angles: a number, an array or {from, to, step}"})
+          .value_or(std::vector<double>{EquilibriumCase{}.yaw});
+  const int chain = r.integer("chain", 0, 100000000, {"-", "reported cases per chunk at most (0: whole chains)"},
+                              SweepOptions{}.chain);
+  return plan_sweep(ys.value_or(std::vector<double>{0.0}), yaws, chain);
+}
+
+SweepCall SweepCall::read(OptionReader& r) {
+  SweepCall c;
+  c.plan = read_sweep_plan(r);
+  c.options = read_sweep_options(r);
+  c.progress.read(r);
+  if (const auto listed = r.numbers("chunks", {"-", "run these chunks alone (1-based, as ws:sweep_plan lists them)"})) {
+    for (double k : *listed) {
+      if (k != std::floor(k)) fail("{}: chunks must be whole numbers (1-based), got {}", r.context(), k);
+      c.chunks.push_back(static_cast<int>(std::clamp(k, -1.0, 1e9)) - 1);
+    }
+  } else {
+    for (std::size_t k = 0; k < c.plan.chunks.size(); ++k) c.chunks.push_back(static_cast<int>(k));
+  }
+  return c;
+}
+
+void SweepCall::validate() const { options.equilibrium.validate("sweep"); }
+
+SweepResult SweepCall::run(const Wheelset& wheelset,
+                           const std::function<std::unique_ptr<ContactWorkspace>()>& workspace) const {
+  validate();
+  return run_sweep(wheelset.contact_model(), plan, chunks, options, workspace);
+}
+
+StrategyCheckCall StrategyCheckCall::read(OptionReader& r) {
+  StrategyCheckCall c;
+  c.options = read_strategy_check_options(r);
+  c.progress.read(r);
+  return c;
+}
+
+}  // namespace wrc::api

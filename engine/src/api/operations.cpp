@@ -1,0 +1,52 @@
+// The operations by name (wrc/api/operations.hpp): each request's reader run in documenting mode.
+#include "wrc/api/operations.hpp"
+
+#include "wrc/api/calls.hpp"
+#include "wrc/core/error.hpp"
+
+namespace wrc::api {
+namespace {
+
+template <class X>
+Operation describe(std::string name, std::string lua, std::string c) {
+  Operation op{std::move(name), std::move(lua), std::move(c), {}};
+  OptionReader r = OptionReader::documenting(op.name, op.options);
+  X::read(r);
+  return op;
+}
+
+std::vector<Operation> make_operations() {
+  return {
+      describe<ContactCall>("contact", "wheelset:contact", "wrc_contact"),
+      describe<WheelCall>("wheel", "wheelset:wheel", "wrc_wheel"),
+      describe<EquilibriumCall>("equilibrium", "wheelset:equilibrium", "wrc_equilibrium"),
+      describe<RigidCall>("rigid", "wheelset:rigid", "wrc_rigid_contact"),
+      describe<SweepCall>("sweep", "wheelset:sweep", ""),
+      describe<GeometryTableCall>("geometry_table", "wheelset:geometry_table", "wrc_geometry_table"),
+      describe<WheelsetConicityCall>("wheelset_conicity", "wheelset:conicity", "wrc_wheelset_conicity"),
+      describe<ConicityCall>("conicity", "wrc.conicity", "wrc_conicity"),
+      describe<FlangeMeasuresCall>("flange_measures", "profile:flange_measures", "wrc_profile_flange_measures"),
+      describe<TrajectoryCall>("trajectory", "wheelset:trajectory", "wrc_trajectory_new"),
+      describe<TrajectoryContactCall>("trajectory_contact", "trajectory:contact", "wrc_trajectory_contact_with"),
+      describe<TrajectoryWheelCall>("trajectory_wheel", "trajectory:wheel", "wrc_trajectory_wheel_with"),
+      describe<StrategyCheckCall>("check_strategy", "wheelset:check_strategy", ""),
+  };
+}
+
+}  // namespace
+
+const std::vector<Operation>& operations() {
+  static const std::vector<Operation> all = make_operations();
+  return all;
+}
+
+const Operation& operation(const std::string& name) {
+  std::string names;
+  for (const Operation& op : operations()) {
+    if (op.name == name) return op;
+    names += (names.empty() ? "" : ", ") + op.name;
+  }
+  fail("no operation '{}' (the operations: {})", name, names);
+}
+
+}  // namespace wrc::api
