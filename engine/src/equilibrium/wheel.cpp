@@ -91,36 +91,45 @@ class WheelSolver {
   }
 
   // With friction the creep forces' vertical part C joins Fz (a tilted contact plane turns lateral creep forces partly
-  // vertical). The tangential problems are solved on normal solutions only, once per normal solve: the normal
-  // problem is solved frictionless (solve) for Fz - C, C from `creep` (e.g. the last time step's; 0 cold), within a
-  // quarter of the force tolerance; the tangential problems on its solution give the total; while that misses Fz by
-  // more than the tolerance, the normal load moves by a Newton step on it (dC/dload: C / load at first, as for creep
-  // forces proportional to the load, then the secant of the last two) and both are solved again, each from the last
-  // solution (the tangential problems from their tractions). C is a few per cent of Fz and grows with the load more
-  // slowly than the load itself: each step gains two digits or more. True when converged.
+  // vertical). The tangential problems are solved on normal solutions only: the normal problem is solved frictionless
+  // (solve) for Fz - C, C from the hint (e.g. the last time step's; 0 cold), within half the force tolerance. When
+  // solve predicts the approach (one area), the tangential problems are solved first, loosely, on the prediction's
+  // normal solution (within ~1e-6 of the one it predicts): their C moves the load, and the approach by the normal
+  // problem's stiffness (the hint's, else its linearised response), before the pose is evaluated; along a trajectory
+  // that evaluation then concludes with one more tangential solve from the first's tractions. While the total misses
+  // Fz by more than the tolerance, the load moves by a Newton step on it (dC/dload: C / load at first, as for creep
+  // forces proportional to the load, then the secant of the last two), the approach with it (shift), and the
+  // tangential problems are solved again from their last tractions. True when converged.
   bool with_friction(const RollingRequest& rolling, std::optional<double> start, const WheelHint& hint) {
     double creep = hint.creep;
     stiffness_ = hint.stiffness;
-    constexpr double kShare = 0.25;  // of the force tolerance, for the normal solves: the rest is C's change
+    constexpr double kShare = 0.5;   // of the force tolerance, for the normal solves: the rest is C's change
     double load = std::max(c_.Fz - creep, 0.1 * c_.Fz);
     set_load(load, kShare);
-    // The first tangential solve only moves the load (C to ~1e-5 of itself, ~0.01 N): looser, the later ones start
-    // from it (the solver's tolerance is on the slip; the forces converge faster).
+    // The first tangential solve only moves the load (C to ~1e-5 of itself, ~0.01 N): looser (the solver's tolerance
+    // is on the slip; the forces converge faster); the last is always at the request's tolerance.
     RollingRequest first = rolling;
     first.tolerance = std::max(rolling.tolerance, kFirstRollingTolerance);
     bool loose = first.tolerance > rolling.tolerance;
     // On the prediction's normal solution (the load's pressure on the grid of a nearby approach, within ~1e-6 of the
     // solution it predicts), the creep forces already move the load and the approach before the pose is evaluated.
     bool early = false;
+    int moved_at = 0;  // the evaluations before the approach was moved so
     const auto on_prediction = [&](double& a) {
       add_rolling(model_, cur_, first, ws_);
       const double c = cur_.wheel[c_.side].creep.force.z(), e = wheel_force() - c_.Fz;
       load = std::max(load_ - e / (1 + std::max(c / load_, -0.5)), 0.1 * c_.Fz);
-      a += (load - load_) / (stiffness_ > 0 ? stiffness_ : 1.5 * load_ / a);
+      if (!(stiffness_ > 0))
+        stiffness_ = areas::vertical_stiffness(model_, cur_.pose, cur_.wheel[c_.side].patches[0], ws_);
+      a = std::clamp(a + (load - load_) / (stiffness_ > 0 ? stiffness_ : 1.5 * load_ / a), 0.5 * a,
+                     std::min(2 * a, opt_.limits.max_penetration));
       set_load(load, kShare);
       early = true;
+      moved_at = evaluations_;
     };
     if (!solve(start, on_prediction)) return false;
+    // A stiffness that missed (more than the one evaluation at the approach it gave) is measured again next time.
+    if (early && evaluations_ - moved_at > 1) stiffness_ = 0;
     loose = loose && !early;
     double last_load = NAN, last_creep = NAN;
     for (int it = 0;; ++it) {
