@@ -147,7 +147,7 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
   }
   const Plane& k = layout.frame;
   next_previous.push_back({k.O, k.t1, k.t2, k.n, pc.solution.grid, pc.solution.pressure,
-                           std::move(pc.solution.displacement)});
+                           std::move(pc.solution.displacement), {}, {}, {}});
   return pc;
 }
 
