@@ -61,6 +61,8 @@ struct TractionDifference {
 TractionDifference compare(const PatchContact& a, const PatchContact& b) {
   const halfspace::TangentialSolution& s = a.rolling->solution;
   const halfspace::TangentialSolution& t = b.rolling->solution;
+  REQUIRE(!s.px.empty());
+  REQUIRE(s.px.size() == t.px.size());
   REQUIRE(s.grid.nx == t.grid.nx);
   REQUIRE(s.grid.ny == t.grid.ny);
   REQUIRE(s.grid.x0 == doctest::Approx(t.grid.x0).epsilon(1e-12));
@@ -141,4 +143,45 @@ TEST_CASE("trajectory with rolling contact: each warm step equals a cold solve o
     CHECK(double(warm_evaluations) / (kSteps - 1) <= 3.0);
     if (method == RollingMethod::exact) CHECK(last_newton <= 2);
   }
+}
+
+TEST_CASE("trajectory with rolling contact: prescribed poses warm equal their cold evaluations, the exact solver warm") {
+  const auto ws = synthetic_wheelset();
+  TrajectoryOptions options;
+  options.keep_grids = true;
+  Trajectory tr(ws, options);
+  // The poses: each step's height from a cold wheel solve (as a multibody code's integrator gives them).
+  constexpr int kSteps = 20;
+  int warm_newton = 0, cold_newton = 0;
+  double worst_force = 0, worst_traction = 0;
+  for (int k = 0; k < kSteps; ++k) {
+    CAPTURE(k);
+    const WheelCase c = step_case(k);
+    const RollingRequest rolling = step_rolling(k, RollingMethod::exact);
+    auto fresh = ws->make_workspace();
+    const WheelResult at = solve_wheel(ws->contact_model(), c, *fresh, {}, std::nullopt);
+    REQUIRE(at.converged);
+    const Pose pose{c.y, at.z, c.roll, c.yaw};
+    const ContactResult warm = tr.contact(pose, rolling);
+    ContactRequest req;
+    req.tolerance = tr.options().tolerance;
+    req.rolling = rolling;
+    auto cold_ws = ws->make_workspace();
+    const ContactResult cold = evaluate_contact(ws->contact_model(), pose, *cold_ws, req);
+    const WheelContact &w = warm.wheel[kLeft], &cw = cold.wheel[kLeft];
+    REQUIRE(w.patches.size() == cw.patches.size());
+    worst_force = std::max(worst_force, (w.force - cw.force).norm() / kFz);
+    for (std::size_t p = 0; p < w.patches.size(); ++p) {
+      worst_traction = std::max(worst_traction, compare(w.patches[p], cw.patches[p]).max);
+      if (k > 0) {
+        warm_newton += w.patches[p].rolling->solution.iterations;
+        cold_newton += cw.patches[p].rolling->solution.iterations;
+      }
+    }
+  }
+  MESSAGE("force within ", worst_force, " Fz, tractions within ", worst_traction, " mu pmax; Newton iterations of the "
+          "exact solver warm ", warm_newton, ", cold ", cold_newton, " (on the fine grid, after the coarse grids' start)");
+  CHECK(worst_force <= 2e-6);
+  CHECK(worst_traction <= 2e-4);
+  CHECK(warm_newton < cold_newton);
 }
