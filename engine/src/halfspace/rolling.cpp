@@ -345,7 +345,11 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   if (slipping) st = solve_top(L, pb.grid, material(), cache_, ws, opt);
   else st.px.assign(L.cell.size(), 0.0), st.py.assign(L.cell.size(), 0.0), st.state.assign(L.cell.size(), kAdhesion);
   std::vector<double> sx(L.cell.size(), 0.0), sy(L.cell.size(), 0.0);
-  if (slipping) detail::slip_of(L, *cache_.get(L.field.grid, ShearSpectrum::Kind::linear), ws, st, sx, sy);
+  if (slipping && st.slip.size() == 2 * L.cell.size()) {
+    for (std::size_t k = 0; k < L.cell.size(); ++k) sx[k] = st.slip[2 * k], sy[k] = st.slip[2 * k + 1];
+  } else if (slipping) {
+    detail::slip_of(L, *cache_.get(L.field.grid, ShearSpectrum::Kind::linear), ws, st, sx, sy);
+  }
   TangentialSolution out = detail::empty_solution(pb.grid);
   for (int k = 0; k < L.size(); ++k) {
     const auto q = static_cast<std::size_t>(k), f = grid_index(L, pb.grid, k);

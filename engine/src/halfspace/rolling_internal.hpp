@@ -39,6 +39,7 @@ struct LevelState {
   std::vector<double> px, py;
   std::vector<unsigned char> state;  // kAdhesion or kSlip
   int iterations = 0, linear = 0, products = 0, coarse_linear = 0;
+  std::vector<double> slip;  // after newton: the slip per |V| of these tractions (x, y per element), its last product
   double residual = 0;
 };
 

@@ -358,6 +358,7 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
     changed = update_split(L, st, s);
   }
   st.products += op.products;
+  st.slip = std::move(s);  // of the final tractions: the solution's slip needs no product of its own
   return converged;
 }
 
