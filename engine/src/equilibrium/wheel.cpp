@@ -11,7 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
+#include <functional>
 
 namespace wrc {
 namespace {
@@ -75,17 +75,14 @@ class WheelSolver {
   // 1e-3 of the approach and the second is skipped. `predicted`: called with the last prediction's evaluation and
   // approach when it was solved at normal_tolerance (it may set another load and move the approach). True when
   // converged frictionless.
-  template <class Predicted = void (*)(double&)>
-  bool solve(std::optional<double> start, Predicted predicted_at = nullptr) {
+  bool solve(std::optional<double> start, const std::function<void(double&)>& predicted_at = {}) {
     const double cold = opt_.wheel_approach * std::cbrt((load_ / 100e3) * (load_ / 100e3));  // Hertz: a ~ F^(2/3)
     double a1 = std::min(start && *start > 0 ? *start : cold, opt_.limits.max_penetration);
     const double from = a1;
     bool predicted = opt_.limits.max_evaluations >= 4 && predict(a1, start ? tight_ : loose_, !start);
     bool tight = predicted && start;
     if (predicted && std::abs(a1 - from) > 1e-3 * a1) tight = predicted = predict(a1, tight_);
-    if constexpr (!std::is_pointer_v<Predicted>) {
-      if (tight) predicted_at(a1);
-    }
+    if (tight && predicted_at) predicted_at(a1);
     const double f1 = phi(a1, predicted ? final_ : start ? tight_ : loose_);
     return secant(a1, f1);
   }
@@ -260,7 +257,7 @@ class WheelSolver {
       }
       // F grows with the approach: no approach within max_penetration carries Fz.
       if (s.f1 < 0 && s.a1 >= opt_.limits.max_penetration)
-        throw UnreachableLoad(pose_solve::unreachable("Fz", load_, wheel_force(), cur_.pose, deepest(cur_, c_.side),
+        throw UnreachableLoad(pose_solve::unreachable("Fz", c_.Fz, wheel_force(), cur_.pose, deepest(cur_, c_.side),
                                                       opt_.limits.max_penetration));
       if (settled || error > 10 * tolerance_) (s.f1 < 0 ? s.lo : s.hi) = s.a1;
       advance(s);

@@ -59,8 +59,9 @@ struct WheelResult {
 
 // Solves the height for the case. With `rolling`, the tangential problems are solved too and Fz includes the creep
 // forces' vertical part: the normal problem is solved for Fz less that part (hint.creep, e.g. the previous time
-// step's; 0 when not given), then the tangential problems once on its solution, and both again (each from the last
-// solution; the approach moved by hint.stiffness, else by Hertz's) while the total misses Fz. `start`: an approach to start from (m below
+// step's; 0 when not given), the tangential problems on normal solutions only (first on the prediction's, whose creep
+// forces move the load and, by hint.stiffness or the normal problem's linearised response, the approach), and both
+// again, each from the last solution, while the total misses Fz. `start`: an approach to start from (m below
 // the touching height; e.g. the previous time step's, which follows the load where the height does not); otherwise
 // options.wheel_approach scaled to Fz. The approach is predicted by the wheel's normal problem solved for Fz itself
 // (an internal entry point of the contact pipeline), twice from afar (the first only estimated on the coarse grid) and
