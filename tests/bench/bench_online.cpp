@@ -11,12 +11,17 @@
 //   4. the paper's sweep (161 y x 2 yaws, with the rigid reference) on 2 threads: wall and CPU;
 //   5. a trajectory (hunting-like: y = 5 mm sin, yaw following) at 1 kHz steps with the warm-started trajectory
 //      state, per wheel and step, at 0.5 and 0.2 mm: the poses prescribed (tr:contact), with FASTSIM creep forces,
-//      then each wheel's vertical force (tr:wheel).
+//      then each wheel's vertical force (tr:wheel);
+//   6. rolling contact at time steps: the left wheel's Fz = 100 kN given (tr:wheel) along y = 5 mm sin(2 pi 1.5 Hz t)
+//      at 1 kHz (yaw following, V = 30 m/s, mu = 0.3), frictionless, with FASTSIM and with the exact solver, at 0.5
+//      and 0.2 mm: the three trajectories stepped in turn (so that the machine's load falls on all three alike), the
+//      median per step and its ratio to the frictionless step.
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
-//   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N] [poses] [passes=K]   (default surface:
-//   conformal; only=N runs section N alone, for a profiler; section 1 runs 2 as well, for its poses; poses: section
-//   3's time and evaluations per pose; passes=K: K more passes of section 3, e.g. for a profiler)
+//   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N] [poses] [passes=K] [steps=N] [grid=G]
+//   (default surface: conformal; only=N runs section N alone, for a profiler; section 1 runs 2 as well, for its poses;
+//   poses: section 3's time and evaluations per pose; passes=K: K more passes of section 3, e.g. for a profiler;
+//   steps=N: section 6's time steps, 667 (one period; quick: 200); grid=G: section 6 at G mm alone)
 #include "lua/lua.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -123,11 +128,63 @@ HuntingStep hunting(int k) {
   return {A * std::sin(w * t), -A * w / V * std::cos(w * t), A * w * std::cos(w * t), A * w * w / V * std::sin(w * t)};
 }
 
+// Section 6: the left wheel's Fz given along the hunting motion at V = 30 m/s, frictionless, FASTSIM and exact, the
+// three trajectories stepped in turn; per variant the median thread CPU per step and its ratio to the frictionless.
+void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double grid, int steps) {
+  constexpr double V = 30, mu = 0.3, Fz = 100e3;
+  const char* names[3] = {"frictionless", "FASTSIM", "exact"};
+  std::vector<wrc::Trajectory> traj;
+  for (int v = 0; v < 3; ++v) {
+    traj.emplace_back(ws);
+    traj.back().workspace().timing = true;
+  }
+  std::vector<double> t[3];
+  int evaluations[3] = {0, 0, 0}, failed[3] = {0, 0, 0};
+  double creep_iterations = 0, creep_linear = 0, creep_products = 0;
+  for (int k = 0; k < steps; ++k) {
+    const double w = 2 * std::numbers::pi * 1.5, time = k * 1e-3, A = 5e-3;
+    const double y = A * std::sin(w * time), vy = A * w * std::cos(w * time), yaw = -vy / V;
+    const double yaw_rate = A * w * w / V * std::sin(w * time);
+    for (int v = 0; v < 3; ++v) {
+      std::optional<wrc::RollingRequest> rolling;
+      if (v > 0) {
+        rolling.emplace();
+        rolling->kinematics = wrc::Kinematics{V, std::nullopt, vy, yaw_rate};
+        rolling->friction = wrc::halfspace::Friction::coulomb(mu);
+        rolling->method = v == 1 ? wrc::RollingMethod::fastsim : wrc::RollingMethod::exact;
+      }
+      const double c0 = thread_cpu();
+      const wrc::WheelResult r = traj[static_cast<std::size_t>(v)].wheel({wrc::kLeft, y, yaw, 0.0, Fz}, rolling);
+      t[v].push_back(thread_cpu() - c0);
+      evaluations[v] += r.iterations;
+      failed[v] += !r.converged;
+      if (v == 2)
+        for (const auto& pc : r.wheel.patches)
+          if (pc.rolling) {
+            creep_iterations += pc.rolling->solution.iterations;
+            creep_linear += pc.rolling->solution.linear_iterations;
+            creep_products += pc.rolling->solution.products;
+          }
+    }
+  }
+  const double base = median(t[0]);
+  fmt::print("grid {:.1f} mm:\n", grid * 1e3);
+  for (int v = 0; v < 3; ++v)
+    fmt::print("  {:<12}: {:7.3f} ms per step ({:.2f}x the frictionless), {:.2f} evaluations per step, {} failed\n",
+               names[v], 1e3 * median(t[v]), median(t[v]) / base, double(evaluations[v]) / steps, failed[v]);
+  for (int v = 0; v < 3; ++v)
+    print_times(fmt::format("{}, per evaluation (normal part)", names[v]).c_str(), traj[static_cast<std::size_t>(v)].workspace().times,
+                traj[static_cast<std::size_t>(v)].workspace().times.evaluations);
+  fmt::print("  exact, the step's last tangential solve: {:.2f} Newton iterations, {:.1f} GMRES iterations, {:.1f} products "
+             "with the influence matrix\n", creep_iterations / steps, creep_linear / steps, creep_products / steps);
+}
+
 int main(int argc, char** argv) {
   bool quick = false;
   int reps = 20, only = 0;
   bool per_pose = false;
-  int extra_passes = 0;
+  int extra_passes = 0, rolling_steps = 667;
+  double rolling_grid = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "quick") == 0) quick = true, reps = 5;
     if (std::strncmp(argv[i], "reps=", 5) == 0) reps = std::max(1, std::atoi(argv[i] + 5));
@@ -135,7 +192,10 @@ int main(int argc, char** argv) {
     if (std::strncmp(argv[i], "only=", 5) == 0) only = std::atoi(argv[i] + 5);
     if (std::strcmp(argv[i], "poses") == 0) per_pose = true;
     if (std::strncmp(argv[i], "passes=", 7) == 0) extra_passes = std::atoi(argv[i] + 7);
+    if (std::strncmp(argv[i], "steps=", 6) == 0) rolling_steps = std::max(1, std::atoi(argv[i] + 6));
+    if (std::strncmp(argv[i], "grid=", 5) == 0) rolling_grid = 1e-3 * std::atof(argv[i] + 5);
   }
+  if (quick) rolling_steps = std::min(rolling_steps, 200);
   auto run = [&](int section) { return only == 0 || only == section; };
   double loads[3] = {0, 0, 0};
   if (getloadavg(loads, 3) < 0) loads[0] = -1;
@@ -331,6 +391,14 @@ int main(int argc, char** argv) {
     fmt::print("grid {:.1f} mm, each wheel's Fz given (tr:wheel): {:.3f} ms per wheel and step, {:.2f} evaluations per "
                "wheel and step, {} failed\n", grid * 1e3, 1e3 * median(per_step) / 2,
                double(evaluations) / (2.0 * steps), failed);
+  }
+
+  if (run(6)) {
+    fmt::print("\n== 6. rolling contact at time steps: the left wheel, Fz = 100 kN (tr:wheel), y = 5 mm sin(2 pi 1.5 Hz t) "
+               "at 1 kHz, yaw following, V = 30 m/s, mu = 0.3; {} steps ==\n", rolling_steps);
+    std::vector<double> grids{0.5e-3, 0.2e-3};
+    if (rolling_grid > 0) grids = {rolling_grid};
+    for (double grid : grids) rolling_steps_table(paper_wheelset(grid), grid, rolling_steps);
   }
   return 0;
 }

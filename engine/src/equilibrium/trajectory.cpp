@@ -53,9 +53,12 @@ WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingReq
   // (extrapolate): it follows the load, where the height follows the rail.
   std::optional<double> start = last_approach_[side];
   if (start && before_approach_[side] && options_.extrapolate) start = 2 * *start - *before_approach_[side];
+  // Likewise the creep forces' vertical part, which the normal problem's load leaves out.
+  std::optional<WheelHint> hint = rolling ? last_hint_[side] : std::nullopt;
+  if (hint && before_hint_[side] && options_.extrapolate) hint->creep = 2 * hint->creep - before_hint_[side]->creep;
   WheelResult r;
   try {
-    r = solve_wheel(wheelset_->contact_model(), c, *workspace_, opt, start, rolling);
+    r = solve_wheel(wheelset_->contact_model(), c, *workspace_, opt, start, rolling, hint);
   } catch (const Error&) {
     r.converged = false;
   }
@@ -65,12 +68,18 @@ WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingReq
   }
   before_approach_[side] = r.converged ? last_approach_[side] : std::nullopt;
   last_approach_[side] = r.converged ? std::optional<double>(r.approach) : std::nullopt;
+  const bool creep_solved = r.converged && rolling;
+  before_hint_[side] = creep_solved ? last_hint_[side] : std::nullopt;
+  last_hint_[side] = creep_solved ? std::optional<WheelHint>(r.hint) : std::nullopt;
   return r;
 }
 
 void Trajectory::reset() {
   workspace_->forget();
-  for (int s : {kLeft, kRight}) last_approach_[s].reset(), before_approach_[s].reset();
+  for (int s : {kLeft, kRight}) {
+    last_approach_[s].reset(), before_approach_[s].reset();
+    last_hint_[s].reset(), before_hint_[s].reset();
+  }
 }
 
 }  // namespace wrc

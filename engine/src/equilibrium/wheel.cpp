@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace wrc {
 namespace {
@@ -19,6 +20,9 @@ namespace {
 using pose_solve::deepest;
 using pose_solve::EvaluationBudget;
 using pose_solve::UnreachableLoad;
+
+// The tangential solver's tolerance for a wheel solve's first solution with friction (with_friction).
+constexpr double kFirstRollingTolerance = 1e-4;
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
 //
@@ -38,11 +42,18 @@ class WheelSolver {
               WheelResult& res)
       : model_(model), c_(c), ws_(ws), opt_(opt), res_(res) {
     z_touch_ = touch_height(model.geometry(), c.side, c.y, c.yaw, c.roll, "wheel");
-    target_ = std::cbrt(c.Fz * c.Fz);
     tight_ = std::max(opt.limits.normal_tolerance, model.options().normal.tolerance);
     loose_ = std::max(tight_, 1e-2);
     final_ = opt.final_at_model_tolerance ? model.options().normal.tolerance : tight_;
-    ftol_ = (2.0 / 3.0) * opt.limits.force_tolerance * target_;  // |F - Fz| <= tol Fz, in phi's units
+    set_load(c.Fz, 1.0);
+  }
+
+  // The vertical force the normal pressure is to carry (N): Fz, or with friction Fz less the creep forces' vertical
+  // part, within share x force_tolerance of it.
+  void set_load(double load, double share) {
+    load_ = load;
+    target_ = std::cbrt(load * load);
+    ftol_ = share * (2.0 / 3.0) * opt_.limits.force_tolerance * target_;  // |F - load| <= tol load, in phi's units
   }
 
   // Two predictions first: one on the grid of the start (cold: only estimated on the coarse grid, a few per cent off),
@@ -52,41 +63,100 @@ class WheelSolver {
   // solve's ~1e-6: the evaluation at the model's tolerance that follows concludes (3 evaluations in all) but where the
   // step is large (deep in the flange), and then the secant steps go on from it, as they do for a wheel with several
   // areas or steep normals (no prediction). From a close start (a trajectory's last approach) the first step is within
-  // 1e-3 of the approach and the second is skipped. True when converged frictionless.
-  bool solve(std::optional<double> start) {
-    const double cold = opt_.wheel_approach * std::cbrt((c_.Fz / 100e3) * (c_.Fz / 100e3));  // Hertz: a ~ F^(2/3)
+  // 1e-3 of the approach and the second is skipped. `predicted`: called with the last prediction's evaluation and
+  // approach when it was solved at normal_tolerance (it may set another load and move the approach). True when
+  // converged frictionless.
+  bool solve(std::optional<double> start, const std::function<void(double&)>& predicted_at = {}) {
+    const double cold = opt_.wheel_approach * std::cbrt((load_ / 100e3) * (load_ / 100e3));  // Hertz: a ~ F^(2/3)
     double a1 = std::min(start && *start > 0 ? *start : cold, opt_.limits.max_penetration);
     const double from = a1;
     bool predicted = opt_.limits.max_evaluations >= 4 && predict(a1, start ? tight_ : loose_, !start);
-    if (predicted && std::abs(a1 - from) > 1e-3 * a1) predicted = predict(a1, tight_);
+    bool tight = predicted && start;
+    if (predicted && std::abs(a1 - from) > 1e-3 * a1) tight = predicted = predict(a1, tight_);
+    if (tight && predicted_at) predicted_at(a1);
     const double f1 = phi(a1, predicted ? final_ : start ? tight_ : loose_);
     return secant(a1, f1);
   }
 
-  // With friction the creep forces' vertical part joins Fz (a tilted contact plane turns lateral creep forces partly
-  // vertical): from the frictionless approach, secant steps on the total vertical force with the tangential problems
-  // solved (the first with the Hertz stiffness dFz/da = 1.5 Fz / a). True when converged.
-  bool with_friction(const RollingRequest& rolling) {
-    ContactRequest fr;
-    fr.only_side = c_.side;
-    fr.rolling = rolling;
-    fr.max_penetration = INFINITY;
-    auto error = [&](double at) {
-      evaluate_at(at, fr);
-      return wheel_force() - c_.Fz;
+  // With friction the creep forces' vertical part C joins Fz (a tilted contact plane turns lateral creep forces partly
+  // vertical). The tangential problems are solved on normal solutions only: the normal problem is solved frictionless
+  // (solve) for Fz - C, C from the hint (e.g. the last time step's; 0 cold), within half the force tolerance. When
+  // solve predicts the approach (one area), the tangential problems are solved first, loosely, on the prediction's
+  // normal solution (within ~1e-6 of the one it predicts): their C moves the load, and the approach by the normal
+  // problem's stiffness (the hint's, else its linearised response), before the pose is evaluated; along a trajectory
+  // that evaluation then concludes with one more tangential solve from the first's tractions. While the total misses
+  // Fz by more than the tolerance, the load moves by a Newton step on it (dC/dload: C / load at first, as for creep
+  // forces proportional to the load, then the secant of the last two), the approach with it (shift), and the
+  // tangential problems are solved again from their last tractions. True when converged.
+  bool with_friction(const RollingRequest& rolling, std::optional<double> start, const WheelHint& hint) {
+    double creep = hint.creep;
+    stiffness_ = hint.stiffness;
+    constexpr double kShare = 0.5;   // of the force tolerance, for the normal solves: the rest is C's change
+    double load = std::max(c_.Fz - creep, 0.1 * c_.Fz);
+    set_load(load, kShare);
+    // The first tangential solve only moves the load (C to ~1e-5 of itself, ~0.01 N): looser (the solver's tolerance
+    // is on the slip; the forces converge faster); the last is always at the request's tolerance.
+    RollingRequest first = rolling;
+    first.tolerance = std::max(rolling.tolerance, kFirstRollingTolerance);
+    bool loose = first.tolerance > rolling.tolerance;
+    // On the prediction's normal solution (the load's pressure on the grid of a nearby approach, within ~1e-6 of the
+    // solution it predicts), the creep forces already move the load and the approach before the pose is evaluated.
+    bool early = false;
+    int moved_at = 0;  // the evaluations before the approach was moved so
+    const auto on_prediction = [&](double& a) {
+      add_rolling(model_, cur_, first, ws_);
+      const double c = cur_.wheel[c_.side].creep.force.z(), e = wheel_force() - c_.Fz;
+      load = std::max(load_ - e / (1 + std::max(c / load_, -0.5)), 0.1 * c_.Fz);
+      if (!(stiffness_ > 0))
+        stiffness_ = areas::vertical_stiffness(model_, cur_.pose, cur_.wheel[c_.side].patches[0], ws_);
+      a = std::clamp(a + (load - load_) / (stiffness_ > 0 ? stiffness_ : 1.5 * load_ / a), 0.5 * a,
+                     std::min(2 * a, opt_.limits.max_penetration));
+      set_load(load, kShare);
+      early = true;
+      moved_at = evaluations_;
     };
-    double a = a1_, e = error(a), k = 1.5 * c_.Fz / a;
-    for (int it = 0; std::abs(e) > opt_.limits.force_tolerance * c_.Fz; ++it) {
+    if (!solve(start, on_prediction)) return false;
+    // A stiffness that missed (more than the one evaluation at the approach it gave) is measured again next time.
+    if (early && evaluations_ - moved_at > 1) stiffness_ = 0;
+    loose = loose && !early;
+    double last_load = NAN, last_creep = NAN;
+    for (int it = 0;; ++it) {
+      add_rolling(model_, cur_, loose ? first : rolling, ws_);
+      creep = cur_.wheel[c_.side].creep.force.z();
+      const double a = res_.approach, N = wheel_force() - creep;  // the normal solution's
+      const double e = wheel_force() - c_.Fz;
+      if (std::abs(e) <= opt_.limits.force_tolerance * c_.Fz) {
+        if (!loose) return true;
+        loose = false;  // the same normal solution again, the tangential problems at their tolerance
+        continue;
+      }
+      loose = false;
       if (it >= opt_.limits.max_iterations) {
         res_.message = fmt::format("no convergence in {} iterations with the creep forces", opt_.limits.max_iterations);
         return false;
       }
-      const double next = a - e / k, en = error(next);
-      if (en != e) k = (en - e) / (next - a);
-      a = next, e = en;
+      const double slope = std::isfinite(last_load) && load != last_load ? (creep - last_creep) / (load - last_load)
+                                                                        : creep / load;
+      last_load = load, last_creep = creep;
+      load = std::max(load - e / std::max(1 + slope, 0.5), 0.1 * c_.Fz);
+      set_load(load, kShare);
+      if (!shift(a, N)) return false;
     }
+  }
+
+  // After set_load: from the normal solution at approach a carrying N, a step with the stiffness (the last measured,
+  // else Hertz's 3/2 N / a) to the approach that carries the load, then secant steps from both points (the first
+  // concludes when the stiffness is the last step's, measured on a nearby pose). Measures the stiffness anew.
+  bool shift(double a, double N) {
+    const double k = stiffness_ > 0 ? stiffness_ : 1.5 * N / a;
+    const double a1 = std::clamp(a + (load_ - N) / k, 0.5 * a, 2 * a);
+    const double f1 = phi(a1, final_);
+    if (!secant(a1, f1, a, std::cbrt(N * N) - target_)) return false;
+    if (res_.approach != a) stiffness_ = (wheel_force() - N) / (res_.approach - a);
     return true;
   }
+
+  double stiffness() const { return stiffness_; }
 
   // The result from the last evaluation: converged only within the force tolerance and max_penetration.
   void finish() {
@@ -112,6 +182,7 @@ class WheelSolver {
     double lo = 0, hi = INFINITY;
   };
 
+  // The wheel's vertical force (N): the normal pressure's, with the creep forces' once their problems are solved.
   double wheel_force() const { return cur_.wheel[c_.side].force.z(); }
 
   // The wheel pressed in by a, within the budget; `load`: the predictor's evaluation.
@@ -145,7 +216,7 @@ class WheelSolver {
   // moves on by it. False when the wheel has several areas or steep normals (the pipeline then solved the penetration)
   // or the step is unusable.
   bool predict(double& a, double tol, bool estimate = false) {
-    const areas::VerticalLoad load{c_.Fz, estimate};
+    const areas::VerticalLoad load{load_, estimate};
     evaluate(a, tol, &load);
     const auto& patches = cur_.wheel[c_.side].patches;
     if (patches.size() != 1 || patches[0].solution.load.control != halfspace::NormalLoad::Control::force) return false;
@@ -157,12 +228,12 @@ class WheelSolver {
 
   double tolerance_for(double error) const { return error > 0.05 ? loose_ : error > 1e-3 ? tight_ : final_; }
 
-  // Secant steps on phi from the start (a1, f1) until an evaluation at the final tolerance carries Fz; the approach
-  // ends in a1_. True when converged.
-  bool secant(double a1, double f1) {
-    Secant s{0, -target_, a1, f1};
+  // Secant steps on phi from the start (a1, f1) until an evaluation at the final tolerance carries the load. True
+  // when converged.
+  bool secant(double a1, double f1, double a0 = 0, double f0 = NAN) {
+    Secant s{a0, std::isnan(f0) ? -target_ : f0, a1, f1};
     for (int it = 0;; ++it) {
-      const double error = std::abs(wheel_force() - c_.Fz) / c_.Fz;
+      const double error = std::abs(wheel_force() - load_) / load_;
       const bool settled = tolerance_ <= tight_;  // a looser evaluation may be off by about its tolerance
       if (settled && std::abs(s.f1) <= ftol_) {
         if (tolerance_ <= final_) break;
@@ -189,7 +260,6 @@ class WheelSolver {
                                                              : tolerance_for(error);
       s.f1 = phi(s.a1, next);
     }
-    a1_ = s.a1;
     return tolerance_ <= final_ && std::abs(s.f1) <= ftol_;
   }
 
@@ -207,12 +277,13 @@ class WheelSolver {
   const WheelOptions& opt_;
   WheelResult& res_;
   double z_touch_ = 0;     // the height at which the wheel just touches (m)
-  double target_ = 0;      // Fz^(2/3)
+  double load_ = 0;        // the vertical force the normal pressure is to carry (set_load; N)
+  double target_ = 0;      // load_^(2/3)
   double tight_ = 0, loose_ = 0, final_ = 0;  // the normal solves' tolerances (tolerance_for)
-  double ftol_ = 0;        // the force tolerance in phi's units
+  double ftol_ = 0;        // the normal solves' force tolerance in phi's units
   int evaluations_ = 0;
+  double stiffness_ = 0;   // dFz/da of the normal solutions (N/m), measured by shift; 0: not known
   double tolerance_ = 0;   // of the last frictionless evaluation
-  double a1_ = 0;          // the approach the secant ended at
   ContactResult cur_;      // the last evaluation
 };
 
@@ -235,22 +306,24 @@ void WheelOptions::validate(std::string_view context) const {
 }
 
 WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws, const WheelOptions& opt,
-                        std::optional<double> start, const std::optional<RollingRequest>& rolling) {
+                        std::optional<double> start, const std::optional<RollingRequest>& rolling,
+                        const std::optional<WheelHint>& hint) {
   c.validate("wheel", model.options().check_magnitudes);
+  if (rolling) rolling->validate("wheel", model.options().check_magnitudes);
   opt.validate("wheel");
   WheelResult res;
   res.side = c.side;
   res.Fz = c.Fz;
   WheelSolver solver(model, c, ws, opt, res);
   try {
-    res.converged = solver.solve(start);
-    if (res.converged && rolling) res.converged = solver.with_friction(*rolling);
+    res.converged = rolling ? solver.with_friction(*rolling, start, hint.value_or(WheelHint{})) : solver.solve(start);
   } catch (const EvaluationBudget& e) {
     res.message = e.what();
   } catch (const UnreachableLoad& e) {
     res.message = e.what();
   }
   solver.finish();
+  if (rolling) res.hint = {res.wheel.creep.force.z(), solver.stiffness()};
   return res;
 }
 

@@ -204,14 +204,16 @@ LevelState prolong(const Level& C, const LevelState& cs, const Level& L) {
   return st;
 }
 
-LevelState start_from(const Level& L, std::span<const double> px, std::span<const double> py) {
+LevelState start_from(const Level& L, std::span<const double> px, std::span<const double> py,
+                      std::span<const unsigned char> state) {
   LevelState st = empty_state(L);
   for (int k = 0; k < L.size(); ++k) {
     const auto c = static_cast<std::size_t>(L.cell[static_cast<std::size_t>(k)]);
     st.px[static_cast<std::size_t>(k)] = px[c];
     st.py[static_cast<std::size_t>(k)] = py[c];
-    const double mag = std::hypot(px[c], py[c]);
-    clip_start(L, st, k, mag >= (1 - 1e-9) * L.gk[static_cast<std::size_t>(k)]);  // at the bound: slipping
+    const bool slip = state.empty() ? std::hypot(px[c], py[c]) >= (1 - 1e-9) * L.gk[static_cast<std::size_t>(k)]
+                                    : state[c] == kSlip;  // at the bound: slipping
+    clip_start(L, st, k, slip);
   }
   return st;
 }
@@ -298,15 +300,18 @@ LevelState solve_top(const Level& L, const Grid& grid, const Material& material,
   LevelState st;
   if (!opt.initial_x.empty()) {
     std::vector<double> ix(static_cast<std::size_t>(L.field.grid.size()), 0.0), iy(ix.size());
+    std::vector<unsigned char> is(opt.initial_state.empty() ? 0 : ix.size(), kExterior);
     for (int k = 0; k < L.size(); ++k) {
       const auto c = static_cast<std::size_t>(L.cell[static_cast<std::size_t>(k)]);
-      ix[c] = opt.initial_x[grid_index(L, grid, k)];
-      iy[c] = opt.initial_y[grid_index(L, grid, k)];
+      const std::size_t g = grid_index(L, grid, k);
+      ix[c] = opt.initial_x[g];
+      iy[c] = opt.initial_y[g];
+      if (!is.empty()) is[c] = opt.initial_state[g];
     }
-    st = detail::start_from(L, ix, iy);
+    st = detail::start_from(L, ix, iy, is);
     const auto linear = cache.get(L.field.grid, ShearSpectrum::Kind::linear);
     const auto periodic = cache.get(L.field.grid, ShearSpectrum::Kind::periodic);
-    converged = detail::newton(L, material, *linear, *periodic, ws, opt, st);
+    converged = detail::newton(L, material, *linear, *periodic, ws, opt, st, true);
   } else {
     st = solve_level(L, material, cache, ws, opt, converged);
   }
@@ -327,6 +332,9 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
       (!opt.initial_x.empty() && opt.initial_x.size() != pb.pressure.size()))
     fail("RollingSolver::solve: the warm start has {} and {} values for {} elements", opt.initial_x.size(),
          opt.initial_y.size(), pb.pressure.size());
+  if (!opt.initial_state.empty() && opt.initial_state.size() != opt.initial_x.size())
+    fail("RollingSolver::solve: the warm start's split has {} values for {} elements (and needs its tractions)",
+         opt.initial_state.size(), pb.pressure.size());
   Field top;
   top.grid = pb.grid;
   top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
@@ -337,7 +345,11 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   if (slipping) st = solve_top(L, pb.grid, material(), cache_, ws, opt);
   else st.px.assign(L.cell.size(), 0.0), st.py.assign(L.cell.size(), 0.0), st.state.assign(L.cell.size(), kAdhesion);
   std::vector<double> sx(L.cell.size(), 0.0), sy(L.cell.size(), 0.0);
-  if (slipping) detail::slip_of(L, *cache_.get(L.field.grid, ShearSpectrum::Kind::linear), ws, st, sx, sy);
+  if (slipping && st.slip.size() == 2 * L.cell.size()) {
+    for (std::size_t k = 0; k < L.cell.size(); ++k) sx[k] = st.slip[2 * k], sy[k] = st.slip[2 * k + 1];
+  } else if (slipping) {
+    detail::slip_of(L, *cache_.get(L.field.grid, ShearSpectrum::Kind::linear), ws, st, sx, sy);
+  }
   TangentialSolution out = detail::empty_solution(pb.grid);
   for (int k = 0; k < L.size(); ++k) {
     const auto q = static_cast<std::size_t>(k), f = grid_index(L, pb.grid, k);

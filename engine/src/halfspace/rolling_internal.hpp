@@ -39,19 +39,23 @@ struct LevelState {
   std::vector<double> px, py;
   std::vector<unsigned char> state;  // kAdhesion or kSlip
   int iterations = 0, linear = 0, products = 0, coarse_linear = 0;
+  std::vector<double> slip;  // after newton: the slip per |V| of these tractions (x, y per element), its last product
   double residual = 0;
 };
 
 // Traction start for `level` from a coarser level's solution (bilinear at the element centres), clipped to the
 // bound; elements at the bound start in slip.
 LevelState prolong(const Level& coarse, const LevelState& coarse_state, const Level& level);
-// Start from given tractions (grid vectors of the level's field), clipped likewise.
-LevelState start_from(const Level& level, std::span<const double> px, std::span<const double> py);
+// Start from given tractions (grid vectors of the level's field), clipped likewise; `state` (optional, a grid vector
+// too): the elements that start in slip, else those at the kinetic bound.
+LevelState start_from(const Level& level, std::span<const double> px, std::span<const double> py,
+                      std::span<const unsigned char> state = {});
 
 // Semi-smooth Newton with GMRES on one level, from `state` (updated in place); false when it did not converge within
-// options.max_iterations (state.residual says how far it got).
+// options.max_iterations (state.residual says how far it got). `settled`: the start's split may already be the
+// solution's (a warm start): it is checked before the first step, which is skipped when the start converged.
 bool newton(const Level& level, const Material& material, const ShearSpectrum& linear, const ShearSpectrum& periodic,
-            RollingWorkspace& ws, const TangentialOptions& options, LevelState& state);
+            RollingWorkspace& ws, const TangentialOptions& options, LevelState& state, bool settled = false);
 
 // The slip per |V| of the contact elements for the tractions of `state` (one product).
 void slip_of(const Level& level, const ShearSpectrum& linear, RollingWorkspace& ws, const LevelState& state,

@@ -323,7 +323,7 @@ void renormalise(const Level& L, LevelState& st) {
 }  // namespace
 
 bool newton(const Level& L, const Material& material, const ShearSpectrum& linear, const ShearSpectrum& periodic,
-            RollingWorkspace& ws, const TangentialOptions& opt, LevelState& st) {
+            RollingWorkspace& ws, const TangentialOptions& opt, LevelState& st, bool settled) {
   const int n = L.size();
   SlipOperator op(L, linear, periodic, ws);
   const LocalBlocks K = local_blocks(material, L.field.grid);
@@ -333,7 +333,7 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
   };
   pack();
   op.slip(p.data(), s.data());
-  bool changed = true, converged = false;
+  bool changed = !settled || update_split(L, st, s), converged = false;
   for (int it = 0;; ++it) {
     const double err = residual_of(L, st, s);
     st.residual = err;
@@ -358,6 +358,7 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
     changed = update_split(L, st, s);
   }
   st.products += op.products;
+  st.slip = std::move(s);  // of the final tractions: the solution's slip needs no product of its own
   return converged;
 }
 

@@ -147,7 +147,7 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
   }
   const Plane& k = layout.frame;
   next_previous.push_back({k.O, k.t1, k.t2, k.n, pc.solution.grid, pc.solution.pressure,
-                           std::move(pc.solution.displacement)});
+                           std::move(pc.solution.displacement), {}, {}, {}});
   return pc;
 }
 
@@ -169,6 +169,19 @@ void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact&
     pc.sensitivity.block<3, 1>(0, col) = dF;
     pc.sensitivity.block<3, 1>(3, col) = dM;
   }
+}
+
+double vertical_stiffness(const ContactModel& model, const Pose& pose, const PatchContact& pc, ContactWorkspace& ws) {
+  if (!(pc.solution.force > 0) || pc.solution.pressure.empty()) return 0;
+  halfspace::NormalSolution sol = pc.solution;
+  sol.load = {};  // the response of the pressure at its approach (a predictor's solution holds its force instead)
+  std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()));
+  const AreaSurface& surface = surface_of(pc);
+  surface.motion(pc, pose, 0, dh);
+  const halfspace::NormalResponse r = model.solver().response(sol, dh, ws.normal, 1e-2);
+  Eigen::Vector3d dF, dM;
+  surface.response(pc, pose, 0, r, dF, dM);
+  return -dF.z();  // the approach moves the wheel down
 }
 
 }  // namespace wrc::areas

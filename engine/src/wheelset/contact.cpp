@@ -180,15 +180,16 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
   if (load && located.groups.size() == 1) how.vertical_force = load->force;  // a single area only
   how.estimate = load && load->estimate;
   WheelContact wc;
-  std::vector<ContactWorkspace::Previous> next_previous;
+  std::vector<ContactWorkspace::Previous> next_previous, next_tangential;
   for (const std::vector<int>& group : located.groups) {
     std::vector<SegmentInfo> all;
     for (int p : group) all.insert(all.end(), located.segments[p].begin(), located.segments[p].end());
     const AreaInput in{model, st, side, group, all, st.patches(side)[static_cast<std::size_t>(group.front())]};
     PatchContact pc = solve_area(in, how, ws, next_previous);
-    if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws);
+    if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);
     add_area(wc, std::move(pc));
   }
+  if (request.rolling) ws.tangential[side] = std::move(next_tangential);
   ws.before[side] = ws.extrapolate ? std::move(ws.previous[side]) : std::vector<ContactWorkspace::Previous>{};
   ws.previous[side] = std::move(next_previous);
   double rr = 0, N = 0;
@@ -244,6 +245,7 @@ using namespace areas;
 void ContactWorkspace::forget() {
   for (auto& p : previous) p.clear();
   for (auto& p : before) p.clear();
+  for (auto& p : tangential) p.clear();
 }
 
 double read_max_penetration(OptionReader& r, double fallback) {
@@ -263,9 +265,7 @@ ContactRequest read_contact_request(OptionReader& r) {
 }
 
 void ContactRequest::validate(bool plausible) const {
-  if (plausible && rolling) {
-    check_plausible("contact", "V", rolling->kinematics ? rolling->kinematics->V : rolling->V, kTrainSpeed);
-  }
+  if (rolling) rolling->validate("contact", plausible);
   if (!(max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", max_penetration);
   if (!(tolerance >= 0 && tolerance <= 1e-2))
     fail("contact: tolerance = {} must be in [0, 1e-2] (relative; 0: the model's)", tolerance);
@@ -302,13 +302,15 @@ void add_rolling(const ContactModel& model, ContactResult& result, const Rolling
     wc.force.setZero();
     wc.moment.setZero();
     wc.creep = {};
+    std::vector<ContactWorkspace::Previous> next;
     for (PatchContact& pc : wc.patches) {
-      solve_area_rolling(model, result.pose, pc, request, ws);
+      solve_area_rolling(model, result.pose, pc, request, ws, next);
       add_creep(wc.creep, pc);
       wc.force += pc.force;
       wc.moment += pc.moment;
     }
     const int side = &wc == &result.wheel[kLeft] ? kLeft : kRight;
+    if (!wc.patches.empty()) ws.tangential[side] = std::move(next);
     wc.angle = wc.patches.empty() ? 0.0 : contact_angle(side, wc.force);
     result.force += wc.force;
     result.moment += wc.moment;

@@ -2,8 +2,10 @@
 // element from the wheelset's kinematics, the tangential solve of an area (exact or FASTSIM), its results and the
 // options that ask for it.
 #include "tangential_step.hpp"
+#include "warm_start.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
 #include <Eigen/Geometry>
@@ -165,7 +167,7 @@ void creep_wrench(const PatchContact& pc, const halfspace::TangentialSolution& s
 }  // namespace
 
 void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContact& pc, const RollingRequest& rq,
-                        ContactWorkspace& ws) {
+                        ContactWorkspace& ws, std::vector<ContactWorkspace::Previous>& next) {
   if (pc.rolling) {  // replace an earlier solution
     pc.force -= pc.rolling->force;
     pc.moment -= pc.rolling->moment;
@@ -192,7 +194,17 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   } else {
     halfspace::TangentialOptions opt;
     opt.tolerance = rq.tolerance;
+    const areas::Plane frame = areas::area_frame(pc);
+    std::vector<double> sx, sy;
+    std::vector<unsigned char> split;
+    if (areas::tangential_start(ws, pc.side, frame, pb.grid, sx, sy, split)) {
+      opt.initial_x = sx;
+      opt.initial_y = sy;
+      opt.initial_state = split;
+    }
     r.solution = model.rolling_solver().solve(pb, ws.rolling, opt);
+    const halfspace::TangentialSolution& s = r.solution;
+    next.push_back({frame.O, frame.t1, frame.t2, frame.n, s.grid, pc.solution.pressure, {}, s.px, s.py, s.state});
   }
   const halfspace::TangentialSolution& s = r.solution;
   halfspace::rigid_slip(pb, r.rigid_x, r.rigid_y);
@@ -347,6 +359,10 @@ halfspace::Friction read_friction(OptionReader& r) {
 }
 
 }  // namespace
+
+void RollingRequest::validate(std::string_view context, bool plausible) const {
+  if (plausible) check_plausible(context, "V", kinematics ? kinematics->V : V, kTrainSpeed);
+}
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   bool any = r.documenting() || r.has("creepage");

@@ -26,4 +26,9 @@ struct VerticalLoad {
 ContactResult evaluate_vertical_load(const ContactModel& model, const Pose& pose, ContactWorkspace& workspace,
                                      const ContactRequest& request, const VerticalLoad& load);
 
+// d(vertical force)/d(approach) (N/m) of a solved area (its grids kept; a predictor's too): its normal problem's
+// linearised response (area_sensitivity's z column, to 1e-2) to the wheel moving down; 0 without contact.
+double vertical_stiffness(const ContactModel& model, const Pose& pose, const PatchContact& area,
+                          ContactWorkspace& workspace);
+
 }  // namespace wrc::areas

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <utility>
 
 namespace wrc::areas {
 namespace {
@@ -34,6 +35,10 @@ struct OldGridMap {
     const Eigen::Vector3d d = pl.O - p.origin;
     u0 = (d.dot(p.t1) - g.x0) / g.dx, ux = pl.t1.dot(p.t1) / g.dx, uy = pl.t2.dot(p.t1) / g.dx;
     v0 = (d.dot(p.t2) - g.y0) / g.dy, vx = pl.t1.dot(p.t2) / g.dy, vy = pl.t2.dot(p.t2) / g.dy;
+  }
+  // The old element nearest to (x, y) of the new plane (indices; may be off the old grid).
+  std::pair<int, int> nearest(double x, double y) const {
+    return {static_cast<int>(std::lround(u0 + ux * x + uy * y)), static_cast<int>(std::lround(v0 + vx * x + vy * y))};
   }
   // The old pressure at (x, y) of the new plane (bilinear), or nothing where the nearest old element was not in
   // contact: interpolation alone smears the contact edge outward, and each element started in contact that is not
@@ -104,6 +109,33 @@ struct OldGridMap {
 };
 
 }  // namespace
+
+Plane area_frame(const PatchContact& pc) {
+  if (!pc.conformal) return {pc.origin, pc.normal, pc.t1, pc.t2};
+  return {Eigen::Vector3d(pc.conformal->x0, pc.conformal->s0, 0), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
+          Eigen::Vector3d::UnitY()};
+}
+
+bool tangential_start(const ContactWorkspace& ws, int side, const Plane& pl, const halfspace::Grid& grid,
+                      std::vector<double>& px, std::vector<double>& py, std::vector<unsigned char>& state) {
+  const auto* last = ws.warm_start ? previous_area(ws.tangential[side], pl) : nullptr;
+  if (!last || last->state.size() != last->pressure.size()) return false;
+  const OldGridMap map(*last, pl);
+  const halfspace::Grid& g = last->grid;
+  const auto n = static_cast<std::size_t>(grid.size());
+  px.assign(n, 0.0);
+  py.assign(n, 0.0);
+  state.assign(n, halfspace::kSlip);
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const auto [iu, iv] = map.nearest(grid.x(i), grid.y(j));
+      if (iu < 0 || iv < 0 || iu >= g.nx || iv >= g.ny) continue;
+      const auto o = static_cast<std::size_t>(g.index(iu, iv)), k = static_cast<std::size_t>(grid.index(i, j));
+      if (last->state[o] == halfspace::kExterior) continue;
+      px[k] = last->px[o], py[k] = last->py[o], state[k] = last->state[o];
+    }
+  return true;
+}
 
 bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const halfspace::Grid& grid,
                 std::vector<double>& start, std::vector<double>& displacement) {

@@ -18,4 +18,15 @@ namespace wrc::areas {
 bool warm_start(const ContactWorkspace& ws, int side, const Plane& pl, const halfspace::Grid& grid,
                 std::vector<double>& start, std::vector<double>& displacement);
 
+// The frame of a solved area as its warm starts know it (AreaLayout::frame): its plane, or on a conformal area the
+// unrolled surface's (x, s) coordinates.
+Plane area_frame(const PatchContact& area);
+
+// Start tractions (Pa) and split (halfspace::ElementState) of the exact tangential solver for an area in the frame pl
+// from the workspace's last tangential solution of that side (ContactWorkspace::tangential): per new element the
+// nearest old element's where that was in contact (on the conformal lattice a copy), none elsewhere (exterior, 0).
+// False when there is none (or warm starts are off).
+bool tangential_start(const ContactWorkspace& ws, int side, const Plane& pl, const halfspace::Grid& grid,
+                      std::vector<double>& px, std::vector<double>& py, std::vector<unsigned char>& state);
+
 }  // namespace wrc::areas

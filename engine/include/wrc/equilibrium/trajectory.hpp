@@ -50,6 +50,9 @@ class Trajectory {
   std::unique_ptr<ContactWorkspace> workspace_;
   // Per side, the approaches (WheelResult::approach) of the last wheel solve and the one before it.
   std::optional<double> last_approach_[2], before_approach_[2];
+  // Per side, what the last two wheel solves with rolling contact tell the next (creep forces' vertical part,
+  // stiffness).
+  std::optional<WheelHint> last_hint_[2], before_hint_[2];
 };
 
 }  // namespace wrc

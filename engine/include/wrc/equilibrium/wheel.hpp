@@ -40,6 +40,12 @@ struct WheelOptions {
   void validate(std::string_view context) const;
 };
 
+// What a solve with friction tells the next solve of the same wheel nearby (a trajectory's next step).
+struct WheelHint {
+  double creep = 0;      // the creep forces' vertical part (N)
+  double stiffness = 0;  // d(vertical normal force)/d(approach) (N/m) measured on the way; 0: not known
+};
+
 struct WheelResult {
   bool converged = false;
   std::string message;
@@ -50,10 +56,14 @@ struct WheelResult {
   double residual = 0;       // Fz(side) - Fz (N)
   int iterations = 0;        // contact evaluations
   WheelContact wheel;        // the side's contact
+  WheelHint hint;            // with friction: for the next solve nearby (not a field of the results)
 };
 
 // Solves the height for the case. With `rolling`, the tangential problems are solved too and Fz includes the creep
-// forces' vertical part (the frictionless height starts the iteration). `start`: an approach to start from (m below
+// forces' vertical part: the normal problem is solved for Fz less that part (hint.creep, e.g. the previous time
+// step's; 0 when not given), the tangential problems on normal solutions only (first on the prediction's, whose creep
+// forces move the load and, by hint.stiffness or the normal problem's linearised response, the approach), and both
+// again, each from the last solution, while the total misses Fz. `start`: an approach to start from (m below
 // the touching height; e.g. the previous time step's, which follows the load where the height does not); otherwise
 // options.wheel_approach scaled to Fz. The approach is predicted by the wheel's normal problem solved for Fz itself
 // (an internal entry point of the contact pipeline), twice from afar (the first only estimated on the coarse grid) and
@@ -63,7 +73,8 @@ struct WheelResult {
 // options' validate(), first) and for a wheel that does not touch its rail within z = +-20 mm.
 WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWorkspace& ws,
                         const WheelOptions& options = {}, std::optional<double> start = std::nullopt,
-                        const std::optional<RollingRequest>& rolling = std::nullopt);
+                        const std::optional<RollingRequest>& rolling = std::nullopt,
+                        const std::optional<WheelHint>& hint = std::nullopt);
 
 // Reads side ("left" | "right", required), y, yaw, roll (default 0) and Fz (required) of ws:wheel{} and tr:wheel{}
 // into a case (validated by the solver).

@@ -64,8 +64,13 @@ struct TangentialOptions {
   // Start from the solution on a grid twice as coarse (recursively, above coarse_limit contact elements).
   bool nested = true;
   int coarse_limit = 400;
-  // Optional warm start (Pa per element, both or neither), e.g. the previous point of a creep curve.
+  // Optional warm start (Pa per element, both or neither), e.g. the previous point of a creep curve or time step.
   std::span<const double> initial_x = {}, initial_y = {};
+  // Optional with it: the start's adhesion / slip split (ElementState per element): slip elements start on the
+  // kinetic bound in their traction's direction, the others keep their traction up to the static bound (beyond it
+  // they slip). Without it an element at the kinetic bound starts in slip. Either way a start that already meets the
+  // tolerance with a consistent split is returned as it is (0 iterations).
+  std::span<const unsigned char> initial_state = {};
 };
 
 enum ElementState : unsigned char { kExterior = 0, kAdhesion = 1, kSlip = 2 };

@@ -189,6 +189,9 @@ class ContactWorkspace {
     halfspace::Grid grid;
     std::vector<double> pressure;
     std::vector<double> displacement;  // the solver's u = D pressure (empty if it gave none)
+    // In `tangential` only: the exact solver's tractions (Pa) and adhesion / slip split (halfspace::ElementState).
+    std::vector<double> px, py;
+    std::vector<unsigned char> state;
   };
   std::array<std::vector<Previous>, 2> previous;  // per side, the areas of the last evaluation
   bool warm_start = true;                         // use them (off to measure what it gains)
@@ -196,6 +199,9 @@ class ContactWorkspace {
   // contact) instead of the last alone: for poses along a trajectory at a fixed time step (Trajectory::contact).
   bool extrapolate = false;
   std::array<std::vector<Previous>, 2> before;    // per side, the areas of the evaluation before the last
+  // Per side, the areas of the last exact tangential solve, which start the next (with warm_start): along a
+  // trajectory, and when a wheel solve's creep forces are solved again on a slightly different normal solution.
+  std::array<std::vector<Previous>, 2> tangential;
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();

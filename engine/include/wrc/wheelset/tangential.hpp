@@ -34,6 +34,7 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include <string_view>
 
 namespace wrc {
 
@@ -62,6 +63,8 @@ struct RollingRequest {
   halfspace::Friction friction;                    // mu (static = kinetic) or mu_static and mu_kinetic
   RollingMethod method = RollingMethod::exact;
   double tolerance = 1e-6;                       // the exact solver's (halfspace/rolling.hpp)
+  // The speed's magnitude (plausibility.hpp, with `plausible`: check_setup); the reader checks the rest.
+  void validate(std::string_view context, bool plausible) const;
 };
 
 // Reads a call's rolling keys: V, omega, vy, yaw_rate, slip_reference ("deformed" | "undeformed") (kinematics) or
