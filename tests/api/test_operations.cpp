@@ -2,6 +2,8 @@
 // ones the readers really accept.
 #include "wrc/api/calls.hpp"
 #include "wrc/api/operations.hpp"
+#include "wrc/profile/load.hpp"
+#include "wrc/wheelset/wheelset.hpp"
 
 #include <doctest/doctest.h>
 
@@ -53,6 +55,13 @@ std::set<std::string> known_keys(const std::string& op) {
     else if (op == "trajectory_contact") read(api::TrajectoryContactCall{});
     else if (op == "trajectory_wheel") read(api::TrajectoryWheelCall{});
     else if (op == "check_strategy") read(api::StrategyCheckCall{});
+    else if (op == "wheelset") {
+      OptionReader r(t, op);
+      read_wheelset_params(r);
+      r.finish();
+    } else if (op == "profile_load") {  // every other key passes on to the reader plugin: the keys of its own
+      return {load_option_keys().begin(), load_option_keys().end()};
+    }
     else FAIL("no reader for ", op);
   } catch (const Error& e) {
     message = e.what();
@@ -68,7 +77,7 @@ std::set<std::string> known_keys(const std::string& op) {
 }  // namespace
 
 TEST_CASE("every option of every operation has a unit (or \"-\") and a help text") {
-  CHECK(api::operations().size() >= 13);
+  CHECK(api::operations().size() >= 15);
   for (const api::Operation& op : api::operations()) {
     CAPTURE(op.name);
     CHECK(!op.options.empty());
@@ -117,7 +126,13 @@ TEST_CASE("operations: the keys Lua and C give, with units, defaults and require
   CHECK(find(api::operation("wheel"), "Fz").unit == "N");
   // The flange measures' default tape offset is the track's: one constant.
   CHECK(find(api::operation("flange_measures"), "tape_offset").fallback == fmt::format("{}", TrackParams{}.tape_offset));
-  CHECK_THROWS_WITH_AS(api::operation("contcat"), doctest::Contains("the operations: contact, wheel"), Error);
+  CHECK_THROWS_WITH_AS(api::operation("contcat"), doctest::Contains("the operations: profile_load, wheelset, contact"),
+                       Error);
+  // A profile's load options and a wheelset's parameters, as wrc.profile.load and wrc.wheelset take them.
+  CHECK(find(api::operation("profile_load"), "smooth").unit == "m");
+  CHECK(find(api::operation("profile_load"), "shift.y").unit == "m");
+  CHECK(find(api::operation("wheelset"), "radius").unit == "m");
+  CHECK(find(api::operation("wheelset"), "tape_offset").fallback == fmt::format("{}", TrackParams{}.tape_offset));
 }
 
 TEST_CASE("a request's validate() names the key, the value, the unit and the range (the engine's checks and its own)") {

@@ -3,20 +3,33 @@
 
 #include "wrc/api/calls.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/profile/load.hpp"
+#include "wrc/wheelset/wheelset.hpp"
+
+#include <functional>
 
 namespace wrc::api {
 namespace {
 
-template <class X>
-Operation describe(std::string name, std::string lua, std::string c) {
+Operation describe_with(std::string name, std::string lua, std::string c, const std::function<void(OptionReader&)>& read) {
   Operation op{std::move(name), std::move(lua), std::move(c), {}};
   OptionReader r = OptionReader::documenting(op.name, op.options);
-  X::read(r);
+  read(r);
   return op;
+}
+
+template <class X>
+Operation describe(std::string name, std::string lua, std::string c) {
+  return describe_with(std::move(name), std::move(lua), std::move(c), [](OptionReader& r) { X::read(r); });
 }
 
 std::vector<Operation> make_operations() {
   return {
+      // A profile's load options (a reader plugin's own keys pass on to it) and a wheelset's parameters (its profiles
+      // and strategy are arguments: Lua's wheel, rail, ..., strategy keys; C's profile handles and strategy_options).
+      describe_with("profile_load", "wrc.profile.load", "wrc_profile_load",
+                    [](OptionReader& r) { read_load_options(r, false); }),
+      describe_with("wheelset", "wrc.wheelset", "wrc_wheelset_new", [](OptionReader& r) { read_wheelset_params(r); }),
       describe<ContactCall>("contact", "wheelset:contact", "wrc_contact"),
       describe<WheelCall>("wheel", "wheelset:wheel", "wrc_wheel"),
       describe<EquilibriumCall>("equilibrium", "wheelset:equilibrium", "wrc_equilibrium"),

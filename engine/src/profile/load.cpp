@@ -165,7 +165,7 @@ std::string option_text(const std::string& key, const OptionValue& v, const std:
 CropWindow read_crop(OptionReader& crop) {
   CropWindow w;
   for (const char* axis : {"y", "z"}) {
-    const auto v = crop.numbers(axis);
+    const auto v = crop.numbers(axis, {"m", axis[0] == 'y' ? "{min, max} of y: keep the points inside" : "{min, max} of z: keep the points inside"});
     if (!v) continue;
     if (v->size() != 2 || !((*v)[0] < (*v)[1]))
       fail("{}.{} must be {{min, max}} with min < max (metres)", crop.context(), axis);
@@ -186,17 +186,22 @@ const std::vector<std::string>& load_option_keys() {
 
 LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
   LoadOptions o;
-  o.mirror_y = r.boolean("mirror_y").value_or(false);
-  o.mirror_z = r.boolean("mirror_z").value_or(false);
-  o.name = r.string("name");
-  if (auto k = r.string("kind")) o.kind = parse_profile_kind(*k, r.context());
-  if (auto shift = r.table("shift")) {
-    o.shift_y = shift->number("y", 0.0);
-    o.shift_z = shift->number("z", 0.0);
+  o.mirror_y = r.boolean("mirror_y", {"-", "y -> -y (a profile given with the other lateral direction)"}, o.mirror_y);
+  o.mirror_z = r.boolean("mirror_z", {"-", "z -> -z (a profile given with the other vertical direction)"}, o.mirror_z);
+  o.name = r.string("name", {"-", "the profile's name (default: the file's, or its stem)"});
+  if (auto k = r.string("kind", {"-", "wheel or rail, when the file does not say (must agree when it does)"}))
+    o.kind = parse_profile_kind(*k, r.context());
+  if (auto shift = r.table("shift", {"m", "{y, z} added to every point, after mirrors and crop"})) {
+    o.shift_y = shift->number("y", {"m", "lateral shift"}, o.shift_y);
+    o.shift_z = shift->number("z", {"m", "vertical shift"}, o.shift_z);
     shift->finish();
   }
-  if (auto crop = r.table("crop")) o.crop = read_crop(*crop);
-  if (const OptionValue* v = r.value("smooth"); v && v->type == OptionValue::Type::boolean && !v->boolean)
+  if (auto crop = r.table("crop", {"m", "{y = {min, max}, z = {min, max}}: keep only the points inside"}))
+    o.crop = read_crop(*crop);
+  if (const OptionValue* v = r.value("smooth", "number or false",
+                                     {"m", "smoothing length of the spline through the points (0: interpolating, the "
+                                           "default for files; false: the polyline)"});
+      v && v->type == OptionValue::Type::boolean && !v->boolean)
     o.polyline = true;  // smooth = false: keep the points as a polyline
   else
     o.smooth = r.number("smooth");
@@ -207,8 +212,9 @@ LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
     r.finish();
     return o;
   }
-  o.reader = r.string("reader");
-  if (const OptionValue* u = r.value("units")) {
+  o.reader = r.string("reader", {"-", "the reader plugin's id (default: chosen by the file's extension)"});
+  if (const OptionValue* u = r.value("units", "string or number",
+                                     {"-", "the file's length unit: mm (default), cm, m, in, or metres per file unit"})) {
     if (u->type != OptionValue::Type::number && u->type != OptionValue::Type::string)
       fail("{}: 'units' must be \"mm\", \"cm\", \"m\", \"in\" or a number (metres per file unit), got {}", r.context(),
            u->type_name());
@@ -228,7 +234,8 @@ RawProfile read_raw_profile(OptionReader& r) {
   for (double l : r.numbers("lines", false).value_or(std::vector<double>{}))
     raw.lines.push_back(std::isfinite(l) && l > 0 && l < 2e9 ? static_cast<int>(l) : 0);
   if (auto k = r.string("kind")) raw.kind = parse_profile_kind(*k, r.context());
-  if (const OptionValue* u = r.value("units")) {
+  if (const OptionValue* u = r.value("units", "string or number",
+                                     {"-", "the file's length unit: mm (default), cm, m, in, or metres per file unit"})) {
     if (u->type == OptionValue::Type::number) {
       raw.metres_per_unit = u->number;
       raw.units_declared_by = fmt::format("units = {} (reader)", u->number);
