@@ -1,6 +1,7 @@
 // The damage area's piecewise functions at points in every range, each expected value evaluated by hand from the
 // published tables (the numbers written out here, in the sources' own units), and the options' reading and checks.
 #include "wrc/damage/damage.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -8,14 +9,11 @@
 #include <numbers>
 #include <string>
 
+using wrc::test::within_rel;
 using namespace wrc;
 using namespace wrc::damage;
 
 namespace {
-
-// Relative comparison: doctest's Approx adds a scale of 1 to the tolerance's base, which would let any value below
-// the tolerance (a volume of 1e-10 m^3/m) pass against any other.
-inline doctest::Approx rel(double v, double tolerance) { return doctest::Approx(v).epsilon(tolerance).scale(0); }
 
 std::string error_of(const auto& f) {
   try {
@@ -43,17 +41,17 @@ TEST_CASE("KTH wear map: k in each of Jendel's four regions, with their limits")
 
 TEST_CASE("USFD wear function: the rate in each regime against the published lines in ug/(m mm^2)") {
   const double to_si = 1e-3;  // 1 ug/(m mm^2) = 1e-9 kg / (1 m x 1e-6 m^2)
-  CHECK(usfd_wear_rate(5e6) == rel(5.3 * 5 * to_si, 1e-14));   // mild: 26.5
+  CHECK(usfd_wear_rate(5e6) == within_rel(5.3 * 5 * to_si, 1e-14));   // mild: 26.5
   CHECK(usfd_regime(5e6) == UsfdRegime::mild);
-  CHECK(usfd_wear_rate(10.3e6) == rel(54.59 * to_si, 1e-13));
-  CHECK(usfd_wear_rate(10.4e6) == rel(55.0 * to_si, 1e-12));  // severe from 10.4 on
+  CHECK(usfd_wear_rate(10.3e6) == within_rel(54.59 * to_si, 1e-13));
+  CHECK(usfd_wear_rate(10.4e6) == within_rel(55.0 * to_si, 1e-12));  // severe from 10.4 on
   CHECK(usfd_regime(10.4e6) == UsfdRegime::severe);
-  CHECK(usfd_wear_rate(40e6) == rel(55.0 * to_si, 1e-12));
-  CHECK(usfd_wear_rate(77.2e6) == rel(55.0 * to_si, 1e-12));
+  CHECK(usfd_wear_rate(40e6) == within_rel(55.0 * to_si, 1e-12));
+  CHECK(usfd_wear_rate(77.2e6) == within_rel(55.0 * to_si, 1e-12));
   CHECK(usfd_regime(77.3e6) == UsfdRegime::catastrophic);
-  CHECK(usfd_wear_rate(77.3e6) == rel((61.9 * 77.3 - 4778.7) * to_si, 1e-9));  // 6.17
+  CHECK(usfd_wear_rate(77.3e6) == within_rel((61.9 * 77.3 - 4778.7) * to_si, 1e-9));  // 6.17
   CHECK(usfd_wear_rate(77.2001e6) == 0);  // the line's -0.02 at the transition: no negative wear
-  CHECK(usfd_wear_rate(100e6) == rel(1411.3 * to_si, 1e-12));
+  CHECK(usfd_wear_rate(100e6) == within_rel(1411.3 * to_si, 1e-12));
   CHECK(usfd_wear_rate(0) == 0);
 }
 
@@ -62,29 +60,29 @@ TEST_CASE("Burstow's damage function: zero, rising, falling, zero at 15, 65 and 
   CHECK(burstow_damage(14.9) == 0);
   CHECK(burstow_regime(14.9) == BurstowRegime::none);
   CHECK(burstow_damage(15) == 0);
-  CHECK(burstow_damage(40) == rel(25e-6, 1e-13));  // (40 - 15) x 1e-6
+  CHECK(burstow_damage(40) == within_rel(25e-6, 1e-13));  // (40 - 15) x 1e-6
   CHECK(burstow_regime(40) == BurstowRegime::rcf);
-  CHECK(burstow_damage(65) == rel(50e-6, 1e-13));
-  CHECK(burstow_damage(120) == rel(25e-6, 1e-13));  // 5e-5 x 55 / 110
+  CHECK(burstow_damage(65) == within_rel(50e-6, 1e-13));
+  CHECK(burstow_damage(120) == within_rel(25e-6, 1e-13));  // 5e-5 x 55 / 110
   CHECK(burstow_regime(120) == BurstowRegime::rcf_and_wear);
-  CHECK(burstow_damage(174) == rel(5e-5 / 110, 1e-12));
+  CHECK(burstow_damage(174) == within_rel(5e-5 / 110, 1e-12));
   CHECK(burstow_damage(175) == 0);
   CHECK(burstow_regime(175) == BurstowRegime::wear);
   CHECK(burstow_damage(400) == 0);
   // Another rail grade's function: threshold 20, peak 80 at 2e-5, limit 200.
   const BurstowFunction f{20, 80, 200, 2e-5};
-  CHECK(burstow_damage(50, f) == rel(1e-5, 1e-13));
-  CHECK(burstow_damage(140, f) == rel(1e-5, 1e-13));
+  CHECK(burstow_damage(50, f) == within_rel(1e-5, 1e-13));
+  CHECK(burstow_damage(140, f) == within_rel(1e-5, 1e-13));
 }
 
 TEST_CASE("T gamma and Ekberg's FI_surf against hand computations") {
   const halfspace::Creepages c{-2e-3, 1e-3, 0.5};
-  CHECK(tgamma(12e3, -4e3, c) == rel(24 + 4, 1e-14));
-  CHECK(tgamma_spin(12e3, -4e3, -30, c) == rel(24 + 4 + 15, 1e-14));
+  CHECK(tgamma(12e3, -4e3, c) == within_rel(24 + 4, 1e-14));
+  CHECK(tgamma_spin(12e3, -4e3, -30, c) == within_rel(24 + 4 + 15, 1e-14));
   // Hertz: 2 pi a b / (3 Fz) = 1 / p0, so FI_surf = mu - k / p0: 0.3 - 300 / 1200.
   const double a = 6e-3, b = 4e-3, p0 = 1.2e9, fz = 2.0 / 3.0 * std::numbers::pi * a * b * p0;
-  CHECK(surface_fatigue_index(0.3, a, b, 300e6, fz) == rel(0.05, 1e-13));
-  CHECK(surface_fatigue_index(0.2, a, b, 300e6, fz) == rel(-0.05, 1e-13));
+  CHECK(surface_fatigue_index(0.3, a, b, 300e6, fz) == within_rel(0.05, 1e-13));
+  CHECK(surface_fatigue_index(0.2, a, b, 300e6, fz) == within_rel(-0.05, 1e-13));
 }
 
 TEST_CASE("damage options: defaults, reading, and errors that name the key") {

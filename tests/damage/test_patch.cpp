@@ -8,6 +8,7 @@
 #include "wrc/equilibrium/wheel.hpp"
 #include "wrc/profile/reader.hpp"
 #include "wrc/wheelset/wheelset.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -17,14 +18,11 @@
 #include <numbers>
 #include <string>
 
+using wrc::test::within_rel;
 using namespace wrc;
 using namespace wrc::damage;
 
 namespace {
-
-// Relative comparison: doctest's Approx adds a scale of 1 to the tolerance's base, which would let any value below
-// the tolerance (a volume of 1e-10 m^3/m) pass against any other.
-inline doctest::Approx rel(double v, double tolerance) { return doctest::Approx(v).epsilon(tolerance).scale(0); }
 
 constexpr double kA = 6e-3, kB = 4e-3, kP0 = 1.0e9;
 const double kHertzForce = 2.0 / 3.0 * std::numbers::pi * kA * kB * kP0;  // N
@@ -73,21 +71,21 @@ TEST_CASE("Archard in full sliding on a Hertzian patch: volume per metre rolled 
     const double w = std::hypot(wx, wy);
     // A constant k.
     const PatchDamage c = compute_damage(s.fields(10), archard(1e-3));
-    CHECK(c.wear_volume == rel(1e-3 * kHertzForce * w / 2.5e9, 0.01));
-    CHECK(c.wear_volume == rel(1e-3 * s.h.force * w / 2.5e9, 1e-12));  // with the load of the sampled pressure
+    CHECK(c.wear_volume == within_rel(1e-3 * kHertzForce * w / 2.5e9, 0.01));
+    CHECK(c.wear_volume == within_rel(1e-3 * s.h.force * w / 2.5e9, 1e-12));  // with the load of the sampled pressure
     // The KTH map at V = 20 m/s: sliding at 20 |w| = 0.4 .. 0.6 m/s, p0 = 1 GPa < 0.8 H: region K3 everywhere.
     const PatchDamage m = compute_damage(s.fields(20), archard());
     CHECK(m.map);
-    CHECK(m.wear_volume == rel(kKthSevere * kHertzForce * w / 2.5e9, 0.01));
+    CHECK(m.wear_volume == within_rel(kKthSevere * kHertzForce * w / 2.5e9, 0.01));
     // At 5 m/s (0.1 .. 0.15 m/s): K2.
     CHECK(compute_damage(s.fields(5), archard()).wear_volume ==
-          rel(kKthMildSlow * kHertzForce * w / 2.5e9, 0.01));
+          within_rel(kKthMildSlow * kHertzForce * w / 2.5e9, 0.01));
   }
   // The depth per passage along the central row: k p0 |w| / H times the integral of sqrt(1 - x^2/a^2) over x, i.e.
   // k p0 |w| pi a / (2 H); the deepest row is the central one.
   const Sliding s = sliding(0.02, 0, 0.3, 80);
   const PatchDamage d = compute_damage(s.fields(10), archard(1e-3));
-  CHECK(d.wear_depth_max == rel(1e-3 * kP0 * 0.02 * std::numbers::pi * kA / (2 * 2.5e9), 0.01));
+  CHECK(d.wear_depth_max == within_rel(1e-3 * kP0 * 0.02 * std::numbers::pi * kA / (2 * 2.5e9), 0.01));
   // The seizure region: with H = 1.1 GPa the elements above 0.8 H = 0.88 GPa take K1, the rest K3 (V = 20 m/s):
   // the volume by the map's two values over the pressure integrals of the two parts, computed here.
   const PatchDamage z = compute_damage(sliding(0.02, 0, 0.3).fields(20), archard(std::nullopt, 1.1e9));
@@ -95,7 +93,7 @@ TEST_CASE("Archard in full sliding on a Hertzian patch: volume per metre rolled 
   double high = 0, low = 0;
   for (double p : s40.h.pressure) (p > 0.88e9 ? high : low) += p * s40.h.grid.element_area();
   CHECK(high > 0.1 * kHertzForce);
-  CHECK(z.wear_volume == rel((kKthSeizure * high + kKthSevere * low) * 0.02 / 1.1e9, 1e-12));
+  CHECK(z.wear_volume == within_rel((kKthSeizure * high + kKthSevere * low) * 0.02 / 1.1e9, 1e-12));
 }
 
 TEST_CASE("Archard on the rolling solver's Hertzian patch at large creepage: k Fn |xi| / H within 1 %") {
@@ -109,11 +107,11 @@ TEST_CASE("Archard on the rolling solver's Hertzian patch at large creepage: k F
     REQUIRE(t.adhesion_area == 0);  // full sliding
     const AreaFields f{h.grid, h.pressure, t.px, t.py, t.sx, t.sy, 10.0, c, t.fx, t.fy, t.mz};
     const PatchDamage d = compute_damage(f, archard(1e-3));
-    CHECK(d.wear_volume == rel(1e-3 * h.force * std::hypot(c.xi, c.eta) / 2.5e9, 0.01));
+    CHECK(d.wear_volume == within_rel(1e-3 * h.force * std::hypot(c.xi, c.eta) / 2.5e9, 0.01));
     // The local T gamma / A summed is the solver's frictional work per metre rolled (slip opposes traction).
     double sum = 0;
     for (double v : d.tgamma_density) sum += v * h.grid.element_area();
-    CHECK(sum == rel(t.power_per_speed, 1e-9));
+    CHECK(sum == within_rel(t.power_per_speed, 1e-9));
   }
 }
 
@@ -136,7 +134,7 @@ TEST_CASE("T gamma of a partially slipping Hertzian patch converges to its frict
     }
     CHECK(gap[1] > 0);
     CHECK(gap[1] < 0.04);
-    CHECK(gap[1] / gap[0] == rel(0.5, 0.1));
+    CHECK(gap[1] / gap[0] == within_rel(0.5, 0.1));
   }
 }
 
@@ -147,10 +145,10 @@ TEST_CASE("USFD in the mild regime: volume per metre rolled = 5.3e-9 mu |w| Fn /
   o.wear.model = WearModel::usfd;
   const PatchDamage d = compute_damage(s.fields(10), o);
   CHECK(d.wear_coefficient.empty());
-  CHECK(d.wear_volume == rel(5.3e-9 * 0.3 * 0.02 * kHertzForce / kSteelDensity, 0.01));
-  CHECK(d.wear_volume == rel(5.3e-9 * 0.3 * 0.02 * s.h.force / kSteelDensity, 1e-12));  // the sampled load
+  CHECK(d.wear_volume == within_rel(5.3e-9 * 0.3 * 0.02 * kHertzForce / kSteelDensity, 0.01));
+  CHECK(d.wear_volume == within_rel(5.3e-9 * 0.3 * 0.02 * s.h.force / kSteelDensity, 1e-12));  // the sampled load
   // The area's T gamma / A = |Fx| |xi| / A: mu Fn |xi| / (pi a b) = 2 mu p0 |xi| / 3 = 4 N/mm^2 (grid within 1 %).
-  CHECK(d.Tgamma_per_area == rel(2.0 / 3.0 * 0.3 * kP0 * 0.02, 0.01));
+  CHECK(d.Tgamma_per_area == within_rel(2.0 / 3.0 * 0.3 * kP0 * 0.02, 0.01));
   CHECK(d.usfd_regime == UsfdRegime::mild);
 }
 
@@ -164,11 +162,11 @@ TEST_CASE("Ekberg's FI_surf of a patch: mu - 2 A k / (3 Fz) with the grid's cont
   for (double p : s.h.pressure)
     if (p > 0) area += dA, fz += p * dA;
   REQUIRE(d.fi_surf);
-  CHECK(d.traction_coefficient == rel(0.25, 1e-12));
-  CHECK(*d.fi_surf == rel(0.25 - 2 * area * 200e6 / (3 * fz), 1e-12));
-  CHECK(*d.fi_surf == rel(0.25 - 200e6 / kP0, 0.01));
-  CHECK(d.a * d.b * std::numbers::pi == rel(area, 1e-12));
-  CHECK(d.a / d.b == rel(kA / kB, 0.03));  // the extents' ratio
+  CHECK(d.traction_coefficient == within_rel(0.25, 1e-12));
+  CHECK(*d.fi_surf == within_rel(0.25 - 2 * area * 200e6 / (3 * fz), 1e-12));
+  CHECK(*d.fi_surf == within_rel(0.25 - 200e6 / kP0, 0.01));
+  CHECK(d.a * d.b * std::numbers::pi == within_rel(area, 1e-12));
+  CHECK(d.a / d.b == within_rel(kA / kB, 0.03));  // the extents' ratio
 }
 
 TEST_CASE("compute_damage refuses bad fields, naming them") {
@@ -307,10 +305,10 @@ TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) o
         const PatchDamage d = compute_damage(area_fields(pc), {});
         const halfspace::Creepages& c = r.creepage;
         CHECK(std::abs(fx * c.xi) + std::abs(fy * c.eta) > 1);  // a case with creep work
-        CHECK(d.Tgamma == rel(std::abs(fx * c.xi) + std::abs(fy * c.eta), 1e-9));
-        CHECK(d.Tgamma_spin - d.Tgamma == rel(std::abs(r.mz * c.phi), 1e-9));
+        CHECK(d.Tgamma == within_rel(std::abs(fx * c.xi) + std::abs(fy * c.eta), 1e-9));
+        CHECK(d.Tgamma_spin - d.Tgamma == within_rel(std::abs(r.mz * c.phi), 1e-9));
         CHECK(d.Tgamma_spin > d.Tgamma);
-        CHECK(d.normal_force == rel(pc.solution.force, 1e-12));
+        CHECK(d.normal_force == within_rel(pc.solution.force, 1e-12));
         // The work dissipated by the slip is the creep forces' work against the rigid slip, which varies
         // across the area beyond the linear field: within a few % of sum -(p . w) over the elements.
         double work_rigid = 0, dissipated = 0;
@@ -318,7 +316,7 @@ TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) o
           work_rigid -= (t.px[k] * r.rigid_x[k] + t.py[k] * r.rigid_y[k]) * g.element_area();
           dissipated += d.tgamma_density[k] * g.element_area();
         }
-        CHECK(dissipated == rel(t.power_per_speed, 1e-9));
+        CHECK(dissipated == within_rel(t.power_per_speed, 1e-9));
         // The fields sit beside the area's own (p.Tgamma, p.wear_volume): no name in common.
         Recorder area_rec, damage_rec;
         describe(pc, area_rec);

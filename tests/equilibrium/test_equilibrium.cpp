@@ -11,6 +11,7 @@
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/wheelset/wheelset.hpp"
+#include "approx.hpp"
 
 #include <Eigen/Geometry>
 #include <doctest/doctest.h>
@@ -21,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -114,12 +116,12 @@ TEST_CASE("rigid reference = both wheels touching, by an independent kinematic c
     const Eigen::Vector3d centre(0, y, r.z);
     for (int s : {kLeft, kRight}) {
       const RigidWheel& w = r.wheel[s];
-      CHECK(w.normal.norm() == doctest::Approx(1).epsilon(1e-12));
+      CHECK(w.normal.norm() == within_rel(1, 1e-12));
       CHECK(std::abs(w.point.y() - g.side[s].rail.y[w.line]) <= 1e-15);
       F += w.normal_force * w.normal;
       M += (w.point - centre).cross(w.normal_force * w.normal);
     }
-    CHECK(F.z() == doctest::Approx(kQ).epsilon(1e-12));
+    CHECK(F.z() == within_rel(kQ, 1e-12));
     CHECK(std::abs(M.x()) <= 1e-9 * kQ);
     CHECK(r.Y == doctest::Approx(-F.y()).epsilon(1e-12).scale(kQ));
     CHECK(std::abs(r.Mz) <= 1e-9 * kQ);  // yaw 0
@@ -420,7 +422,7 @@ TEST_CASE("trajectory: a step that fails warm is solved cold, with the result of
   ContactRequest req;
   req.tolerance = tr.options().tolerance;
   const ContactResult cold = evaluate_contact(ws->contact_model(), {pose.y, pose.z - 1e-6, pose.roll, pose.yaw}, *cold_ws, req);
-  CHECK(warm.force.z() == doctest::Approx(cold.force.z()).epsilon(1e-9));
+  CHECK(warm.force.z() == within_rel(cold.force.z(), 1e-9));
 
   REQUIRE(tr.wheel({kLeft, 1e-3, 0.002, 0, 80e3}).converged);
   poison();
@@ -428,7 +430,7 @@ TEST_CASE("trajectory: a step that fails warm is solved cold, with the result of
   REQUIRE_NOTHROW(w = tr.wheel({kLeft, 1.2e-3, 0.002, 0, 85e3}));
   CHECK(w.converged);
   const WheelResult c = solve_wheel(ws->contact_model(), {kLeft, 1.2e-3, 0.002, 0, 85e3}, *cold_ws);
-  CHECK(w.z == doctest::Approx(c.z).epsilon(1e-6));
+  CHECK(w.z == within_rel(c.z, 1e-6));
 }
 
 // A trajectory's wheel step checks its case before the side selects the last approaches (an out-of-range side indexed

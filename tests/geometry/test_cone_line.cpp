@@ -7,6 +7,7 @@
 // linear, so g is convex (dY > 0), concave (dY < 0) or linear (dY = 0): its minimum is found by ternary search and
 // the roots by bisection on either side. alpha is the projection of the root on the segment.
 #include "wrc/geometry/cone_line.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,6 +16,8 @@
 #include <random>
 #include <vector>
 
+using wrc::test::within_abs;
+using wrc::test::within_rel;
 namespace {
 
 using ld = long double;
@@ -212,11 +215,12 @@ TEST_CASE("degenerate cases of the closed form") {
     // Cylinder of radius 0.45 between y = 0.7 and 0.8; the line 1 mm inside: x = +-sqrt(0.45^2 - 0.449^2).
     const int n = wrc::cone_line_intersections(f, 0.75, -0.449, 0.70, -0.45, 0.80, -0.45, r);
     REQUIRE(n == 2);
-    const double x = std::sqrt(0.45 * 0.45 - 0.449 * 0.449);
-    CHECK(r[0].x == doctest::Approx(-x).epsilon(1e-14));
-    CHECK(r[1].x == doctest::Approx(x).epsilon(1e-14));
+    const double x = std::sqrt((0.45 - 0.449) * (0.45 + 0.449));  // factored: no cancellation in the reference
+    // x^2 = r^2 - z^2 from r and z loses ~eps (r^2 + z^2) / (2 x) = 1.5e-15 m to rounding (measured 1.2e-15 m).
+    CHECK(r[0].x == within_abs(-x, 3e-15));
+    CHECK(r[1].x == within_abs(x, 3e-15));
     CHECK(r[0].alpha == r[1].alpha);
-    CHECK(r[0].alpha == doctest::Approx(0.5));
+    CHECK(r[0].alpha == within_rel(0.5, 1e-5));
     // Tangent line (d = 0 exactly): both roots at x = 0.
     const auto t = wrc::cone_line_terms(f, 0.75, -0.45, 0.70, -0.45, 0.80, -0.45);
     CHECK(t.d == 0);
@@ -232,8 +236,8 @@ TEST_CASE("degenerate cases of the closed form") {
     REQUIRE(n == 2);
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector3d p = f.to_wheelset({r[i].x, 0.75, -0.449});
-      CHECK(std::hypot(p.x(), p.z()) == doctest::Approx(0.45).epsilon(1e-13));
-      CHECK(r[i].alpha == doctest::Approx((p.y() - 0.70) / 0.10).epsilon(1e-12));
+      CHECK(std::hypot(p.x(), p.z()) == within_rel(0.45, 1e-13));
+      CHECK(r[i].alpha == within_rel((p.y() - 0.70) / 0.10, 1e-12));
     }
   }
   SUBCASE("flat ring: one crossing of the ring's plane when yawed") {
@@ -242,8 +246,8 @@ TEST_CASE("degenerate cases of the closed form") {
     const int n = wrc::cone_line_intersections(f, 0.75, -0.45, 0.75, -0.44, 0.75, -0.46, r);
     REQUIRE(n == 1);
     const Eigen::Vector3d p = f.to_wheelset({r[0].x, 0.75, -0.45});
-    CHECK(p.y() == doctest::Approx(0.75).epsilon(1e-14));
-    CHECK(std::hypot(p.x(), p.z()) == doctest::Approx(0.44 + 0.02 * r[0].alpha).epsilon(1e-12));
+    CHECK(p.y() == within_rel(0.75, 1e-14));
+    CHECK(std::hypot(p.x(), p.z()) == within_rel(0.44 + 0.02 * r[0].alpha, 1e-12));
   }
   SUBCASE("flat ring, zero yaw, line off its plane: roots at eps = +-pi/2 where both alpha equations degenerate") {
     const wrc::PoseFrame f(wrc::Pose{0, 0, 0.0, 0.0});

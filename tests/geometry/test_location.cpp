@@ -5,6 +5,7 @@
 #include "reference_solid.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/location.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+using wrc::test::within_abs;
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -191,8 +194,8 @@ TEST_CASE("line-level degenerate cases") {
       REQUIRE(st.segments(kLeft).size() == 1);
       const Segment& g = st.segments(kLeft)[0];
       const double x = std::sqrt(0.46 * 0.46 - 0.455 * 0.455);
-      CHECK(g.x_t == doctest::Approx(-x).epsilon(1e-14));
-      CHECK(g.x_l == doctest::Approx(x).epsilon(1e-14));
+      CHECK(g.x_t == within_rel(-x, 1e-14));
+      CHECK(g.x_l == within_rel(x, 1e-14));
       CHECK(g.cone_t == 1);  // cone 1 joins points 0.74 and 0.75 (cone 0 is the closing disc)
       CHECK(g.cone_l == 1);
     }
@@ -203,7 +206,7 @@ TEST_CASE("line-level degenerate cases") {
     locate_contact(m, Pose{}, st, brute);
     REQUIRE(st.segments(kLeft).size() == 1);
     const double x = std::sqrt(0.46 * 0.46 - 0.455 * 0.455);  // the limit from y < 0.75 (radius 0.46)
-    CHECK(st.segments(kLeft)[0].x_l == doctest::Approx(x).epsilon(1e-14));
+    CHECK(st.segments(kLeft)[0].x_l == within_rel(x, 1e-14));
     // Yawed, the same line crosses the ring's plane once: entry through the ring, exit through a cone.
     locate_contact(m, Pose{0, 0, 0, 0.01}, st, brute);
     REQUIRE(st.segments(kLeft).size() == 1);
@@ -225,7 +228,7 @@ TEST_CASE("line-level degenerate cases") {
       // The end on the disc lies in its plane y_w = 0.80.
       const PoseFrame f(Pose{0, 0, 0, 0.02});
       const double x_disc = g.cone_t == end_disc ? g.x_t : g.x_l;
-      CHECK(f.to_wheelset({x_disc, 0.7997, -0.449}).y() == doctest::Approx(0.80).epsilon(1e-13));
+      CHECK(f.to_wheelset({x_disc, 0.7997, -0.449}).y() == within_rel(0.80, 1e-13));
     }
   }
   SUBCASE("tangent line (d = 0): a zero-length segment, reported as the conditions d >= 0 say") {
@@ -269,10 +272,10 @@ TEST_CASE("patches: connectivity, two-point contact, nominal point and normal") 
         for (int i = pa.first_segment; i < pa.first_segment + pa.segment_count; ++i) longest = std::max(longest, segs[i].length());
         const Segment& L = segs[pa.longest];
         CHECK(L.length() == longest);
-        CHECK(pa.point.x() == doctest::Approx(0.5 * (L.x_t + L.x_l)));
+        CHECK(pa.point.x() == within_rel(0.5 * (L.x_t + L.x_l), 1e-5));
         CHECK(pa.point.y() == L.y);
         CHECK(pa.point.z() == L.z);
-        CHECK(pa.normal.norm() == doctest::Approx(1.0).epsilon(1e-12));
+        CHECK(pa.normal.norm() == within_rel(1.0, 1e-12));
         CHECK(pa.normal.z() < 0);  // the wheel's outward normal at a rail contact points down, toward the rail
         CHECK(pa.depth >= -1e-12);  // the nominal point is inside the wheel
         for (int i = pa.first_segment + 1; i < pa.first_segment + pa.segment_count; ++i)
@@ -338,7 +341,7 @@ TEST_CASE("model: closed wheel, ordered lines, cone data, constant-slope resampl
     CHECK(w.y.back() == w.y[w.y.size() - 2]);
     CHECK(std::is_sorted(w.y.begin(), w.y.end()));
     CHECK(std::is_sorted(m.side[s].rail.y.begin(), m.side[s].rail.y.end()));
-    CHECK(m.side[s].coarse->dilation == doctest::Approx(cell_dilation(test::synthetic_rail(1e-3), 8)));
+    CHECK(m.side[s].coarse->dilation == within_rel(cell_dilation(test::synthetic_rail(1e-3), 8), 1e-5));
     // Every fine line belongs to exactly one cell, within `dilation` of its coarse line.
     const CoarseLevel& c = *m.side[s].coarse;
     int covered = 0;
@@ -351,15 +354,15 @@ TEST_CASE("model: closed wheel, ordered lines, cone data, constant-slope resampl
     CHECK(covered == m.side[s].rail.count());
   }
   // Mirror images.
-  CHECK(m.side[kLeft].wheel.y[5] == doctest::Approx(-m.side[kRight].wheel.y[m.side[kRight].wheel.y.size() - 6]));
+  CHECK(m.side[kLeft].wheel.y[5] == within_rel(-m.side[kRight].wheel.y[m.side[kRight].wheel.y.size() - 6], 1e-5));
   // Cone data.
   const Cone c{0.70, -0.45, 0.80, -0.44};
-  CHECK(c.radius_at(0.75) == doctest::Approx(0.445));
-  CHECK(c.slope_angle() == doctest::Approx(std::atan2(-0.01, 0.10)));
+  CHECK(c.radius_at(0.75) == within_rel(0.445, 1e-5));
+  CHECK(c.slope_angle() == within_rel(std::atan2(-0.01, 0.10), 1e-5));
   double ny = 0, nr = 0;
   c.meridian_normal(ny, nr);
   CHECK(nr > 0);
-  CHECK(ny * 0.10 + nr * (-0.01) == doctest::Approx(0.0).epsilon(1e-15));  // normal to the generatrix
+  CHECK(ny * 0.10 + nr * (-0.01) == within_abs(0.0, 1e-15));  // normal to the generatrix (m)
   // Constant slope: the tangent turns by about slope_step between kept points, at most max_step apart.
   const Profile fine = test::synthetic_wheel(0.05e-3);
   const Profile cs = resample_constant_slope(fine, 0.01, 1e-3);

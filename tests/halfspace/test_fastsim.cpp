@@ -4,6 +4,7 @@
 
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/error.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -11,6 +12,7 @@
 #include <numbers>
 #include <sstream>
 
+using wrc::test::within_rel;
 using namespace wrc::halfspace;
 using wrc::test::hertz_patch;
 using wrc::test::rolling_problem;
@@ -33,9 +35,11 @@ TEST_CASE("FASTSIM in the linear limit: Kalker's Fx, Fy (eta and phi) by constru
     CAPTURE(b);
     CHECK(x.adhesion_fraction() > 0.995);  // the trailing edge's sampled pressure can be tiny
     // The sampled ellipse holds 24 elements on its smaller semi-axis: its area differs from pi a b by < 1 %.
-    CHECK(x.fx == doctest::Approx(kx.fx).epsilon(0.015));
-    CHECK(y.fy == doctest::Approx(ky.fy).epsilon(0.015));
-    CHECK(s.fy == doctest::Approx(ks.fy).epsilon(0.015));
+    CHECK(x.fx == within_rel(kx.fx, 0.015));
+    CHECK(y.fy == within_rel(ky.fy, 0.015));
+    // The spin force weighs the patch's rim more: measured 1.54 % low on the circle (a = b, 24 elements), a
+    // discretisation error that shrinks with the grid (5.1 % at 12 elements, 0.62 % at 48, 0.20 % at 96).
+    CHECK(s.fy == within_rel(ks.fy, 0.016));
     CHECK(std::abs(x.fy) < 1e-9 * std::abs(x.fx));
   }
 }
@@ -80,7 +84,7 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
                                                  std::sqrt(area / (std::numbers::pi * aspect)), kSteel);
     expected += -1e-8 * strips / L.x;
   }
-  CHECK(s.fx == doctest::Approx(expected).epsilon(1e-9));
+  CHECK(s.fx == within_rel(expected, 1e-9));
   // Apart, each region gives its own share: FASTSIM's strips do not interact.
   std::vector<double> disc = p;
   for (int j = 0; j < g.ny; ++j)
@@ -91,7 +95,7 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
   std::vector<double> square = p;
   for (int k = 0; k < g.size(); ++k) square[k] -= disc[k];
   pb.pressure = square;
-  CHECK(fd + solve_fastsim(kSteel, pb).fx == doctest::Approx(s.fx).epsilon(1e-12));
+  CHECK(fd + solve_fastsim(kSteel, pb).fx == within_rel(s.fx, 1e-12));
 }
 
 TEST_CASE("FASTSIM in partial slip: every slipping element's traction opposes its slip and sits on the bound") {
@@ -105,8 +109,8 @@ TEST_CASE("FASTSIM in partial slip: every slipping element's traction opposes it
       if (s.state[k] != kSlip) continue;
       ++slipping;
       const double p = std::hypot(s.px[k], s.py[k]), sl = std::hypot(s.sx[k], s.sy[k]);
-      CHECK(p == doctest::Approx(0.3 * h.pressure[k]).epsilon(1e-12));
-      CHECK((s.px[k] * s.sx[k] + s.py[k] * s.sy[k]) / (p * sl) == doctest::Approx(-1).epsilon(1e-9));
+      CHECK(p == within_rel(0.3 * h.pressure[k], 1e-12));
+      CHECK((s.px[k] * s.sx[k] + s.py[k] * s.sy[k]) / (p * sl) == within_rel(-1, 1e-9));
     }
     CHECK(slipping > 20);
     CHECK(s.adhesion_fraction() > 0.1);
@@ -121,8 +125,8 @@ TEST_CASE("FASTSIM in full sliding: |F| = mu_k N opposite to the slip, power nev
     const TangentialSolution s = solve_fastsim(kSteel, pb);
     const double F = std::hypot(s.fx, s.fy);
     CAPTURE(angle);
-    CHECK(F == doctest::Approx(0.25 * h.force).epsilon(0.02));
-    CHECK((s.fx * std::cos(angle) + s.fy * std::sin(angle)) / F == doctest::Approx(-1).epsilon(1e-4));
+    CHECK(F == within_rel(0.25 * h.force, 0.02));
+    CHECK((s.fx * std::cos(angle) + s.fy * std::sin(angle)) / F == within_rel(-1, 1e-4));
     CHECK(s.power_per_speed > 0);
     for (int k = 0; k < h.grid.size(); ++k) CHECK(-(s.px[k] * s.sx[k] + s.py[k] * s.sy[k]) >= 0);
   }
@@ -142,7 +146,7 @@ TEST_CASE("FASTSIM against the exact solver on a Hertzian patch: equal in the li
     const double fe = exact.solve(pb).fx / (mu * N), ff = solve_fastsim(kSteel, pb).fx / (mu * N);
     table << "  " << r << " " << -fe << " " << -ff << " " << (fe - ff) << "\n";
     worst = std::max(worst, std::abs(fe - ff));
-    if (r <= 0.01) CHECK(ff == doctest::Approx(fe).epsilon(0.03));  // both the linear theory
+    if (r <= 0.01) CHECK(ff == within_rel(fe, 0.03));  // both the linear theory
   }
   MESSAGE(table.str());
   CHECK(worst < 0.08);  // the simplified theory's known error in the transition (measured: 5.8 % of mu N)

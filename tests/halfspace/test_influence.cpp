@@ -4,6 +4,7 @@
 #include "wrc/core/error.hpp"
 
 #include "ray_integral.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -14,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+using wrc::test::within_rel;
 using namespace wrc::halfspace;
 
 namespace {
@@ -43,7 +45,7 @@ TEST_CASE("centre displacement of a uniformly loaded square: 8 a ln(1 + sqrt 2) 
   for (double a : {1e-4, 2.5e-3, 1.0}) {
     const double p = 1e9;
     const double expected = 8 * a * std::log(1 + std::sqrt(2.0)) * (1 - m.nu * m.nu) * p / (std::numbers::pi * m.E);
-    CHECK(rectangle_displacement(m, 0, 0, a, a, p) == doctest::Approx(expected).epsilon(1e-14));
+    CHECK(rectangle_displacement(m, 0, 0, a, a, p) == within_rel(expected, 1e-14));
   }
 }
 
@@ -57,7 +59,7 @@ TEST_CASE("Love's closed form agrees with an independent quadrature inside, on e
     const double quad = wrc::test::ray_integral(pt[0], pt[1], a, b, [](double) { return 1.0; });  // 1 / r
     CAPTURE(pt[0]);
     CAPTURE(pt[1]);
-    CHECK(exact == doctest::Approx(quad).epsilon(1e-11));
+    CHECK(exact == within_rel(quad, 1e-11));
   }
 }
 
@@ -69,9 +71,9 @@ TEST_CASE("influence function symmetries") {
     const double x = U(rng), y = U(rng);
     const double v = rectangle_potential(x, y, a, b);
     CHECK(v > 0);
-    CHECK(rectangle_potential(-x, y, a, b) == doctest::Approx(v).epsilon(1e-13));
-    CHECK(rectangle_potential(x, -y, a, b) == doctest::Approx(v).epsilon(1e-13));
-    CHECK(rectangle_potential(y, x, b, a) == doctest::Approx(v).epsilon(1e-13));  // transpose
+    CHECK(rectangle_potential(-x, y, a, b) == within_rel(v, 1e-13));
+    CHECK(rectangle_potential(x, -y, a, b) == within_rel(v, 1e-13));
+    CHECK(rectangle_potential(y, x, b, a) == within_rel(v, 1e-13));  // transpose
   }
   // Superposition: the 2a x 2b rectangle is the sum of its four quarters.
   for (int t = 0; t < 20; ++t) {
@@ -81,7 +83,7 @@ TEST_CASE("influence function symmetries") {
                             rectangle_potential(x + a / 2, y - b / 2, a / 2, b / 2) +
                             rectangle_potential(x - a / 2, y + b / 2, a / 2, b / 2) +
                             rectangle_potential(x + a / 2, y + b / 2, a / 2, b / 2);
-    CHECK(whole == doctest::Approx(quarters).epsilon(1e-12));
+    CHECK(whole == within_rel(quarters, 1e-12));
   }
 }
 
@@ -107,7 +109,7 @@ TEST_CASE("InfluenceTable holds the coefficients of the grid offsets") {
   const InfluenceTable t(0.2e-3, 0.3e-3, 9, 7);
   for (int n = -6; n <= 6; ++n)
     for (int m = -8; m <= 8; ++m)
-      CHECK(t(m, n) == doctest::Approx(rectangle_potential(m * 0.2e-3, n * 0.3e-3, 0.1e-3, 0.15e-3)).epsilon(1e-13));
+      CHECK(t(m, n) == within_rel(rectangle_potential(m * 0.2e-3, n * 0.3e-3, 0.1e-3, 0.15e-3), 1e-13));
   CHECK_THROWS_AS(InfluenceTable(0, 1e-3, 3, 3), wrc::Error);
   CHECK_THROWS_AS(InfluenceTable(1e-3, NAN, 3, 3), wrc::Error);
 }

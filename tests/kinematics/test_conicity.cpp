@@ -8,6 +8,7 @@
 //    d2y/dx2 = -Δr(y) / (2 e r0): its wavelength, turning points and amplitude;
 //  - bad input: each a wrc::Error naming what is wrong.
 #include "wrc/kinematics/conicity.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -16,6 +17,7 @@
 #include <numbers>
 #include <string>
 
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -66,11 +68,11 @@ TEST_CASE("a pure cone pair: tan(gamma_e) = gamma at every amplitude, by every m
         const ConicityResult r = equivalent_conicity(d, amplitudes({0.5e-3, 1e-3, 3e-3, 6e-3}, m));
         CHECK(r.centre == doctest::Approx(-offset / (2 * gamma)).epsilon(1e-12).scale(1e-3));
         for (std::size_t k = 0; k < r.yhat.size(); ++k) {
-          CHECK(r.tan_gamma[k] == doctest::Approx(gamma).epsilon(1e-9));
-          CHECK(r.y_max[k] - r.y_min[k] == doctest::Approx(2 * r.yhat[k]).epsilon(1e-9));
+          CHECK(r.tan_gamma[k] == within_rel(gamma, 1e-9));
+          CHECK(r.y_max[k] - r.y_min[k] == within_rel(2 * r.yhat[k], 1e-9));
           CHECK(0.5 * (r.y_max[k] + r.y_min[k]) == doctest::Approx(r.centre).scale(1e-3).epsilon(1e-9));
           // Klingel: lambda = 2 pi sqrt(e r0 / tan), e = 0.75 m, r0 = 0.45 m by default.
-          CHECK(r.wavelength[k] == doctest::Approx(2 * std::numbers::pi * std::sqrt(0.75 * 0.45 / gamma)).epsilon(1e-9));
+          CHECK(r.wavelength[k] == within_rel(2 * std::numbers::pi * std::sqrt(0.75 * 0.45 / gamma), 1e-9));
         }
       }
     }
@@ -95,8 +97,8 @@ TEST_CASE("a polynomial Δr: each method against its reference computed here") {
     }
     I *= pi / n / 3;
     CAPTURE(a);
-    CHECK(r.tan_gamma[k] == doctest::Approx(pi * pi / (I * I)).epsilon(2e-6));
-    CHECK(r.y_min[k] == doctest::Approx(-a).epsilon(1e-9));
+    CHECK(r.tan_gamma[k] == within_rel(pi * pi / (I * I), 2e-6));
+    CHECK(r.y_min[k] == within_rel(-a, 1e-9));
   }
   const ConicityResult h = equivalent_conicity(d, amplitudes(yhat, ConicityMethod::harmonic));
   const ConicityResult q = equivalent_conicity(d, amplitudes(yhat, ConicityMethod::regression));
@@ -104,9 +106,9 @@ TEST_CASE("a polynomial Δr: each method against its reference computed here") {
   for (std::size_t k = 0; k < yhat.size(); ++k) {
     const double a = yhat[k];
     CAPTURE(a);
-    CHECK(h.tan_gamma[k] == doctest::Approx(g + 0.75 * c * a * a).epsilon(2e-6));
-    CHECK(q.tan_gamma[k] == doctest::Approx(g + 0.6 * c * a * a).epsilon(2e-6));
-    CHECK(s.tan_gamma[k] == doctest::Approx(g + c * a * a).epsilon(2e-6));
+    CHECK(h.tan_gamma[k] == within_rel(g + 0.75 * c * a * a, 2e-6));
+    CHECK(q.tan_gamma[k] == within_rel(g + 0.6 * c * a * a, 2e-6));
+    CHECK(s.tan_gamma[k] == within_rel(g + c * a * a, 2e-6));
   }
 }
 
@@ -146,10 +148,10 @@ TEST_CASE("the integral method against a time integration of Klingel's kinematic
     CAPTURE(o.yhat[k]);
     REQUIRE(turns == 2);
     const double lambda = x_turn;
-    CHECK(lambda == doctest::Approx(r.wavelength[k]).epsilon(1e-6));
-    CHECK(y_low == doctest::Approx(r.y_min[k]).epsilon(1e-6));
-    CHECK(0.5 * (r.y_max[k] - y_low) == doctest::Approx(o.yhat[k]).epsilon(1e-6));
-    CHECK(r.tan_gamma[k] == doctest::Approx(e * r0 * std::pow(2 * std::numbers::pi / lambda, 2)).epsilon(2e-6));
+    CHECK(lambda == within_rel(r.wavelength[k], 1e-6));
+    CHECK(y_low == within_rel(r.y_min[k], 1e-6));
+    CHECK(0.5 * (r.y_max[k] - y_low) == within_rel(o.yhat[k], 1e-6));
+    CHECK(r.tan_gamma[k] == within_rel(e * r0 * std::pow(2 * std::numbers::pi / lambda, 2), 2e-6));
   }
 }
 
@@ -182,6 +184,6 @@ TEST_CASE("bad Δr tables and amplitudes are errors that say what is wrong") {
   // the centre, at a rising zero (+-3.54 mm); a small motion oscillates about it.
   const DeltaRFunction w = tabulate([](double y) { return -0.1 * y + 8000 * y * y * y; }, -10e-3, 10e-3, 0.1e-3);
   const ConicityResult rw = equivalent_conicity(w, amplitudes({0.5e-3}));
-  CHECK(std::abs(rw.centre) == doctest::Approx(std::sqrt(0.1 / 8000)).epsilon(1e-3));
-  CHECK(rw.y_max[0] - rw.y_min[0] == doctest::Approx(1e-3).epsilon(1e-9));
+  CHECK(std::abs(rw.centre) == within_rel(std::sqrt(0.1 / 8000), 1e-3));
+  CHECK(rw.y_max[0] - rw.y_min[0] == within_rel(1e-3, 1e-9));
 }

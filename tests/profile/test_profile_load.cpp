@@ -6,6 +6,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/profile/load.hpp"
 #include "wrc/profile/reader.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,6 +20,8 @@
 
 #include <unistd.h>
 
+using wrc::test::within_abs;
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -102,7 +105,7 @@ TEST_CASE("load_profile: a .lua definition runs through the loader given, with e
     const double y = -h.y_mm[i] * 1e-3, z = h.z_mm[i] * 1e-3 + 0.002;
     const auto at = std::find_if(p.y.begin(), p.y.end(), [&](double v) { return std::abs(v - y) < 1e-15; });
     REQUIRE_MESSAGE(at != p.y.end(), "no point at y = " << y);
-    CHECK(p.z[at - p.y.begin()] == doctest::Approx(z).epsilon(1e-14));
+    CHECK(p.z[at - p.y.begin()] == within_rel(z, 1e-14));
   }
   CHECK(p.source == path);
   CHECK(p.kind == ProfileKind::rail);
@@ -117,8 +120,8 @@ TEST_CASE("load_profile: a file never reaches the definition loader, nor does a 
   CHECK(fake.paths.empty());
   REQUIRE(p.size() == h.y_mm.size());
   for (std::size_t i = 0; i < h.y_mm.size(); ++i) {
-    CHECK(p.y[i] == doctest::Approx(h.y_mm[i] * 1e-3).epsilon(1e-12));
-    CHECK(p.z[i] == doctest::Approx(h.z_mm[i] * 1e-3).epsilon(1e-12));
+    CHECK(p.y[i] == within_abs(h.y_mm[i] * 1e-3, 1e-15));  // m; the points include y = 0
+    CHECK(p.z[i] == within_abs(h.z_mm[i] * 1e-3, 1e-15));
   }
   CHECK(p.transforms.at(0) == "read by 'text'");
   // The same points in a file named .lua, given to the text reader: read, not run.

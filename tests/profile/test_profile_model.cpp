@@ -3,6 +3,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/profile/load.hpp"
 #include "wrc/profile/profile.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -11,6 +12,7 @@
 #include <limits>
 #include <string>
 
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -65,17 +67,17 @@ TEST_CASE("make_profile validates, drops duplicates, reverses, and locates a fol
 TEST_CASE("resampling along the arc and along y") {
   // A right-angle polyline: 3 mm along y then 4 mm down: arc length 7 mm.
   const Profile p = make_profile(ProfileKind::rail, {0, 3e-3, 3e-3 + 1e-12, 3e-3 + 2e-12}, {0, 0, -2e-3, -4e-3}, "L", "src");
-  CHECK(arc_length(p) == doctest::Approx(7e-3).epsilon(1e-9));
+  CHECK(arc_length(p) == within_rel(7e-3, 1e-9));
   const Profile a = resample_arc(p, 0.5e-3);
   CHECK(a.size() == 15);  // 7 mm / 0.5 mm = 14 intervals
   for (std::size_t i = 0; i + 1 < a.size(); ++i)
-    CHECK(std::hypot(a.y[i + 1] - a.y[i], a.z[i + 1] - a.z[i]) == doctest::Approx(0.5e-3).epsilon(1e-6));
+    CHECK(std::hypot(a.y[i + 1] - a.y[i], a.z[i + 1] - a.z[i]) == within_rel(0.5e-3, 1e-6));
   CHECK(a.y.back() == p.y.back());
   CHECK(a.z.back() == p.z.back());
   const Profile y = resample_y(make_profile(ProfileKind::rail, {0, 1e-3, 2e-3, 2.5e-3}, {0, 1e-3, 0, 0}, "v", "src"), 0.4e-3);
   REQUIRE(y.size() == 8);  // 0, 0.4, ..., 2.4 and the end 2.5
-  CHECK(y.z[1] == doctest::Approx(0.4e-3));
-  CHECK(y.z[3] == doctest::Approx(0.8e-3));  // 1.2 mm on the falling side
+  CHECK(y.z[1] == within_rel(0.4e-3, 1e-5));
+  CHECK(y.z[3] == within_rel(0.8e-3, 1e-5));  // 1.2 mm on the falling side
   CHECK(y.y.back() == 2.5e-3);
   CHECK_ERROR(resample_arc(p, 0), "step must be a positive");
   CHECK_ERROR(resample_y(p, -1), "step must be a positive");
@@ -85,7 +87,7 @@ TEST_CASE("finish_profile: units, extent check, kind, mirrors, crop and shift in
   LoadOptions o;
   o.kind = ProfileKind::rail;
   const Profile mm = finish_profile(raw_arc(50, 30), o, "arc.txt", "text");
-  CHECK(mm.y.back() == doctest::Approx(30e-3 * std::sin(0.6)));
+  CHECK(mm.y.back() == within_rel(30e-3 * std::sin(0.6), 1e-5));
   CHECK(mm.transforms.front() == "read by 'text'");
 
   // Numbers in metres taken as mm: the chord is 1000 times too small.
@@ -94,7 +96,7 @@ TEST_CASE("finish_profile: units, extent check, kind, mirrors, crop and shift in
   LoadOptions om = o;
   om.metres_per_unit = 1.0;
   om.units_text = "m";
-  CHECK(finish_profile(metres, om, "arc.txt", "text").y.back() == doctest::Approx(0.030 * std::sin(0.6)));
+  CHECK(finish_profile(metres, om, "arc.txt", "text").y.back() == within_rel(0.030 * std::sin(0.6), 1e-5));
   // Metres declared but mm given: too large.
   RawProfile declared = raw_arc(50, 30);
   declared.metres_per_unit = 1.0;
@@ -124,7 +126,7 @@ TEST_CASE("finish_profile: units, extent check, kind, mirrors, crop and shift in
   CHECK(s.y.front() >= -0.009 - 1e-12);  // the first point inside the window, shifted by 1 mm
   CHECK(s.y.front() < -0.009 + 0.0007);
   CHECK(s.y.back() <= 0.010 + 0.001 + 1e-12);
-  CHECK(s.z[s.size() / 2] == doctest::Approx(-0.002).epsilon(1e-3));
+  CHECK(s.z[s.size() / 2] == within_rel(-0.002, 1e-3));
   // The crop window cutting the profile in two.
   LoadOptions c = o;
   c.crop = CropWindow{-1, 1, -1, -0.001};  // drops the crown, keeps both flanks
@@ -143,8 +145,8 @@ TEST_CASE("transform_profile keeps a profile's history and applies mirror, crop 
   o.shift_z = 0.5e-3;
   const Profile q = transform_profile(p, o);
   REQUIRE(q.size() == 4);
-  CHECK(q.y.front() == doctest::Approx(-0.02));
-  CHECK(q.z.front() == doctest::Approx(-0.0015));
+  CHECK(q.y.front() == within_rel(-0.02, 1e-5));
+  CHECK(q.z.front() == within_rel(-0.0015, 1e-5));
   CHECK(q.transforms.back() == "reversed to increasing y");
   LoadOptions k;
   k.kind = ProfileKind::rail;

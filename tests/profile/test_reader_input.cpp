@@ -3,6 +3,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/reader.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -14,6 +15,7 @@
 
 #include <unistd.h>
 
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -171,11 +173,11 @@ TEST_CASE("Simpack reader: processing steps in their numbered order") {
   const Profile p = load_profile_file(write("steps.prr", text), {}, {&built_plugins()});
   // Shifted y = i, kept 5..45 by the y bounds (z bounds off: min > max), mirrored: y = -i mm.
   REQUIRE(p.size() == 41);
-  CHECK(p.y.front() == doctest::Approx(-0.045));
-  CHECK(p.y.back() == doctest::Approx(-0.005));
+  CHECK(p.y.front() == within_rel(-0.045, 1e-5));
+  CHECK(p.y.back() == within_rel(-0.005, 1e-5));
   // z: raw 0.01 (i - 25)^2 + 1 (shift), down -> up: z = -(0.01 (i - 25)^2 + 1) mm at y = -i.
-  CHECK(p.z.front() == doctest::Approx(-(0.01 * 400 + 1) * 1e-3));
-  CHECK(p.z[20] == doctest::Approx(-1e-3));  // i = 25
+  CHECK(p.z.front() == within_rel(-(0.01 * 400 + 1) * 1e-3, 1e-5));
+  CHECK(p.z[20] == within_rel(-1e-3, 1e-5));  // i = 25
 }
 
 TEST_CASE("MiniProf reader: bad input") {

@@ -7,6 +7,7 @@
 #include "wrc/profile/spline.hpp"
 
 #include "wrc/core/error.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <numbers>
 
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -70,23 +72,23 @@ TEST_CASE("smooth = 0: the interpolating cubic spline, with the curvature of a s
     CAPTURE(v);
     const double t = s.param_at_y(v);
     CHECK(std::abs(s.at(t).p.x() - v) <= 1e-12);
-    CHECK(surface_curvature(s, ProfileKind::rail, t) == doctest::Approx(1 / 0.013).epsilon(2e-4));
-    CHECK(surface_curvature(s, ProfileKind::wheel, t) == doctest::Approx(-1 / 0.013).epsilon(2e-4));
+    CHECK(surface_curvature(s, ProfileKind::rail, t) == within_rel(1 / 0.013, 2e-4));
+    CHECK(surface_curvature(s, ProfileKind::wheel, t) == within_rel(-1 / 0.013, 2e-4));
   }
   // Mirrored (y -> -y, as p:transform{mirror_y = true} maps it), the crown is still convex.
   const ProfileSpline m = mapped_spline(s, -1, 0.002, 1, 0.0);
   CHECK(m.y_order == -1);
   const double t = m.closest({0.002 - 0.004, s.at(s.param_at_y(0.004)).p.y()});
-  CHECK(surface_curvature(m, ProfileKind::rail, t) == doctest::Approx(1 / 0.013).epsilon(2e-4));
-  CHECK(m.param_at_y(0.002 - 0.004) == doctest::Approx(t).epsilon(1e-9));
+  CHECK(surface_curvature(m, ProfileKind::rail, t) == within_rel(1 / 0.013, 2e-4));
+  CHECK(m.param_at_y(0.002 - 0.004) == within_rel(t, 1e-9));
 }
 
 TEST_CASE("the smoothing length l is the documented low-pass filter 1 / (1 + (l k)^4)") {
   const double ell = 0.2e-3;
-  CHECK(smoothed_amplitude(2 * pi * ell, ell) == doctest::Approx(0.5).epsilon(0.02));
-  CHECK(smoothed_amplitude(4 * pi * ell, ell) == doctest::Approx(1 / (1 + 1 / 16.0)).epsilon(0.02));
-  CHECK(smoothed_amplitude(pi * ell, ell) == doctest::Approx(1 / 17.0).epsilon(0.05));
-  CHECK(smoothed_amplitude(2 * pi * ell, 0.0) == doctest::Approx(1.0).epsilon(1e-9));
+  CHECK(smoothed_amplitude(2 * pi * ell, ell) == within_rel(0.5, 0.02));
+  CHECK(smoothed_amplitude(4 * pi * ell, ell) == within_rel(1 / (1 + 1 / 16.0), 0.02));
+  CHECK(smoothed_amplitude(pi * ell, ell) == within_rel(1 / 17.0, 0.05));
+  CHECK(smoothed_amplitude(2 * pi * ell, 0.0) == within_rel(1.0, 1e-9));
 }
 
 TEST_CASE("a noisy arc: the smoothed curvature is the arc's, the interpolating spline's is noise") {

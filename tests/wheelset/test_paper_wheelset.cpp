@@ -9,6 +9,7 @@
 #include "wrc/lua/host.hpp"
 #include "wrc/profile/reader.hpp"
 #include "wrc/wheelset/wheelset.hpp"
+#include "approx.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 #include <numbers>
 #include <string>
 
+using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
@@ -146,7 +148,7 @@ TEST_CASE("vertical load: the multiplier is the further vertical approach that c
       REQUIRE(c.wheel[kLeft].patches.size() == 1);
       const halfspace::NormalSolution& s = c.wheel[kLeft].patches[0].solution;
       REQUIRE(s.load.control == halfspace::NormalLoad::Control::force);
-      CHECK(c.wheel[kLeft].force.z() == doctest::Approx(F).epsilon(1e-9));
+      CHECK(c.wheel[kLeft].force.z() == within_rel(F, 1e-9));
       return s.approach;
     };
     const double F0 = Fz(w.z);
@@ -155,7 +157,7 @@ TEST_CASE("vertical load: the multiplier is the further vertical approach that c
     REQUIRE(F1 > F0);
     const double a = predicted(F1);
     MESSAGE("y = ", y * 1e3, " mm, contact angle ", w.wheel.angle * 180 / std::numbers::pi, " deg: predicted approach / actual - 1 = ", a / d - 1);
-    CHECK(a == doctest::Approx(d).epsilon(2e-4));
+    CHECK(a == within_rel(d, 2e-4));
   }
   ContactRequest bad;
   const Pose centred{0.0, 0.0, 0.0, 0.0};
@@ -188,7 +190,7 @@ TEST_CASE("solve_wheel: three evaluations from the tread to the flange root") {
     ContactRequest left;
     left.only_side = kLeft;
     const ContactResult fresh = evaluate_contact(model, {y, w.z, 0.0, 0.0}, *work, left);
-    CHECK(fresh.wheel[kLeft].force.z() == doctest::Approx(w.wheel.force.z()).epsilon(1e-8));
+    CHECK(fresh.wheel[kLeft].force.z() == within_rel(w.wheel.force.z(), 1e-8));
   }
 }
 
@@ -228,8 +230,8 @@ TEST_CASE("conformal grids: the elements lie on the rail's fixed lattice, mirror
     return std::array<double, 2>{rail.y[r] + t * (rail.y[r + 1] - rail.y[r]), rail.z[r] + t * (rail.z[r + 1] - rail.z[r])};
   };
   const auto left = point_at(kLeft, model.rail_lattice_origin(kLeft)), right = point_at(kRight, model.rail_lattice_origin(kRight));
-  CHECK(left[0] == doctest::Approx(-right[0]).epsilon(1e-12));
-  CHECK(left[1] == doctest::Approx(right[1]).epsilon(1e-12));
+  CHECK(left[0] == within_rel(-right[0], 1e-12));
+  CHECK(left[1] == within_rel(right[1], 1e-12));
   CHECK(std::abs(std::abs(left[0]) - 0.7175) < 0.04);  // on the rail head, near its centre (gauge 1435 mm)
 }
 
@@ -256,12 +258,12 @@ TEST_CASE("warm starts: the same pose needs no CG iteration, a nearby pose few, 
     CHECK(iterations(again) == 0);
     // On the conformal lattice the start's displacements are the last solve's too: only the check's product is left.
     if (surface == ContactSurface::conformal) CHECK(again.wheel[kLeft].patches[0].solution.products == 1);
-    CHECK(again.wheel[kLeft].force.z() == doctest::Approx(first.wheel[kLeft].force.z()).epsilon(1e-12));
+    CHECK(again.wheel[kLeft].force.z() == within_rel(first.wheel[kLeft].force.z(), 1e-12));
     const ContactResult warm = evaluate_contact(model, near, *work, left);
     work->forget();
     const ContactResult cold = evaluate_contact(model, near, *work, left);
     MESSAGE(name, ": CG iterations warm ", iterations(warm), ", cold ", iterations(cold));
     CHECK(5 * iterations(warm) <= 3 * iterations(cold));
-    CHECK(warm.wheel[kLeft].force.z() == doctest::Approx(cold.wheel[kLeft].force.z()).epsilon(1e-7));
+    CHECK(warm.wheel[kLeft].force.z() == within_rel(cold.wheel[kLeft].force.z(), 1e-7));
   }
 }
