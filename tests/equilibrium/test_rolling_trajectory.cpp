@@ -9,6 +9,7 @@
 //  - the warm steps cost what a time step should: about two contact evaluations (the frictionless step's count) and
 //    at most two Newton iterations of the exact solver's last solve, where a cold solve needs ~6 evaluations and
 //    starts its tangential problem from the coarse grid's solution.
+#include "approx.hpp"
 #include "geometry/geometry_fixtures.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/equilibrium/wheel.hpp"
@@ -23,6 +24,7 @@
 #include <string>
 
 using namespace wrc;
+using wrc::test::within_abs;
 
 namespace {
 
@@ -65,8 +67,8 @@ TractionDifference compare(const PatchContact& a, const PatchContact& b) {
   REQUIRE(s.px.size() == t.px.size());
   REQUIRE(s.grid.nx == t.grid.nx);
   REQUIRE(s.grid.ny == t.grid.ny);
-  REQUIRE(s.grid.x0 == doctest::Approx(t.grid.x0).epsilon(1e-12));
-  REQUIRE(s.grid.y0 == doctest::Approx(t.grid.y0).epsilon(1e-12));
+  REQUIRE(s.grid.x0 == within_abs(t.grid.x0, 1e-12));  // m: the same grid
+  REQUIRE(s.grid.y0 == within_abs(t.grid.y0, 1e-12));
   const double bound = kMu * *std::max_element(b.solution.pressure.begin(), b.solution.pressure.end());
   TractionDifference d;
   for (std::size_t k = 0; k < s.px.size(); ++k) {
