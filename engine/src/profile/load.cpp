@@ -254,7 +254,7 @@ RawProfile read_raw_profile(OptionReader& r) {
 
 // A file's points without `smooth`: the interpolating cubic spline through them (docs/guide/profiles.md, "Profiles
 // as smooth curves": on coarse points it follows the true curve where a polyline puts all curvature in its vertices).
-// Points that no spline can pass through without folding back stay a polyline, with a warning that says so.
+// Points that no spline can pass through without folding back stay a polyline, and p.transforms says so.
 Profile default_spline(Profile p) {
   try {
     return smooth_profile(p, 0.0);
