@@ -8,6 +8,7 @@
 //
 // Times are CPU time of the calling thread (one core), best of `reps`; the dense solver runs only where the
 // potential contact area has at most dense_max elements.
+#include "bench/timing.hpp"
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/wheelset_binding.hpp"
@@ -25,13 +26,9 @@
 #include <string>
 #include <vector>
 
-namespace {
+using wrc::bench::cpu_ms;
 
-double cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
+namespace {
 
 // Best time (ms) of `reps` runs of f; `before` runs untimed ahead of each.
 double best_ms(int reps, const std::function<void()>& f, const std::function<void()>& before = {}) {

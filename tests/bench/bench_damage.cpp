@@ -5,6 +5,7 @@
 // `reps` runs.
 //
 //   bench_damage [reps=21]
+#include "bench/timing.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/damage/damage.hpp"
 #include "wrc/equilibrium/wheel.hpp"
@@ -22,24 +23,10 @@
 #include <functional>
 #include <vector>
 
+using wrc::bench::cpu_ms;
+using wrc::bench::median_ms;
+
 namespace {
-
-double cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
-double median_ms(int reps, const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int r = 0; r < reps; ++r) {
-    const double t0 = cpu_ms();
-    f();
-    t.push_back(cpu_ms() - t0);
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 // vs fast in the same run, CG iteration counts, what the preconditioner and the nested start gain, the FFT
 // library choice, and the Hertz convergence table. Times are CPU time of the calling thread (one core),
 // best of several repetitions (the machine is shared); `quick` as first argument runs a shorter version.
+#include "bench/timing.hpp"
 #include "halfspace/hertz_reference.hpp"
 #include "halfspace/normal_cases.hpp"
 #include "wrc/halfspace/convolution.hpp"
@@ -24,13 +25,9 @@
 using namespace wrc::halfspace;
 using namespace wrc::test;
 
-namespace {
+using wrc::bench::cpu_ms;
 
-double cpu_ms() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
-}
+namespace {
 
 // Best CPU time (ms) of `reps` runs of f, at least `min_ms` of total work.
 double best_ms(const std::function<void()>& f, int reps, double min_ms = 50) {

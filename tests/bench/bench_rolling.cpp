@@ -13,6 +13,7 @@
 //   bench_rolling [reps=7] [quick] [only=1..5]   (only: that section)
 //
 // Times are CPU time of the calling thread (one core), the median of `reps` runs (the machine is shared).
+#include "bench/timing.hpp"
 #include "halfspace/rolling_cases.hpp"
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
@@ -35,24 +36,10 @@
 
 using namespace wrc::halfspace;
 
+using wrc::bench::cpu_ms;
+using wrc::bench::median_ms;
+
 namespace {
-
-double cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
-double median_ms(int reps, const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int r = 0; r < reps; ++r) {
-    const double t0 = cpu_ms();
-    f();
-    t.push_back(cpu_ms() - t0);
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 void run(lua_State* L, const std::string& code) {
   if (luaL_loadstring(L, code.c_str()) != LUA_OK || wrc::lua::pcall_traceback(L, 0, 0) != LUA_OK) {

@@ -7,6 +7,7 @@
 // 100 kN wheel) and a 200 x 100 grid (40 x 20 mm, a long conformal patch), with the traction of a braking wheel
 // (0.3 p in x over the trailing 60 %, a linear rise before it). Times are CPU time of the calling thread (one core),
 // the median of `reps` calls (the machine is shared); per depth = the call's time over its depths.
+#include "bench/timing.hpp"
 #include "wrc/halfspace/subsurface.hpp"
 
 #include <fmt/format.h>
@@ -21,24 +22,10 @@
 
 using namespace wrc::halfspace;
 
+using wrc::bench::cpu_ms;
+using wrc::bench::median_ms;
+
 namespace {
-
-double cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
-double median_ms(int reps, const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int r = 0; r < reps; ++r) {
-    const double t0 = cpu_ms();
-    f();
-    t.push_back(cpu_ms() - t0);
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 struct Patch {
   Grid grid;
