@@ -8,6 +8,7 @@
 -- (ws:cones) there, so the wheel's touching height is the largest of these over the lines (brute force). The flange's
 -- steepest part is found from the profile's points.
 local check = require "wrc.check"
+local H = dofile(os.getenv("WRC_TEST_DATA") .. "/profile/helpers.lua")
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
@@ -30,16 +31,7 @@ local function touch_height(side, y)
 end
 
 -- The steepest part of the S1002 flange face: its tip-side end (slopes within 1 deg of the steepest).
-local wy, wz = wheel:points()
-local steepest, steep_y = 0, nil
-for i = 1, #wy - 1 do
-  if wy[i + 1] <= 0 then steepest = math.max(steepest, math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i])) end
-end
-for i = 1, #wy - 1 do
-  if wy[i + 1] <= 0 and wy[i] > -0.05 and math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i]) >= steepest - math.rad(1) then
-    steep_y = steep_y or wy[i]
-  end
-end
+local steepest, steep_y = H.steepest_flange(wheel)
 
 local y = 20e-3
 local zl, zr = touch_height("left", y), touch_height("right", y)

@@ -9,6 +9,7 @@
 -- whose contact sits beyond the steepest part of the flange is flagged, and the steepest part is found here from the
 -- profile's points.
 local check = require "wrc.check"
+local H = dofile(os.getenv("WRC_TEST_DATA") .. "/profile/helpers.lua")
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
@@ -161,16 +162,7 @@ for _, y in ipairs{20e-3, 50e-3, -20e-3, -50e-3} do
 end
 
 -- Contact beyond the steepest part of the flange: the wheelset held 14 mm out at zero roll, pressed onto the flange.
-local wy, wz = wheel:points()
-local steepest, steep_y = 0, nil
-for i = 1, #wy - 1 do
-  if wy[i + 1] <= 0 then steepest = math.max(steepest, math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i])) end
-end
-for i = 1, #wy - 1 do
-  if wy[i + 1] <= 0 and wy[i] > -0.05 and math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i]) >= steepest - math.rad(1) then
-    steep_y = steep_y or wy[i]
-  end
-end
+local steepest, steep_y = H.steepest_flange(wheel)
 check.near(math.deg(steepest), 70, 0.01, "S1002's flank angle (EN 13715)")
 local function profile_y(c, p)  -- lateral position of a contact point on the left wheel's profile
   local cr, sr = math.cos(c.pose.roll), math.sin(c.pose.roll)

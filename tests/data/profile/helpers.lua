@@ -176,6 +176,22 @@ function H.write_text(path, p, csv)
   return write(path, table.concat(out))
 end
 
+-- The steepest part of a left wheel profile's flange face, from its points: the steepest slope on the gauge side
+-- (rad) and the tip-side end of the part within 1 deg of it (profile y, m).
+function H.steepest_flange(wheel)
+  local wy, wz = wheel:points()
+  local steepest, steep_y = 0, nil
+  for i = 1, #wy - 1 do
+    if wy[i + 1] <= 0 then steepest = math.max(steepest, math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i])) end
+  end
+  for i = 1, #wy - 1 do
+    if wy[i + 1] <= 0 and wy[i] > -0.05 and math.atan(wz[i + 1] - wz[i], wy[i + 1] - wy[i]) >= steepest - math.rad(1) then
+      steep_y = steep_y or wy[i]
+    end
+  end
+  return steepest, steep_y
+end
+
 function H.tmpdir()
   local d = (arg and arg.tmp) or os.getenv("WRC_TEST_TMP") or "/tmp"
   return d
