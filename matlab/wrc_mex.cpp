@@ -1,0 +1,738 @@
+// wrc_mex.cpp -- the MEX gateway of wrc's MATLAB/Octave interface (docs/matlab.md): a thin layer over the C API
+// (wrc/wrc.h), called by the +wrc package as wrc_mex(command, ...). It converts name/value pairs into the C API's
+// option text, calls one wrc_* function, and reads the result by its paths into nested structs. It writes no default
+// and no check of an option: the engine reads every key (a misspelt key gets its message, naming the closest key).
+//
+// Handles: profiles, wheelsets and trajectories are kept in a table here and given to MATLAB as uint64 ids, never as
+// addresses, so that an id that was freed is refused ("wrc:freed") however the C API reuses addresses. The MEX file
+// stays locked (mexLock) while a handle lives, so that `clear functions` cannot forget live handles.
+//
+// Errors: every failure is a C++ exception (Failure) caught in mexFunction, which calls mexErrMsgIdAndTxt only after
+// every C API resource of the call was released (by the destructors on the way out).
+#include "mex.h"
+
+#include <wrc/wrc.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <map>
+#include <memory>
+#include <string>
+#include <unistd.h>
+#include <utility>
+#include <vector>
+
+namespace {
+
+struct Failure {
+  std::string id, message;
+};
+
+[[noreturn]] void fail(const char* id, std::string message) { throw Failure{id, std::move(message)}; }
+
+// The C API's status as an error identifier, with the engine's message.
+[[noreturn]] void fail_status(wrc_status s) {
+  static const char* const ids[] = {"wrc:ok", "wrc:invalidArgument", "wrc:error", "wrc:notConverged", "wrc:notFound",
+                                    "wrc:tooSmall"};
+  const char* id = (s >= 0 && s <= WRC_TOO_SMALL) ? ids[s] : "wrc:error";
+  fail(id, wrc_last_error());
+}
+
+void check(wrc_status s) {
+  if (s != WRC_OK) fail_status(s);
+}
+
+// ---- handles ----
+
+enum class Kind { profile, wheelset, trajectory };
+
+const char* kind_name(Kind k) {
+  return k == Kind::profile ? "profile" : k == Kind::wheelset ? "wheelset" : "trajectory";
+}
+
+struct Handle {
+  Kind kind;
+  void* object;
+};
+
+// Live handles by id. An id is (session << 32) | serial: the session tells this loading of the MEX file from an
+// earlier one (an id kept across `clear mex` is refused, not taken for a new object).
+std::map<std::uint64_t, Handle> live;
+std::uint64_t session = 0, serial = 0;
+
+void release(const Handle& h) {
+  switch (h.kind) {
+    case Kind::profile: wrc_profile_free(static_cast<wrc_profile*>(h.object)); break;
+    case Kind::wheelset: wrc_wheelset_free(static_cast<wrc_wheelset*>(h.object)); break;
+    case Kind::trajectory: wrc_trajectory_free(static_cast<wrc_trajectory*>(h.object)); break;
+  }
+}
+
+void release_all() {
+  // Trajectories first: each keeps its wheelset alive in the library, but they are released all the same.
+  for (Kind k : {Kind::trajectory, Kind::wheelset, Kind::profile})
+    for (auto& [id, h] : live)
+      if (h.kind == k) release(h);
+  live.clear();
+}
+
+void start_session() {
+  if (session) return;
+  session = (static_cast<std::uint64_t>(std::time(nullptr)) ^ (static_cast<std::uint64_t>(getpid()) << 16)) & 0x7fffffffu;
+  if (!session) session = 1;
+  mexAtExit(release_all);
+}
+
+mxArray* add_handle(Kind kind, void* object) {
+  start_session();
+  const std::uint64_t id = (session << 32) | ++serial;
+  if (live.empty()) mexLock();
+  live[id] = Handle{kind, object};
+  mxArray* out = mxCreateNumericMatrix(1, 1, mxUINT64_CLASS, mxREAL);
+  *static_cast<std::uint64_t*>(mxGetData(out)) = id;
+  return out;
+}
+
+std::uint64_t id_of(const mxArray* a, const char* what) {
+  if (!a || !mxIsUint64(a) || mxGetNumberOfElements(a) != 1)
+    fail("wrc:type", std::string(what) + " must be a wrc object (a profile, wheelset or trajectory handle)");
+  return *static_cast<const std::uint64_t*>(mxGetData(a));
+}
+
+// The live object of id `a`, of kind `kind`; a freed id is "wrc:freed".
+void* object_of(const mxArray* a, Kind kind, const char* what) {
+  const std::uint64_t id = id_of(a, what);
+  const auto it = live.find(id);
+  if (it == live.end()) {
+    if ((id >> 32) == session && (id & 0xffffffffu) <= serial)
+      fail("wrc:freed", std::string(what) + ": this " + kind_name(kind) + " was freed (wrc.free or delete)");
+    fail("wrc:freed", std::string(what) + ": not a live wrc object (freed, or made before the MEX file was cleared)");
+  }
+  if (it->second.kind != kind)
+    fail("wrc:type", std::string(what) + " is a " + kind_name(it->second.kind) + ", not a " + kind_name(kind));
+  return it->second.object;
+}
+
+// Frees id `a`; quietly nothing for an id already freed when `quiet` (a handle object's destructor).
+void free_handle(const mxArray* a, bool quiet) {
+  const std::uint64_t id = id_of(a, "wrc.free's argument");
+  const auto it = live.find(id);
+  if (it == live.end()) {
+    if (quiet) return;
+    fail("wrc:freed", "wrc.free: this object was freed already");
+  }
+  release(it->second);
+  live.erase(it);
+  if (live.empty()) mexUnlock();
+}
+
+// ---- arguments: name/value pairs and structs into keys ----
+
+std::string text_of(const mxArray* a, const std::string& what) {
+  if (!a || !mxIsChar(a) || (mxGetM(a) > 1))
+    fail("wrc:type", what + " must be a character row vector (a string)");
+  char* s = mxArrayToString(a);
+  if (!s) fail("wrc:type", what + " is not a string MATLAB can convert");
+  std::string out(s);
+  mxFree(s);
+  return out;
+}
+
+// The arguments of a call after its handles: name/value pairs, structs (nested ones give dotted keys) or both, in
+// the order given.
+struct Arguments {
+  std::vector<std::pair<std::string, const mxArray*>> entries;
+  std::string function;  // "wrc.contact", for messages
+
+  void add_struct(const mxArray* s, const std::string& prefix) {
+    if (mxGetNumberOfElements(s) != 1)
+      fail("wrc:type", function + ": an options struct must be 1x1 (" + (prefix.empty() ? "the struct" : prefix) + ")");
+    for (int f = 0; f < mxGetNumberOfFields(s); ++f) {
+      const std::string key = prefix + mxGetFieldNameByNumber(s, f);
+      const mxArray* v = mxGetFieldByNumber(s, 0, f);
+      if (v && mxIsStruct(v)) add_struct(v, key + ".");
+      else entries.emplace_back(key, v);
+    }
+  }
+
+  Arguments(const mxArray* const* a, int n, std::string fn) : function(std::move(fn)) {
+    for (int i = 0; i < n;) {
+      if (mxIsStruct(a[i])) {
+        add_struct(a[i], "");
+        ++i;
+        continue;
+      }
+      const std::string key = text_of(a[i], function + ": argument " + std::to_string(i + 1) + " (an option name)");
+      if (i + 1 >= n) fail("wrc:usage", function + ": the option '" + key + "' has no value (name/value pairs)");
+      if (mxIsStruct(a[i + 1])) add_struct(a[i + 1], key + ".");
+      else entries.emplace_back(key, a[i + 1]);
+      i += 2;
+    }
+  }
+
+  // Removes and returns the value of `key` (null when not given).
+  const mxArray* take(const char* key) {
+    for (auto it = entries.begin(); it != entries.end(); ++it)
+      if (it->first == key) {
+        const mxArray* v = it->second;
+        entries.erase(it);
+        return v;
+      }
+    return nullptr;
+  }
+};
+
+bool is_real_numeric(const mxArray* v) {
+  return v && (mxIsDouble(v) || mxIsSingle(v) || mxIsInt8(v) || mxIsInt16(v) || mxIsInt32(v) || mxIsInt64(v) ||
+               mxIsUint8(v) || mxIsUint16(v) || mxIsUint32(v)) &&
+         !mxIsComplex(v) && !mxIsSparse(v);
+}
+
+template <class T>
+void copy_as_double(const mxArray* v, std::vector<double>& out) {
+  const T* p = static_cast<const T*>(mxGetData(v));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<double>(p[i]);
+}
+
+std::vector<double> numbers_of(const mxArray* v, const std::string& what) {
+  if (!is_real_numeric(v) && !(v && mxIsLogical(v)))
+    fail("wrc:type", what + " must be real numbers (got " + (v ? mxGetClassName(v) : "nothing") + ")");
+  if (mxGetNumberOfDimensions(v) > 2 || (mxGetM(v) > 1 && mxGetN(v) > 1))
+    fail("wrc:type", what + " must be a scalar or a vector, not a matrix");
+  std::vector<double> out(mxGetNumberOfElements(v));
+  switch (mxGetClassID(v)) {
+    case mxDOUBLE_CLASS: copy_as_double<double>(v, out); break;
+    case mxSINGLE_CLASS: copy_as_double<float>(v, out); break;
+    case mxLOGICAL_CLASS: copy_as_double<mxLogical>(v, out); break;
+    case mxINT8_CLASS: copy_as_double<std::int8_t>(v, out); break;
+    case mxUINT8_CLASS: copy_as_double<std::uint8_t>(v, out); break;
+    case mxINT16_CLASS: copy_as_double<std::int16_t>(v, out); break;
+    case mxUINT16_CLASS: copy_as_double<std::uint16_t>(v, out); break;
+    case mxINT32_CLASS: copy_as_double<std::int32_t>(v, out); break;
+    case mxUINT32_CLASS: copy_as_double<std::uint32_t>(v, out); break;
+    case mxINT64_CLASS: copy_as_double<std::int64_t>(v, out); break;
+    default: fail("wrc:type", what + " must be real numbers (got " + mxGetClassName(v) + ")");
+  }
+  return out;
+}
+
+double number_of(const mxArray* v, const std::string& what) {
+  const std::vector<double> x = numbers_of(v, what);
+  if (x.size() != 1) fail("wrc:type", what + " must be one number (got " + std::to_string(x.size()) + " values)");
+  return x[0];
+}
+
+std::string format_number(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+// One key=value of the option text. The text separates pairs by blanks and ';': a word holding one cannot be given.
+std::string option_pair(const std::string& function, const std::string& key, const mxArray* v) {
+  const std::string what = function + ": the value of '" + key + "'";
+  if (key.empty() || key.find_first_of(" \t\r\n;=") != std::string::npos)
+    fail("wrc:usage", function + ": '" + key + "' is not an option name");
+  if (!v) fail("wrc:type", what + " is missing");
+  if (mxIsUint64(v)) fail("wrc:type", what + " is a wrc object; this option takes a number, true/false or a word");
+  if (mxIsChar(v)) {
+    const std::string s = text_of(v, what);
+    if (s.find_first_of(" \t\r\n;") != std::string::npos)
+      fail("wrc:usage", what + " ('" + s + "') holds a blank or ';', which the C API's option text cannot carry");
+    return key + "=" + s;
+  }
+  if (mxIsLogical(v)) {
+    if (mxGetNumberOfElements(v) != 1) fail("wrc:type", what + " must be one true or false");
+    return key + "=" + (mxIsLogicalScalarTrue(v) ? "true" : "false");
+  }
+  const std::vector<double> x = numbers_of(v, what);
+  if (x.empty()) fail("wrc:type", what + " is empty");
+  std::string text = key + "=";
+  for (std::size_t i = 0; i < x.size(); ++i) text += (i ? "," : "") + format_number(x[i]);
+  return text;
+}
+
+std::string option_text(const Arguments& args) {
+  std::string text;
+  for (const auto& [key, v] : args.entries) text += (text.empty() ? "" : " ") + option_pair(args.function, key, v);
+  return text;
+}
+
+// An argument the C function takes positionally: required (the C API has no default for it, nor does this layer).
+double argument(Arguments& args, const char* key, const char* c_function, const char* all) {
+  const mxArray* v = args.take(key);
+  if (!v)
+    fail("wrc:missingArgument", args.function + ": '" + key + "' is missing (" + c_function + " takes " + all +
+                                    " as arguments: give each)");
+  return number_of(v, args.function + ": '" + key + "'");
+}
+
+// ---- results: paths into nested structs ----
+
+// A result handle released at the end of the call.
+struct Result {
+  wrc_result* r = nullptr;
+  ~Result() { wrc_result_free(r); }
+};
+
+struct Node {
+  enum Type { table, list, leaf } type = table;
+  std::string name;
+  std::vector<std::unique_ptr<Node>> children;  // a table's fields in order; a list's items (tables)
+  mxArray* value = nullptr;                     // a leaf's
+  bool array = false;                           // a leaf of numbers (an array or a grid)
+
+  Node* child(const std::string& key) {
+    for (auto& c : children)
+      if (c->name == key) return c.get();
+    children.push_back(std::make_unique<Node>());
+    children.back()->name = key;
+    return children.back().get();
+  }
+  Node* item(std::size_t k) {  // 1-based
+    while (children.size() < k) children.push_back(std::make_unique<Node>());
+    return children[k - 1].get();
+  }
+  const Node* find(const std::string& key) const {
+    for (auto& c : children)
+      if (c->name == key) return c.get();
+    return nullptr;
+  }
+};
+
+// The value at `path`: a number, an array, a string or a list (its items come as paths of their own). Booleans and
+// integers read as numbers. An empty array reads as the number 0: the C API does not tell them apart.
+void read_field(const wrc_result* r, const char* path, Node& n) {
+  double x = 0;
+  if (wrc_result_number(r, path, &x) == WRC_OK) {
+    n.type = Node::leaf;
+    n.value = mxCreateDoubleScalar(x);
+    return;
+  }
+  std::size_t count = 0;
+  const wrc_status s = wrc_result_numbers(r, path, nullptr, 0, &count);
+  if (s == WRC_OK || s == WRC_TOO_SMALL) {
+    n.type = Node::leaf;
+    n.array = true;
+    n.value = mxCreateDoubleMatrix(count, 1, mxREAL);
+    check(wrc_result_numbers(r, path, mxGetPr(n.value), count, &count));
+    return;
+  }
+  std::size_t length = 0;
+  if (wrc_result_string(r, path, nullptr, 0, &length) == WRC_OK) {
+    std::string text(length + 1, '\0');
+    check(wrc_result_string(r, path, text.data(), text.size(), &length));
+    n.type = Node::leaf;
+    n.value = mxCreateString(text.c_str());
+    return;
+  }
+  check(wrc_result_count(r, path, &count));
+  n.type = Node::list;
+  n.item(count);  // the items' fields come as paths of their own, after the list's
+}
+
+// Inserts `path` ("left.patches.1.pmax") into the tree: a numeric part indexes the list it follows.
+void insert(const wrc_result* r, Node& root, const std::string& path) {
+  Node* at = &root;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t dot = std::min(path.find('.', start), path.size());
+    const std::string part = path.substr(start, dot - start);
+    if (at->type == Node::list) {
+      char* end = nullptr;
+      const unsigned long k = std::strtoul(part.c_str(), &end, 10);
+      if (part.empty() || *end || k == 0) fail("wrc:internal", "result path '" + path + "': '" + part + "' is no list index");
+      at = at->item(k);
+    } else {
+      at = at->child(part);
+    }
+    if (dot == path.size()) break;
+    start = dot + 1;
+  }
+  read_field(r, path.c_str(), *at);
+}
+
+mxArray* to_mx(const Node& n);
+
+// A grid of nx x ny values (element (i, j) at i + nx j) as an ny x nx matrix: M(j, i), rows along the grid's y.
+mxArray* as_grid(const mxArray* v, std::size_t nx, std::size_t ny) {
+  mxArray* m = mxCreateDoubleMatrix(ny, nx, mxREAL);
+  const double* in = mxGetPr(v);
+  double* out = mxGetPr(m);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) out[j + ny * i] = in[i + nx * j];
+  return m;
+}
+
+// The grid size of a table holding grid.nx and grid.ny (a contact area), or 0.
+std::size_t grid_size(const Node& table, std::size_t& nx, std::size_t& ny) {
+  const Node* g = table.find("grid");
+  const Node* x = g ? g->find("nx") : nullptr;
+  const Node* y = g ? g->find("ny") : nullptr;
+  if (!x || !y || x->type != Node::leaf || y->type != Node::leaf || x->array || y->array) return 0;
+  nx = static_cast<std::size_t>(mxGetScalar(x->value));
+  ny = static_cast<std::size_t>(mxGetScalar(y->value));
+  return nx * ny;
+}
+
+mxArray* table_to_mx(const Node& n) {
+  std::vector<const char*> names;
+  for (auto& c : n.children) names.push_back(c->name.c_str());
+  mxArray* s = mxCreateStructMatrix(1, 1, static_cast<int>(names.size()), names.data());
+  std::size_t nx = 0, ny = 0;
+  const std::size_t cells = grid_size(n, nx, ny);
+  for (std::size_t f = 0; f < n.children.size(); ++f) {
+    const Node& c = *n.children[f];
+    mxArray* v = (c.array && cells > 0 && mxGetNumberOfElements(c.value) == cells) ? as_grid(c.value, nx, ny) : to_mx(c);
+    mxSetFieldByNumber(s, 0, static_cast<int>(f), v);
+  }
+  return s;
+}
+
+// A list as a 1 x n struct array: the items' fields united in order of appearance, [] where an item has none.
+mxArray* list_to_mx(const Node& n) {
+  std::vector<std::string> names;
+  for (auto& item : n.children)
+    for (auto& c : item->children)
+      if (std::find(names.begin(), names.end(), c->name) == names.end()) names.push_back(c->name);
+  std::vector<const char*> cnames;
+  for (auto& s : names) cnames.push_back(s.c_str());
+  mxArray* s = mxCreateStructMatrix(1, n.children.size(), static_cast<int>(cnames.size()), cnames.data());
+  for (std::size_t k = 0; k < n.children.size(); ++k) {
+    mxArray* item = table_to_mx(*n.children[k]);
+    for (int f = 0; f < mxGetNumberOfFields(item); ++f) {
+      const int at = mxGetFieldNumber(s, mxGetFieldNameByNumber(item, f));
+      mxSetFieldByNumber(s, k, at, mxDuplicateArray(mxGetFieldByNumber(item, 0, f)));
+    }
+    mxDestroyArray(item);
+  }
+  return s;
+}
+
+mxArray* to_mx(const Node& n) {
+  switch (n.type) {
+    case Node::leaf: return mxDuplicateArray(n.value);
+    case Node::list: return list_to_mx(n);
+    default: return table_to_mx(n);
+  }
+}
+
+void destroy(Node& n) {
+  if (n.value) mxDestroyArray(n.value);
+  n.value = nullptr;
+  for (auto& c : n.children)
+    if (c) destroy(*c);
+}
+
+mxArray* result_struct(const wrc_result* r) {
+  std::size_t n = 0;
+  check(wrc_result_fields(r, &n));
+  Node root;
+  for (std::size_t i = 0; i < n; ++i) {
+    const char* path = nullptr;
+    check(wrc_result_field(r, i, &path));
+    insert(r, root, path);
+  }
+  mxArray* s = table_to_mx(root);
+  destroy(root);
+  return s;
+}
+
+// A solve's outputs: its result struct; a solve that did not converge is an error unless the caller asked for the
+// second output (ok = false then, the result holds converged = 0 and error).
+void solved(wrc_status s, Result& res, int nlhs, mxArray** plhs) {
+  if (s != WRC_OK && s != WRC_NOT_CONVERGED) fail_status(s);
+  const std::string message = s == WRC_NOT_CONVERGED ? wrc_last_error() : "";
+  if (s == WRC_NOT_CONVERGED && nlhs < 2) fail("wrc:notConverged", message);
+  plhs[0] = result_struct(res.r);
+  if (nlhs >= 2) plhs[1] = mxCreateLogicalScalar(s == WRC_OK);
+}
+
+// ---- commands ----
+
+struct Call {
+  int nlhs;
+  mxArray** plhs;
+  int nrhs;
+  const mxArray* const* prhs;  // after the command name
+
+  const mxArray* at(int i, const char* what) const {
+    if (i >= nrhs) fail("wrc:usage", std::string("missing argument: ") + what);
+    return prhs[i];
+  }
+  Arguments args(int from, const char* function) const {
+    return Arguments(prhs + std::min(from, nrhs), std::max(0, nrhs - from), function);
+  }
+};
+
+wrc_wheelset* wheelset_of(const Call& c, const char* function) {
+  return static_cast<wrc_wheelset*>(object_of(c.at(0, "a wheelset"), Kind::wheelset, function));
+}
+
+void profile_load(const Call& c) {
+  const std::string path = text_of(c.at(0, "the profile's path"), "wrc.profile.load: the path");
+  const Arguments a = c.args(1, "wrc.profile.load");
+  wrc_profile* p = nullptr;
+  check(wrc_profile_load(path.c_str(), option_text(a).c_str(), &p));
+  c.plhs[0] = add_handle(Kind::profile, p);
+}
+
+void profile_points(const Call& c) {
+  Arguments a = c.args(0, "wrc.profile.points");
+  const mxArray* kind = a.take("kind");
+  const mxArray* y = a.take("y");
+  const mxArray* z = a.take("z");
+  const mxArray* name = a.take("name");
+  if (!a.entries.empty())
+    fail("wrc:usage", "wrc.profile.points: unknown key '" + a.entries[0].first + "' (kind, y, z, name)");
+  if (!kind || !y || !z) fail("wrc:missingArgument", "wrc.profile.points: kind, y and z are required");
+  const std::string k = text_of(kind, "wrc.profile.points: kind");
+  const std::vector<double> yv = numbers_of(y, "wrc.profile.points: y"), zv = numbers_of(z, "wrc.profile.points: z");
+  if (yv.size() != zv.size())
+    fail("wrc:usage", "wrc.profile.points: y has " + std::to_string(yv.size()) + " values, z " + std::to_string(zv.size()));
+  const std::string nm = name ? text_of(name, "wrc.profile.points: name") : "";
+  wrc_profile* p = nullptr;
+  check(wrc_profile_from_points(k.c_str(), yv.data(), zv.data(), yv.size(), name ? nm.c_str() : nullptr, &p));
+  c.plhs[0] = add_handle(Kind::profile, p);
+}
+
+void points(const Call& c) {
+  const auto* p = static_cast<const wrc_profile*>(object_of(c.at(0, "a profile"), Kind::profile, "points"));
+  std::size_t n = 0;
+  const wrc_status s = wrc_profile_points(p, nullptr, nullptr, 0, &n);
+  if (s != WRC_OK && s != WRC_TOO_SMALL) fail_status(s);
+  mxArray* y = mxCreateDoubleMatrix(n, 1, mxREAL);
+  mxArray* z = mxCreateDoubleMatrix(n, 1, mxREAL);
+  check(wrc_profile_points(p, mxGetPr(y), mxGetPr(z), n, &n));
+  c.plhs[0] = y;
+  if (c.nlhs > 1) c.plhs[1] = z;
+}
+
+void write(const Call& c) {
+  const auto* p = static_cast<const wrc_profile*>(object_of(c.at(0, "a profile"), Kind::profile, "write"));
+  const std::string path = text_of(c.at(1, "the file's path"), "write: the path");
+  const Arguments a = c.args(2, "write");
+  check(wrc_profile_write(p, path.c_str(), option_text(a).c_str()));
+}
+
+void flange_measures(const Call& c) {
+  const auto* p = static_cast<const wrc_profile*>(object_of(c.at(0, "a profile"), Kind::profile, "flange_measures"));
+  const Arguments a = c.args(1, "wrc.flange_measures");
+  Result res;
+  check(wrc_profile_flange_measures(p, option_text(a).c_str(), &res.r));
+  c.plhs[0] = result_struct(res.r);
+}
+
+void wheelset(const Call& c) {
+  Arguments a = c.args(0, "wrc.wheelset");
+  const char* keys[6] = {"wheel", "rail", "left_wheel", "right_wheel", "left_rail", "right_rail"};
+  const wrc_profile* p[6] = {};
+  for (int k = 0; k < 6; ++k)
+    if (const mxArray* v = a.take(keys[k]))
+      p[k] = static_cast<const wrc_profile*>(object_of(v, Kind::profile, (std::string("wrc.wheelset: ") + keys[k]).c_str()));
+  const bool two = p[0] || p[1], four = p[2] || p[3] || p[4] || p[5];
+  if (two == four || (two && !(p[0] && p[1])) || (four && !(p[2] && p[3] && p[4] && p[5])))
+    fail("wrc:missingArgument",
+         "wrc.wheelset: give wheel and rail, or left_wheel, right_wheel, left_rail and right_rail (profiles)");
+  const std::string text = option_text(a);
+  wrc_wheelset* ws = nullptr;
+  check(two ? wrc_wheelset_new(p[0], p[1], text.c_str(), &ws)
+            : wrc_wheelset_new4(p[2], p[3], p[4], p[5], text.c_str(), &ws));
+  c.plhs[0] = add_handle(Kind::wheelset, ws);
+}
+
+int side_of(Arguments& a, const char* c_function) {
+  const mxArray* v = a.take("side");
+  if (!v)
+    fail("wrc:missingArgument", a.function + ": 'side' is missing (" + c_function + " takes side, y, yaw, roll and Fz)");
+  const std::string s = text_of(v, a.function + ": side");
+  if (s == "left") return WRC_LEFT;
+  if (s == "right") return WRC_RIGHT;
+  fail("wrc:usage", a.function + ": side = '" + s + "' must be 'left' or 'right'");
+}
+
+void contact(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.contact");
+  Arguments a = c.args(1, "wrc.contact");
+  const char* all = "y, z, roll and yaw";
+  const double y = argument(a, "y", "wrc_contact", all), z = argument(a, "z", "wrc_contact", all),
+               roll = argument(a, "roll", "wrc_contact", all), yaw = argument(a, "yaw", "wrc_contact", all);
+  Result res;
+  solved(wrc_contact(ws, y, z, roll, yaw, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+}
+
+void wheel(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.wheel");
+  Arguments a = c.args(1, "wrc.wheel");
+  const char* all = "side, y, yaw, roll and Fz";
+  const int side = side_of(a, "wrc_wheel");
+  const double y = argument(a, "y", "wrc_wheel", all), yaw = argument(a, "yaw", "wrc_wheel", all),
+               roll = argument(a, "roll", "wrc_wheel", all), Fz = argument(a, "Fz", "wrc_wheel", all);
+  Result res;
+  solved(wrc_wheel(ws, side, y, yaw, roll, Fz, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+}
+
+void equilibrium(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.equilibrium");
+  Arguments a = c.args(1, "wrc.equilibrium");
+  const char* all = "y, yaw and Q";
+  const double y = argument(a, "y", "wrc_equilibrium", all), yaw = argument(a, "yaw", "wrc_equilibrium", all),
+               Q = argument(a, "Q", "wrc_equilibrium", all);
+  Result res;
+  solved(wrc_equilibrium(ws, y, yaw, Q, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+}
+
+void rigid(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.rigid");
+  Arguments a = c.args(1, "wrc.rigid");
+  const char* all = "y and yaw";
+  const double y = argument(a, "y", "wrc_rigid_contact", all), yaw = argument(a, "yaw", "wrc_rigid_contact", all);
+  Result res;
+  solved(wrc_rigid_contact(ws, y, yaw, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+}
+
+void geometry_table(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.geometry_table");
+  const Arguments a = c.args(1, "wrc.geometry_table");
+  Result res;
+  check(wrc_geometry_table(ws, option_text(a).c_str(), &res.r));
+  c.plhs[0] = result_struct(res.r);
+}
+
+void wheelset_conicity(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.conicity");
+  const Arguments a = c.args(1, "wrc.conicity");
+  Result res;
+  check(wrc_wheelset_conicity(ws, option_text(a).c_str(), &res.r));
+  c.plhs[0] = result_struct(res.r);
+}
+
+void conicity(const Call& c) {
+  Arguments a = c.args(0, "wrc.conicity");
+  const mxArray* y = a.take("y");
+  const mxArray* dr = a.take("dr");
+  if (!y || !dr) fail("wrc:missingArgument", "wrc.conicity: 'y' and 'dr' (the Δr table, m) are required");
+  const std::vector<double> yv = numbers_of(y, "wrc.conicity: y"), dv = numbers_of(dr, "wrc.conicity: dr");
+  if (yv.size() != dv.size())
+    fail("wrc:usage", "wrc.conicity: y has " + std::to_string(yv.size()) + " values, dr " + std::to_string(dv.size()));
+  Result res;
+  check(wrc_conicity(yv.data(), dv.data(), yv.size(), option_text(a).c_str(), &res.r));
+  c.plhs[0] = result_struct(res.r);
+}
+
+void trajectory(const Call& c) {
+  wrc_wheelset* ws = wheelset_of(c, "wrc.trajectory");
+  const Arguments a = c.args(1, "wrc.trajectory");
+  wrc_trajectory* tr = nullptr;
+  check(wrc_trajectory_new(ws, option_text(a).c_str(), &tr));
+  c.plhs[0] = add_handle(Kind::trajectory, tr);
+}
+
+wrc_trajectory* trajectory_of(const Call& c, const char* function) {
+  return static_cast<wrc_trajectory*>(object_of(c.at(0, "a trajectory"), Kind::trajectory, function));
+}
+
+void trajectory_contact(const Call& c) {
+  wrc_trajectory* tr = trajectory_of(c, "tr.contact");
+  Arguments a = c.args(1, "tr.contact");
+  const char* all = "y, z, roll and yaw";
+  const char* fn = "wrc_trajectory_contact_with";
+  const double y = argument(a, "y", fn, all), z = argument(a, "z", fn, all), roll = argument(a, "roll", fn, all),
+               yaw = argument(a, "yaw", fn, all);
+  Result res;
+  solved(wrc_trajectory_contact_with(tr, y, z, roll, yaw, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+}
+
+void trajectory_wheel(const Call& c) {
+  wrc_trajectory* tr = trajectory_of(c, "tr.wheel");
+  Arguments a = c.args(1, "tr.wheel");
+  const char* all = "side, y, yaw, roll and Fz";
+  const char* fn = "wrc_trajectory_wheel_with";
+  const int side = side_of(a, fn);
+  const double y = argument(a, "y", fn, all), yaw = argument(a, "yaw", fn, all), roll = argument(a, "roll", fn, all),
+               Fz = argument(a, "Fz", fn, all);
+  Result res;
+  solved(wrc_trajectory_wheel_with(tr, side, y, yaw, roll, Fz, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+}
+
+void trajectory_reset(const Call& c) { check(wrc_trajectory_reset(trajectory_of(c, "tr.reset"))); }
+
+void free_command(const Call& c) {
+  const bool quiet = c.nrhs > 1 && mxIsLogicalScalarTrue(c.prhs[1]);
+  free_handle(c.at(0, "the object to free"), quiet);
+}
+
+void kind(const Call& c) {
+  const std::uint64_t id = id_of(c.at(0, "an object"), "kind's argument");
+  const auto it = live.find(id);
+  c.plhs[0] = mxCreateString(it == live.end() ? "freed" : kind_name(it->second.kind));
+}
+
+void version(const Call& c) { c.plhs[0] = mxCreateString(wrc_version()); }
+
+void live_count(const Call& c) { c.plhs[0] = mxCreateDoubleScalar(static_cast<double>(live.size())); }
+
+struct Command {
+  const char* name;
+  void (*run)(const Call&);
+};
+
+const Command commands[] = {
+    {"profile_load", profile_load},
+    {"profile_points", profile_points},
+    {"points", points},
+    {"write", write},
+    {"flange_measures", flange_measures},
+    {"wheelset", wheelset},
+    {"contact", contact},
+    {"wheel", wheel},
+    {"equilibrium", equilibrium},
+    {"rigid", rigid},
+    {"geometry_table", geometry_table},
+    {"wheelset_conicity", wheelset_conicity},
+    {"conicity", conicity},
+    {"trajectory", trajectory},
+    {"trajectory_contact", trajectory_contact},
+    {"trajectory_wheel", trajectory_wheel},
+    {"trajectory_reset", trajectory_reset},
+    {"free", free_command},
+    {"kind", kind},
+    {"version", version},
+    {"live", live_count},
+};
+
+void dispatch(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  if (wrc_abi_version() != WRC_ABI_VERSION)
+    fail("wrc:abi", "libwrc has ABI version " + std::to_string(wrc_abi_version()) + ", wrc_mex was built for " +
+                        std::to_string(WRC_ABI_VERSION));
+  if (nrhs < 1) fail("wrc:usage", "wrc_mex(command, ...): the +wrc package calls it (see docs/matlab.md)");
+  const std::string name = text_of(prhs[0], "wrc_mex's command");
+  for (const Command& cmd : commands)
+    if (name == cmd.name) return cmd.run(Call{nlhs, plhs, nrhs - 1, prhs + 1});
+  fail("wrc:usage", "wrc_mex: unknown command '" + name + "'");
+}
+
+}  // namespace
+
+void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  std::string id, message;
+  try {
+    dispatch(nlhs, plhs, nrhs, prhs);
+    return;
+  } catch (const Failure& f) {
+    id = f.id;
+    message = f.message;
+  } catch (const std::bad_alloc&) {
+    id = "wrc:outOfMemory";
+    message = "wrc_mex: out of memory";
+  } catch (const std::exception& e) {
+    id = "wrc:internal";
+    message = std::string("wrc_mex: internal error: ") + e.what();
+  }
+  // Every resource of the call is released by now; mexErrMsgIdAndTxt does not return.
+  mexErrMsgIdAndTxt(id.c_str(), "%s", message.c_str());
+}
