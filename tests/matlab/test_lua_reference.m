@@ -33,10 +33,10 @@ expect_rel(p.pressure(j, i), lua.contact_p_centre, 0, 'pressure(j, i) = Lua''s p
 expect_rel(p.pressure(j + 1, i), lua.contact_p_j1, 0, 'pressure(j + 1, i): rows along the grid''s y');
 expect_rel(p.pressure(j, i + 3), lua.contact_p_i3, 0, 'pressure(j, i + 3): columns along the grid''s x');
 
-r = ws.contact('y', 2e-3, 'z', e.z, 'roll', e.roll, 'yaw', 0, 'V', 30, 'creepage', struct('xi', 1e-3), 'mu', 0.3);
+r = ws.contact('y', 2e-3, 'z', e.z, 'roll', e.roll, 'yaw', 0, 'V', 30, 'creepage', struct('xi', 1e-3 / 3), 'mu', 0.3);
 expect_rel(r.force.x, lua.rolling_force_x, 0, 'rolling contact force.x (creepage as a nested struct)');
 expect_rel(r.left.patches(1).Fx, lua.rolling_left_patches_1_Fx, 0, 'rolling contact left.patches(1).Fx');
-r2 = ws.contact('y', 2e-3, 'z', e.z, 'roll', e.roll, 'yaw', 0, 'V', 30, 'creepage.xi', 1e-3, 'mu', 0.3);
+r2 = ws.contact('y', 2e-3, 'z', e.z, 'roll', e.roll, 'yaw', 0, 'V', 30, 'creepage.xi', 1e-3 / 3, 'mu', 0.3);
 expect_rel(r2.force.x, lua.rolling_force_x, 0, 'rolling contact force.x (creepage.xi as a dotted key)');
 
 w = wrc.wheel(ws, 'side', 'right', 'y', 3e-3, 'yaw', 0, 'roll', 0, 'Fz', 100e3);
