@@ -3,19 +3,19 @@
 
 In README.md and the pages of docs/ (outside fenced code blocks):
   - every repository path in backticks exists: `engine/src/...`, `tests/...`, `scripts/...`, `examples/...`,
-    `profiles/...`, `plugins/...`, `docs/...`, `cmake/...`, `.ci/...`; include paths `wrc/...`; area-relative ones
+    `profiles/...`, `plugins/...`, `docs/...`, `cmake/...`, `.ci/...`, `matlab/...`; include paths `wrc/...`; area-relative ones
     (`halfspace/normal_cg.cpp`, `wheelset/conformal`) under engine/src or engine/include/wrc; benchmark programs
     (`build/bench_normal`, `bench_rolling`) under tests/bench; bare source file names (`conformal_contact.lua`)
     somewhere in the tree. `<name>`, `*` and ALL-CAPS components are placeholders;
   - every code name in backticks that looks like the engine's (`solve_wheel`, `ContactRequest::rolling`,
     `wrc_contact`, `NormalLoad::gap_weights`, `ws:contact`, `wrc.profile.load`, `e.left.flange_climb`) appears in
-    the code (comments stripped) of engine/, scripts/, plugins/, examples/, profiles/ or the build files; a
+    the code (comments stripped) of engine/, scripts/, plugins/, examples/, profiles/, matlab/ or the build files; a
     qualified C++ name needs its class and member in one file;
   - every relative link and image exists, every #anchor names a heading of its page as both mkdocs and GitHub spell
     it, and pages of docs/ link nowhere outside docs/ (the site could not follow);
   - README.md has at most 300 lines, its set-up commands are those of docs/getting-started.md and its paper-to-code
     table is the one of docs/paper.md; every page of docs/ is in the nav of mkdocs.yml (the site reaches it).
-In the sources (engine/, scripts/, plugins/, examples/, tests/, cmake/, .ci/): every cited section exists --
+In the sources (engine/, scripts/, plugins/, examples/, tests/, cmake/, .ci/, matlab/): every cited section exists --
 README "Title", docs/<page>.md "Title" (a heading that starts so), docs/design.md section N -- and every cited
 docs/ page.
 
@@ -29,9 +29,9 @@ import re
 import sys
 import unicodedata
 
-TOP = ("engine", "tests", "scripts", "examples", "profiles", "plugins", "docs", "cmake", ".ci")
-SOURCE_EXT = (".cpp", ".hpp", ".h", ".c", ".lua", ".sh", ".cmake", ".py", ".sbatch", ".in", ".map")
-CODE_DIRS = ("engine", "scripts", "plugins", "examples", "profiles", "cmake", ".ci")
+TOP = ("engine", "tests", "scripts", "examples", "profiles", "plugins", "docs", "cmake", ".ci", "matlab")
+SOURCE_EXT = (".cpp", ".hpp", ".h", ".c", ".lua", ".sh", ".cmake", ".py", ".sbatch", ".in", ".map", ".m")
+CODE_DIRS = ("engine", "scripts", "plugins", "examples", "profiles", "cmake", ".ci", "matlab")
 # Names used in the docs as illustrations, not files or code of the repository.
 ILLUSTRATIVE = {"first.lua", "yq.lua", "my_wheel.lua", "my_walk.lua", "my_strategy.lua", "zz.lua",
                 "scripts/x/y.lua", "scripts/strategies/my_walk.lua"}
@@ -105,6 +105,9 @@ def strip_comments(path, text):
     if path.endswith(".lua"):
         pattern = r'--\[(=*)\[.*?\]\1\]|--[^\n]*|\[(=*)\[.*?\]\2\]|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\''
         return re.sub(pattern, lambda m: " " if m.group(0).startswith("--") else m.group(0), text, flags=re.S)
+    if path.endswith(".m"):  # MATLAB: % comments; strings in quotes kept
+        pattern = r"'(?:''|[^'\n])*'|\"(?:\"\"|[^\"\n])*\"|%[^\n]*"
+        return re.sub(pattern, lambda m: " " if m.group(0).startswith("%") else m.group(0), text)
     return re.sub(r"(?m)(^|\s)#[^\n]*", " ", text)
 
 
