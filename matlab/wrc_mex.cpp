@@ -14,15 +14,15 @@
 #include <wrc/wrc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <map>
 #include <memory>
+#include <random>
 #include <string>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -80,9 +80,12 @@ void release_all() {
   live.clear();
 }
 
+// A session number unlike the last loading's, even within the same second of the same process.
 void start_session() {
   if (session) return;
-  session = (static_cast<std::uint64_t>(std::time(nullptr)) ^ (static_cast<std::uint64_t>(getpid()) << 16)) & 0x7fffffffu;
+  std::random_device random;
+  const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
+  session = (static_cast<std::uint64_t>(random()) ^ static_cast<std::uint64_t>(now)) & 0xffffffffu;
   if (!session) session = 1;
   mexAtExit(release_all);
 }

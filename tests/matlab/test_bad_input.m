@@ -113,4 +113,35 @@ q = wrc.profile_load('profiles/s1002.lua');
 delete(q);
 expect_rel(wrc_mex('live'), before, 0, 'delete releases the object');
 clear q;  % the destructor again, on a freed object: quiet
+
+% The MEX file stays loaded while an object lives; an id of an object freed before the MEX file was cleared is
+% refused after it is loaded again, also when a new object is made (ids are not reused across loadings).
+q = wrc.profile_load('profiles/s1002.lua');
+clear functions;  % unloads an unlocked MEX file (Octave's `clear mex` does not)
+[qy, ~] = q.points();
+expect_true(numel(qy) > 100, 'clear functions keeps a live object');
+old = q.id;
+clear q;
+wrc.free(ws, wheel, rail);
+expect_rel(wrc_mex('live'), 0, 0, 'every object released');
+clear functions;  % unloaded now: nothing holds it
+made = {};  % as many objects as the old id's serial number: one would take the old id if ids were reused
+for k = 1:double(bitand(old, uint64(4294967295)))
+  made{k} = wrc.profile_points('kind', 'rail', 'y', [0 1e-3 2e-3], 'z', [0 0 0]);
+  expect_true(made{k}.id ~= old, 'a new id after the MEX file was loaded again');
+end
+expect_error(@() wrc_mex('points', old), 'wrc:freed', 'not a live wrc object|was freed', 'an id of a cleared loading');
+clear made q;
+three = {'kind', 'rail', 'y', [0 1e-3 2e-3], 'z', [0 0 0]};
+for k = 1:3  % loaded, one object made and freed, cleared, loaded again: within a second, as fast as it goes
+  expect_rel(wrc_mex('live'), 0, 0, 'nothing alive');
+  clear functions;
+  a = wrc.profile_points(three{:});
+  first = a.id;
+  clear a;
+  clear functions;
+  b = wrc.profile_points(three{:});
+  expect_true(b.id ~= first, 'the first id of a loading differs from the first of the loading before');
+  clear b;
+end
 disp('test_bad_input: all checks hold');
