@@ -60,7 +60,7 @@ struct Handle {
 };
 
 // Live handles by id. An id is (session << 32) | serial: the session tells this loading of the MEX file from an
-// earlier one (an id kept across `clear mex` is refused, not taken for a new object).
+// earlier one (an id kept across `clear functions` is refused, not taken for a new object).
 std::map<std::uint64_t, Handle> live;
 std::uint64_t session = 0, serial = 0;
 
@@ -151,13 +151,16 @@ struct Arguments {
   std::vector<std::pair<std::string, const mxArray*>> entries;
   std::string function;  // "wrc.contact", for messages
 
-  void add_struct(const mxArray* s, const std::string& prefix) {
+  // A struct's fields as keys under `prefix`. The depth is bounded here only to keep the recursion off the stack's end;
+  // the engine refuses keys nested deeper than it reads, with its message.
+  void add_struct(const mxArray* s, const std::string& prefix, int depth = 0) {
+    if (depth > 64) fail("wrc:usage", function + ": the options struct nests more than 64 levels (" + prefix + ")");
     if (mxGetNumberOfElements(s) != 1)
       fail("wrc:type", function + ": an options struct must be 1x1 (" + (prefix.empty() ? "the struct" : prefix) + ")");
     for (int f = 0; f < mxGetNumberOfFields(s); ++f) {
       const std::string key = prefix + mxGetFieldNameByNumber(s, f);
       const mxArray* v = mxGetFieldByNumber(s, 0, f);
-      if (v && mxIsStruct(v)) add_struct(v, key + ".");
+      if (v && mxIsStruct(v)) add_struct(v, key + ".", depth + 1);
       else entries.emplace_back(key, v);
     }
   }
