@@ -200,6 +200,17 @@ TEST_CASE("batch: a failing element is recorded with the engine's message, the o
   }
   CHECK(alone_message != "");
   CHECK(b.run.elements[3].message == alone_message);
+  CHECK(b.run.elements[1].input);  // the options refused: a front end's bad-argument error
+  CHECK(b.run.elements[3].input);
+  CHECK_FALSE(b.run.elements[0].input);
+
+  // an error of the solve itself (a pose pressed 5 mm in): not the input's
+  const api::BatchInput deep{"contact", "ws.contact", {}, {{"z", {-20e-6, -5e-3}}}, 2};
+  const Traced c = batch(deep, 2);
+  CHECK(c.run.elements[0].status == S::done);
+  CHECK(c.run.elements[1].status == S::failed);
+  CHECK(c.run.elements[1].message.find("max_penetration") != std::string::npos);
+  CHECK_FALSE(c.run.elements[1].input);
 }
 
 TEST_CASE("batch: a solve that fails is not_converged with its result, or a result with on_failure = return") {

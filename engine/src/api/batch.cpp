@@ -26,6 +26,16 @@ void set_dotted(OptionTable& table, std::string_view key, OptionValue value) {
   table.set(head, OptionValue::of(std::move(nested)));
 }
 
+// Reads X from an element's table and validates it: an error here is the element's input's (BatchElement::input).
+template <class X>
+X read_element(const OptionTable& table, const std::string& context, BatchElement& e) {
+  e.input = true;
+  X x = read<X>(table, context);
+  if constexpr (requires { x.validate(); }) x.validate();
+  e.input = false;
+  return x;
+}
+
 // One element: the call read from its table, run, and its result described; what a one-by-one call of the front
 // ends does (the Lua binding's wheelset methods), with a failed solve recorded instead of raised.
 void run_element(const Wheelset& wheelset, const std::string& op, const std::string& context,
@@ -37,20 +47,20 @@ void run_element(const Wheelset& wheelset, const std::string& op, const std::str
   };
   e.status = BatchStatus::done;
   if (op == "contact") {
-    const auto call = read<ContactCall>(table, context);
+    const auto call = read_element<ContactCall>(table, context, e);
     describe(call.run(wheelset, *ws), sink, call.request.sensitivity);
   } else if (op == "wheel") {
-    const auto call = read<WheelCall>(table, context);
+    const auto call = read_element<WheelCall>(table, context, e);
     const WheelResult r = call.run(wheelset, *ws);
     not_converged(r, call.on_failure.returns, "");
     describe(r, sink);
   } else if (op == "equilibrium") {
-    const auto call = read<EquilibriumCall>(table, context);
+    const auto call = read_element<EquilibriumCall>(table, context, e);
     const EquilibriumResult r = call.run(wheelset, *ws);
     not_converged(r, call.on_failure.returns, " (on_failure = \"return\" gives the result)");
     describe(r, sink);
   } else {
-    describe(read<RigidCall>(table, context).run(wheelset), sink);
+    describe(read_element<RigidCall>(table, context, e).run(wheelset), sink);
   }
 }
 

@@ -56,6 +56,7 @@ enum class BatchStatus {
 struct BatchElement {
   BatchStatus status = BatchStatus::skipped;
   std::string message;  // the engine's message, for failed and not_converged
+  bool input = false;   // failed on reading or validating its options (a front end's bad-argument error)
 };
 
 struct BatchOptions {
