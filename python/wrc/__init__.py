@@ -17,14 +17,15 @@ import sys as _sys
 from wrc._errors import Error, NotConverged, OptionError, ProfileError
 from wrc._results import Result
 from wrc import _wrc
-from wrc._wrc import Profile, Trajectory, Wheelset, conicity as _conicity, operations, profile, wheelset
+from wrc._wrc import Profile, Trajectory, Wheelset, batch_keys, conicity as _conicity, operations, profile, wheelset
+from wrc.batch import Batch
 
 __version__ = _wrc.__version__
 _sys.modules[__name__ + ".profile"] = profile  # import wrc.profile works too
 
 __all__ = [
-    "Error", "NotConverged", "OptionError", "ProfileError", "Result", "Profile", "Trajectory", "Wheelset",
-    "conicity", "operations", "profile", "wheelset",
+    "Batch", "Error", "NotConverged", "OptionError", "ProfileError", "Result", "Profile", "Trajectory", "Wheelset",
+    "batch_keys", "conicity", "operations", "profile", "wheelset",
 ]
 
 

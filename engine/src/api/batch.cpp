@@ -52,7 +52,7 @@ void run_element(const Wheelset& wheelset, const std::string& op, const std::str
   } else if (op == "wheel") {
     const auto call = read_element<WheelCall>(table, context, e);
     const WheelResult r = call.run(wheelset, *ws);
-    not_converged(r, call.on_failure.returns, "");
+    not_converged(r, call.on_failure.returns, " (on_failure = \"return\" gives the result)");
     describe(r, sink);
   } else if (op == "equilibrium") {
     const auto call = read_element<EquilibriumCall>(table, context, e);

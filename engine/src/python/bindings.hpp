@@ -72,6 +72,11 @@ class Lease {
   std::unique_ptr<ContactWorkspace> ws_;
 };
 
+// A batch call (batch_binding.cpp) when an argument of `operation` that batches holds an array, or threads= is
+// given: the wrc.Batch of the elements. None for a one-by-one call.
+py::object batch_call(PyWheelset& self, const char* operation, const char* context, const py::kwargs& kw);
+
+void register_batch(py::module_& m);
 void register_errors(py::module_& m);
 void register_profile(py::module_& m);
 void register_wheelset(py::module_& m);

@@ -100,6 +100,7 @@ py::object converted(const Result& r) {
 
 py::object contact(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.contact";
+  if (py::object batch = batch_call(self, "contact", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::ContactCall>(kw, ctx);
   FieldNode tree;
@@ -113,6 +114,7 @@ py::object contact(PyWheelset& self, const py::kwargs& kw) {
 
 py::object wheel(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.wheel";
+  if (py::object batch = batch_call(self, "wheel", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::WheelCall>(kw, ctx);
   FieldNode tree;
@@ -132,6 +134,7 @@ py::object wheel(PyWheelset& self, const py::kwargs& kw) {
 
 py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.equilibrium";
+  if (py::object batch = batch_call(self, "equilibrium", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::EquilibriumCall>(kw, ctx);
   FieldNode tree;
@@ -151,6 +154,7 @@ py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
 
 py::object rigid(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.rigid";
+  if (py::object batch = batch_call(self, "rigid", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::RigidCall>(kw, ctx);
   FieldNode tree;
