@@ -69,4 +69,4 @@ def test_stub_is_generated_and_complete():
     contact = next(m for m in classes["Wheelset"].body if isinstance(m, ast.FunctionDef) and m.name == "contact")
     keywords = {a.arg for a in contact.args.kwonlyargs}
     ops = {op["name"]: op for op in wrc.operations()}
-    assert keywords == {o["key"] for o in ops["contact"]["options"] if "." not in o["key"]}
+    assert keywords == {o["key"] for o in ops["contact"]["options"] if "." not in o["key"]} | {"threads"}  # batches

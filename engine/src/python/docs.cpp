@@ -1,8 +1,11 @@
 #include "python/docs.hpp"
 
+#include "wrc/api/batch.hpp"
 #include "wrc/core/error.hpp"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace wrc::python {
 
@@ -70,6 +73,12 @@ std::string extra_keywords(const PythonEntry& e) {
   return "";
 }
 
+// A wheelset method that takes arrays for its number keys (a batch call, python/wrc/batch.py).
+bool batches(const PythonEntry& e) {
+  const auto& ops = api::batch_operations();
+  return e.python.starts_with("Wheelset.") && std::find(ops.begin(), ops.end(), e.operation) != ops.end();
+}
+
 std::string positional(const PythonEntry& e) {
   if (e.signature == "path") return "path: str | os.PathLike[str], ";
   if (e.signature == "table") return "table: Mapping[str, Any] | pandas.DataFrame | None = None, ";
@@ -91,6 +100,11 @@ std::string docstring(const PythonEntry& e) {
     else if (!o.fallback.empty()) s += fmt::format(", default {}", o.fallback);
     s += fmt::format("\n      {}\n", o.help);
   }
+  if (batches(e))
+    s += "\nBatch call: any option of type number may be a list or a numpy array; the arrays broadcast together "
+         "(numpy's rules) and every element is solved, on worker threads (threads=, default 0: all cores), equal to "
+         "the same call made alone. Returns a wrc.Batch: the fields as arrays over the batch's shape, .items, "
+         ".errors (docs/python.md, section Batch calls).\n";
   return s;
 }
 
@@ -100,10 +114,12 @@ std::string stub() {
       "import os\n"
       "from typing import Any, Literal, Mapping, Sequence\n\n"
       "import numpy\n"
+      "import numpy.typing\n"
       "import pandas\n\n"
       "from wrc._errors import Error as Error, NotConverged as NotConverged, OptionError as OptionError, "
       "ProfileError as ProfileError\n"
-      "from wrc._results import Result as Result\n\n"
+      "from wrc._results import Result as Result\n"
+      "from wrc.batch import Batch as Batch\n\n"
       "__version__: str\n\n";
   auto function = [](const PythonEntry& e, const char* indent) {
     const bool module_method = e.python.starts_with("profile.");  // a method of the stub's _ProfileModule
@@ -111,11 +127,14 @@ std::string stub() {
                                 module_method ? "self, " : "", positional(e), extra_keywords(e));
     for (const OptionInfo& o : api::operation(e.operation).options) {
       if (o.key.find('.') != std::string::npos) continue;  // a nested table's key: in its table
-      f += fmt::format("{}: {}{}, ", o.key, python_type(o), o.required ? "" : " = ...");
+      const bool array = batches(e) && o.type == "number";  // a batch's column
+      f += fmt::format("{}: {}{}, ", o.key, array ? "float | numpy.typing.ArrayLike" : python_type(o),
+                       o.required ? "" : " = ...");
     }
+    if (batches(e)) f += "threads: int = ..., ";
     if (f.ends_with(", ")) f.resize(f.size() - 2);
     if (f.ends_with("*")) f.resize(f.size() - (f.ends_with(", *") ? 3 : 1));
-    return f + fmt::format(") -> {}: ...\n", e.returns);
+    return f + fmt::format(") -> {}{}: ...\n", e.returns, batches(e) ? " | Batch" : "");
   };
   auto entries_of = [&](const std::string& owner, const char* indent) {
     std::string out;
@@ -151,6 +170,7 @@ std::string stub() {
   s += entries_of("profile", "    ") + "\nprofile: _ProfileModule\n\n";
   s += entries_of("", "");
   s += "def operations() -> list[dict[str, Any]]: ...\n";
+  s += "def batch_keys(operation: str) -> list[str]: ...\n";
   return s;
 }
 
