@@ -248,7 +248,7 @@ TEST_CASE("batch: the stop flag skips the elements not begun") {
   for (std::size_t i = 1; i < 4; ++i) CHECK(run.elements[i].status == api::BatchStatus::skipped);
 }
 
-TEST_CASE("batch: the batchable keys are the operations' number keys; bad batches throw") {
+TEST_CASE("batch: the batchable keys are the operations' number keys, and bad batches throw") {
   const auto wheel = api::batch_keys("wheel");
   for (const char* k : {"y", "yaw", "roll", "Fz", "V", "mu", "creepage.xi", "creepage.eta", "creepage.phi"})
     CHECK_MESSAGE(std::find(wheel.begin(), wheel.end(), k) != wheel.end(), k);
