@@ -1,6 +1,7 @@
 # Installs the build into a fresh prefix, builds examples/c against it twice (CMake's find_package(wrc) and
 # pkg-config's wrc.pc), runs the C program, the Python example (ctypes, standard library only) and the same
-# equilibrium through the installed `wrc run`, all from "/", and requires the three outputs to be identical.
+# equilibrium through the installed `wrc run`, all from "/", and requires the outputs to be identical; with the Python
+# package built, its example too (installed into the prefix's site-packages, finding its profiles from there).
 file(REMOVE_RECURSE ${PREFIX})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX} RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
@@ -10,8 +11,9 @@ set(flags "")
 set(env "")
 if(SANITIZE)
   set(flags "-fsanitize=address,undefined")
-  # Python is not built with the sanitizers: their runtimes must be loaded first.
-  foreach(lib libasan.so libubsan.so)
+  # Python is not built with the sanitizers: their runtimes must be loaded first, with libstdc++ (ASan intercepts
+  # __cxa_throw and finds the real one only in a library loaded at start).
+  foreach(lib libasan.so libubsan.so libstdc++.so)
     execute_process(COMMAND ${CC} -print-file-name=${lib} OUTPUT_VARIABLE path OUTPUT_STRIP_TRAILING_WHITESPACE)
     list(APPEND preload ${path})
   endforeach()
@@ -60,6 +62,12 @@ for _, side in ipairs{"left", "right"} do
 end
 ]])
 set(runs "c-cmake" "c-pkgconfig" "python" "lua")
+# The Python package, installed into the prefix's site-packages, when the build made it.
+if(PACKAGE_PYTHON)
+  list(APPEND runs "package")
+  set(cmd_package ${CMAKE_COMMAND} -E env ${env} PYTHONPATH=${PREFIX}/${PACKAGE_SITE} ${PACKAGE_PYTHON}
+      ${SOURCE}/examples/python/paper_equilibrium_package.py)
+endif()
 set(cmd_c-cmake ${cbuild}/paper_equilibrium)
 set(cmd_c-pkgconfig ${PREFIX}/paper_equilibrium_pc)
 set(cmd_python ${CMAKE_COMMAND} -E env ${env} WRC_LIBRARY=${PREFIX}/lib/libwrc.so.0 ${PYTHON}
@@ -83,3 +91,15 @@ foreach(run ${runs})
   endif()
 endforeach()
 message(STATUS "C, Python and Lua agree:\n${out_lua}")
+
+# The installed package reads the profiles of its own prefix (found from the module's folder, four levels up), not
+# those of the source tree it was built from.
+if(PACKAGE_PYTHON)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} PYTHONPATH=${PREFIX}/${PACKAGE_SITE} ${PACKAGE_PYTHON} -c
+                          "import wrc; print(wrc.profile.load('profiles/s1002.lua').source)"
+                  WORKING_DIRECTORY / RESULT_VARIABLE rc OUTPUT_VARIABLE source ERROR_VARIABLE err
+                  OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT rc EQUAL 0 OR NOT source MATCHES "^${PREFIX}/share/wrc/profiles/s1002.lua$")
+    message(FATAL_ERROR "the installed package read profiles/s1002.lua from '${source}', not from ${PREFIX}:\n${err}")
+  endif()
+endif()

@@ -1,0 +1,163 @@
+// Batch calls of Wheelset.contact, .wheel, .equilibrium and .rigid (python/wrc/batch.py, docs/python.md): when an
+// argument that batches holds an array, the elements run through the call layer's batch runner (wrc/api/batch.hpp)
+// on worker threads with the GIL released, each into its own FieldTree, and become a wrc.Batch.
+#include "python/bindings.hpp"
+#include "python/convert.hpp"
+#include "wrc/api/batch.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <thread>
+
+namespace wrc::python {
+namespace {
+
+py::object batch_module() { return py::module_::import("wrc.batch"); }
+py::object error_class(const char* name) { return py::module_::import("wrc._errors").attr(name); }
+
+// Whether a value may make the call a batch: a list, a tuple, an array of one dimension or more, or a mapping (a
+// nested table such as creepage) holding one. The common one-by-one call is decided here without importing numpy.
+bool maybe_array(py::handle v, int depth = 0) {
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) return true;
+  if (py::hasattr(v, "ndim")) return py::getattr(v, "ndim").cast<long>() > 0;
+  if (depth == 0 && py::isinstance<py::dict>(v))
+    for (auto item : py::reinterpret_borrow<py::dict>(v))
+      if (maybe_array(item.second, 1)) return true;
+  return false;
+}
+
+// The threads= argument: a whole number >= 0 (0: all cores).
+int threads_argument(py::handle v, const char* context) {
+  if (py::isinstance<py::bool_>(v) || !py::isinstance<py::int_>(v))
+    throw py::type_error(fmt::format("{}: threads must be a whole number (0: all cores), got {}", context,
+                                     py::str(py::type::of(v).attr("__name__")).cast<std::string>()));
+  const long long n = v.cast<long long>();
+  if (n < 0) throw OptionFailure(fmt::format("{}: threads = {} must be >= 0 (0: all cores)", context, n));
+  return static_cast<int>(std::min<long long>(n, 1 << 20));  // more than the elements run as many as them
+}
+
+// Runs the batch on a thread of its own while this one, without the GIL, wakes every 50 ms to let Python handle
+// signals: on KeyboardInterrupt the elements not begun are skipped, the run ends and the exception propagates.
+api::BatchRun run_interruptible(const Wheelset& model, const api::BatchInput& input, std::deque<FieldTree>& trees,
+                                int threads) {
+  std::atomic<bool> stop{false};
+  api::BatchRun run;
+  std::exception_ptr error;
+  bool done = false, interrupted = false;
+  std::mutex mutex;
+  std::condition_variable finished;
+  {
+    py::gil_scoped_release release;
+    std::thread runner([&] {
+      try {
+        run = api::run_batch(model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
+      } catch (...) {
+        error = std::current_exception();
+      }
+      std::lock_guard lock(mutex);
+      done = true;
+      finished.notify_all();
+    });
+    std::unique_lock lock(mutex);
+    while (!finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) {
+      if (interrupted) continue;
+      lock.unlock();
+      {
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) interrupted = true;  // the exception stays set for this thread
+      }
+      if (interrupted) stop = true;
+      lock.lock();
+    }
+    lock.unlock();
+    runner.join();
+  }
+  if (interrupted) throw py::error_already_set();
+  if (error) std::rethrow_exception(error);
+  return run;
+}
+
+// An element's exception as a one-by-one call raises it, with .index (its index into the batch).
+py::object element_error(const api::BatchElement& e, py::object result, py::tuple index) {
+  py::object x = e.status == api::BatchStatus::not_converged ? error_class("NotConverged")(e.message, result)
+                 : e.input                                    ? error_class("OptionError")(e.message)
+                                                              : error_class("Error")(e.message);
+  x.attr("index") = index;
+  return x;
+}
+
+}  // namespace
+
+py::object batch_call(PyWheelset& self, const char* operation, const char* context, const py::kwargs& kw) {
+  bool arrays = false;
+  for (auto item : kw) arrays |= item.first.cast<std::string>() == "threads" || maybe_array(item.second);
+  if (!arrays) return py::none();  // a one-by-one call
+  py::dict given(kw);
+  py::object threads_given = given.attr("pop")("threads", py::none());
+  const py::object split = batch_module().attr("split_batch")(context, given, api::batch_keys(operation),
+                                                              error_class("OptionError"));
+  if (split.is_none()) {
+    if (threads_given.is_none()) return py::none();
+    throw OptionFailure(fmt::format("{}: threads = is an option of batch calls: give an array for one of the keys of "
+                                    "type number ({})", context, fmt::join(api::batch_keys(operation), ", ")));
+  }
+  const int threads = threads_given.is_none() ? 0 : threads_argument(threads_given, context);
+  const auto model = self.get(context);
+  const py::tuple parts = split.cast<py::tuple>();
+  api::BatchInput input;
+  input.operation = operation;
+  input.context = context;
+  input.shared = to_options(parts[0].cast<py::kwargs>(), context);
+  const py::tuple shape = parts[3].cast<py::tuple>();
+  input.count = 1;
+  for (auto n : shape) input.count *= n.cast<std::size_t>();
+  const auto keys = parts[1].cast<std::vector<std::string>>();
+  const py::list columns = parts[2].cast<py::list>();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const auto a = columns[k].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+    input.columns.push_back({keys[k], std::vector<double>(a.data(), a.data() + a.size())});
+  }
+
+  std::deque<FieldTree> trees(input.count);
+  const api::BatchRun run = run_interruptible(*model, input, trees, threads);
+
+  // The same error for every element is the call's (a misspelt key, a value of the wrong kind): raised.
+  const auto& el = run.elements;
+  if (!el.empty() && std::all_of(el.begin(), el.end(), [&](const api::BatchElement& e) {
+        return e.status == api::BatchStatus::failed && e.input && e.message == el.front().message;
+      }))
+    throw OptionFailure(el.front().message);
+
+  py::list results, errors;
+  const py::object unravel = py::module_::import("numpy").attr("unravel_index");
+  for (std::size_t i = 0; i < el.size(); ++i) {
+    const bool described = el[i].status == api::BatchStatus::done || el[i].status == api::BatchStatus::not_converged;
+    py::object result = described ? to_python(trees[i].root) : py::none();
+    trees[i].root = FieldNode();  // its memory back as soon as it is converted
+    if (el[i].status == api::BatchStatus::done) {
+      results.append(result);
+      continue;
+    }
+    results.append(py::none());
+    py::tuple index = py::tuple(unravel(i, shape));
+    py::list plain;
+    for (auto n : index) plain.append(n.cast<long long>());
+    errors.append(element_error(el[i], result, py::tuple(plain)));
+  }
+  py::object b = batch_module().attr("Batch")(operation, shape, results, errors, run.threads, run.seconds);
+  if (!run.threads_note.empty()) b.attr("threads_note") = run.threads_note;
+  return b;
+}
+
+void register_batch(py::module_& m) {
+  m.def("batch_keys", &api::batch_keys, py::arg("operation"),
+        "The keys of an operation (contact, wheel, equilibrium, rigid) that may be arrays in a batch call: its keys of "
+        "type number, from the engine's option table (a nested key as 'creepage.xi').");
+}
+
+}  // namespace wrc::python

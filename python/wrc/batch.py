@@ -1,0 +1,241 @@
+"""Batch calls: ws.contact, ws.wheel, ws.equilibrium and ws.rigid with arrays for number arguments.
+
+Any argument of type "number" of the operation (the pose, the loads, the creepages, speeds, friction, tolerances:
+``wrc.batch_keys(op)`` lists them, from the engine's option table) may be a numpy array or a list; the arrays
+broadcast together (numpy's rules) to the batch shape, and each element is one call, solved on worker threads
+(``threads=``, default all cores) with the GIL released. The result is a :class:`Batch`.
+
+Each element's result equals the same call made alone, bit for bit: elements are read from their own options and
+start cold (the engine's per-thread workspace forgets the element before), whatever the thread count or order.
+"""
+import numbers
+
+import numpy as np
+
+__all__ = ["Batch", "BatchList", "BatchNode", "split_batch"]
+
+
+def _is_array(v):
+    return isinstance(v, (list, tuple)) or getattr(v, "ndim", 0) > 0  # numpy arrays, pandas Series
+
+
+def _column(context, key, value):
+    try:
+        a = np.asarray(value)
+    except ValueError as e:  # a ragged list
+        raise TypeError(f"{context}: '{key}' must be a number or an array of numbers ({e})") from None
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"{context}: '{key}' must be a number or an array of numbers, got an array of {a.dtype}")
+    return a
+
+
+def split_batch(context, kwargs, batch_keys, option_error):
+    """Splits keyword arguments into the shared options and the batch's columns.
+
+    Returns None when no batchable argument is an array (a one-by-one call), else (shared, keys, columns, shape):
+    `shared` the arguments without the columns, `keys` the columns' keys ("creepage.xi" for a nested one),
+    `columns` contiguous float64 arrays of the batch's size, `shape` the broadcast shape.
+    """
+    batchable = set(batch_keys)
+    shared, keys, arrays = dict(kwargs), [], []
+    for key, value in kwargs.items():
+        if isinstance(value, dict):  # a nested table: creepage = {xi = ...}
+            inner = dict(value)
+            for k, v in value.items():
+                if f"{key}.{k}" in batchable and _is_array(v):
+                    keys.append(f"{key}.{k}")
+                    arrays.append(_column(context, f"{key}.{k}", v))
+                    del inner[k]
+            shared[key] = inner
+        elif key in batchable and _is_array(value):
+            keys.append(key)
+            arrays.append(_column(context, key, value))
+            del shared[key]
+    if not keys:
+        return None
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    except ValueError:
+        listed = ", ".join(f"{k} {a.shape}" for k, a in zip(keys, arrays))
+        raise option_error(f"{context}: the batch's arrays do not broadcast together: {listed}") from None
+    columns = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).ravel() for a in arrays]
+    return shared, keys, columns, shape
+
+
+# ---- the result: fields stacked over the batch ----
+
+_MISSING = object()
+
+
+def _is_node(v):
+    return hasattr(v, "keys") and not isinstance(v, dict) or isinstance(v, dict)
+
+
+def _field(v, key):
+    if isinstance(v, dict):
+        return v.get(key, _MISSING)
+    return getattr(v, key, _MISSING)
+
+
+def _stack(values, shape):
+    """A BatchNode, BatchList or array of the values (one per element, _MISSING where an element has none), or
+    _MISSING when they do not stack (arrays, grids, values of different kinds)."""
+    present = [v for v in values if v is not _MISSING]
+    if not present:
+        return _MISSING
+    if all(_is_node(v) for v in present):
+        return BatchNode(values, shape)
+    if all(isinstance(v, list) for v in present):
+        return BatchList(values, shape)
+    full = len(present) == len(values)
+    if all(isinstance(v, (bool, np.bool_)) for v in present):
+        if full:
+            return np.array(values, dtype=bool).reshape(shape)
+    elif all(isinstance(v, numbers.Integral) and not isinstance(v, (bool, np.bool_)) for v in present):
+        if full:
+            return np.array(values, dtype=np.int64).reshape(shape)
+    elif all(isinstance(v, str) for v in present):
+        a = np.empty(len(values), dtype=object)
+        a[:] = [None if v is _MISSING else v for v in values]
+        return a.reshape(shape)
+    elif not all(isinstance(v, numbers.Real) for v in present):
+        return _MISSING  # arrays, grids: per element only (Batch.items)
+    return np.array([np.nan if v is _MISSING else float(v) for v in values], dtype=np.float64).reshape(shape)
+
+
+class BatchNode:
+    """A table of the results stacked over the batch: its fields are arrays of the batch's shape (or nested nodes
+    and lists), in the order the results give them."""
+
+    def __init__(self, values, shape):
+        self._values, self._shape, self._cache = values, shape, {}
+        keys = {}
+        for v in values:
+            if v is not _MISSING:
+                for k in v.keys():
+                    keys.setdefault(k, None)
+        self._keys = list(keys)
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name not in self._cache:
+            if name not in self._keys:
+                raise AttributeError(f"no field '{name}' in the batch's results (fields: {', '.join(self._keys)})")
+            self._cache[name] = _stack([_MISSING if v is _MISSING else _field(v, name) for v in self._values],
+                                       self._shape)
+        got = self._cache[name]
+        if got is _MISSING:
+            raise AttributeError(f"the field '{name}' does not stack over the batch (arrays and grids of each "
+                                 "element are in Batch.items)")
+        return got
+
+    __getitem__ = __getattr__
+
+    def keys(self):
+        """The fields that stack over the batch."""
+        return [k for k in self._keys if self._stacks(k)]
+
+    def _stacks(self, k):
+        try:
+            self.__getattr__(k)
+            return True
+        except AttributeError:
+            return False
+
+    def to_dict(self):
+        out = {}
+        for k in self.keys():
+            v = self.__getattr__(k)
+            out[k] = v.to_dict() if isinstance(v, (BatchNode, BatchList)) else v
+        return out
+
+    def __dir__(self):
+        return list(super().__dir__()) + self.keys()
+
+    def __repr__(self):
+        return f"<wrc batch fields, shape {self._shape}: {', '.join(self.keys())}>"
+
+
+class BatchList:
+    """A list field (e.g. patches) over the batch, padded to the longest: ``count`` is each element's length (int64
+    array of the batch's shape; 0 for a failed element), ``b.patches[k]`` the k-th items as a node of arrays of the
+    batch's shape (NaN where an element has fewer than k + 1), and ``b.patches.pmax`` the field of every item as an
+    array of shape batch shape + (longest,), NaN-padded."""
+
+    def __init__(self, values, shape):
+        self._values, self._shape = values, shape
+        self.count = np.array([0 if v is _MISSING else len(v) for v in values], dtype=np.int64).reshape(shape)
+        self._longest = int(self.count.max()) if self.count.size else 0
+        self._items = {}
+        self._padded = None
+
+    def __len__(self):
+        return self._longest
+
+    def __getitem__(self, k):
+        if not isinstance(k, numbers.Integral):
+            raise TypeError("a batch list is indexed by an item number (0-based)")
+        if k < 0:
+            k += self._longest
+        if not 0 <= k < self._longest:
+            raise IndexError(f"item {k} of a list whose longest has {self._longest} items")
+        if k not in self._items:
+            self._items[k] = BatchNode([v[k] if v is not _MISSING and len(v) > k else _MISSING for v in self._values],
+                                       self._shape)
+        return self._items[k]
+
+    def __iter__(self):
+        return (self[k] for k in range(self._longest))
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if self._padded is None:  # items along a last axis
+            L = self._longest
+            flat = [v[k] if v is not _MISSING and len(v) > k else _MISSING for v in self._values for k in range(L)]
+            self._padded = BatchNode(flat, tuple(self._shape) + (L,))
+        return getattr(self._padded, name)
+
+    def to_dict(self):
+        return {"count": self.count, "items": [self[k].to_dict() for k in range(self._longest)]}
+
+    def __repr__(self):
+        return f"<wrc batch list, shape {self._shape}, longest {self._longest}>"
+
+
+class Batch(BatchNode):
+    """The result of a batch call.
+
+    Fields: every numeric field of the results, as an array of the batch's shape (``b.force.y``, ``b.converged``):
+    float64 with NaN where an element failed or has no such field; int64 and bool arrays when every element has the
+    field, float64 with NaN otherwise. Strings are object arrays (None where absent). List fields (patches) are
+    :class:`BatchList` (padded with NaN to the longest, with ``count``). Arrays and grids of each element are in
+    ``items`` only.
+
+    Also: ``shape``, ``size``, ``ok`` (bool array: the element has a result in the arrays), ``items`` (object array
+    of the batch's shape: each element's wrc.Result, None where it failed), ``errors`` (list of the failed elements'
+    exceptions, each with ``.index``, its index into the batch: wrc.Error, or wrc.NotConverged with ``.result``),
+    ``threads`` (worker threads run), ``seconds`` (wall time of the solves).
+    """
+
+    def __init__(self, operation, shape, results, errors, threads, seconds):
+        values = [_MISSING if r is None else r for r in results]
+        super().__init__(values, tuple(shape))
+        self.operation = operation
+        self.shape = tuple(shape)
+        self.size = len(results)
+        items = np.empty(len(results), dtype=object)
+        items[:] = list(results)
+        self.items = items.reshape(self.shape)
+        self.ok = np.array([r is not None for r in results], dtype=bool).reshape(self.shape)
+        self.errors = errors
+        self.threads = threads
+        self.seconds = seconds
+
+    def __len__(self):
+        return self.shape[0] if self.shape else 1
+
+    def __repr__(self):
+        return (f"<wrc.Batch {self.operation}, shape {self.shape}, {len(self.errors)} failed, "
+                f"{self.threads} threads, {self.seconds:.3g} s>")

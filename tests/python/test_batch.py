@@ -1,0 +1,223 @@
+"""Batch calls (python/wrc/batch.py, engine/src/python/batch_binding.cpp): arrays for the number arguments of
+Wheelset.contact, .wheel, .equilibrium and .rigid.
+
+The reference of every batch is the same calls made one by one (each a fresh, cold call of the engine): a batch must
+equal them bit for bit (np.array_equal on every field, NaN where a field is NaN in both), on one or two threads."""
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import wrc
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+
+
+@pytest.fixture(scope="module")
+def ws():
+    return wrc.wheelset(wheel=wrc.profile.load(os.path.join(ROOT, "profiles/s1002.lua")),
+                        rail=wrc.profile.load(os.path.join(ROOT, "profiles/60e1.lua")), grid=0.4e-3)
+
+
+def same(a, b, where="result"):
+    """a and b the same values: results field by field, lists item by item, arrays and numbers bit for bit."""
+    if isinstance(a, wrc.Result):
+        assert isinstance(b, wrc.Result), where
+        assert list(a.keys()) == list(b.keys()), where
+        for k in a.keys():
+            same(a[k], b[k], f"{where}.{k}")
+    elif isinstance(a, list):
+        assert isinstance(b, list) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            same(x, y, f"{where}[{i}]")
+    elif isinstance(a, np.ndarray):
+        assert a.dtype == b.dtype and a.shape == b.shape, where
+        assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), where
+    elif isinstance(a, float):
+        assert isinstance(b, float) and (a == b or (np.isnan(a) and np.isnan(b))), f"{where}: {a!r} != {b!r}"
+    else:
+        assert type(a) is type(b) and a == b, f"{where}: {a!r} != {b!r}"
+
+
+def one_by_one(method, shape, **kwargs):
+    """The calls of a batch made alone: kwargs broadcast here with numpy's own rules, element by element."""
+    arrays = {k: np.asarray(v) for k, v in kwargs.items() if isinstance(v, (list, np.ndarray))}
+    nested = {(k, j): np.asarray(x) for k, v in kwargs.items() if isinstance(v, dict)
+              for j, x in v.items() if isinstance(x, (list, np.ndarray))}
+    out = np.empty(shape, dtype=object)
+    for index in np.ndindex(*shape):
+        call = dict(kwargs)
+        for k, a in arrays.items():
+            call[k] = float(np.broadcast_to(a, shape)[index])
+        for (k, j), a in nested.items():
+            call[k] = dict(call[k], **{j: float(np.broadcast_to(a, shape)[index])})
+        out[index] = method(**call)
+    return out
+
+
+def check_batch(method, shape, **kwargs):
+    """The batch on 1 and 2 threads against the calls one by one: every item and every stacked field."""
+    alone = one_by_one(method, shape, **kwargs)
+    batches = [method(threads=t, **kwargs) for t in (1, 2)]
+    for b in batches:
+        assert isinstance(b, wrc.Batch)
+        assert b.shape == shape and b.errors == [] and b.ok.all()
+        for index in np.ndindex(*shape):
+            same(b.items[index], alone[index], f"items{index}")
+    b = batches[1]
+    assert b.threads == min(2, int(np.prod(shape)))
+    # stacked fields: each element's value at its index
+    for key in ("converged", "iterations", "z", "Fz", "Y_Q", "y", "yaw"):
+        if key in b.keys():
+            got = getattr(b, key)
+            assert got.shape == shape
+            want = np.array([alone[i][key] for i in np.ndindex(*shape)]).reshape(shape)
+            assert got.dtype == want.dtype and np.array_equal(got, want), key
+    return batches[1], alone
+
+
+def test_wheel_batch_equals_the_calls_one_by_one(ws):
+    b, alone = check_batch(ws.wheel, (5,), side="left", y=np.linspace(0, 7e-3, 5), Fz=100e3)
+    assert np.array_equal(b.force.y, [w.force.y for w in alone])
+    assert np.array_equal(b.force.z, [w.force.z for w in alone])
+    # patches: padded with NaN to the longest, with their count
+    counts = [len(w.patches) for w in alone]
+    assert np.array_equal(b.patches.count, counts)
+    assert len(b.patches) == max(counts)
+    pmax = b.patches.pmax
+    assert pmax.shape == (5, max(counts))
+    for i, w in enumerate(alone):
+        for k in range(max(counts)):
+            want = w.patches[k].pmax if k < counts[i] else np.nan
+            assert np.array_equal(pmax[i, k], want, equal_nan=True)
+            assert np.array_equal(b.patches[k].pmax[i], want, equal_nan=True)
+
+
+def test_wheel_with_rolling_keys(ws):
+    b, alone = check_batch(ws.wheel, (3,), side="left", y=[0.0, 2e-3, 4e-3], yaw=np.array([-1e-3, 0, 1e-3]),
+                           Fz=80e3, V=30.0, mu=0.3)
+    assert np.array_equal(b.creep_force.y, [w.creep_force.y for w in alone])
+
+
+def test_contact_frictionless_and_with_a_creepage_column(ws):
+    b, alone = check_batch(ws.contact, (3,), y=np.array([0, 1e-3, 2e-3]), z=-40e-6)
+    assert np.array_equal(b.left.force.z, [c.left.force.z for c in alone])
+    # a nested key batched beside a shared one, broadcast against y: shape (2, 3)
+    b, alone = check_batch(ws.contact, (2, 3), y=np.array([[0.0], [3e-3]]), z=-40e-6, V=30.0, mu=0.3,
+                           creepage={"xi": np.array([-1e-3, 0, 1e-3]), "eta": 5e-4})
+    assert np.array_equal(b.creep_force.x, np.array([[c.creep_force.x for c in row] for row in alone]))
+
+
+def test_equilibrium_and_rigid(ws):
+    b, alone = check_batch(ws.equilibrium, (3,), y=np.array([0, 2e-3, 4e-3]), Q=200e3)
+    assert np.array_equal(b.Y_Q, [e.Y_Q for e in alone])
+    b, alone = check_batch(ws.rigid, (2, 2), y=np.array([[-2e-3], [3e-3]]), yaw=[0.0, 2e-3])
+    assert b.shape == (2, 2)
+
+
+def test_broadcasting_shapes(ws):
+    b = ws.rigid(y=np.zeros((3, 1)), yaw=np.zeros((1, 4)))
+    assert b.shape == (3, 4) and b.size == 12 and b.items.shape == (3, 4)
+    assert b.y.shape == (3, 4)
+    b = ws.rigid(y=np.linspace(0, 1e-3, 4).reshape(2, 2), yaw=0.0)
+    assert b.shape == (2, 2)
+    assert np.array_equal(b.y, np.linspace(0, 1e-3, 4).reshape(2, 2))
+    assert ws.rigid(y=[]).shape == (0,)
+    with pytest.raises(wrc.OptionError, match="do not broadcast together: y \\(2,\\), yaw \\(3,\\)"):
+        ws.rigid(y=[0.0, 1e-3], yaw=[0.0, 1e-3, 2e-3])
+    with pytest.raises(ValueError):  # OptionError is a ValueError
+        ws.rigid(y=[0.0, 1e-3], yaw=[0.0, 1e-3, 2e-3])
+
+
+def test_a_failing_element_is_recorded_and_the_others_are_solved(ws):
+    ys = np.array([0.0, np.nan, 3e-3])
+    b = ws.wheel(side="left", y=ys, Fz=100e3, threads=2)
+    assert np.array_equal(b.ok, [True, False, True])
+    assert len(b.errors) == 1
+    e = b.errors[0]
+    assert isinstance(e, wrc.OptionError) and e.index == (1,)
+    with pytest.raises(wrc.OptionError) as alone:
+        ws.wheel(side="left", y=float("nan"), Fz=100e3)
+    assert str(e) == str(alone.value) and "'y'" in str(e)
+    assert b.items[1] is None and np.isnan(b.force.y[1]) and np.isnan(b.converged[1])
+    for i in (0, 2):
+        same(b.items[i], ws.wheel(side="left", y=float(ys[i]), Fz=100e3))
+        assert b.force.y[i] == b.items[i].force.y
+    # an error of the solve (pressed 5 mm in) is a wrc.Error, not an OptionError, with the one-by-one message
+    c = ws.contact(y=0.0, z=[-40e-6, -5e-3])
+    assert np.array_equal(c.ok, [True, False])
+    with pytest.raises(wrc.Error) as alone:
+        ws.contact(y=0.0, z=-5e-3)
+    assert type(c.errors[0]) is wrc.Error and str(c.errors[0]) == str(alone.value)
+
+
+def test_not_converged_elements(ws):
+    # a load the wheel carries only deeper than max_penetration: out of reach
+    kw = dict(side="left", y=0.0, max_penetration=40e-6)
+    b = ws.wheel(Fz=[20e3, 400e3], **kw)
+    assert np.array_equal(b.ok, [True, False])
+    e = b.errors[0]
+    assert isinstance(e, wrc.NotConverged) and e.index == (1,)
+    assert e.result.converged is False
+    with pytest.raises(wrc.NotConverged) as alone:
+        ws.wheel(Fz=400e3, **kw)
+    assert str(e) == str(alone.value)
+    same(e.result, alone.value.result)
+    assert np.isnan(b.z[1])  # not in the arrays: a failure
+    # on_failure = "return": the element is a result with converged = False, in the arrays
+    r = ws.wheel(Fz=[20e3, 400e3], on_failure="return", **kw)
+    assert r.errors == [] and r.ok.all()
+    assert np.array_equal(r.converged, [True, False])
+    same(r.items[1], alone.value.result)
+
+
+def test_threads_one_and_two_give_the_same_batch(ws):
+    kw = dict(side="right", y=np.linspace(-3e-3, 5e-3, 6), Fz=np.array([60e3, 120e3]).reshape(2, 1))
+    one, two = ws.wheel(threads=1, **kw), ws.wheel(threads=2, **kw)
+    assert one.threads == 1 and two.threads == 2
+    for index in np.ndindex(*one.shape):
+        same(one.items[index], two.items[index])
+    for key in ("z", "approach", "residual", "iterations"):
+        assert np.array_equal(getattr(one, key), getattr(two, key))
+
+
+def test_bad_input(ws):
+    with pytest.raises(TypeError, match="'y' must be a number or an array of numbers, got an array of <U"):
+        ws.rigid(y=["a", "b"])
+    with pytest.raises(TypeError, match="'y' must be a number or an array of numbers"):
+        ws.rigid(y=[[0.0, 1.0], [0.0]])
+    with pytest.raises(TypeError, match="complex"):
+        ws.rigid(y=np.array([1j]))
+    # a misspelt key fails every element alike: raised, naming the closest key as a one-by-one call does
+    with pytest.raises(wrc.OptionError) as batch:
+        ws.rigid(y=[0.0, 1e-3], yaww=0.0)
+    with pytest.raises(wrc.OptionError) as alone:
+        ws.rigid(y=0.0, yaww=0.0)
+    assert str(batch.value) == str(alone.value) and "yaw" in str(alone.value)
+    with pytest.raises(wrc.OptionError, match="threads = -1"):
+        ws.rigid(y=[0.0], threads=-1)
+    with pytest.raises(TypeError, match="threads must be a whole number"):
+        ws.rigid(y=[0.0], threads="2")
+    with pytest.raises(wrc.OptionError, match="threads = is an option of batch calls"):
+        ws.rigid(y=0.0, threads=2)
+    assert "creepage.xi" in wrc.batch_keys("wheel") and "Fz" in wrc.batch_keys("wheel")
+    assert "side" not in wrc.batch_keys("wheel")
+    with pytest.raises(wrc.Error, match="not an operation of batch calls"):
+        wrc.batch_keys("sweep")
+
+
+def test_keyboard_interrupt_stops_between_elements(ws):
+    ys = np.linspace(0, 7e-3, 20000)  # tens of seconds of solves
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t0 = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        ws.wheel(side="left", y=ys, Fz=100e3, threads=2)
+    elapsed = time.perf_counter() - t0
+    timer.join()
+    assert elapsed < 3.0, elapsed  # stopped, not run to the end
+    # the wheelset still works
+    assert ws.wheel(side="left", y=0.0, Fz=100e3).converged
