@@ -20,9 +20,9 @@ import sys
 from collections.abc import Mapping, Sequence
 
 import numpy as np
-import matplotlib
 from matplotlib.figure import Figure
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap, BoundaryNorm
 from matplotlib.patches import Patch as _LegendPatch
 
@@ -277,9 +277,23 @@ def _grid_of(patch, field, hint):
     return a, xe, ye
 
 
+def _outline(ax, inside, xe, ye, **style):
+    """The edge of the contact: the element edges between an element in contact and one outside (or the grid's
+    border), so that the line follows the elements the map shows."""
+    pad = np.zeros((inside.shape[0] + 2, inside.shape[1] + 2), dtype=bool)
+    pad[1:-1, 1:-1] = inside
+    segs = []
+    vj, vi = np.nonzero(pad[1:-1, 1:] != pad[1:-1, :-1])        # edges between columns i-1 and i (x = xe[i])
+    segs += [((xe[i], ye[j]), (xe[i], ye[j + 1])) for j, i in zip(vj, vi)]
+    hj, hi = np.nonzero(pad[1:, 1:-1] != pad[:-1, 1:-1])        # edges between rows j-1 and j (y = ye[j])
+    segs += [((xe[i], ye[j]), (xe[i + 1], ye[j])) for j, i in zip(hj, hi)]
+    if segs:
+        ax.add_collection(LineCollection(segs, **{"colors": "k", "linewidths": 0.8, **style}))
+
+
 def _map_labels(ax, patch):
     conformal = _get(patch, "surface", "planar") == "conformal" or _has(patch, "rows")
-    ax.set_xlabel("x along the track (mm), rolling direction →" if conformal else "x along t1 (mm), rolling direction →")
+    ax.set_xlabel(("x along the track" if conformal else "x along t1") + " (mm), rolling direction →")
     ax.set_ylabel("s along the rail's profile (mm)" if conformal else "y along t2 (mm)")
     ax.set_aspect("equal")
 
@@ -327,9 +341,7 @@ def pressure_map(patch, *, ax=None, path=None, figsize=None, cmap="viridis"):
     ax = ax or fig.subplots()
     mpa = np.where(p > 0, p / 1e6, np.nan)
     m = ax.pcolormesh(xe, ye, mpa, cmap=cmap, vmin=0, shading="flat")
-    xc, yc = 0.5 * (xe[1:] + xe[:-1]), 0.5 * (ye[1:] + ye[:-1])
-    if np.any(p > 0) and np.any(p <= 0):
-        ax.contour(xc, yc, (p > 0).astype(float), levels=[0.5], colors="k", linewidths=0.8)
+    _outline(ax, p > 0, xe, ye)
     fig.colorbar(m, ax=ax, label="normal pressure p (MPa)", shrink=0.9)
     _map_labels(ax, patch)
     _gauge_note(ax, patch, ye)
@@ -384,8 +396,7 @@ def traction_map(patch, *, path=None, figsize=None, arrows=14):
         ax3.quiver(X[sub][moving], Y[sub][moving], sx[sub][moving], sy[sub][moving], color="w", width=0.004)
     ax3.set_title("slip of the wheel relative to the rail", fontsize=9)
     for ax in (ax1, ax2, ax3):
-        if inside.any() and (~inside).any():
-            ax.contour(xc, yc, inside.astype(float), levels=[0.5], colors="k", linewidths=0.6)
+        _outline(ax, inside, xe, ye, linewidths=0.6)
         _map_labels(ax, patch)
         _gauge_note(ax, patch, ye)
     cr = _get(patch, "creepage", None)
