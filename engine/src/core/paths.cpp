@@ -34,11 +34,16 @@ fs::path module_dir() {
   return ec ? fs::path() : p.parent_path();
 }
 
-// The install prefix 1 to 3 levels above `dir` (<prefix>/bin, <prefix>/lib, <prefix>/lib/<multiarch>), or empty.
+// The install prefix `dir` itself or 1 to 4 levels above it (<prefix>/bin, <prefix>/lib, <prefix>/lib/<multiarch>,
+// the Python module in <prefix>/lib/pythonX.Y/site-packages/wrc, or a Python wheel's package folder that carries
+// its own share/wrc and lib/wrc/plugins), or empty.
 fs::path install_prefix(const fs::path& dir) {
   fs::path p = dir;
-  for (int up = 0; up < 3 && !p.empty() && p != p.parent_path(); ++up) {
-    p = p.parent_path();
+  for (int up = 0; up <= 4 && !p.empty(); ++up) {
+    if (up > 0) {
+      if (p == p.parent_path()) break;
+      p = p.parent_path();
+    }
     if (has_library(p / WRC_INSTALL_DATADIR)) return p;
   }
   return {};

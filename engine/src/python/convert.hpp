@@ -1,0 +1,25 @@
+// Python values <-> the engine's: keyword arguments into an OptionTable (numbers, booleans, strings, sequences and
+// 1-D numpy arrays, mappings, profiles; None: not given), a described result (FieldNode) into wrc.Result objects,
+// lists, numpy arrays and 2-D grids. A Python value that no option can be is a TypeError naming the key.
+#pragma once
+
+#include "python/bindings.hpp"
+#include "python/field_tree.hpp"
+#include "wrc/core/options.hpp"
+
+#include <pybind11/pybind11.h>
+
+namespace wrc::python {
+
+// The keyword arguments as an option table; `context` names the call in messages ("Wheelset.contact").
+OptionTable to_options(const py::kwargs& kwargs, const std::string& context);
+// One value (a mapping's entries become a table).
+OptionValue to_option(py::handle value, const std::string& context, int depth = 0);
+// A mapping (dict, wrc.Result, pandas.DataFrame: its columns) as a table.
+OptionTable mapping_options(py::handle mapping, const std::string& context, int depth = 0);
+
+// The result: a table becomes a wrc.Result, a list a Python list, numbers a 1-D float64 (integers int64) numpy array,
+// a grid a 2-D float64 array of shape (ny, nx).
+py::object to_python(const FieldNode& node);
+
+}  // namespace wrc::python

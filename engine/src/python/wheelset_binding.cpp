@@ -1,0 +1,348 @@
+// wrc.wheelset, the wrc.Wheelset methods, wrc.Trajectory and wrc.conicity: each reads its request of the call layer
+// from the keyword arguments, runs it with the GIL released and converts the result the engine describes. Lua's
+// twins: engine/src/lua/wheelset_binding.cpp and kinematics_binding.cpp.
+#include "python/bindings.hpp"
+#include "python/convert.hpp"
+#include "python/docs.hpp"
+#include "wrc/api/calls.hpp"
+#include "wrc/host/terminal.hpp"
+
+#include <pybind11/stl.h>
+
+namespace wrc::python {
+
+std::shared_ptr<const Wheelset> PyWheelset::get(const char* context) const {
+  if (!model) fail("{}: the wrc.Wheelset was closed (close() releases it)", context);
+  return model;
+}
+
+Lease::Lease(PyWheelset& w, std::shared_ptr<const Wheelset> model) : w_(w) {
+  {
+    std::lock_guard lock(w.pool_mutex);
+    if (!w.pool.empty()) {
+      ws_ = std::move(w.pool.back());
+      w.pool.pop_back();
+    }
+  }
+  if (!ws_) ws_ = model->make_workspace();
+  ws_->forget();
+}
+
+Lease::~Lease() {
+  std::lock_guard lock(w_.pool_mutex);
+  w_.pool.push_back(std::move(ws_));
+}
+
+namespace {
+
+// A trajectory: its steps one at a time (a Python thread may call while another waits without the GIL).
+struct PyTrajectory {
+  std::unique_ptr<Trajectory> trajectory;
+  std::mutex mutex;
+  Trajectory& get(const char* context) const {
+    if (!trajectory) fail("{}: the wrc.Trajectory was closed (close() releases it)", context);
+    return *trajectory;
+  }
+};
+
+py::object results(const char* name) { return py::module_::import("wrc._results").attr(name); }
+
+// The request X of a call from its keyword arguments, validated: an engine error here is an OptionError.
+template <class X>
+X read_call(const py::kwargs& kw, const char* ctx) {
+  const OptionTable t = to_options(kw, ctx);
+  return reading([&] {
+    X x = api::read<X>(t, ctx);
+    if constexpr (requires { x.validate(); }) x.validate();
+    return x;
+  });
+}
+
+// A list of names ("coarse", "topology") is the strategy "coarse+topology", as Lua's list form.
+py::kwargs strategy_as_name(const py::kwargs& kw) {
+  py::kwargs out;
+  for (auto [k, v] : kw) {
+    if (k.cast<std::string>() == "strategy" && (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)))
+      out[k] = py::str("+").attr("join")(v);
+    else out[k] = v;
+  }
+  return out;
+}
+
+PyWheelset* make_wheelset(const py::kwargs& given) {
+  const char* ctx = "wrc.wheelset";
+  const OptionTable t = to_options(strategy_as_name(given), ctx);
+  WheelsetParams params;
+  WheelsetProfiles profiles;
+  OptionTable strategy_options;
+  reading([&] {
+    OptionReader r(t, ctx);
+    r.allow({"wheel", "rail", "left_wheel", "right_wheel", "left_rail", "right_rail"});
+    params = read_wheelset_params(r);
+    if (const OptionValue* v = r.value("strategy_options")) {
+      if (v->type != OptionValue::Type::table) fail("{}: 'strategy_options' must be a mapping, got {}", ctx, v->type_name());
+      strategy_options = *v->table;
+    }
+    r.finish();  // a misspelt key first: it may be why a profile seems missing
+    profiles = read_wheelset_profiles(r);
+    return 0;
+  });
+  auto w = std::make_unique<PyWheelset>();
+  py::gil_scoped_release release;
+  w->model = build_wheelset(profiles, params, native_strategy(params.strategy, strategy_options));
+  return w.release();
+}
+
+template <class Result>
+py::object converted(const Result& r) {
+  return to_python(describe_tree(r));
+}
+
+py::object contact(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.contact";
+  const auto model = self.get(ctx);
+  const auto call = read_call<api::ContactCall>(kw, ctx);
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    Lease ws(self, model);
+    tree = describe_tree(call.run(*model, *ws), call.request.sensitivity);
+  }
+  return to_python(tree);
+}
+
+py::object wheel(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.wheel";
+  const auto model = self.get(ctx);
+  const auto call = read_call<api::WheelCall>(kw, ctx);
+  FieldNode tree;
+  std::string failure;
+  {
+    py::gil_scoped_release release;
+    Lease ws(self, model);
+    const WheelResult r = call.run(*model, *ws);
+    if (!r.converged) failure = failure_message(r);
+    tree = describe_tree(r);
+  }
+  py::object result = to_python(tree);
+  if (!failure.empty() && !call.on_failure.returns)
+    raise_not_converged(fmt::format("{}: {} (on_failure = \"return\" gives the result)", ctx, failure), result);
+  return result;
+}
+
+py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.equilibrium";
+  const auto model = self.get(ctx);
+  const auto call = read_call<api::EquilibriumCall>(kw, ctx);
+  FieldNode tree;
+  std::string failure;
+  {
+    py::gil_scoped_release release;
+    Lease ws(self, model);
+    const EquilibriumResult e = call.run(*model, *ws);
+    if (!e.converged) failure = failure_message(e);
+    tree = describe_tree(e);
+  }
+  py::object result = to_python(tree);
+  if (!failure.empty() && !call.on_failure.returns)
+    raise_not_converged(fmt::format("{}: {} (on_failure = \"return\" gives the result)", ctx, failure), result);
+  return result;
+}
+
+py::object rigid(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.rigid";
+  const auto model = self.get(ctx);
+  const auto call = read_call<api::RigidCall>(kw, ctx);
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    tree = describe_tree(call.run(*model));
+  }
+  return to_python(tree);
+}
+
+// The sweep's entries as `rows` (each what Wheelset.equilibrium returns, with `case` and `rigid`), the run's
+// seconds, threads and failed count; wrc._results.with_table adds `table`, a DataFrame of the rows.
+py::object sweep(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.sweep";
+  const auto model = self.get(ctx);
+  auto call = read_call<api::SweepCall>(kw, ctx);
+  if (call.progress.on(false)) call.options.progress = host::progress_line("sweep", "cases");
+  call.options.notice = host::note_printer("sweep");
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    const SweepResult r = call.run(*model, [&] { return model->make_workspace(); });
+    FieldTree t;
+    long long failed = 0;
+    t.begin_list("rows", r.cases.size(), {"", "one entry per case, in the order of the plan"});
+    for (std::size_t i = 0; i < r.cases.size(); ++i) {
+      t.item();
+      describe_case(r, i, t);
+      t.end();
+      if (!r.elastic[i].converged) ++failed;
+    }
+    t.end();
+    t.number("seconds", r.seconds, {"s", "wall time"});
+    t.integer("threads", r.threads, {"-", "worker threads used"});
+    if (!r.threads_note.empty()) t.string("threads_note", r.threads_note, {"", "why fewer threads ran than asked for"});
+    t.integer("failed", failed, {"-", "cases that did not converge"});
+    tree = std::move(t.root);
+  }
+  return results("with_table")(to_python(tree), "rows");
+}
+
+py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.geometry_table";
+  const auto model = self.get(ctx);
+  auto call = read_call<api::GeometryTableCall>(kw, ctx);
+  if (call.progress.on(false)) call.options.progress = host::progress_line("geometry table", "rows");
+  call.options.notice = host::note_printer("geometry table");
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    tree = describe_tree(call.run(*model));
+  }
+  return results("rows_frame")(to_python(tree), "rows");
+}
+
+py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.conicity";
+  const auto model = self.get(ctx);
+  const auto call = read_call<api::WheelsetConicityCall>(kw, ctx);
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    tree = describe_tree(call.run(*model));
+  }
+  return to_python(tree);
+}
+
+// wrc.conicity(table, **options): the Δr table's keys (y, dr, flange) from `table`, the options from the keywords;
+// without a table, all of them from the keywords (the documentation's one-table form).
+py::object conicity(py::object table, const py::kwargs& kw) {
+  const char* ctx = "wrc.conicity";
+  const OptionTable options = to_options(kw, ctx);
+  OptionTable dr_table;
+  if (!table.is_none()) {
+    if (PyObject_IsInstance(table.ptr(), py::module_::import("collections.abc").attr("Mapping").ptr()) != 1)
+      throw py::type_error(fmt::format("{}: the table must be a mapping (y=, dr=, flange=) or a pandas.DataFrame, got {}",
+                                       ctx, py::str(py::type::of(table).attr("__name__")).cast<std::string>()));
+    dr_table = mapping_options(table, std::string(ctx) + ": table");
+  }
+  const auto call = reading([&] {
+    if (table.is_none()) return api::read<api::ConicityCall>(options, ctx);
+    OptionReader dr(dr_table, std::string(ctx) + ": Δr table"), o(options, ctx);
+    auto c = api::ConicityCall::read(dr, o);
+    dr.finish();
+    o.finish();
+    return c;
+  });
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    tree = describe_tree(call.run());
+  }
+  return to_python(tree);
+}
+
+PyTrajectory* trajectory(PyWheelset& self, const py::kwargs& kw) {
+  const char* ctx = "Wheelset.trajectory";
+  const auto model = self.get(ctx);
+  const auto call = read_call<api::TrajectoryCall>(kw, ctx);
+  auto t = std::make_unique<PyTrajectory>();
+  t->trajectory = call.run(model);
+  return t.release();
+}
+
+py::object trajectory_contact(PyTrajectory& self, const py::kwargs& kw) {
+  const char* ctx = "Trajectory.contact";
+  self.get(ctx);
+  const auto call = read_call<api::TrajectoryContactCall>(kw, ctx);
+  FieldNode tree;
+  {
+    py::gil_scoped_release release;
+    std::lock_guard lock(self.mutex);
+    tree = describe_tree(call.run(self.get(ctx)));
+  }
+  return to_python(tree);
+}
+
+// A step that fails is an error (Lua's tr:wheel has no on_failure): wrc.NotConverged with the result.
+py::object trajectory_wheel(PyTrajectory& self, const py::kwargs& kw) {
+  const char* ctx = "Trajectory.wheel";
+  self.get(ctx);
+  const auto call = read_call<api::TrajectoryWheelCall>(kw, ctx);
+  FieldNode tree;
+  std::string failure;
+  {
+    py::gil_scoped_release release;
+    std::lock_guard lock(self.mutex);
+    const WheelResult r = call.run(self.get(ctx));
+    if (!r.converged) failure = failure_message(r);
+    tree = describe_tree(r);
+  }
+  py::object result = to_python(tree);
+  if (!failure.empty()) raise_not_converged(fmt::format("{}: {}", ctx, failure), result);
+  return result;
+}
+
+void close_trajectory(PyTrajectory& self) {
+  py::gil_scoped_release release;
+  std::lock_guard lock(self.mutex);  // a step in progress on another thread ends first
+  self.trajectory.reset();
+}
+
+const char* doc(const char* python) {
+  static std::vector<std::unique_ptr<std::string>> kept;  // pybind11 keeps the pointer
+  kept.push_back(std::make_unique<std::string>(docstring(python_entry(python))));
+  return kept.back()->c_str();
+}
+
+}  // namespace
+
+void register_wheelset(py::module_& m) {
+  py::class_<PyTrajectory>(m, "Trajectory", "Contact calls that start from the previous step: Wheelset.trajectory.")
+      .def("contact", trajectory_contact, doc("Trajectory.contact"))
+      .def("wheel", trajectory_wheel, doc("Trajectory.wheel"))
+      .def("reset", [](PyTrajectory& t) {
+        Trajectory& tr = t.get("Trajectory.reset");
+        py::gil_scoped_release release;
+        std::lock_guard lock(t.mutex);
+        tr.reset();
+      }, "Forgets the previous steps.")
+      .def("close", close_trajectory, "Releases the trajectory; using it afterwards is an error.")
+      .def("__enter__", [](py::object self) { return self; })
+      .def("__exit__", [](PyTrajectory& t, py::args) { close_trajectory(t); })
+      .def("__repr__", [](const PyTrajectory& t) {
+        return std::string(t.trajectory ? "<wrc.Trajectory>" : "<wrc.Trajectory (closed)>");
+      });
+
+  py::class_<PyWheelset>(m, "Wheelset", "A wheelset on its track: wrc.wheelset(wheel=, rail=, **params).")
+      .def("contact", contact, doc("Wheelset.contact"))
+      .def("wheel", wheel, doc("Wheelset.wheel"))
+      .def("equilibrium", equilibrium, doc("Wheelset.equilibrium"))
+      .def("rigid", rigid, doc("Wheelset.rigid"))
+      .def("sweep", sweep, doc("Wheelset.sweep"))
+      .def("geometry_table", geometry_table, doc("Wheelset.geometry_table"))
+      .def("conicity", wheelset_conicity, doc("Wheelset.conicity"))
+      .def("trajectory", trajectory, doc("Wheelset.trajectory"))
+      .def_property_readonly("params", [](const PyWheelset& w) { return converted(w.get("Wheelset.params")->params()); },
+                             "the wheelset's parameters (every default filled in)")
+      .def("close", [](PyWheelset& w) {
+        w.model.reset();
+        std::lock_guard lock(w.pool_mutex);
+        w.pool.clear();
+      }, "Releases the wheelset; using it afterwards is an error.")
+      .def("__enter__", [](py::object self) { return self; })
+      .def("__exit__", [](PyWheelset& w, py::args) { w.model.reset(); })
+      .def("__repr__", [](const PyWheelset& w) {
+        if (!w.model) return std::string("<wrc.Wheelset (closed)>");
+        return fmt::format("<wrc.Wheelset strategy '{}'>", w.model->params().strategy);
+      });
+
+  m.def("wheelset", make_wheelset, doc("wheelset"), py::return_value_policy::take_ownership);
+  m.def("conicity", conicity, py::arg("table") = py::none(), doc("conicity"));
+}
+
+}  // namespace wrc::python
