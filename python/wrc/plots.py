@@ -86,11 +86,20 @@ def _is_frame(obj):
 
 
 def _frame_column(df, names, what):
-    for n in names:
+    """A column of a DataFrame in SI units: names are (column, factor to SI) pairs, the first present is taken
+    (wrc's tables name the unit in brackets, "y [m]"; the Lua studies' CSVs in the name, "y_mm")."""
+    for n, factor in names:
         if n in df.columns:
-            return np.asarray(df[n], dtype=float)
-    raise ValueError(f"{what} has none of the columns {', '.join(map(repr, names))} "
+            return np.asarray(df[n], dtype=float) * factor
+    raise ValueError(f"{what} has none of the columns {', '.join(repr(n) for n, _ in names)} "
                      f"(its columns: {', '.join(map(str, df.columns))})")
+
+
+def _frame_has(df, names):
+    return any(n in df.columns for n, _ in names)
+
+
+_Y_COLUMNS = (("y [m]", 1.0), ("y_mm", 1e-3), ("y [mm]", 1e-3))
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -502,8 +511,9 @@ def _unwrap_conicity(r):
 def _dr_of(r, what):
     """(y m, dr m, flange bool or None) of a conicity result's dr table, a geometry table or a Δr table."""
     if _is_frame(r):
-        y = _frame_column(r, ("y_mm", "y [mm]"), what) * 1e-3
-        dr = _frame_column(r, ("rolling_radius_difference_mm", "dr_mm", "dr [mm]"), what) * 1e-3
+        y = _frame_column(r, _Y_COLUMNS, what)
+        dr = _frame_column(r, (("rolling_radius_difference [m]", 1.0), ("rolling_radius_difference_mm", 1e-3),
+                               ("dr [m]", 1.0), ("dr_mm", 1e-3)), what)
         return y, dr, None
     d = _get(r, "dr", None)
     if d is not None and not isinstance(d, (np.ndarray, Sequence)):     # conicity result: its table
@@ -590,16 +600,20 @@ def _sweep_series(sweep, what):
     """{yaw (rad): (y m, Y/Q, rigid Y/Q or None, past flange climb, rigid past flange climb)} of a sweep's
     DataFrame or its list of cases."""
     if _is_frame(sweep):
-        y = _frame_column(sweep, ("y_mm", "y [mm]"), what) * 1e-3
-        yq = _frame_column(sweep, ("Y_Q", "Y/Q"), what)
+        y = _frame_column(sweep, _Y_COLUMNS, what)
+        yq = _frame_column(sweep, (("Y_Q", 1.0), ("Y/Q", 1.0)), what)
         n = len(y)
-        yaw = (_frame_column(sweep, ("yaw_deg", "yaw [deg]"), what) * math.pi / 180
-               if any(c in sweep.columns for c in ("yaw_deg", "yaw [deg]")) else np.zeros(n))
-        conv = _frame_column(sweep, ("converged",), what) != 0 if "converged" in sweep.columns else np.ones(n, bool)
-        climb = (_frame_column(sweep, ("flange_climb",), what) != 0 if "flange_climb" in sweep.columns
+        yaw_names = (("yaw [rad]", 1.0), ("yaw_deg", math.pi / 180), ("yaw [deg]", math.pi / 180))
+        yaw = _frame_column(sweep, yaw_names, what) if _frame_has(sweep, yaw_names) else np.zeros(n)
+        conv = (_frame_column(sweep, (("converged", 1),), what) != 0 if "converged" in sweep.columns
+                else np.ones(n, bool))
+        climb = (_frame_column(sweep, (("flange_climb", 1),), what) != 0 if "flange_climb" in sweep.columns
                  else np.zeros(n, bool))
-        rq = next((np.asarray(sweep[c], dtype=float) for c in ("rigid_Y_Q", "rigid.Y_Q") if c in sweep.columns), None)
-        cases = list(zip(y, yq, yaw, conv, rq if rq is not None else np.full(n, np.nan), climb, np.zeros(n, bool)))
+        rigid_names = (("rigid.Y_Q", 1.0), ("rigid_Y_Q", 1.0))
+        rq = _frame_column(sweep, rigid_names, what) if _frame_has(sweep, rigid_names) else None
+        rclimb = (_frame_column(sweep, (("rigid.flange_climb", 1),), what) != 0
+                  if "rigid.flange_climb" in sweep.columns else np.zeros(n, bool))
+        cases = list(zip(y, yq, yaw, conv, rq if rq is not None else np.full(n, np.nan), climb, rclimb))
         has_rigid = rq is not None
     else:
         rows = _get(sweep, "cases", None) or _get(sweep, "rows", None) or sweep

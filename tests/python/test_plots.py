@@ -17,21 +17,21 @@ from matplotlib.collections import QuadMesh
 
 
 @pytest.fixture(scope="module")
-def ws():
+def paper_ws():
     wheel = wrc.profile.load("profiles/s1002.lua", step=0.1e-3)
     rail = wrc.profile.load("profiles/60e1.lua", step=0.1e-3)
     return wrc.wheelset(wheel=wheel, rail=rail, grid=0.5e-3)
 
 
 @pytest.fixture(scope="module")
-def flange_equilibrium(ws):
-    return ws.equilibrium(y=6.5e-3, yaw=0, Q=200e3)
+def flange_equilibrium(paper_ws):
+    return paper_ws.equilibrium(y=6.5e-3, yaw=0, Q=200e3)
 
 
 @pytest.fixture(scope="module")
-def rolling_patch(ws):
-    e = ws.equilibrium(y=3e-3, yaw=0, Q=200e3)
-    c = ws.contact(y=3e-3, z=e.z, roll=e.roll, yaw=0, V=100 / 3.6, mu=0.3)
+def rolling_patch(paper_ws):
+    e = paper_ws.equilibrium(y=3e-3, yaw=0, Q=200e3)
+    c = paper_ws.contact(y=3e-3, z=e.z, roll=e.roll, yaw=0, V=100 / 3.6, mu=0.3)
     return max(c.left.patches, key=lambda p: p.normal_force)
 
 
@@ -50,15 +50,41 @@ def distance_to_polyline(px, pz, y, z):
 
 
 # ---------------------------------------------------------------------------------------------------------------
+# The placed profiles (ws.left_wheel, ws.left_rail, ...: the Lua wheelset's fields) that profile_pair draws.
+
+def test_placed_profiles_put_the_gauge_points_where_the_track_parameters_say():
+    wheel = wrc.profile.load("profiles/s1002.lua")
+    rail = wrc.profile.load("profiles/60e1.lua")
+    ws = wrc.wheelset(wheel=wheel, rail=rail, gauge=1.435, gauge_depth=0.014, back_to_back=1.360, radius=0.45)
+    for side, sign in (("left", 1), ("right", -1)):
+        r, w = getattr(ws, side + "_rail"), getattr(ws, side + "_wheel")
+        assert (r.kind, r.frame, w.kind, w.frame) == ("rail", "track", "wheel", "wheelset")
+        assert np.all(np.diff(r.y) >= 0) and np.all(np.diff(w.y) >= 0)
+        assert r.reversed == (side == "right")
+        g = getattr(ws.gauge_points, side)
+        assert g.y == pytest.approx(sign * 1.435 / 2, abs=1e-12)
+        assert g.z == pytest.approx(getattr(ws.rail_top, side) - 0.014, abs=1e-9)
+        assert distance_to_polyline(g.y, g.z, r.y, r.z) < 1e-9
+        assert max(r.z) == pytest.approx(getattr(ws.rail_top, side), abs=1e-12)
+        # The tape circle: 70 mm outside the flange back, r0 below the axle.
+        t = getattr(ws.tape_points, side)
+        assert (t.y, t.z) == (pytest.approx(sign * (1.360 / 2 + 0.070)), pytest.approx(-0.45))
+        assert distance_to_polyline(t.y, t.z, w.y, w.z) < 1e-9
+    ws.close()
+    with pytest.raises(wrc.Error, match="Wheelset.left_rail: the wrc.Wheelset was closed"):
+        ws.left_rail
+
+
+# ---------------------------------------------------------------------------------------------------------------
 # Profile pair.
 
-def test_profile_pair_rigid_contact_points_lie_on_both_drawn_profiles(ws):
+def test_profile_pair_rigid_contact_points_lie_on_both_drawn_profiles(paper_ws):
     """The touching points of a rigid contact (track frame, from the engine) lie on the drawn rail and on the drawn
     wheel, which the plot places from the wheelset frame by the result's pose: a wrong roll sign would move the left
     wheel 0.75 m x 2 roll (about 0.5 mm at y = 5 mm) off its point."""
-    r = ws.rigid(y=5e-3, Q=200e3)
+    r = paper_ws.rigid(y=5e-3, Q=200e3)
     assert abs(r.roll) > 2e-4      # the pose matters
-    fig = plots.profile_pair(ws, r)
+    fig = plots.profile_pair(paper_ws, r)
     axes = fig.axes
     assert [a.get_title() for a in axes] == ["left wheel and rail", "right wheel and rail"]
     for ax, side in zip(axes, ("left", "right")):
@@ -74,9 +100,9 @@ def test_profile_pair_rigid_contact_points_lie_on_both_drawn_profiles(ws):
         assert "mm" in ax.get_xlabel() and "mm" in ax.get_ylabel()
 
 
-def test_profile_pair_elastic_marks_every_area_with_its_force(ws, flange_equilibrium):
+def test_profile_pair_elastic_marks_every_area_with_its_force(paper_ws, flange_equilibrium):
     e = flange_equilibrium
-    fig = plots.profile_pair(ws, e)
+    fig = plots.profile_pair(paper_ws, e)
     for ax, side in zip(fig.axes, ("left", "right")):
         patches = getattr(e, side).patches
         marks = [l for l in ax.get_lines() if l.get_marker() == "o"]
@@ -92,16 +118,16 @@ def test_profile_pair_elastic_marks_every_area_with_its_force(ws, flange_equilib
     assert left_flange.angle > math.radians(30) and left_flange.normal.y < 0
 
 
-def test_profile_pair_pose_override_and_bad_input(ws):
-    fig = plots.profile_pair(ws, pose={"y": 2e-3, "roll": 1e-3}, sides="left")
+def test_profile_pair_pose_override_and_bad_input(paper_ws):
+    fig = plots.profile_pair(paper_ws, pose={"y": 2e-3, "roll": 1e-3}, sides="left")
     assert len(fig.axes) == 1
     assert "y = 2.00 mm" in fig._suptitle.get_text()
     with pytest.raises(ValueError, match="pose: unknown key 'rol'"):
-        plots.profile_pair(ws, pose={"rol": 1e-3})
+        plots.profile_pair(paper_ws, pose={"rol": 1e-3})
     with pytest.raises(ValueError, match=r"pose\['y'\] = nan"):
-        plots.profile_pair(ws, pose={"y": float("nan")})
+        plots.profile_pair(paper_ws, pose={"y": float("nan")})
     with pytest.raises(ValueError, match="sides: 'middle'"):
-        plots.profile_pair(ws, sides=("left", "middle"))
+        plots.profile_pair(paper_ws, sides=("left", "middle"))
     with pytest.raises(ValueError, match="no field 'left_wheel'"):
         plots.profile_pair(object())
 
@@ -144,8 +170,8 @@ def test_traction_map_shows_adhesion_and_slip_and_rejects_a_frictionless_patch(r
         plots.traction_map(frictionless)
 
 
-def test_pressure_map_without_grids_says_so(ws):
-    c = ws.contact(y=0, z=-0.05e-3, roll=0, yaw=0, grids=False)
+def test_pressure_map_without_grids_says_so(paper_ws):
+    c = paper_ws.contact(y=0, z=-0.05e-3, roll=0, yaw=0, grids=False)
     with pytest.raises(ValueError, match="grids=True"):
         plots.pressure_map(c.left.patches[0])
 
@@ -153,9 +179,9 @@ def test_pressure_map_without_grids_says_so(ws):
 # ---------------------------------------------------------------------------------------------------------------
 # Creep curves.
 
-def test_creep_curves_plot_minus_force_over_mu_n_against_the_areas_creepage(ws):
+def test_creep_curves_plot_minus_force_over_mu_n_against_the_areas_creepage(paper_ws):
     xis = [0, 0.5e-3, 1e-3, 2e-3]
-    curves = {m: [ws.wheel(side="left", y=0, Fz=100e3, creepage={"xi": xi}, mu=0.3, method=m,
+    curves = {m: [paper_ws.wheel(side="left", y=0, Fz=100e3, creepage={"xi": xi}, mu=0.3, method=m,
                            grids=False).patches[0] for xi in xis] for m in ("exact", "fastsim")}
     fig = plots.creep_curves(curves, linear=5e7)
     ax = fig.axes[0]
@@ -176,7 +202,7 @@ def test_creep_curves_plot_minus_force_over_mu_n_against_the_areas_creepage(ws):
     assert "kN" in fig.axes[0].get_ylabel()
 
 
-def test_creep_curves_bad_input(ws, flange_equilibrium):
+def test_creep_curves_bad_input(paper_ws, flange_equilibrium):
     with pytest.raises(TypeError, match="expected a non-empty dict"):
         plots.creep_curves([1, 2])
     with pytest.raises(ValueError, match="force = 'Fz'"):
@@ -190,8 +216,9 @@ def test_creep_curves_bad_input(ws, flange_equilibrium):
 # ---------------------------------------------------------------------------------------------------------------
 # Conicity and Y/Q.
 
-def test_conicity_draws_the_dr_table_and_tan_gamma(ws):
-    tan, d = ws.conicity(yhat=[1e-3, 2e-3, 3e-3])
+def test_conicity_draws_the_dr_table_and_tan_gamma(paper_ws):
+    d = paper_ws.conicity(yhat=[1e-3, 2e-3, 3e-3])
+    tan = d.tan_gamma
     fig = plots.conicity(d, labels=["S1002/60E1"])
     ax1, ax2 = fig.axes
     dr_line = lines(ax1, "S1002/60E1")[0]
@@ -218,13 +245,13 @@ def test_conicity_bad_input():
         plots.conicity({"yhat": [1e-3, 2e-3], "tan_gamma": [0.1]})
 
 
-def test_sweep_yq_one_line_per_yaw_with_the_rigid_reference(ws):
-    s = ws.sweep(y={"from": -7e-3, "to": 7e-3, "step": 1e-3}, yaw=[0, math.radians(1)], Q=200e3, rigid=True,
+def test_sweep_yq_one_line_per_yaw_with_the_rigid_reference(paper_ws):
+    s = paper_ws.sweep(y={"from": -7e-3, "to": 7e-3, "step": 1e-3}, yaw=[0, math.radians(1)], Q=200e3, rigid=True,
                  grids=False)
     fig = plots.sweep_yq(s, limit=0.8)
     ax = fig.axes[0]
     for yaw in (0, math.radians(1)):
-        cases = sorted((c for c in s if c.yaw == yaw), key=lambda c: c.y)
+        cases = sorted((c for c in s.rows if c.yaw == yaw), key=lambda c: c.y)
         name = "yaw %.3g°" % math.degrees(yaw)
         el, = lines(ax, name + ", elastic")
         rg, = lines(ax, name + ", rigid")
@@ -249,7 +276,7 @@ def test_sweep_yq_from_a_dataframe():
     line, = lines(fig.axes[0], "yaw 0°, elastic")
     np.testing.assert_allclose(line.get_xdata(), [-1, 0, 1])
     np.testing.assert_allclose(line.get_ydata(), [-0.02, np.nan, 0.02])
-    with pytest.raises(ValueError, match="none of the columns 'y_mm'"):
+    with pytest.raises(ValueError, match=r"none of the columns 'y \[m\]', 'y_mm'"):
         plots.sweep_yq(pd.DataFrame({"Y_Q": [0.1]}))
 
 

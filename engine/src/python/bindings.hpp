@@ -75,5 +75,6 @@ class Lease {
 void register_errors(py::module_& m);
 void register_profile(py::module_& m);
 void register_wheelset(py::module_& m);
+void register_track(py::module_& m);  // after register_wheelset: properties of wrc.Wheelset
 
 }  // namespace wrc::python
