@@ -2,9 +2,9 @@
 rolling radius difference and equivalent conicity, Y/Q of a sweep.
 
 Every function takes results as the wrc calls return them and returns a matplotlib Figure (``path=`` also saves
-it, the format from the extension). The figures are made without pyplot unless pyplot is already imported (then
-``plt.show()`` shows them): with the Agg canvas, so they need no display. In Jupyter a figure is shown as the
-cell's value.
+it, the format from the extension). The figures are made on the Agg canvas without pyplot, so they need no display
+and hold no memory once dropped; in Jupyter a figure is shown as the cell's value. The functions of one panel
+(pressure_map, creep_curves, sweep_yq) also draw into given axes (ax=), e.g. of a pyplot figure.
 
 Units on the axes are those a railway engineer reads: mm, kN, MPa, mrad or degrees; signs and frames follow
 docs/design.md, section 2 (track frame: x along the track, z up, +y toward the LEFT rail; forces are those the
@@ -14,9 +14,9 @@ the left rail on the left, so +y points to the left on the page.
 
 from __future__ import annotations
 
+import io
 import math
 import os
-import sys
 from collections.abc import Mapping, Sequence
 
 import numpy as np
@@ -105,13 +105,18 @@ _Y_COLUMNS = (("y [m]", 1.0), ("y_mm", 1e-3), ("y [mm]", 1e-3))
 # ---------------------------------------------------------------------------------------------------------------
 # Figures.
 
+class _Figure(Figure):
+    """A matplotlib Figure that Jupyter shows as the value of a cell (a PNG), with or without pyplot."""
+
+    def _repr_png_(self):
+        buf = io.BytesIO()
+        self.savefig(buf, format="png", dpi=self.dpi)
+        return buf.getvalue()
+
+
 def _figure(**kw):
-    """A Figure: through pyplot when the caller uses pyplot (plt.show() then shows it), otherwise on the Agg
-    canvas, which needs no display."""
-    plt = sys.modules.get("matplotlib.pyplot")
-    if plt is not None:
-        return plt.figure(**kw)
-    fig = Figure(**kw)
+    """A Figure on the Agg canvas: no display needed, and no pyplot state (a loop of figures holds no memory)."""
+    fig = _Figure(**kw)
     FigureCanvasAgg(fig)
     return fig
 
@@ -307,6 +312,12 @@ def _map_labels(ax, patch):
     ax.set_aspect("equal")
 
 
+def _colorbar(fig, mappable, ax, label):
+    """A colour bar as tall as the map (an inset beside the axes: it follows their equal-aspect box)."""
+    cax = ax.inset_axes([1.03, 0.0, 0.035, 1.0])
+    fig.colorbar(mappable, cax=cax, label=label)
+
+
 def _gauge_note(ax, patch, ye):
     """Mark which end of the lateral axis is toward the gauge side (the flange), where the contact angle rises."""
     rows = _get(patch, "rows", None)
@@ -351,7 +362,7 @@ def pressure_map(patch, *, ax=None, path=None, figsize=None, cmap="viridis"):
     mpa = np.where(p > 0, p / 1e6, np.nan)
     m = ax.pcolormesh(xe, ye, mpa, cmap=cmap, vmin=0, shading="flat")
     _outline(ax, p > 0, xe, ye)
-    fig.colorbar(m, ax=ax, label="normal pressure p (MPa)", shrink=0.9)
+    _colorbar(fig, m, ax, "normal pressure p (MPa)")
     _map_labels(ax, patch)
     _gauge_note(ax, patch, ye)
     ax.set_title(_patch_title(patch), fontsize=9)
@@ -394,12 +405,12 @@ def traction_map(patch, *, path=None, figsize=None, arrows=14):
 
     t = np.where(inside, np.hypot(px, py) / 1e6, np.nan)
     m2 = ax2.pcolormesh(xe, ye, t, cmap="magma_r", vmin=0, shading="flat")
-    fig.colorbar(m2, ax=ax2, label="|tangential traction| (MPa)", shrink=0.9)
+    _colorbar(fig, m2, ax2, "|tangential traction| (MPa)")
     ax2.set_title("tangential traction", fontsize=9)
 
     sl = np.where(inside, np.hypot(sx, sy) * 1e3, np.nan)
     m3 = ax3.pcolormesh(xe, ye, sl, cmap="cividis", vmin=0, shading="flat")
-    fig.colorbar(m3, ax=ax3, label="|slip velocity| (mm/s)", shrink=0.9)
+    _colorbar(fig, m3, ax3, "|slip velocity| (mm/s)")
     moving = inside[sub] & (np.hypot(sx, sy)[sub] > 0)
     if moving.any():
         ax3.quiver(X[sub][moving], Y[sub][moving], sx[sub][moving], sy[sub][moving], color="w", width=0.004)
@@ -414,6 +425,9 @@ def traction_map(patch, *, path=None, figsize=None, arrows=14):
         xi, eta, phi = (_tidy(float(_get(cr, k))) for k in ("xi", "eta", "phi"))
         creep = "; ξ = %.3g, η = %.3g, φ = %.3g 1/m" % (xi, eta, phi)
     mu = _get(patch, "mu", None)
+    V = _get(patch, "V", None)
+    if V is not None:
+        creep += "; V = %.3g m/s" % float(V)
     fig.suptitle("%s; μ = %.2f, Fx = %.2f kN, Fy = %.2f kN, adhesion %.0f %%%s" % (
         _patch_title(patch), float(_get(mu, "kinetic")) if mu is not None else float("nan"),
         _number(patch, "Fx", "patch") / 1e3, _number(patch, "Fy", "patch") / 1e3,
@@ -538,7 +552,8 @@ def conicity(results, *, labels=None, path=None, figsize=None, title=None):
     results: one result or a list: ws.conicity's result (both panels: its Δr table and tan(gamma_e)),
     wrc.conicity's (tan(gamma_e) only), or a geometry table (ws.geometry_table's result or its DataFrame: Δr
     only). labels: one per result (default "1", "2", ...). Δr = r_left - r_right (mm), y + toward the left rail;
-    points of the table with flange contact are marked. Returns the Figure.
+    points of the table with flange contact are marked, and the Δr axis spans 1.6 times the largest Δr without
+    flange contact (flange contact runs off the panel). Returns the Figure.
     """
     _check_path(path)
     items = list(results) if isinstance(results, list) else [results]
@@ -551,6 +566,7 @@ def conicity(results, *, labels=None, path=None, figsize=None, title=None):
     fig = _figure(figsize=figsize or (11.5, 4.4), layout="constrained")
     ax1, ax2 = fig.subplots(1, 2)
     n_dr = n_tan = 0
+    tread = 0.0     # the largest |Δr| without flange contact (m): the panel's scale
     for k, (r, label) in enumerate(zip(items, labels)):
         what = f"results[{k}]" if len(items) > 1 else "results"
         r = _unwrap_conicity(r)
@@ -562,6 +578,8 @@ def conicity(results, *, labels=None, path=None, figsize=None, title=None):
             if flange is not None and flange.any():
                 ax1.plot(y[flange] * 1e3, d[flange] * 1e3, "x", color=colour, ms=4,
                          label=(label + ": " if label else "") + "flange contact")
+            ok = np.isfinite(d) & (~flange if flange is not None else True)
+            tread = max(tread, float(np.max(np.abs(d[ok]))) if ok.any() else 0.0)
             n_dr += 1
         if _has(r, "yhat") and _has(r, "tan_gamma"):
             a = _array(_get(r, "yhat"), what + ".yhat")
@@ -576,6 +594,10 @@ def conicity(results, *, labels=None, path=None, figsize=None, title=None):
             raise ValueError(f"{what} is neither a conicity result (yhat, tan_gamma) nor a Δr or geometry table")
     ax1.axhline(0, color="0.6", lw=0.6)
     ax1.axvline(0, color="0.6", lw=0.6)
+    if tread > 0:
+        # The tread's Δr readable: flange contact (10 mm and more) runs off the panel beyond 1.6 x the tread's.
+        lo, hi = ax1.get_ylim()
+        ax1.set_ylim(max(lo, -1.6e3 * tread), min(hi, 1.6e3 * tread))
     ax1.set_xlabel("lateral displacement y (mm), + toward the left rail")
     ax1.set_ylabel("Δr = r_left − r_right (mm)")
     ax1.set_title("rolling radius difference" if n_dr else "rolling radius difference: no table given", fontsize=10)
