@@ -260,6 +260,10 @@ def profile_pair(ws, result=None, *, pose=None, sides=_SIDES, normals=True, path
             ax.annotate(label, xy=(py * 1e3, pz * 1e3), xytext=(py * 1e3, (ztop - 0.003 - 0.0055 * k) * 1e3),
                         fontsize=8, ha="center", va="top", arrowprops=dict(arrowstyle="-", color="0.5", lw=0.6),
                         bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.7", lw=0.5), zorder=5)
+        wheel_result = _get(result, side, None) if result is not None else None
+        if wheel_result is not None and _get(wheel_result, "lifted", False) is True:
+            ax.text(0.5, 0.93, "lifted: no contact", transform=ax.transAxes, ha="center", va="top", fontsize=9,
+                    color=_SIDE_COLOUR[side])
         ax.set_xlim(ybox[1] * 1e3, ybox[0] * 1e3)       # +y to the left: seen in the direction of travel
         ax.set_ylim(zbot * 1e3, ztop * 1e3)
         ax.set_aspect("equal")

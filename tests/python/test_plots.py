@@ -118,6 +118,7 @@ def test_profile_pair_elastic_marks_every_area_with_its_force(paper_ws, flange_e
         texts = [t.get_text() for t in ax.texts]
         for p in patches:
             assert any("%.1f kN" % (p.normal_force / 1e3) in t for t in texts), texts
+        assert ("lifted: no contact" in texts) == getattr(e, side).lifted
     # Flange contact on the left wheel: its normal (from the rail into the wheel) points toward -y.
     left_flange = max(e.left.patches, key=lambda p: p.angle)
     assert left_flange.angle > math.radians(30) and left_flange.normal.y < 0
