@@ -6,7 +6,8 @@ Q = 200 kN. Prints Y/Q, z, roll and each contact patch (normal force, contact an
 
     python3 paper_equilibrium.py [path/to/libwrc.so]
 
-Without an argument the library is looked up as WRC_LIBRARY, then by the system's loader ("libwrc.so.0")."""
+Without an argument the library is looked up as WRC_LIBRARY, then by the system's loader ("libwrc.so.0"). The Python
+package (paper_equilibrium_package.py, docs/python.md) does the same with numpy results and Python exceptions."""
 import ctypes
 import math
 import os
@@ -19,7 +20,13 @@ class Wrc:
     OK, NOT_CONVERGED = 0, 3
 
     def __init__(self, path):
-        self.lib = ctypes.CDLL(path)
+        try:
+            self.lib = ctypes.CDLL(path)
+        except OSError as e:
+            sys.exit(f"paper_equilibrium.py: cannot load the C library of wrc '{path}' ({e}).\n"
+                     "Install wrc (cmake --install build --prefix /opt/wrc) and give the library as the argument or as "
+                     "WRC_LIBRARY=/opt/wrc/lib/libwrc.so.0, or use the Python package: "
+                     "examples/python/paper_equilibrium_package.py")
         P = ctypes.c_void_p
         D = ctypes.c_double
         sig = {

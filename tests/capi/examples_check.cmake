@@ -1,6 +1,7 @@
 # Installs the build into a fresh prefix, builds examples/c against it twice (CMake's find_package(wrc) and
 # pkg-config's wrc.pc), runs the C program, the Python example (ctypes, standard library only) and the same
-# equilibrium through the installed `wrc run`, all from "/", and requires the three outputs to be identical.
+# equilibrium through the installed `wrc run`, all from "/", and requires the outputs to be identical; with the Python
+# package built, its example too (installed into the prefix's site-packages, finding its profiles from there).
 file(REMOVE_RECURSE ${PREFIX})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX} RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
@@ -60,6 +61,12 @@ for _, side in ipairs{"left", "right"} do
 end
 ]])
 set(runs "c-cmake" "c-pkgconfig" "python" "lua")
+# The Python package, installed into the prefix's site-packages, when the build made it.
+if(PACKAGE_PYTHON)
+  list(APPEND runs "package")
+  set(cmd_package ${CMAKE_COMMAND} -E env ${env} PYTHONPATH=${PREFIX}/${PACKAGE_SITE} ${PACKAGE_PYTHON}
+      ${SOURCE}/examples/python/paper_equilibrium_package.py)
+endif()
 set(cmd_c-cmake ${cbuild}/paper_equilibrium)
 set(cmd_c-pkgconfig ${PREFIX}/paper_equilibrium_pc)
 set(cmd_python ${CMAKE_COMMAND} -E env ${env} WRC_LIBRARY=${PREFIX}/lib/libwrc.so.0 ${PYTHON}

@@ -29,16 +29,17 @@ import re
 import sys
 import unicodedata
 
-TOP = ("engine", "tests", "scripts", "examples", "profiles", "plugins", "docs", "cmake", ".ci")
+TOP = ("engine", "tests", "scripts", "examples", "profiles", "plugins", "docs", "cmake", ".ci", "python")
 SOURCE_EXT = (".cpp", ".hpp", ".h", ".c", ".lua", ".sh", ".cmake", ".py", ".sbatch", ".in", ".map")
-CODE_DIRS = ("engine", "scripts", "plugins", "examples", "profiles", "cmake", ".ci")
+CODE_DIRS = ("engine", "scripts", "plugins", "examples", "profiles", "cmake", ".ci", "python")
 # Names used in the docs as illustrations, not files or code of the repository.
 ILLUSTRATIVE = {"first.lua", "yq.lua", "my_wheel.lua", "my_walk.lua", "my_strategy.lua", "zz.lua",
                 "scripts/x/y.lua", "scripts/strategies/my_walk.lua"}
 # Names the docs use that are not wrc's code: other libraries' (MuJoCo, numpy, C) and mathematical symbols.
-NOT_CODE = {"mjModel", "mjData", "numpy.loadtxt", "SIZE_MAX", "e_x", "mu_s", "mu_k"}
+NOT_CODE = {"mjModel", "mjData", "numpy.loadtxt", "SIZE_MAX", "e_x", "mu_s", "mu_k", "TypeError"}
 # Files made when wrc runs or builds (outputs, generated headers), not files of the repository.
-DATA_EXT = ("txt", "csv", "png", "md", "h", "hpp", "cpp", "c", "lua", "so", "pc", "sh", "gp", "dat", "py", "sbatch")
+DATA_EXT = ("txt", "csv", "png", "md", "h", "hpp", "cpp", "c", "lua", "so", "pc", "sh", "gp", "dat", "py", "sbatch",
+            "toml")
 GENERATED = {"config.hpp"}
 # Short names that are Lua receivers in the docs' examples (ws:contact, e.left, ...), not engine names.
 MAX_RECEIVER = 3
@@ -82,7 +83,7 @@ class Tree:
         for f in self.files:
             top = f.split("/")[0]
             build_file = f.endswith("CMakeLists.txt") or f.endswith(".cmake")
-            if not (top in CODE_DIRS or f == "CMakeLists.txt" or (top == "tests" and build_file)
+            if not (top in CODE_DIRS or f in ("CMakeLists.txt", "setup.py") or (top == "tests" and build_file)
                     or f.startswith(("tests/bench/", "tests/fuzz/"))):
                 continue
             if not (f.endswith(SOURCE_EXT) or build_file or "/" not in f.split(".ci/")[-1]):
@@ -179,7 +180,7 @@ def anchors(path, slug):
 
 # ---- what a page cites ----------------------------------------------------------------------------------------
 
-PATH_RE = re.compile(r"(?<![\w./<>-])((?:\.ci|engine|tests|scripts|examples|profiles|plugins|docs|cmake)/"
+PATH_RE = re.compile(r"(?<![\w./<>-])((?:\.ci|engine|tests|scripts|examples|profiles|plugins|docs|cmake|python)/"
                      r"[\w./*<>-]*)")
 NAME_RE = re.compile(r"^[A-Za-z_]\w*(?:(?:::|\.|:)[A-Za-z_]\w*)*(?:\(.*\)|\{.*\})?$", re.S)
 
@@ -216,6 +217,8 @@ def check_paths(tree, page, line, span):
         before = span[:m.start()]
         if re.search(r"(?:wrc|include|src|engine)/$", before):
             continue
+        if m.group(1).split("/")[0] in TOP:
+            continue  # a repository path (python/wrc), checked above
         check_area_path(tree, page, line, m.group(1))
     for m in re.finditer(r"(?<![\w/])build/(bench_\w+)", span):
         check_bench(tree, page, line, m.group(1))

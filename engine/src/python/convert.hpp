@@ -5,6 +5,7 @@
 
 #include "python/bindings.hpp"
 #include "python/field_tree.hpp"
+#include "wrc/api/calls.hpp"
 #include "wrc/core/options.hpp"
 
 #include <pybind11/pybind11.h>
@@ -17,6 +18,23 @@ OptionTable to_options(const py::kwargs& kwargs, const std::string& context);
 OptionValue to_option(py::handle value, const std::string& context, int depth = 0);
 // A mapping (dict, wrc.Result, pandas.DataFrame: its columns) as a table.
 OptionTable mapping_options(py::handle mapping, const std::string& context, int depth = 0);
+
+// The request X of the call layer (wrc/api/calls.hpp) from an option table, validated: an engine error here is an
+// OptionFailure (wrc.OptionError). `context` names the call ("Wheelset.contact").
+template <class X>
+X read_request(const OptionTable& t, const char* context) {
+  return reading([&] {
+    X x = api::read<X>(t, context);
+    if constexpr (requires { x.validate(); }) x.validate();
+    return x;
+  });
+}
+
+// The same from keyword arguments.
+template <class X>
+X read_call(const py::kwargs& kwargs, const char* context) {
+  return read_request<X>(to_options(kwargs, context), context);
+}
 
 // The result: a table becomes a wrc.Result, a list a Python list, numbers a 1-D float64 (integers int64) numpy array,
 // a grid a 2-D float64 array of shape (ny, nx).

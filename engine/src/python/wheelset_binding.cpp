@@ -47,17 +47,6 @@ struct PyTrajectory {
 
 py::object results(const char* name) { return py::module_::import("wrc._results").attr(name); }
 
-// The request X of a call from its keyword arguments, validated: an engine error here is an OptionError.
-template <class X>
-X read_call(const py::kwargs& kw, const char* ctx) {
-  const OptionTable t = to_options(kw, ctx);
-  return reading([&] {
-    X x = api::read<X>(t, ctx);
-    if constexpr (requires { x.validate(); }) x.validate();
-    return x;
-  });
-}
-
 // A list of names ("coarse", "topology") is the strategy "coarse+topology", as Lua's list form.
 py::kwargs strategy_as_name(const py::kwargs& kw) {
   py::kwargs out;
