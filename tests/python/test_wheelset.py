@@ -202,3 +202,14 @@ def test_params_and_four_profiles(s1002, rail60):
     assert ws.params.gauge == 1.437 and ws.params.units["gauge"] == "m"
     one = wrc.wheelset(wheel=s1002, rail=rail60, gauge=1.437)
     assert ws.equilibrium(y=1e-3, Q=100e3).Y == one.equilibrium(y=1e-3, Q=100e3).Y
+
+
+def test_calls_from_several_threads_equal_serial_calls(ws):
+    # Calls release the GIL and take a workspace each: from four Python threads at once they give the serial numbers.
+    from concurrent.futures import ThreadPoolExecutor
+
+    ys = [k * 0.5e-3 for k in range(8)]
+    serial = [ws.contact(y=y, z=-30e-6).force.z for y in ys]
+    with ThreadPoolExecutor(4) as pool:
+        parallel = list(pool.map(lambda y: ws.contact(y=y, z=-30e-6).force.z, ys))
+    assert parallel == serial

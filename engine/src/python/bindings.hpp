@@ -56,6 +56,9 @@ struct PyWheelset {
   std::mutex pool_mutex;
   std::vector<std::unique_ptr<ContactWorkspace>> pool;
   std::shared_ptr<const Wheelset> get(const char* context) const;  // wrc.Error after close()
+  // Drops the model and the idle workspaces; a call in progress keeps its own reference and drops its workspace
+  // when it ends (Lease), before the model it was made from.
+  void close();
 };
 
 // A workspace of the wheelset's pool for one call, started cold (a result does not depend on earlier calls).

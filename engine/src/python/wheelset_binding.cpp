@@ -30,7 +30,13 @@ Lease::Lease(PyWheelset& w, std::shared_ptr<const Wheelset> model) : w_(w) {
 
 Lease::~Lease() {
   std::lock_guard lock(w_.pool_mutex);
-  w_.pool.push_back(std::move(ws_));
+  if (w_.model) w_.pool.push_back(std::move(ws_));  // after close(): dropped here, while the call holds its model
+}
+
+void PyWheelset::close() {
+  std::lock_guard lock(pool_mutex);
+  pool.clear();
+  model.reset();
 }
 
 namespace {
@@ -318,13 +324,9 @@ void register_wheelset(py::module_& m) {
       .def("trajectory", trajectory, doc("Wheelset.trajectory"))
       .def_property_readonly("params", [](const PyWheelset& w) { return converted(w.get("Wheelset.params")->params()); },
                              "the wheelset's parameters (every default filled in)")
-      .def("close", [](PyWheelset& w) {
-        w.model.reset();
-        std::lock_guard lock(w.pool_mutex);
-        w.pool.clear();
-      }, "Releases the wheelset; using it afterwards is an error.")
+      .def("close", &PyWheelset::close, "Releases the wheelset; using it afterwards is an error.")
       .def("__enter__", [](py::object self) { return self; })
-      .def("__exit__", [](PyWheelset& w, py::args) { w.model.reset(); })
+      .def("__exit__", [](PyWheelset& w, py::args) { w.close(); })
       .def("__repr__", [](const PyWheelset& w) {
         if (!w.model) return std::string("<wrc.Wheelset (closed)>");
         return fmt::format("<wrc.Wheelset strategy '{}'>", w.model->params().strategy);
