@@ -90,3 +90,20 @@ def test_close_and_context_manager(tmp_path):
     with pytest.raises(wrc.Error, match="closed"):
         wrc.wheelset(wheel=w, rail=wrc.profile.load(str(SOURCE / "profiles/60e1.lua")))
     assert not os.path.exists(tmp_path / "x.csv")
+
+
+def test_geometry_of_a_circular_arc():
+    # A rail head that is an arc of radius R: curvature 1/R, arc length R * angle, bounds from the drawing.
+    R = 0.3
+    y = np.arange(-0.02, 0.02 + 1e-9, 0.1e-3)
+    p = wrc.profile.points(kind="rail", y=y, z=np.sqrt(R * R - y * y) - R)
+    for at in (0.0, 0.01):
+        k, radius = p.curvature(at)
+        assert k == pytest.approx(1 / R, rel=1e-6) and radius == pytest.approx(R, rel=1e-6)
+    assert p.arc_length() == pytest.approx(2 * R * math.asin(0.02 / R), rel=1e-6)
+    b = p.bounds()
+    assert b["z_max"] == 0 and b["z_min"] == pytest.approx(math.sqrt(R * R - 0.02 ** 2) - R, abs=1e-15)
+    moved = p.transform(shift={"y": 1e-3})
+    np.testing.assert_allclose(moved.y, p.y + 1e-3, atol=1e-15)
+    with pytest.raises(wrc.OptionError, match="did you mean 'shift'"):
+        p.transform(shfit={"y": 1e-3})

@@ -6,6 +6,7 @@
 #include "wrc/api/calls.hpp"
 #include "wrc/lua/definitions.hpp"
 #include "wrc/profile/load.hpp"
+#include "wrc/profile/spline.hpp"
 #include "wrc/profile/write.hpp"
 
 #include <pybind11/numpy.h>
@@ -129,6 +130,38 @@ void register_profile(py::module_& m) {
            },
            py::arg("path"), "Writes the profile (format=: text, csv, simpack, miniprof, vampire; default from the "
                             "extension) atomically; returns the format written.")
+      .def("arc_length", [](const PyProfile& s) { return arc_length(s.get("Profile.arc_length")); },
+           "The profile's length along its points (m).")
+      .def("bounds",
+           [](const PyProfile& s) {
+             const Profile& p = s.get("Profile.bounds");
+             const auto [zmin, zmax] = std::minmax_element(p.z.begin(), p.z.end());
+             py::dict d;
+             d["y_min"] = p.y.front();
+             d["y_max"] = p.y.back();
+             d["z_min"] = *zmin;
+             d["z_max"] = *zmax;
+             return d;
+           },
+           "{y_min, y_max, z_min, z_max} (m)")
+      .def("curvature",
+           [](const PyProfile& s, double y) {
+             const double k = profile_curvature(s.get("Profile.curvature"), y);
+             return py::make_tuple(k, k != 0 ? py::object(py::float_(1 / k)) : py::none());
+           },
+           py::arg("y"), "(curvature 1/m, > 0 convex; lateral radius m, None where the profile is straight) at y")
+      .def("transform",
+           [](const PyProfile& s, const py::kwargs& kw) {
+             const char* ctx = "Profile.transform";
+             const Profile& p = s.get(ctx);
+             const OptionTable t = to_options(kw, ctx);
+             const LoadOptions o = reading([&] {
+               OptionReader r(t, ctx);
+               return read_load_options(r, true);
+             });
+             return PyProfile{std::make_shared<const Profile>(transform_profile(p, o))};
+           },
+           "A new profile: mirror_y=, mirror_z=, crop=, shift=, name= (the load options that change the shape).")
       .def("close", [](PyProfile& s) { s.profile.reset(); }, "Releases the profile; using it afterwards is an error.")
       .def("__enter__", [](py::object self) { return self; })
       .def("__exit__", [](PyProfile& s, py::args) { s.profile.reset(); });
