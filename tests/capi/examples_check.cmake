@@ -90,3 +90,15 @@ foreach(run ${runs})
   endif()
 endforeach()
 message(STATUS "C, Python and Lua agree:\n${out_lua}")
+
+# The installed package reads the profiles of its own prefix (found from the module's folder, four levels up), not
+# those of the source tree it was built from.
+if(PACKAGE_PYTHON)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} PYTHONPATH=${PREFIX}/${PACKAGE_SITE} ${PACKAGE_PYTHON} -c
+                          "import wrc; print(wrc.profile.load('profiles/s1002.lua').source)"
+                  WORKING_DIRECTORY / RESULT_VARIABLE rc OUTPUT_VARIABLE source ERROR_VARIABLE err
+                  OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT rc EQUAL 0 OR NOT source MATCHES "^${PREFIX}/share/wrc/profiles/s1002.lua$")
+    message(FATAL_ERROR "the installed package read profiles/s1002.lua from '${source}', not from ${PREFIX}:\n${err}")
+  endif()
+endif()

@@ -56,6 +56,7 @@ def test_numpy_scalars_and_none(ws):
     a = ws.contact(y=np.float64(2e-3), z=np.float32(-20e-6))
     b = ws.contact(y=2e-3, z=float(np.float32(-20e-6)), roll=None)  # None: not given (the default)
     assert a.force.z == b.force.z
+    assert ws.contact(y=2e-3, z=-20e-6, grids=np.bool_(True)).left.patches[0].pressure.ndim == 2
 
 
 def test_closed_wheelset(s1002, rail60):

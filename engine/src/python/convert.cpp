@@ -56,6 +56,8 @@ OptionValue to_option(py::handle v, const std::string& context, int depth) {
     p.get(context.c_str());
     return OptionValue::of_object(p.profile, kProfileTypeName);
   }
+  static const py::object numpy_scalar = py::module_::import("numpy").attr("generic");
+  if (is_instance(v, numpy_scalar)) return to_option(v.attr("item")(), context, depth);  // numpy.float64, bool_
   if (py::isinstance<py::array>(v)) {
     if (py::array(py::reinterpret_borrow<py::array>(v)).ndim() == 0) return to_option(v.attr("item")(), context, depth);
     return array_option(v, context, depth);
