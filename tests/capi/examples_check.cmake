@@ -11,8 +11,9 @@ set(flags "")
 set(env "")
 if(SANITIZE)
   set(flags "-fsanitize=address,undefined")
-  # Python is not built with the sanitizers: their runtimes must be loaded first.
-  foreach(lib libasan.so libubsan.so)
+  # Python is not built with the sanitizers: their runtimes must be loaded first, with libstdc++ (ASan intercepts
+  # __cxa_throw and finds the real one only in a library loaded at start).
+  foreach(lib libasan.so libubsan.so libstdc++.so)
     execute_process(COMMAND ${CC} -print-file-name=${lib} OUTPUT_VARIABLE path OUTPUT_STRIP_TRAILING_WHITESPACE)
     list(APPEND preload ${path})
   endforeach()

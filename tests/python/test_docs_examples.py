@@ -1,5 +1,6 @@
 """The Python examples of README.md and docs/python.md run as printed (from the repository's root)."""
 import os
+import pathlib
 import re
 import subprocess
 import sys
@@ -14,7 +15,7 @@ def python_blocks(page):
     return re.findall(r"```python\n(.*?)```", text, re.S)
 
 
-@pytest.mark.parametrize("page", ["README.md", "docs/python.md"])
+@pytest.mark.parametrize("page", ["README.md", str(pathlib.Path("docs", "python.md"))])
 def test_page_examples_run(page):
     blocks = python_blocks(page)
     assert blocks, f"{page} has no Python example"
