@@ -83,5 +83,6 @@ void register_batch(py::module_& m);
 void register_errors(py::module_& m);
 void register_profile(py::module_& m);
 void register_wheelset(py::module_& m);
+void register_track(py::module_& m);  // after register_wheelset: properties of wrc.Wheelset
 
 }  // namespace wrc::python

@@ -164,6 +164,8 @@ std::string stub() {
   s += entries_of("Trajectory", "    ") + "\n";
   s += "class Wheelset:\n"
        "    params: Result\n"
+       "    left_wheel: Result\n    right_wheel: Result\n    left_rail: Result\n    right_rail: Result\n"
+       "    gauge_points: Result\n    tape_points: Result\n    rail_top: Result\n"
        "    def close(self) -> None: ...\n"
        "    def __enter__(self) -> Wheelset: ...\n    def __exit__(self, *exc: Any) -> None: ...\n";
   s += entries_of("Wheelset", "    ") + "\n";

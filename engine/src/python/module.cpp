@@ -51,6 +51,7 @@ PYBIND11_MODULE(_wrc, m) {
   register_profile(m);
   register_wheelset(m);
   register_batch(m);
+  register_track(m);
   m.attr("__version__") = WRC_VERSION;
   m.def("operations", operations_list,
         "Every operation of the engine with its options (key, type, unit, help, default, required, choices).");
