@@ -2,7 +2,7 @@
 // or a constant k, or the USFD function: damage/wear.hpp), Burstow's RCF damage and Ekberg's surface fatigue index
 // (damage/fatigue.hpp). All from the fields a solved area holds (pressure, tractions, slip, creepages, creep forces):
 // O(elements), no solve. Every rolling solve of the wheelset fills them (PatchRolling::damage, wheelset/tangential.hpp;
-// the fields of the area's AreaFields: wrc::area_fields, wheelset/contact.hpp). docs/damage.md.
+// the fields of the area's AreaFields: wrc::area_fields, wheelset/contact.hpp). docs/guide/damage.md.
 #pragma once
 
 #include "wrc/core/fields.hpp"
