@@ -29,15 +29,25 @@ DamageOptions read_damage_options(OptionReader& r) {
 
 namespace {
 
-void check(const AreaFields& f) {
+// Whether every value is finite (and >= 0 with `nonnegative`); the message's search runs only when one is not.
+bool all_valid(std::span<const double> v, bool nonnegative) {
+  bool ok = true;
+  for (double x : v) ok &= std::isfinite(x) && !(nonnegative && x < 0);
+  return ok;
+}
+
+void check(const AreaFields& f, FieldCheck how) {
   halfspace::validate(f.grid, "damage");
   const auto n = static_cast<std::size_t>(f.grid.size());
   for (auto [name, v] : {std::pair<std::string_view, std::span<const double>>{"pressure", f.pressure}, {"px", f.px},
                          {"py", f.py}, {"sx", f.sx}, {"sy", f.sy}}) {
     if (v.size() != n) fail("damage: {} has {} values; the {} x {} grid needs {}", name, v.size(), f.grid.nx, f.grid.ny, n);
+    const bool pressure = name == "pressure";
+    if (how == FieldCheck::sizes) continue;
+    if (all_valid(v, pressure)) continue;
     for (std::size_t k = 0; k < n; ++k)
-      if (!std::isfinite(v[k]) || (name == "pressure" && v[k] < 0))
-        fail("damage: {}[{}] = {} (must be finite{})", name, k, v[k], name == "pressure" ? " and >= 0" : "");
+      if (!std::isfinite(v[k]) || (pressure && v[k] < 0))
+        fail("damage: {}[{}] = {} (must be finite{})", name, k, v[k], pressure ? " and >= 0" : "");
   }
   if (!(std::isfinite(f.V) && f.V != 0)) fail("damage: V = {} m/s must be finite and != 0", f.V);
   for (auto [name, v] : {std::pair{"xi", f.creepage.xi}, {"eta", f.creepage.eta}, {"phi", f.creepage.phi},
@@ -80,34 +90,48 @@ void add_wear(const AreaFields& f, const WearOptions& w, PatchDamage& d) {
   d.wear_passage_max = d.wear_passage.empty() ? 0.0 : *std::max_element(d.wear_passage.begin(), d.wear_passage.end());
 }
 
-// The extents (m) of the contact elements along x and y.
-std::pair<double, double> extents(const AreaFields& f) {
-  int i0 = f.grid.nx, i1 = -1, j0 = f.grid.ny, j1 = -1;
-  for (int j = 0; j < f.grid.ny; ++j)
-    for (int i = 0; i < f.grid.nx; ++i)
-      if (f.pressure[static_cast<std::size_t>(f.grid.index(i, j))] > 0) {
-        i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+// One pass over the pressure: the normal force, the contact area and the extents of the contact elements along x
+// and y (m).
+struct Contact {
+  double force = 0, area = 0, lx = 0, ly = 0;
+};
+Contact contact_of(const AreaFields& f) {
+  const halfspace::Grid& g = f.grid;
+  int i0 = g.nx, i1 = -1, j0 = g.ny, j1 = -1, count = 0;
+  double sum = 0;
+  for (int j = 0; j < g.ny; ++j) {
+    const double* row = f.pressure.data() + static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(j);
+    int first = -1, last = -1;
+    for (int i = 0; i < g.nx; ++i)
+      if (row[i] > 0) {
+        sum += row[i];
+        ++count;
+        if (first < 0) first = i;
+        last = i;
       }
-  return {(i1 - i0 + 1) * f.grid.dx, (j1 - j0 + 1) * f.grid.dy};
+    if (first < 0) continue;
+    i0 = std::min(i0, first), i1 = std::max(i1, last), j0 = std::min(j0, j), j1 = j;
+  }
+  if (count == 0) return {};
+  return {sum * g.element_area(), count * g.element_area(), (i1 - i0 + 1) * g.dx, (j1 - j0 + 1) * g.dy};
 }
 
-void add_fatigue(const AreaFields& f, const FatigueOptions& o, PatchDamage& d) {
+void add_fatigue(const AreaFields& f, const FatigueOptions& o, const Contact& c, PatchDamage& d) {
   d.rcf_damage = burstow_damage(d.Tgamma, o.burstow);
   d.rcf_regime = burstow_regime(d.Tgamma, o.burstow);
   d.shear_yield = o.shear_yield;
   if (!(d.normal_force > 0)) return;
   d.traction_coefficient = std::hypot(f.fx, f.fy) / d.normal_force;
-  const auto [lx, ly] = extents(f);
   const double ab = d.contact_area / std::numbers::pi;
-  d.a = std::sqrt(ab * lx / ly);
-  d.b = std::sqrt(ab * ly / lx);
+  d.a = std::sqrt(ab * c.lx / c.ly);
+  d.b = std::sqrt(ab * c.ly / c.lx);
   d.fi_surf = surface_fatigue_index(d.traction_coefficient, d.a, d.b, o.shear_yield, d.normal_force);
 }
 
 }  // namespace
 
-PatchDamage compute_damage(const AreaFields& f, const DamageOptions& options) {
-  check(f);
+PatchDamage compute_damage(const AreaFields& f, const DamageOptions& options, FieldCheck how) {
+  check(f, how);
   options.validate();
   PatchDamage d;
   d.grid = f.grid;
@@ -115,15 +139,13 @@ PatchDamage compute_damage(const AreaFields& f, const DamageOptions& options) {
   d.map = d.model == WearModel::archard && !options.wear.k;
   d.Tgamma = tgamma(f.fx, f.fy, f.creepage);
   d.Tgamma_spin = tgamma_spin(f.fx, f.fy, f.mz, f.creepage);
-  for (double p : f.pressure)
-    if (p > 0) {
-      d.normal_force += p * f.grid.element_area();
-      d.contact_area += f.grid.element_area();
-    }
+  const Contact c = contact_of(f);
+  d.normal_force = c.force;
+  d.contact_area = c.area;
   if (d.contact_area > 0) d.Tgamma_per_area = d.Tgamma / d.contact_area;
   d.usfd_regime = usfd_regime(d.Tgamma_per_area);
   if (options.with_wear) add_wear(f, options.wear, d);
-  add_fatigue(f, options.fatigue, d);
+  add_fatigue(f, options.fatigue, c, d);
   return d;
 }
 

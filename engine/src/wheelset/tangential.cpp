@@ -219,7 +219,7 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   pc.force += r.force;
   pc.moment += r.moment;
   pc.rolling = std::move(r);
-  pc.rolling->damage = damage::compute_damage(area_fields(pc), rq.damage);
+  pc.rolling->damage = damage::compute_damage(area_fields(pc), rq.damage, damage::FieldCheck::sizes);
 }
 
 damage::AreaFields area_fields(const PatchContact& area) {

@@ -68,9 +68,16 @@ struct PatchDamage {
   std::optional<double> fi_surf;       // Ekberg's FI_surf (-); none without contact
 };
 
-// The indices of one area. Throws wrc::Error naming what is wrong: an invalid grid, a field of the wrong size or not
-// finite, a negative pressure, V = 0 or not finite, creepages or forces not finite; and invalid options.
-PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& options);
+// How much of the fields compute_damage checks: every value (the default), or the sizes alone, for fields a solver of
+// the engine has just made (finite by construction; the rolling solve of every area: a pass over every value of five
+// grids would cost half as much as FASTSIM itself).
+enum class FieldCheck { values, sizes };
+
+// The indices of one area. Throws wrc::Error naming what is wrong: an invalid grid, a field of the wrong size or (with
+// FieldCheck::values) not finite, a negative pressure; V = 0 or not finite, creepages or forces not finite; and
+// invalid options.
+PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& options,
+                           FieldCheck check = FieldCheck::values);
 
 // Fields (Lua and C), flat so that they sit beside an area's own (p.Tgamma, p.wear_volume) with no name in common:
 // Tgamma, Tgamma_spin, Tgamma_per_area; with wear: wear_model, wear_map (Archard) or usfd_regime (USFD),
