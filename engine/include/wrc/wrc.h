@@ -120,7 +120,9 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance; search (strategy, the default, or
  * brute: every rail line against every cone, a check of the strategy). The areas then hold Fx, Fy, Mz,
- * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
+ * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density, and the damage
+ * indices Tgamma, Tgamma_spin, rcf_damage, fi_surf, ... (docs/guide/damage.md); with a wear model (wear.model=archard
+ * or usfd, wear.k, wear.hardness, wear.density; fatigue.shear_yield, ...) also wear_volume and the grid wear_depth. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
 /* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N, at most 1e10) prescribed at y, yaw, roll.
