@@ -48,8 +48,13 @@ std::shared_ptr<const Wheelset> paper_wheelset(const std::string& root, ContactS
   return build_wheelset(p, params);
 }
 
-RollingRequest rolling(RollingMethod method, bool creepages) {
+// With a wear model: its fields too (Archard with the KTH map, or USFD).
+RollingRequest rolling(RollingMethod method, bool creepages, std::optional<damage::WearModel> wear = std::nullopt) {
   RollingRequest q;
+  if (wear) {
+    q.damage.with_wear = true;
+    q.damage.wear.model = *wear;
+  }
   if (creepages) q.creepage = halfspace::Creepages{1e-3, -0.5e-3, 0.1};
   else q.kinematics = Kinematics{20.0, std::nullopt, 0.01, 0.0};
   q.V = 20;
@@ -69,7 +74,8 @@ std::vector<Section> sections(const std::string& root) {
   // A wheel: frictionless, rolling (exact, FASTSIM), planar; failed and past flange climb.
   {
     const WheelCase c{kLeft, 2e-3, 0.0, 0.0, 100e3};
-    WheelResult exact = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::exact, false));
+    WheelResult exact =
+        solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::exact, false, damage::WearModel::archard));
     const WheelResult fastsim = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::fastsim, false));
     const WheelResult plain = solve_wheel(planar->contact_model(), c, *pws);
     Trajectory tr(conformal);
@@ -91,7 +97,7 @@ std::vector<Section> sections(const std::string& root) {
     req.sensitivity = true;
     req.rolling = rolling(RollingMethod::exact, false);
     const ContactResult kin = evaluate_contact(cm, pose, *ws, req);
-    req.rolling = rolling(RollingMethod::fastsim, true);
+    req.rolling = rolling(RollingMethod::fastsim, true, damage::WearModel::usfd);
     const ContactResult creep = evaluate_contact(cm, pose, *ws, req);
     const ContactResult plain = evaluate_contact(planar->contact_model(), pose, *pws);
     Trajectory tr(conformal);
@@ -201,7 +207,7 @@ std::vector<Section> sections(const std::string& root) {
                    "The wheelset's location strategy checked against brute force on random poses.",
                    {[=](FieldSink& s) { describe(sc, s); }}});
   }
-  // Subsurface stresses of a rolling patch (the engine's; not yet a Lua or C call).
+  // Subsurface stresses of a rolling patch (p:subsurface, wrc_subsurface: api::SubsurfaceCall).
   {
     ContactRequest req;
     req.rolling = rolling(RollingMethod::exact, false);
@@ -212,8 +218,9 @@ std::vector<Section> sections(const std::string& root) {
     q.z = {0.5e-3, 1e-3};
     const halfspace::SubsurfaceResult r = halfspace::compute_subsurface(
         planar->contact_model().material(), {pc.solution.grid, pc.solution.pressure, t.px, t.py}, q);
-    out.push_back({"Subsurface stresses", "`compute_subsurface` (C++; Lua and C calls to come)",
-                   "The stresses below a contact area and its shakedown point (docs/guide/damage.md).",
+    out.push_back({"Subsurface stresses", "`p:subsurface{...}` (p an area of a result); `wrc_subsurface`",
+                   "The stresses below a contact area and its shakedown point ([What contact does to the "
+                   "steel](../guide/damage.md)).",
                    {[=](FieldSink& s) { halfspace::describe(r, s); }}});
   }
   return out;

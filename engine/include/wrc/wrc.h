@@ -120,7 +120,9 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance; search (strategy, the default, or
  * brute: every rail line against every cone, a check of the strategy). The areas then hold Fx, Fy, Mz,
- * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density. */
+ * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density, and the damage
+ * indices Tgamma, Tgamma_spin, rcf_damage, fi_surf, ... (docs/guide/damage.md); with a wear model (wear.model=archard
+ * or usfd, wear.k, wear.hardness, wear.density; fatigue.shear_yield, ...) also wear_volume and the grid wear_depth. */
 wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, double yaw, const char* options,
                        wrc_result** out);
 /* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N, at most 1e10) prescribed at y, yaw, roll.
@@ -134,6 +136,13 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
  * start.roll. */
 wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double Q, const char* options,
                            wrc_result** out);
+/* The stresses below a contact area of a result (docs/guide/damage.md): `patch` is the area's path in `result`
+ * ("left.patches.1"; the result must hold its pressure grid: grids kept), whose grid, pressure, px and py (with
+ * rolling) and nu it reads. Options: z (depths below the surface, m, > 0: "z=0.5e-3,1e-3"; required), method (auto,
+ * fft or direct), body (wheel or rail), fields (false: the maxima alone), shear_yield (Pa), shakedown_map (point or
+ * line). The new result holds von_mises_max, von_mises_max_z, tresca_max, tresca_max_z, tau1_max, shakedown.*,
+ * depths.N.* (Pa, m). */
+wrc_status wrc_subsurface(const wrc_result* result, const char* patch, const char* options, wrc_result** out);
 /* The rigid (kinematic) reference at y, yaw with load Q. */
 wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc_result** out);
 
