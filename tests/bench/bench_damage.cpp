@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     const auto indices = [&](const wrc::damage::DamageOptions& o) {
       out.clear();
       for (const wrc::PatchContact& pc : w.wheel.patches)
-        out.push_back(wrc::damage::compute_damage(wrc::damage::area_fields(pc), o));
+        out.push_back(wrc::damage::compute_damage(wrc::area_fields(pc), o));
     };
     const double t_usfd = median_ms(reps, [&] { indices(usfd); });
     const double t_archard = median_ms(reps, [&] { indices(archard); });

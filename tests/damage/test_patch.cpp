@@ -85,7 +85,7 @@ TEST_CASE("Archard in full sliding on a Hertzian patch: volume per metre rolled 
   // k p0 |w| pi a / (2 H); the deepest row is the central one.
   const Sliding s = sliding(0.02, 0, 0.3, 80);
   const PatchDamage d = compute_damage(s.fields(10), archard(1e-3));
-  CHECK(d.wear_depth_max == within_rel(1e-3 * kP0 * 0.02 * std::numbers::pi * kA / (2 * 2.5e9), 0.01));
+  CHECK(d.wear_passage_max == within_rel(1e-3 * kP0 * 0.02 * std::numbers::pi * kA / (2 * 2.5e9), 0.01));
   // The seizure region: with H = 1.1 GPa the elements above 0.8 H = 0.88 GPa take K1, the rest K3 (V = 20 m/s):
   // the volume by the map's two values over the pressure integrals of the two parts, computed here.
   const PatchDamage z = compute_damage(sliding(0.02, 0, 0.3).fields(20), archard(std::nullopt, 1.1e9));
@@ -206,6 +206,7 @@ class Recorder final : public FieldSink {
   std::map<std::string, std::string> strs;
   std::map<std::string, std::size_t> arrays;
   std::map<std::string, FieldDoc> docs;
+  std::map<std::string, int> emitted;  // how often each path was described
   bool finite = true;
   void number(std::string_view k, double v) override {
     nums[path(k)] = v;
@@ -229,7 +230,10 @@ class Recorder final : public FieldSink {
   void end() override { prefix.pop_back(); }
 
  protected:
-  void document(std::string_view k, FieldDoc doc) override { docs[path(k)] = doc; }
+  void document(std::string_view k, FieldDoc doc) override {
+    docs[path(k)] = doc;
+    ++emitted[path(k)];
+  }
 
  private:
   std::string path(std::string_view k) const { return (prefix.empty() ? "" : prefix.back()) + std::string(k); }
@@ -257,8 +261,8 @@ TEST_CASE("describe(PatchDamage): every field documented, values as computed") {
     CHECK(rec.nums.at("Tgamma") == d.Tgamma);
     CHECK(rec.nums.at("wear_volume") == d.wear_volume);
     CHECK(rec.nums.at("fi_surf") == *d.fi_surf);
-    CHECK(rec.arrays.at("wear_depth") == static_cast<std::size_t>(s.h.grid.ny));
-    CHECK(rec.arrays.at("wear_rate") == static_cast<std::size_t>(s.h.grid.size()));
+    CHECK(rec.arrays.at("wear_passage") == static_cast<std::size_t>(s.h.grid.ny));
+    CHECK(rec.arrays.at("wear_depth") == static_cast<std::size_t>(s.h.grid.size()));
     CHECK(rec.arrays.count("wear_coefficient") == (model == WearModel::archard ? 1u : 0u));
     CHECK(std::string(rec.docs.at("wear_volume").unit) == "m^3/m");
     CHECK(std::string(rec.docs.at("Tgamma").unit) == "N");
@@ -317,14 +321,24 @@ TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) o
           dissipated += d.tgamma_density[k] * g.element_area();
         }
         CHECK(dissipated == within_rel(t.power_per_speed, 1e-9));
-        // The fields sit beside the area's own (p.Tgamma, p.wear_volume): no name in common.
-        Recorder area_rec, damage_rec;
+        // The fields sit beside the area's own (p.Tgamma, p.wear_volume), which the area's description holds (the
+        // solve filled them): each once, no name in common with the area's own.
+        DamageOptions no_wear;
+        no_wear.with_wear = false;
+        Recorder area_rec, damage_rec, wear_rec;
         describe(pc, area_rec);
-        describe(d, damage_rec);
+        describe(compute_damage(area_fields(pc), no_wear), damage_rec);
+        describe(d, wear_rec);
         for (const auto& [key, doc] : damage_rec.docs) {
           CAPTURE(key);
-          CHECK(area_rec.nums.count(key) + area_rec.strs.count(key) + area_rec.arrays.count(key) == 0);
+          CHECK(area_rec.emitted[key] == 1);
         }
+        for (const auto& [key, doc] : wear_rec.docs) {
+          CAPTURE(key);
+          CHECK(area_rec.emitted[key] == damage_rec.emitted[key]);
+        }
+        CHECK(area_rec.nums.at("Tgamma") == d.Tgamma);
+        CHECK(area_rec.nums.count("wear_volume") == 0);  // no wear model asked of the solve
         MESSAGE(fmt::format("y = {} mm: Tgamma {:.2f} N, spin {:.2f} N, rigid work {:.2f} N, dissipated {:.2f} N, "
                             "wear {:.3e} m^3/m, FI {:.3f}",
                             y * 1e3, d.Tgamma, d.Tgamma_spin, work_rigid, dissipated, d.wear_volume, d.fi_surf.value_or(0)));

@@ -48,8 +48,13 @@ std::shared_ptr<const Wheelset> paper_wheelset(const std::string& root, ContactS
   return build_wheelset(p, params);
 }
 
-RollingRequest rolling(RollingMethod method, bool creepages) {
+// With a wear model: its fields too (Archard with the KTH map, or USFD).
+RollingRequest rolling(RollingMethod method, bool creepages, std::optional<damage::WearModel> wear = std::nullopt) {
   RollingRequest q;
+  if (wear) {
+    q.damage.with_wear = true;
+    q.damage.wear.model = *wear;
+  }
   if (creepages) q.creepage = halfspace::Creepages{1e-3, -0.5e-3, 0.1};
   else q.kinematics = Kinematics{20.0, std::nullopt, 0.01, 0.0};
   q.V = 20;
@@ -69,7 +74,8 @@ std::vector<Section> sections(const std::string& root) {
   // A wheel: frictionless, rolling (exact, FASTSIM), planar; failed and past flange climb.
   {
     const WheelCase c{kLeft, 2e-3, 0.0, 0.0, 100e3};
-    WheelResult exact = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::exact, false));
+    WheelResult exact =
+        solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::exact, false, damage::WearModel::archard));
     const WheelResult fastsim = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::fastsim, false));
     const WheelResult plain = solve_wheel(planar->contact_model(), c, *pws);
     Trajectory tr(conformal);
@@ -91,7 +97,7 @@ std::vector<Section> sections(const std::string& root) {
     req.sensitivity = true;
     req.rolling = rolling(RollingMethod::exact, false);
     const ContactResult kin = evaluate_contact(cm, pose, *ws, req);
-    req.rolling = rolling(RollingMethod::fastsim, true);
+    req.rolling = rolling(RollingMethod::fastsim, true, damage::WearModel::usfd);
     const ContactResult creep = evaluate_contact(cm, pose, *ws, req);
     const ContactResult plain = evaluate_contact(planar->contact_model(), pose, *pws);
     Trajectory tr(conformal);

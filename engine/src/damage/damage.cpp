@@ -1,7 +1,5 @@
 #include "wrc/damage/damage.hpp"
 
-#include "wrc/wheelset/contact.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -16,24 +14,17 @@ void DamageOptions::validate() const {
 
 DamageOptions read_damage_options(OptionReader& r) {
   DamageOptions o;
-  if (auto w = r.table("wear", {"", "the wear model: {model = \"archard\" | \"usfd\", k, hardness, density}"})) {
+  o.with_wear = false;
+  if (auto w = r.table("wear", {"-", "the wear model: {model = \"archard\" | \"usfd\", k, hardness, density}"})) {
     o.wear = read_wear_options(*w);
+    o.with_wear = true;
     w->finish();
   }
-  if (auto f = r.table("fatigue", {"", "the fatigue indices: {shear_yield, threshold, peak, limit, peak_damage}"})) {
+  if (auto f = r.table("fatigue", {"-", "the fatigue indices: {shear_yield, threshold, peak, limit, peak_damage}"})) {
     o.fatigue = read_fatigue_options(*f);
     f->finish();
   }
   return o;
-}
-
-AreaFields area_fields(const PatchContact& area) {
-  if (!area.rolling) fail("damage: the area has no tangential solution (give the call V and mu, or creepage and mu)");
-  const PatchRolling& r = *area.rolling;
-  const halfspace::TangentialSolution& s = r.solution;
-  if (area.solution.pressure.empty() || s.px.empty())
-    fail("damage: the area's grids were not kept (grids = false); the indices need the pressure and traction grids");
-  return {s.grid, area.solution.pressure, s.px, s.py, s.sx, s.sy, r.V, r.creepage, r.fx, r.fy, r.mz};
 }
 
 namespace {
@@ -59,10 +50,11 @@ void add_wear(const AreaFields& f, const WearOptions& w, PatchDamage& d) {
   const halfspace::Grid& g = f.grid;
   const auto n = static_cast<std::size_t>(g.size());
   const double speed = std::abs(f.V);
-  d.wear_rate.assign(n, 0.0);
+  d.wear = true;
+  d.wear_depth.assign(n, 0.0);
   d.tgamma_density.assign(n, 0.0);
   if (w.model == WearModel::archard) d.wear_coefficient.assign(n, 0.0);
-  d.wear_depth.assign(static_cast<std::size_t>(g.ny), 0.0);
+  d.wear_passage.assign(static_cast<std::size_t>(g.ny), 0.0);
   for (int j = 0; j < g.ny; ++j) {
     double row = 0;
     for (int i = 0; i < g.nx; ++i) {
@@ -79,13 +71,13 @@ void add_wear(const AreaFields& f, const WearOptions& w, PatchDamage& d) {
       } else {
         rate = usfd_wear_rate(d.tgamma_density[k]) / w.density;
       }
-      d.wear_rate[k] = rate;
+      d.wear_depth[k] = rate;
       row += rate;
     }
-    d.wear_depth[static_cast<std::size_t>(j)] = row * g.dx;
+    d.wear_passage[static_cast<std::size_t>(j)] = row * g.dx;
     d.wear_volume += row * g.element_area();
   }
-  d.wear_depth_max = d.wear_depth.empty() ? 0.0 : *std::max_element(d.wear_depth.begin(), d.wear_depth.end());
+  d.wear_passage_max = d.wear_passage.empty() ? 0.0 : *std::max_element(d.wear_passage.begin(), d.wear_passage.end());
 }
 
 // The extents (m) of the contact elements along x and y.
@@ -130,38 +122,55 @@ PatchDamage compute_damage(const AreaFields& f, const DamageOptions& options) {
     }
   if (d.contact_area > 0) d.Tgamma_per_area = d.Tgamma / d.contact_area;
   d.usfd_regime = usfd_regime(d.Tgamma_per_area);
-  add_wear(f, options.wear, d);
+  if (options.with_wear) add_wear(f, options.wear, d);
   add_fatigue(f, options.fatigue, d);
   return d;
+}
+
+namespace {
+
+void describe_wear(const PatchDamage& d, FieldSink& out) {
+  const int nx = d.grid.nx, ny = d.grid.ny;
+  out.string("wear_model", model_name(d.model), {"", "\"archard\" or \"usfd\" (the call's wear.model; with wear)"});
+  if (d.model == WearModel::archard)
+    out.boolean("wear_map", d.map, {"", "true: Archard's k by the KTH map; false: a constant k"});
+  else
+    out.string("usfd_regime", regime_name(d.usfd_regime), {"", "mild, severe or catastrophic at Tgamma_per_area"});
+  out.number("wear_volume", d.wear_volume, {"m^3/m", "volume worn off per metre rolled: sum of wear_depth dA (with wear)"});
+  out.number("wear_passage_max", d.wear_passage_max, {"m", "the largest of wear_passage"});
+  if (d.wear_depth.empty()) return;  // grids dropped
+  out.numbers("wear_passage", d.wear_passage.data(), d.wear_passage.size(),
+              {"m", "per grid row: depth worn off in one passage through the area, sum of wear_depth dx"});
+  out.grid("wear_depth", d.wear_depth.data(), nx, ny,
+           {"m/m", "per element: depth worn off per metre rolled while the material is in the element"});
+  if (d.model == WearModel::archard)
+    out.grid("wear_coefficient", d.wear_coefficient.data(), nx, ny, {"-", "per element: Archard's k (0 outside)"});
+  out.grid("tgamma_density", d.tgamma_density.data(), nx, ny,
+           {"Pa", "per element: |px sx| + |py sy|, the local T gamma / A (power density / |V|)"});
+}
+
+}  // namespace
+
+void drop_grids(PatchDamage& d) {
+  d.wear_depth = {};
+  d.wear_passage = {};
+  d.wear_coefficient = {};
+  d.tgamma_density = {};
 }
 
 void describe(const PatchDamage& d, FieldSink& out) {
   out.number("Tgamma", d.Tgamma, {"N", "|Fx xi| + |Fy eta|: frictional work per metre rolled (J/m)"});
   out.number("Tgamma_spin", d.Tgamma_spin, {"N", "Tgamma + |Mz phi|"});
   out.number("Tgamma_per_area", d.Tgamma_per_area, {"Pa", "Tgamma / contact area (USFD's T gamma / A; N/m^2)"});
-  const int nx = d.grid.nx, ny = d.grid.ny;
-  out.string("wear_model", model_name(d.model), {"", "\"archard\" or \"usfd\" (the call's wear.model)"});
-  if (d.model == WearModel::archard)
-    out.boolean("wear_map", d.map, {"", "true: Archard's k by the KTH map; false: a constant k"});
-  else
-    out.string("usfd_regime", regime_name(d.usfd_regime), {"", "mild, severe or catastrophic at Tgamma_per_area"});
-  out.number("wear_volume", d.wear_volume, {"m^3/m", "volume worn off per metre rolled: sum of wear_rate dA"});
-  out.number("wear_depth_max", d.wear_depth_max, {"m", "the largest of wear_depth"});
-  out.numbers("wear_depth", d.wear_depth.data(), d.wear_depth.size(),
-              {"m", "per grid row: depth worn off in one passage through the area, sum of wear_rate dx"});
-  out.grid("wear_rate", d.wear_rate.data(), nx, ny, {"m/m", "per element: wear depth per metre rolled"});
-  if (d.model == WearModel::archard)
-    out.grid("wear_coefficient", d.wear_coefficient.data(), nx, ny, {"1", "per element: Archard's k (0 outside)"});
-  out.grid("tgamma_density", d.tgamma_density.data(), nx, ny,
-           {"Pa", "per element: |px sx| + |py sy|, the local T gamma / A (power density / |V|)"});
-  out.number("rcf_damage", d.rcf_damage, {"1", "Burstow's RCF damage of the rail per passage, from Tgamma"});
+  if (d.wear) describe_wear(d, out);
+  out.number("rcf_damage", d.rcf_damage, {"-", "Burstow's RCF damage of the rail per passage, from Tgamma"});
   out.string("rcf_regime", regime_name(d.rcf_regime), {"", "none, rcf, rcf and wear, or wear (Burstow's ranges)"});
-  out.number("traction_coefficient", d.traction_coefficient, {"1", "|(Fx, Fy)| / (sum of p dA)"});
+  out.number("traction_coefficient", d.traction_coefficient, {"-", "|(Fx, Fy)| / (sum of p dA)"});
   out.number("fi_a", d.a, {"m", "FI_surf's semi-axis along x: pi a b = contact area, a / b the extents' ratio"});
   out.number("fi_b", d.b, {"m", "FI_surf's semi-axis along y"});
   out.number("shear_yield", d.shear_yield, {"Pa", "k of Ekberg's FI_surf"});
   if (d.fi_surf)
-    out.number("fi_surf", *d.fi_surf, {"1", "Ekberg's FI_surf = mu - 2 pi a b k / (3 Fz); > 0: surface fatigue"});
+    out.number("fi_surf", *d.fi_surf, {"-", "Ekberg's FI_surf = mu - 2 pi a b k / (3 Fz); > 0: surface fatigue"});
 }
 
 }  // namespace wrc::damage

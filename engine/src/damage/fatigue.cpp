@@ -49,7 +49,7 @@ FatigueOptions read_fatigue_options(OptionReader& r) {
   f.threshold = r.number("threshold", {"N", "Burstow: the T gamma below which there is no RCF damage"}, f.threshold);
   f.peak = r.number("peak", {"N", "Burstow: the T gamma of the largest RCF damage"}, f.peak);
   f.limit = r.number("limit", {"N", "Burstow: the T gamma above which wear removes all RCF damage"}, f.limit);
-  f.peak_damage = r.number("peak_damage", {"1", "Burstow: the RCF damage per passage at the peak"}, f.peak_damage);
+  f.peak_damage = r.number("peak_damage", {"-", "Burstow: the RCF damage per passage at the peak"}, f.peak_damage);
   if (!r.documenting()) o.validate(r.context());
   return o;
 }

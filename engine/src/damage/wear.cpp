@@ -41,10 +41,10 @@ void WearOptions::validate(std::string_view context) const {
 WearOptions read_wear_options(OptionReader& r) {
   WearOptions w;
   if (r.choice("model", {"archard", "usfd"},
-               {"", "Archard's law (k p |s| / H per element) or the USFD wear function of T gamma / A"},
+               {"-", "Archard's law (k p |s| / H per element) or the USFD wear function of T gamma / A"},
                "archard") == "usfd")
     w.model = WearModel::usfd;
-  w.k = r.number("k", {"1", "Archard: a constant wear coefficient instead of the KTH map (Jendel 2002)"});
+  w.k = r.number("k", {"-", "Archard: a constant wear coefficient instead of the KTH map (Jendel 2002)"});
   w.hardness = r.number("hardness", {"Pa", "Archard: the hardness H of the steel"}, w.hardness);
   w.density = r.number("density", {"kg/m^3", "USFD: the steel's density (worn mass to volume)"}, w.density);
   if (r.documenting()) return w;

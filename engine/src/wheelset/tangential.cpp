@@ -219,6 +219,16 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   pc.force += r.force;
   pc.moment += r.moment;
   pc.rolling = std::move(r);
+  pc.rolling->damage = damage::compute_damage(area_fields(pc), rq.damage);
+}
+
+damage::AreaFields area_fields(const PatchContact& area) {
+  if (!area.rolling) fail("damage: the area has no tangential solution (give the call V and mu, or creepage and mu)");
+  const PatchRolling& r = *area.rolling;
+  const halfspace::TangentialSolution& s = r.solution;
+  if (area.solution.pressure.empty() || s.px.empty())
+    fail("damage: the area's grids were not kept (grids = false); the indices need the pressure and traction grids");
+  return {s.grid, area.solution.pressure, s.px, s.py, s.sx, s.sy, r.V, r.creepage, r.fx, r.fy, r.mz};
 }
 
 void add_creep(CreepTotals& total, const PatchContact& pc) {
@@ -245,6 +255,7 @@ void drop_grids(PatchRolling& r) {
   r.solution.state = {};
   r.rigid_x = {};
   r.rigid_y = {};
+  damage::drop_grids(r.damage);
 }
 
 void describe(const PatchRolling& r, FieldSink& out) {
@@ -267,6 +278,7 @@ void describe(const PatchRolling& r, FieldSink& out) {
   out.number("adhesion", r.adhesion, {"-", "fraction of the contact area in adhesion"});
   out.number("power", r.power, {"W", "frictional power of the area, >= 0"});
   out.integer("creep_iterations", r.solution.iterations, {"-", "iterations of the tangential solver"});
+  damage::describe(r.damage, out);
   const halfspace::TangentialSolution& s = r.solution;
   if (s.px.empty()) return;
   const int nx = s.grid.nx, ny = s.grid.ny;
@@ -367,10 +379,10 @@ void RollingRequest::validate(std::string_view context, bool plausible) const {
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   bool any = r.documenting() || r.has("creepage");
   for (const char* key : {"V", "omega", "vy", "yaw_rate", "slip_reference"}) any |= r.has(key);
-  for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance"})
+  for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance", "wear", "fatigue"})
     if (r.has(key) && !any)
-      fail("{}: '{}' is given but neither V (the wheelset's kinematics) nor creepage: friction needs one of them",
-           r.context(), key);
+      fail("{}: '{}' is given but neither V (the wheelset's kinematics) nor creepage: {} needs one of them",
+           r.context(), key, std::string_view(key) == "wear" || std::string_view(key) == "fatigue" ? "rolling contact" : "friction");
   if (!any) return std::nullopt;
   RollingRequest q;
   read_slip(r, q);
@@ -383,6 +395,7 @@ std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   q.tolerance = r.number("rolling_tolerance", {"-", "the exact tangential solver's tolerance (relative)"}, q.tolerance);
   if (!r.documenting() && !(q.tolerance > 0 && q.tolerance <= 0.1))
     fail("{}: rolling_tolerance = {} must be in ]0, 0.1]", r.context(), q.tolerance);
+  q.damage = damage::read_damage_options(r);
   return q;
 }
 

@@ -1,7 +1,8 @@
 // The damage indices of one rolling-contact area, per element and per area: T gamma, wear (Archard with the KTH map
 // or a constant k, or the USFD function: damage/wear.hpp), Burstow's RCF damage and Ekberg's surface fatigue index
 // (damage/fatigue.hpp). All from the fields a solved area holds (pressure, tractions, slip, creepages, creep forces):
-// O(elements), no solve. docs/guide/damage.md, "Wear and fatigue indices".
+// O(elements), no solve. Every rolling solve of the wheelset fills them (PatchRolling::damage, wheelset/tangential.hpp;
+// the fields of the area's AreaFields: wrc::area_fields, wheelset/contact.hpp). docs/guide/damage.md.
 #pragma once
 
 #include "wrc/core/fields.hpp"
@@ -14,21 +15,20 @@
 #include <span>
 #include <vector>
 
-namespace wrc {
-struct PatchContact;
-}
-
 namespace wrc::damage {
 
 struct DamageOptions {
   WearOptions wear;
   FatigueOptions fatigue;
+  // Compute the wear fields (a call asked for a wear model). false: T gamma and the fatigue indices alone, no pass
+  // over the elements for wear and no wear grids (what every rolling call gets without `wear`).
+  bool with_wear = true;
   void validate() const;
 };
 
 // Reads and validates a call's `wear` and `fatigue` tables (both optional; their keys: wear.hpp, fatigue.hpp),
-// finishing them; messages name the reader's context ("ws:contact: 'wear': k = 2 must be ..."). Leaves the caller's
-// own reader's finish() to the caller.
+// finishing them; with_wear is whether `wear` was given. Messages name the reader's context ("ws:contact: 'wear': k =
+// 2 must be ..."). Leaves the caller's own reader's finish() to the caller.
 DamageOptions read_damage_options(OptionReader& options);
 
 // What the indices read of a solved area: spans over the caller's storage (index i + nx j).
@@ -42,22 +42,20 @@ struct AreaFields {
   double fx = 0, fy = 0, mz = 0;           // N, N, N m: the area's creep forces and spin moment (rolling.hpp)
 };
 
-// The fields of a PatchContact with a tangential solution and its grids; throws wrc::Error when it has neither.
-AreaFields area_fields(const PatchContact& area);
-
 struct PatchDamage {
   halfspace::Grid grid;
   double Tgamma = 0, Tgamma_spin = 0;  // N (= J/m)
   double normal_force = 0;             // N: sum p dA
   double contact_area = 0;             // m^2: elements with p > 0
   double Tgamma_per_area = 0;          // Pa (= N/m^2): Tgamma / contact_area (0 without contact)
-  // Wear (WearOptions::model).
+  // Wear (WearOptions::model), when DamageOptions::with_wear (else wear is false and the rest stays empty).
+  bool wear = false;
   WearModel model = WearModel::archard;
   bool map = false;                    // Archard with the KTH map (false: constant k)
   double wear_volume = 0;              // m^3/m: volume worn per metre rolled
-  double wear_depth_max = 0;           // m: the largest of wear_depth
-  std::vector<double> wear_rate;       // per element: depth per metre rolled (m/m)
-  std::vector<double> wear_depth;      // per grid row j: depth worn in one passage, sum_i wear_rate dx (m)
+  double wear_passage_max = 0;         // m: the largest of wear_passage
+  std::vector<double> wear_depth;      // per element: depth worn off per metre rolled (m/m), while in the element
+  std::vector<double> wear_passage;    // per grid row j: depth worn in one passage, sum_i wear_depth dx (m)
   std::vector<double> wear_coefficient;  // Archard: k per element (-; 0 outside the contact); USFD: empty
   std::vector<double> tgamma_density;  // per element |px sx| + |py sy| (Pa): the local T gamma / A
   UsfdRegime usfd_regime = UsfdRegime::mild;  // USFD: the regime of the area's Tgamma_per_area
@@ -74,11 +72,13 @@ struct PatchDamage {
 // finite, a negative pressure, V = 0 or not finite, creepages or forces not finite; and invalid options.
 PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& options);
 
-// Fields (Lua and C, with the call layer), flat so that they sit beside an area's own (p.Tgamma, p.wear_volume) with
-// no name in common: Tgamma, Tgamma_spin, Tgamma_per_area, wear_model, wear_map (Archard) or usfd_regime (USFD),
-// wear_volume, wear_depth_max, wear_depth (per row), the grids wear_rate, wear_coefficient (Archard), tgamma_density,
-// then rcf_damage, rcf_regime, traction_coefficient, fi_a, fi_b, shear_yield and fi_surf (with contact); each with
-// its FieldDoc.
+// Fields (Lua and C), flat so that they sit beside an area's own (p.Tgamma, p.wear_volume) with no name in common:
+// Tgamma, Tgamma_spin, Tgamma_per_area; with wear: wear_model, wear_map (Archard) or usfd_regime (USFD),
+// wear_volume, wear_passage_max, wear_passage (per row, with the grids), the grids wear_depth, wear_coefficient
+// (Archard), tgamma_density (when kept: drop_grids empties them); then rcf_damage, rcf_regime,
+// traction_coefficient, fi_a, fi_b, shear_yield and fi_surf (with contact); each with its FieldDoc.
 void describe(const PatchDamage& damage, FieldSink& out);
+// Releases the per-element and per-row vectors (the scalars stay).
+void drop_grids(PatchDamage& damage);
 
 }  // namespace wrc::damage

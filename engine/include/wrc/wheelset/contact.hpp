@@ -115,6 +115,10 @@ struct PatchContact {
   std::optional<PatchRolling> rolling;  // the tangential solution, when the call gave kinematics or creepages
 };
 
+// What the damage indices read of an area with a tangential solution and its grids (spans over its storage);
+// throws wrc::Error when it has neither.
+damage::AreaFields area_fields(const PatchContact& area);
+
 // Totals of the tangential solutions (when solved): creep forces, their moments, frictional power.
 struct CreepTotals {
   bool solved = false;

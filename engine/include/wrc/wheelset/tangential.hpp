@@ -27,6 +27,7 @@
 // given).
 #pragma once
 
+#include "wrc/damage/damage.hpp"
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/fields.hpp"
 #include "wrc/core/options.hpp"
@@ -63,14 +64,18 @@ struct RollingRequest {
   halfspace::Friction friction;                    // mu (static = kinetic) or mu_static and mu_kinetic
   RollingMethod method = RollingMethod::exact;
   double tolerance = 1e-6;                       // the exact solver's (halfspace/rolling.hpp)
+  // The damage indices every solved area gets (PatchRolling::damage): T gamma and the fatigue indices always, the
+  // wear fields when a call asks for a wear model (`wear = {...}`: with_wear).
+  damage::DamageOptions damage{.wear = {}, .fatigue = {}, .with_wear = false};
   // The speed's magnitude (plausibility.hpp, with `plausible`: check_setup); the reader checks the rest.
   void validate(std::string_view context, bool plausible) const;
 };
 
 // Reads a call's rolling keys: V, omega, vy, yaw_rate, slip_reference ("deformed" | "undeformed") (kinematics) or
 // creepage = {xi, eta, phi} (with V optional),
-// and mu or mu_static and mu_kinetic, method ("exact" | "fastsim"), rolling_tolerance. Returns nothing when none of
-// V, omega, vy, yaw_rate, creepage, mu, mu_static, mu_kinetic, method is given (a frictionless call). Throws
+// and mu or mu_static and mu_kinetic, method ("exact" | "fastsim"), rolling_tolerance, and the damage options
+// `wear = {...}` and `fatigue = {...}` (damage/damage.hpp). Returns nothing when none of V, omega, vy, yaw_rate,
+// creepage, mu, mu_static, mu_kinetic, method, wear, fatigue is given (a frictionless call). Throws
 // wrc::Error naming the key on: V = 0 (the creepages are slip velocities divided by V: undefined), kinematics keys
 // without V, creepage together with omega, vy or yaw_rate, a missing, zero, negative or non-finite mu, a kinetic
 // coefficient above the static one, an unknown method, a creepage that is not a finite number.
@@ -91,12 +96,14 @@ struct PatchRolling {
   double power = 0;                    // W: frictional power, |V| sum -(p . s) dA >= 0
   halfspace::TangentialSolution solution;  // grids on the area's grid: px, py (Pa), sx, sy (slip per |V|), state
   std::vector<double> rigid_x, rigid_y;  // the rigid slip per |V| of the contact elements (0 outside), per element
+  damage::PatchDamage damage;          // the damage indices of the area (RollingRequest::damage)
 };
 
 // The fields of an area's tangential solution (Lua and C): method, mu = {static, kinetic}, V, creepage = {xi, eta,
 // phi}, Fx, Fy, Mz, creep_force, creep_moment, adhesion, power, iterations; with the grids: px, py (Pa), slip_x,
 // slip_y (slip velocity, m/s), adhesion_map (0 outside the contact, 1 adhesion, 2 slip), power_density (W/m^2),
-// rigid_slip_x, rigid_slip_y (the rigid slip velocity, m/s, of the contact elements).
+// rigid_slip_x, rigid_slip_y (the rigid slip velocity, m/s, of the contact elements); then the damage indices
+// (damage/damage.hpp: Tgamma, Tgamma_spin, ..., the wear fields when asked, rcf_damage, fi_surf, ...).
 void describe(const PatchRolling& rolling, FieldSink& out);
 const char* method_name(RollingMethod method);
 
