@@ -70,7 +70,7 @@ function M.read_cases(path)
 end
 
 -- Generated cases (o: Q, V, mu, tangent = n, sigma (m), curves = {{radius =, yaw =, share =}, ...}, forces = {N, ...},
--- y_for_force = function(sign, Y, yaw) -> y): n cases on tangent track at lateral shifts over +-3 sigma weighted by a
+-- y_for_force = function(sign, Y, yaw, from) -> y): n cases on tangent track at lateral shifts over +-3 sigma weighted by a
 -- normal distribution (together the share 1 - the curves'), and per curve one case for each lateral force in
 -- `forces`, the wheelset pressed with it against the curve's outer rail (y_for_force: the shift at which the
 -- frictionless equilibrium needs that lateral force, M.y_for_force), with the curve's attack angle and yaw rate.
@@ -91,10 +91,15 @@ function M.generated_cases(o)
   end
   for _, cv in ipairs(o.curves or {}) do
     local sign = cv.radius > 0 and -1 or 1  -- a curve toward +y has its outer rail at -y: flange on the right
-    for _, force in ipairs(o.forces) do
+    local forces = {table.unpack(o.forces)}
+    table.sort(forces)
+    local from = nil  -- |y| of the last force: the next one's lower bound
+    for _, force in ipairs(forces) do
       local yaw = sign * math.abs(cv.yaw)
-      cases[#cases + 1] = {y = o.y_for_force(sign, sign * force, yaw), yaw = yaw, Q = o.Q, V = o.V, mu = o.mu,
-                           radius = cv.radius, share = cv.share / #o.forces, kind = "curve", Y = sign * force}
+      local y = o.y_for_force(sign, sign * force, yaw, from)
+      from = math.abs(y)
+      cases[#cases + 1] = {y = y, yaw = yaw, Q = o.Q, V = o.V, mu = o.mu, radius = cv.radius,
+                           share = cv.share / #forces, kind = "curve", Y = sign * force}
     end
   end
   for i, c in ipairs(cases) do check_case(c, "generated case " .. i) end
@@ -103,18 +108,21 @@ end
 
 -- The lateral shift y (m) at which the frictionless equilibrium of the wheelset under Q (N) at yaw (rad) needs the
 -- lateral force Y (N; > 0 toward the left rail: the left flange, sign 1; < 0 the right, sign -1): regula falsi
--- (Illinois) between the centre and 15 mm toward that flange, to |Y error| <= 1e-3 |Y| or 1e-5 mm of y.
-function M.y_for_force(ws, sign, Y, yaw, Q)
+-- (Illinois) on |y| between `from` (m, default 0) and where the wheel's flange touches its rail rigidly
+-- (M.flange_contact) plus 0.5 mm, to |Y error| <= 1e-3 |Y| or 1e-8 m of y.
+function M.y_for_force(ws, sign, Y, yaw, Q, from)
   local function excess(y)
     local e = ws:equilibrium{y = sign * y, yaw = yaw, Q = Q, on_failure = "return"}
     if not e.converged then error(("no equilibrium at y = %.4f mm: %s"):format(sign * y * 1e3, tostring(e.error)), 0) end
     return sign * (e.Y - Y)
   end
-  local a, b = 0, 15e-3
+  local flange = M.flange_contact(ws, sign)
+  if not flange then error("y_for_force: no flange contact within 15 mm", 0) end
+  local a, b = from or 0, flange + 0.5e-3
   local fa, fb = excess(a), excess(b)
   if fa > 0 or fb < 0 then
-    error(("no lateral shift within 15 mm needs Y = %.1f kN (it runs from %.1f to %.1f kN)"):format(Y / 1e3,
-          (sign * fa + Y) / 1e3, (sign * fb + Y) / 1e3), 0)
+    error(("no lateral shift between %.3f and %.3f mm needs Y = %.1f kN (it runs from %.1f to %.1f kN)"):format(
+          sign * a * 1e3, sign * b * 1e3, Y / 1e3, (sign * fa + Y) / 1e3, (sign * fb + Y) / 1e3), 0)
   end
   local side = 0
   for _ = 1, 100 do
@@ -188,10 +196,11 @@ end
 
 M.BODIES = {"left_wheel", "right_wheel", "left_rail", "right_rail"}
 
--- The wheelset of the state's profiles.
-function M.wheelset(st)
+-- The wheelset of the state's profiles (`overrides`: other keys of wrc.wheelset, e.g. a coarser grid).
+function M.wheelset(st, overrides)
   local o = {}
   for k, v in pairs(st.params) do o[k] = v end
+  for k, v in pairs(overrides or {}) do o[k] = v end
   for _, name in ipairs(M.BODIES) do
     local b = st.bodies[name]
     o[name] = profile_of(b.kind, b.y, b.z, ("%s step %d"):format(b.name or name, st.step))

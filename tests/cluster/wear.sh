@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # examples/wear_evolution.lua at a reduced size (coarse grid, few cases, 3 steps): 1 and 2 threads give the same bytes;
 # a run killed with kill -9 after its first steps and run again resumes and ends with the files of an uninterrupted
-# run; the profiles it writes are read back by wrc's readers as the points of profiles.csv.
+# run; the profiles it writes are read back by wrc's readers as the points of profiles.csv and listed in the manifest.
 source "$(dirname "$0")/common.sh"
 WEAR="$SRC/examples/wear_evolution.lua"
 SMALL=(steps=3 tangent=5 curve_forces_kN=40 grid_mm=0.5 plots=false)
@@ -47,4 +47,8 @@ end
 print("read back")
 LUA
 "$WRC" run readback.lua dir=one | grep -q "read back" || fail "the written profiles are not read back"
+# The profile files are the run's (listed in its manifest, ctx.write_profile): a run again into the folder accepts them.
+grep -q "^file left_wheel_step03.prw " one/manifest.txt || fail "the manifest does not list left_wheel_step03.prw"
+expect_status 0 "$WRC" run "$WEAR" "${SMALL[@]}" threads=1 plots=true out=one
+grep -q "^file Sd.png " one/manifest.txt || fail "the figures are not listed in the manifest"
 echo "wear ok"

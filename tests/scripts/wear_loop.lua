@@ -23,7 +23,7 @@ local function cases(spec, st)
   local ws = loop.wheelset(st)
   return loop.generated_cases{Q = Q, V = V, mu = mu, tangent = spec.tangent, sigma = 1.5e-3, curves = spec.curves,
                               forces = {40e3, 60e3},
-                              y_for_force = function(sign, Y, yaw) return loop.y_for_force(ws, sign, Y, yaw, Q) end}
+                              y_for_force = function(sign, Y, yaw, from) return loop.y_for_force(ws, sign, Y, yaw, Q, from) end}
 end
 local mixed = {tangent = 5, curves = {{radius = 500, yaw = 2.5e-3, share = 0.1},
                                       {radius = -500, yaw = 2.5e-3, share = 0.1}}}
@@ -81,16 +81,17 @@ do  -- volume per step against the Archard volumes, Euler's and Heun's
   end
 end
 
-do  -- halving the step: the worn area at the same km
+do  -- halving the step: the worn area at the same km (Archard with a constant k: the KTH map's jumps of k, 60-fold
+    -- where the pressure passes 0.8 H, make the first steps' running-in depend on the step: docs/guide/wear.md)
   local function run(depth, km_end)
     local st = initial()
-    local o = {step = depth, smooth = 1e-3, wear = {}, threads = 2, km_end = km_end}
+    local o = {step = depth, smooth = 1e-3, wear = {k = 1e-4}, threads = 2, km_end = km_end}
     while st.km < km_end do st = step(st, mixed, o) end
     return loop.measures(st, {threads = 1}).left_wheel.worn_area, st.step
   end
-  local a, na = run(0.1e-3, 3)
-  local b, nb = run(0.05e-3, 3)
-  print(("worn area at 3 km: %.5f mm2 (%d steps of 0.1 mm), %.5f mm2 (%d steps of 0.05 mm)"):format(a * 1e6, na,
+  local a, na = run(0.1e-3, 600)
+  local b, nb = run(0.05e-3, 600)
+  print(("worn area at 600 km: %.5f mm2 (%d steps of 0.1 mm), %.5f mm2 (%d steps of 0.05 mm)"):format(a * 1e6, na,
         b * 1e6, nb))
   check.ok(nb > na, "the halved step takes more steps")
   check.rel(a, b, 0.02, "worn area at the final km with the step halved")
@@ -112,17 +113,18 @@ do  -- mirrored cases wear mirrored profiles
     b = loop.step(b, mirror, options)
   end
   check.rel(a.km, b.km, 1e-6, "mirrored runs: the same distance")
+  local deepest = 0
+  for _, name in ipairs{"left_wheel", "right_wheel"} do
+    for _, v in ipairs(a.bodies[name].worn) do deepest = math.max(deepest, v) end
+  end
+  check.ok(deepest > 0.1e-3, "the mirrored runs wore the wheels")
   for _, pair in ipairs{{"left_wheel", "right_wheel"}, {"right_wheel", "left_wheel"}} do
     local p, q = a.bodies[pair[1]], b.bodies[pair[2]]
-    local worst, deepest = 0, 0
-    for i = 1, #p.y do
-      worst = math.max(worst, math.abs(p.y[i] - q.y[i]), math.abs(p.z[i] - q.z[i]))
-      deepest = math.max(deepest, p.worn[i])
-    end
+    local worst = 0
+    for i = 1, #p.y do worst = math.max(worst, math.abs(p.y[i] - q.y[i]), math.abs(p.z[i] - q.z[i])) end
     print(("mirror: %s against %s: largest difference %.3g um (deepest %.3g mm)"):format(pair[1], pair[2],
           worst * 1e6, deepest * 1e3))
-    check.ok(deepest > 0.1e-3, "the mirrored runs wore " .. pair[1])
-    check.ok(worst < 1e-3 * deepest, ("mirror: %s of one run is %s of the other"):format(pair[1], pair[2]))
+    check.ok(worst < 1e-4 * deepest, ("mirror: %s of one run is %s of the other"):format(pair[1], pair[2]))
   end
   local la, ra = a.bodies.left_wheel, a.bodies.right_wheel
   local diff = 0
