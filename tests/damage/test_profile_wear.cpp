@@ -36,7 +36,7 @@ double weighted_sum(const std::vector<double>& d, const std::vector<double>& c) 
 
 }  // namespace
 
-TEST_CASE("wear kernels: a circular arc moved inward by a uniform depth is the concentric arc; its area the annulus'") {
+TEST_CASE("wear kernels: a circular arc moved inward by a uniform depth is the concentric arc, its area the annulus'") {
   const double R = 0.012, half = 1.0, d = 1e-4;
   const int n = 200;
   const Polyline p = arc_points(R, 0.45, half, n);
@@ -75,7 +75,7 @@ TEST_CASE("wear kernels: inward normals by body, whichever way the points run") 
   CHECK(c.nz[1] == within_abs(std::sqrt(0.5), 1e-15));
 }
 
-TEST_CASE("wear kernels: strips deposited onto the points keep their area; a strip inside one cell fills it") {
+TEST_CASE("wear kernels: strips deposited onto the points keep their area, a strip inside one cell fills it") {
   std::vector<double> arc;
   for (int i = 0; i <= 100; ++i) arc.push_back(1e-4 * i + 1e-6 * std::sin(i));  // uneven spacing
   const std::vector<double> c = cell_lengths(arc);
