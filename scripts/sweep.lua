@@ -53,16 +53,53 @@ M.creep_columns = {
   "creep_Fx_kN", "creep_Fy_kN", "creep_Mz_kNm", "power_W",
 }
 
--- The columns of a sweep's table: sweep_columns, and creep_columns when the sweep solved the tangential problems.
+-- With kinematics also the damage indices of each wheel (docs/guide/damage.md): T gamma and T gamma with spin summed
+-- over its areas (N = J/m) and the largest of their Burstow RCF damages per passage; with a wear model (wear = {...})
+-- the volume its areas wear off per metre rolled (mm^3/m).
+M.damage_columns = {
+  "left_Tgamma_N", "left_Tgamma_spin_N", "left_rcf_damage_max",
+  "right_Tgamma_N", "right_Tgamma_spin_N", "right_rcf_damage_max",
+}
+M.wear_columns = {"left_wear_mm3_per_m", "right_wear_mm3_per_m"}
+
+local function has_wear(r)
+  for _, side in ipairs{"left", "right"} do
+    for _, p in ipairs(r[side] and r[side].patches or {}) do
+      if p.wear_volume then return true end
+    end
+  end
+  return false
+end
+
+-- The columns of a sweep's table: sweep_columns, and creep_columns and damage_columns when the sweep solved the
+-- tangential problems (and wear_columns with a wear model).
 function M.columns(sweep)
   for _, r in ipairs(sweep) do
     if r.creep_force then
       local c = {table.unpack(M.sweep_columns)}
       for _, name in ipairs(M.creep_columns) do c[#c + 1] = name end
+      for _, name in ipairs(M.damage_columns) do c[#c + 1] = name end
+      if has_wear(r) then
+        for _, name in ipairs(M.wear_columns) do c[#c + 1] = name end
+      end
       return c
     end
   end
   return M.sweep_columns
+end
+
+-- The damage cells of a wheel: sums over its areas (the largest RCF damage); nil when no area was solved.
+local function damage_cells(row, side, w)
+  local t, ts, rcf, wear
+  for _, p in ipairs(w.patches or {}) do
+    if p.Tgamma then
+      t, ts = (t or 0) + p.Tgamma, (ts or 0) + p.Tgamma_spin
+      rcf = math.max(rcf or 0, p.rcf_damage)
+      if p.wear_volume then wear = (wear or 0) + p.wear_volume * 1e9 end
+    end
+  end
+  row[side .. "_Tgamma_N"], row[side .. "_Tgamma_spin_N"], row[side .. "_rcf_damage_max"] = t, ts, rcf
+  row[side .. "_wear_mm3_per_m"] = wear
 end
 
 local function creep_cells(row, r)
@@ -75,6 +112,7 @@ local function creep_cells(row, r)
       row[side .. "_creep_Fz_kN"] = w.creep_force.z / 1e3
       row[side .. "_power_W"] = w.power
     end
+    damage_cells(row, side, w)
   end
   row.creep_Fx_kN, row.creep_Fy_kN = r.creep_force.x / 1e3, r.creep_force.y / 1e3
   row.creep_Mz_kNm, row.power_W = r.creep_moment.z / 1e3, r.power

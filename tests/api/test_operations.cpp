@@ -31,6 +31,7 @@ OptionTable minimal(const std::string& op) {
   if (op == "sweep") t.set("y", numbers({0.0})).set("Q", OptionValue::of(1e5));
   if (op == "geometry_table") t.set("y", numbers({0.0}));
   if (op == "wheelset_conicity") t.set("yhat", numbers({3e-3}));
+  if (op == "subsurface") t.set("z", numbers({1e-3}));
   if (op == "conicity") t.set("y", numbers({-1e-3, 0, 1e-3})).set("dr", numbers({-1e-4, 0, 1e-4})).set("yhat", numbers({5e-4}));
   return t;
 }
@@ -55,6 +56,7 @@ std::set<std::string> known_keys(const std::string& op) {
     else if (op == "trajectory_contact") read(api::TrajectoryContactCall{});
     else if (op == "trajectory_wheel") read(api::TrajectoryWheelCall{});
     else if (op == "check_strategy") read(api::StrategyCheckCall{});
+    else if (op == "subsurface") read(api::SubsurfaceCall{});
     else if (op == "wheelset") {
       OptionReader r(t, op);
       read_wheelset_params(r);

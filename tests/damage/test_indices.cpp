@@ -138,7 +138,7 @@ TEST_CASE("damage options: a documenting reader records every key with its unit"
   read_damage_options(r);
   std::map<std::string, std::string> unit;
   for (const OptionInfo& k : keys) unit[k.key] = k.unit;
-  CHECK(unit.at("wear.model") == "");
+  CHECK(unit.at("wear.model") == "-");
   CHECK(unit.at("wear.k") == "-");
   CHECK(unit.at("wear.hardness") == "Pa");
   CHECK(unit.at("wear.density") == "kg/m^3");

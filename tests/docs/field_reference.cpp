@@ -207,7 +207,7 @@ std::vector<Section> sections(const std::string& root) {
                    "The wheelset's location strategy checked against brute force on random poses.",
                    {[=](FieldSink& s) { describe(sc, s); }}});
   }
-  // Subsurface stresses of a rolling patch (the engine's; not yet a Lua or C call).
+  // Subsurface stresses of a rolling patch (p:subsurface, wrc_subsurface: api::SubsurfaceCall).
   {
     ContactRequest req;
     req.rolling = rolling(RollingMethod::exact, false);
@@ -218,8 +218,9 @@ std::vector<Section> sections(const std::string& root) {
     q.z = {0.5e-3, 1e-3};
     const halfspace::SubsurfaceResult r = halfspace::compute_subsurface(
         planar->contact_model().material(), {pc.solution.grid, pc.solution.pressure, t.px, t.py}, q);
-    out.push_back({"Subsurface stresses", "`compute_subsurface` (C++; Lua and C calls to come)",
-                   "The stresses below a contact area and its shakedown point (docs/guide/damage.md).",
+    out.push_back({"Subsurface stresses", "`p:subsurface{...}` (p an area of a result); `wrc_subsurface`",
+                   "The stresses below a contact area and its shakedown point ([What contact does to the "
+                   "steel](../guide/damage.md)).",
                    {[=](FieldSink& s) { halfspace::describe(r, s); }}});
   }
   return out;

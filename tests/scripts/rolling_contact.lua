@@ -247,10 +247,32 @@ do
   -- The sweep table's creep columns (wrc.sweep).
   local tables = require "wrc.sweep"
   local cols = tables.columns(s)
-  check.ok(cols[#cols] == "power_W" and #cols == #tables.sweep_columns + #tables.creep_columns, "creep columns")
+  check.ok(cols[#cols] == "right_rcf_damage_max" and
+           #cols == #tables.sweep_columns + #tables.creep_columns + #tables.damage_columns, "creep and damage columns")
   local row = tables.sweep_row(s[2])
   check.rel(row.left_creep_Fx_kN, s[2].left.creep_force.x / 1e3, 1e-12, "creep column left_creep_Fx_kN")
   check.rel(row.power_W, s[2].power, 1e-12, "creep column power_W")
+  -- The damage columns: each wheel's T gamma summed over its areas, |Fx xi| + |Fy eta| of each (docs/guide/damage.md).
+  for _, side in ipairs{"left", "right"} do
+    local t = 0
+    for _, p in ipairs(s[2][side].patches) do t = t + math.abs(p.Fx * p.creepage.xi) + math.abs(p.Fy * p.creepage.eta) end
+    check.ok(t > 0, "a sweep case with creep work, " .. side)
+    check.rel(row[side .. "_Tgamma_N"], t, 1e-9, "damage column " .. side .. "_Tgamma_N")
+    check.ok(row[side .. "_wear_mm3_per_m"] == nil, "no wear column without a wear model, " .. side)
+  end
+  -- With a wear model: the volume worn off per metre rolled, each wheel's areas summed (mm^3/m), in the sweep's table
+  -- and in sweep.csv's cells.
+  local sw = ws:sweep{y = {3e-3}, Q = 200e3, V = V, mu = 0.3, threads = 1, progress = false,
+                      wear = {model = "archard", k = 1e-3}}
+  local wcols = tables.columns(sw)
+  check.ok(wcols[#wcols] == "right_wear_mm3_per_m", "wear columns with a wear model")
+  local wrow = tables.sweep_row(sw[1])
+  for _, side in ipairs{"left", "right"} do
+    local v = 0
+    for _, p in ipairs(sw[1][side].patches) do v = v + p.wear_volume end
+    check.ok(v > 0, "a sweep case that wears, " .. side)
+    check.rel(wrow[side .. "_wear_mm3_per_m"], v * 1e9, 1e-12, "wear column " .. side)
+  end
   check.ok(#tables.columns(ws:sweep{y = {0}, Q = 200e3, threads = 1, progress = false}) == #tables.sweep_columns,
            "no creep columns without kinematics")
   local ok = pcall(function() return ws:equilibrium{y = 0, Q = 200e3, V = V, mu = 0.3} end)

@@ -134,6 +134,13 @@ wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, dou
  * start.roll. */
 wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double Q, const char* options,
                            wrc_result** out);
+/* The stresses below a contact area of a result (docs/guide/damage.md): `patch` is the area's path in `result`
+ * ("left.patches.1"; the result must hold its pressure grid: grids kept), whose grid, pressure, px and py (with
+ * rolling) and nu it reads. Options: z (depths below the surface, m, > 0: "z=0.5e-3,1e-3"; required), method (auto,
+ * fft or direct), body (wheel or rail), fields (false: the maxima alone), shear_yield (Pa), shakedown_map (point or
+ * line). The new result holds von_mises_max, von_mises_max_z, tresca_max, tresca_max_z, tau1_max, shakedown.*,
+ * depths.N.* (Pa, m). */
+wrc_status wrc_subsurface(const wrc_result* result, const char* patch, const char* options, wrc_result** out);
 /* The rigid (kinematic) reference at y, yaw with load Q. */
 wrc_status wrc_rigid(wrc_wheelset* wheelset, double y, double yaw, double Q, wrc_result** out);
 

@@ -208,6 +208,16 @@ SweepResult SweepCall::run(const Wheelset& wheelset,
   return run_sweep(wheelset.contact_model(), plan, chunks, options, workspace);
 }
 
+// ---- subsurface stresses ----
+
+SubsurfaceCall SubsurfaceCall::read(OptionReader& r) { return {halfspace::read_subsurface_request(r)}; }
+
+halfspace::SubsurfaceResult SubsurfaceCall::run(const PatchLoad& load) const {
+  halfspace::Material m;  // E does not enter the stresses (subsurface.hpp): the default's
+  m.nu = load.nu;
+  return halfspace::compute_subsurface(m, {load.grid, load.pressure, load.px, load.py}, request);
+}
+
 StrategyCheckCall StrategyCheckCall::read(OptionReader& r) {
   StrategyCheckCall c;
   c.options = read_strategy_check_options(r);

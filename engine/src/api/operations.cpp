@@ -43,6 +43,7 @@ std::vector<Operation> make_operations() {
       describe<TrajectoryContactCall>("trajectory_contact", "trajectory:contact", "wrc_trajectory_contact_with"),
       describe<TrajectoryWheelCall>("trajectory_wheel", "trajectory:wheel", "wrc_trajectory_wheel_with"),
       describe<StrategyCheckCall>("check_strategy", "wheelset:check_strategy", ""),
+      describe<SubsurfaceCall>("subsurface", "patch:subsurface", "wrc_subsurface"),
   };
 }
 

@@ -11,6 +11,7 @@
 #include "wrc/profile/load.hpp"
 #include "wrc/profile/write.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -436,6 +437,38 @@ wrc_status wrc_equilibrium(wrc_wheelset* wheelset, double y, double yaw, double 
     Lease ws(*w);
     const wrc::EquilibriumResult e = call.run(*w->model, *ws);
     return make_result(out, e.converged, e.converged ? "" : "wrc_equilibrium: " + failure_message(e), e);
+  });
+}
+
+wrc_status wrc_subsurface(const wrc_result* result, const char* patch, const char* options, wrc_result** out) {
+  return guard("wrc_subsurface", [&] {
+    set_out(out, "result");
+    if (!patch) invalid("the patch path is NULL");
+    const std::string at = std::string(patch) + ".";
+    const auto number = [&](const std::string& key) {
+      const wrc_result::Field& f = field(result, (at + key).c_str());
+      if (f.is_string || f.is_list || !f.values.empty()) invalid(fmt::format("'{}{}' is not a number", at, key));
+      return f.number;
+    };
+    const auto grid = [&](const std::string& key) {
+      const auto r = registry().get(result, "result");
+      const auto it = r->fields.find(at + key);
+      return it == r->fields.end() ? std::vector<double>{} : it->second.values;
+    };
+    wrc::api::PatchLoad load;
+    wrc::halfspace::Grid& g = load.grid;
+    g.nx = static_cast<int>(std::clamp(number("grid.nx"), -1.0, 1e9));  // validated by the engine
+    g.ny = static_cast<int>(std::clamp(number("grid.ny"), -1.0, 1e9));
+    g.dx = number("grid.dx"), g.dy = number("grid.dy"), g.x0 = number("grid.x0"), g.y0 = number("grid.y0");
+    load.nu = number("nu");
+    load.pressure = grid("pressure");
+    if (load.pressure.empty())
+      invalid(fmt::format("'{}' has no pressure grid: the call that made the result must keep its grids", patch));
+    load.px = grid("px");
+    load.py = grid("py");
+    const auto call = wrc::api::read<wrc::api::SubsurfaceCall>(options_of(options, "wrc_subsurface: options"),
+                                                             "wrc_subsurface");
+    return make_result(out, true, "", call.run(load));
   });
 }
 

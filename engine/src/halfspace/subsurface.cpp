@@ -422,16 +422,24 @@ SubsurfaceResult compute_subsurface(const Material& material, const SurfaceLoad&
 
 SubsurfaceRequest read_subsurface_request(OptionReader& o) {
   SubsurfaceRequest r;
-  const auto z = o.number_list("z", kMaxSubsurfaceDepths);
-  if (!z) fail("{}: 'z' is required: the depths below the surface (m)", o.context());
-  r.z = *z;
-  if (auto m = o.choice("method", {"auto", "fft", "direct"}))
-    r.method = *m == "fft" ? SubsurfaceMethod::fft : *m == "direct" ? SubsurfaceMethod::direct
-                                                                     : SubsurfaceMethod::automatic;
-  if (auto b = o.choice("body", {"wheel", "rail"})) r.body = *b == "rail" ? StressedBody::rail : StressedBody::wheel;
-  r.fields = o.boolean("fields").value_or(true);
-  r.shear_yield = o.number("shear_yield", kDefaultShearYield);
-  if (auto m = o.choice("shakedown_map", {"point", "line"})) r.map = *m == "line" ? ShakedownMap::line : ShakedownMap::point;
+  const auto z = o.number_list("z", {"m", "depths below the surface (required; > 0): an array or {from, to, step}"},
+                               kMaxSubsurfaceDepths);
+  if (!z && !o.documenting()) fail("{}: 'z' is required: the depths below the surface (m)", o.context());
+  r.z = z.value_or(std::vector<double>{});
+  const auto m = o.choice("method", {"auto", "fft", "direct"},
+                          {"-", "per depth: zero-padded FFT, the direct sum, or the cheaper (auto)"}, "auto");
+  r.method = m == "fft" ? SubsurfaceMethod::fft : m == "direct" ? SubsurfaceMethod::direct : SubsurfaceMethod::automatic;
+  r.body = o.choice("body", {"wheel", "rail"}, {"-", "the stressed body (rail: the same pressure, the traction reversed)"},
+                    body_name(r.body)) == "rail"
+               ? StressedBody::rail
+               : StressedBody::wheel;
+  r.fields = o.boolean("fields", {"-", "keep every depth's stress grids (false: the maxima alone)"}, r.fields);
+  r.shear_yield = o.number("shear_yield", {"Pa", "k of the shakedown point's load factor p0 / k"}, r.shear_yield);
+  r.map = o.choice("shakedown_map", {"point", "line"},
+                   {"-", "the subsurface limit of Johnson's map: point contact (4.7) or line contact (4.0)"},
+                   map_name(r.map)) == "line"
+              ? ShakedownMap::line
+              : ShakedownMap::point;
   return r;
 }
 

@@ -112,6 +112,19 @@ void LuaSink::grid(std::string_view key, const double* v, int nx, int ny) {
   set(key);
 }
 
+const std::vector<double>* grid_values(lua_State* L, int idx, int& nx, int& ny) {
+  auto* g = static_cast<LuaGrid*>(luaL_testudata(L, idx, kGridType));
+  if (!g) return nullptr;
+  nx = g->nx, ny = g->ny;
+  return &g->values;
+}
+
+void LuaSink::object_type(std::string_view name) {
+  const std::string n(name);
+  if (luaL_getmetatable(L_, n.c_str()) == LUA_TTABLE) lua_setmetatable(L_, -2);
+  else lua_pop(L_, 1);
+}
+
 void LuaSink::begin(std::string_view key) {
   lua_createtable(L_, 0, 4);
   frames_.push_back({std::string(key)});

@@ -25,6 +25,8 @@ class LuaSink final : public FieldSink {
   void begin_list(std::string_view key, std::size_t n) override;
   void item() override;
   void end() override;
+  // Sets the metatable registered under `name` (e.g. wrc.Patch) on the table being filled, when there is one.
+  void object_type(std::string_view name) override;
 
  private:
   void set(std::string_view key);  // t[key] = value on top, t below it
@@ -36,6 +38,10 @@ class LuaSink final : public FieldSink {
   lua_State* L_;
   std::vector<Frame> frames_;
 };
+
+// The values of a result's grid (a wrc.Grid userdata at idx, values[i + nx j]) and its size; nullptr when the value
+// there is not a grid.
+const std::vector<double>* grid_values(lua_State* L, int idx, int& nx, int& ny);
 
 // The result as a table on the top of the stack.
 template <class Result, class... Extra>

@@ -417,6 +417,72 @@ void push_defaults(lua_State* L) {
   lua_setfield(L, -2, "wheelset");
 }
 
+// ---- p:subsurface{...}: a contact area's table (wrc.Patch) ----
+
+// A number field of the table at idx.
+double field_number(lua_State* L, int idx, const char* key, const char* ctx) {
+  lua_getfield(L, idx, key);
+  if (!lua_isnumber(L, -1)) fail("{}: the area has no number '{}' (is it an area of a contact result?)", ctx, key);
+  const double v = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+// A grid field of the area (empty when absent); the pressure must be there.
+std::vector<double> field_grid(lua_State* L, const char* key, const halfspace::Grid& g, const char* ctx) {
+  lua_getfield(L, 1, key);
+  int nx = 0, ny = 0;
+  const std::vector<double>* v = grid_values(L, -1, nx, ny);
+  std::vector<double> out = v ? *v : std::vector<double>{};
+  lua_pop(L, 1);
+  if (v && (nx != g.nx || ny != g.ny))
+    fail("{}: the area's '{}' is {} x {}, its grid {} x {}", ctx, key, nx, ny, g.nx, g.ny);
+  return out;
+}
+
+// The area's load from its fields: grid, pressure, px and py (when rolling), nu.
+api::PatchLoad patch_load(lua_State* L, const char* ctx) {
+  check_table(L, 1, ctx);
+  api::PatchLoad load;
+  lua_getfield(L, 1, "grid");
+  if (!lua_istable(L, -1)) fail("{}: the area has no 'grid' table (is it an area of a contact result?)", ctx);
+  const int t = lua_gettop(L);
+  halfspace::Grid& g = load.grid;
+  g.nx = static_cast<int>(std::clamp(field_number(L, t, "nx", ctx), -1.0, 1e9));  // validated by the engine
+  g.ny = static_cast<int>(std::clamp(field_number(L, t, "ny", ctx), -1.0, 1e9));
+  g.dx = field_number(L, t, "dx", ctx);
+  g.dy = field_number(L, t, "dy", ctx);
+  g.x0 = field_number(L, t, "x0", ctx);
+  g.y0 = field_number(L, t, "y0", ctx);
+  lua_pop(L, 1);
+  load.nu = field_number(L, 1, "nu", ctx);
+  load.pressure = field_grid(L, "pressure", g, ctx);
+  if (load.pressure.empty())
+    fail("{}: the area has no pressure grid: the call that made it must keep its grids (grids = true)", ctx);
+  load.px = field_grid(L, "px", g, ctx);
+  load.py = field_grid(L, "py", g, ctx);
+  return load;
+}
+
+// p:subsurface{z = {...}, method =, body =, fields =, shear_yield =, shakedown_map =}: the stresses below the area.
+int patch_subsurface(lua_State* L) {
+  const char* ctx = "patch:subsurface";
+  const api::PatchLoad load = patch_load(L, ctx);
+  const auto call = read_call<api::SubsurfaceCall>(L, ctx);
+  push_result(L, call.run(load));
+  return 1;
+}
+
+void open_patch(lua_State* L) {
+  if (luaL_newmetatable(L, kPatchType)) {
+    lua_newtable(L);
+    const luaL_Reg methods[] = {{"subsurface", guarded<patch_subsurface>}, {nullptr, nullptr}};
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
+  }
+  lua_pop(L, 1);
+}
+
 }  // namespace
 
 std::shared_ptr<const Wheelset> check_wheelset(lua_State* L, int idx, const char* context) {
@@ -446,6 +512,7 @@ void open_wheelset(lua_State* L) {
   push_defaults(L);
   lua_setfield(L, -2, "defaults");
   open_trajectory(L);
+  open_patch(L);
   open_geometry(L);  // wrc.geometry: the strategies' helpers
 }
 

@@ -121,6 +121,7 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
   const AreaSurface& surface = surface_for(in.model.options().surface);
   PatchContact pc;
   pc.side = in.side;
+  pc.nu = in.model.material().nu;
   pc.nominal = in.first.point;
   pc.nominal_angle = contact_angle(in.side, -in.first.normal);  // Patch::normal points out of the wheel
   AreaLayout layout;

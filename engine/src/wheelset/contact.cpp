@@ -345,6 +345,7 @@ void drop_grids(ContactResult& result) {
 // ---- results as fields ----
 
 void describe(const PatchContact& pc, FieldSink& out) {
+  out.object_type(kPatchType);
   if (!pc.located.empty()) describe_patch_fields(pc.located.front(), out);
   else out.string("side", side_name(pc.side), {"", "the wheel of the area: left or right"});
   out.begin_list("segments", pc.segments.size(), {"", "the inter-penetration segments of the area's rail lines"});
@@ -379,6 +380,7 @@ void describe(const PatchContact& pc, FieldSink& out) {
               {"-", "separate contact regions of the area (p > 0, 8-connected, each >= 0.1 % of the force)"});
   out.number("penetration", pc.penetration, {"m", "deepest undeformed inter-penetration of the area (max h)"});
   out.number("rolling_radius", pc.rolling_radius, {"m", "wheel radius at the centre of pressure"});
+  out.number("nu", pc.nu, {"-", "Poisson's ratio of the bodies: what the stresses below the area take (p:subsurface)"});
   out.integer("iterations", s.iterations, {"-", "iterations of the normal solver (CG, or active set for the dense one)"});
   out.number("complementarity", s.residual.relative,
              {"-", "relative residual of the normal solution: max |gap| in contact or max overlap outside / max(h + approach)"});

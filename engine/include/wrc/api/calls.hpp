@@ -12,6 +12,7 @@
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/geometry/strategy_check.hpp"
+#include "wrc/halfspace/subsurface.hpp"
 #include "wrc/kinematics/conicity.hpp"
 #include "wrc/kinematics/table.hpp"
 #include "wrc/profile/measures.hpp"
@@ -156,6 +157,24 @@ struct SweepCall {
   static SweepCall read(OptionReader& r);
   void validate() const;
   SweepResult run(const Wheelset& wheelset, const std::function<std::unique_ptr<ContactWorkspace>()>& workspace) const;
+};
+
+// What the stresses below a contact area take from its result (the front end reads them from the area's fields:
+// grid, pressure, px, py, nu): the grid (m), the pressure (Pa), the tractions on the wheel (Pa; empty: frictionless)
+// and Poisson's ratio.
+struct PatchLoad {
+  halfspace::Grid grid;
+  std::vector<double> pressure, px, py;
+  double nu = 0;
+};
+
+// p:subsurface{...}, wrc_subsurface: the stresses below a contact area at the depths z (halfspace/subsurface.hpp:
+// z, method, body, fields, shear_yield, shakedown_map).
+struct SubsurfaceCall {
+  halfspace::SubsurfaceRequest request;
+  static SubsurfaceCall read(OptionReader& r);
+  // Throws wrc::Error naming what is wrong (an invalid load or request: compute_subsurface).
+  halfspace::SubsurfaceResult run(const PatchLoad& load) const;
 };
 
 // The cases of ws:sweep and ws:sweep_plan: y (required), yaw (default 0), chain.

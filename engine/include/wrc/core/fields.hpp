@@ -40,6 +40,9 @@ class FieldSink {
   virtual void begin_list(std::string_view key, std::size_t n) = 0;
   virtual void item() = 0;
   virtual void end() = 0;
+  // The table being filled is an object of this kind (e.g. "wrc.Patch": a contact area, whose Lua table then has
+  // the methods of that type, p:subsurface{...}); sinks without methods ignore it.
+  virtual void object_type(std::string_view /*name*/) {}
 
   // The same with the field's documentation, handed to document() first.
   void number(std::string_view key, double v, FieldDoc doc) {

@@ -113,6 +113,8 @@ struct PatchContact {
                                        // inter-penetration area holds
   Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll) of the normal problem, when asked for
   std::optional<PatchRolling> rolling;  // the tangential solution, when the call gave kinematics or creepages
+  double nu = 0;                        // Poisson's ratio of the bodies (the model's material): what the stresses
+                                        // below the area take (halfspace/subsurface.hpp, api::SubsurfaceCall)
 };
 
 // What the damage indices read of an area with a tangential solution and its grids (spans over its storage);
@@ -265,6 +267,9 @@ void add_rolling(const ContactModel& model, ContactResult& result, const Rolling
                  ContactWorkspace& workspace);
 // Releases the pressure, gap and h grids of a result.
 void drop_grids(ContactResult& result);
+
+// The object type of an area's description (FieldSink::object_type): Lua gives the table the methods of that type.
+inline constexpr const char* kPatchType = "wrc.Patch";
 
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
 // flange_climb_reason when true), force, moment, angle and rolling_radius (absent when lifted), patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
