@@ -43,9 +43,9 @@ local s = study.new{
     {"k", "number", 0, "Archard's constant wear coefficient (0: the KTH wear map)", min = 0, max = 1},
     {"tangent", "integer", 90, "generated cases on tangent track", min = 0},
     {"sigma_mm", "number", 1.5, "standard deviation of the lateral shift on tangent track (mm)", min = 0.01, max = 10},
-    {"curve_radius_m", "number", 500, "radius of the generated curves (m; one each way)", min = 50},
+    {"curve_radius_m", "number", 300, "radius of the generated curves (m; one each way)", min = 50},
     {"curve_share", "number", 0.1, "share of the distance in curves (both ways together)", min = 0, max = 1},
-    {"curve_forces_kN", "string", "30,40,50,60,70", "lateral forces of the generated curving cases, one case each way " ..
+    {"curve_forces_kN", "string", "60,70,80,90,100", "lateral forces of the generated curving cases, one case each way " ..
      "per force (kN; comma-separated; empty: none)"},
     {"attack_mrad", "number", 2.5, "attack angle of the wheelset in the curves (mrad)", min = 0, max = 50},
     {"Q_kN", "number", 200, "wheelset load of the generated cases (kN)", min = 1, max = 1000},
@@ -120,7 +120,7 @@ local columns = {"step", "km", "worn_area_mm2", "Sh_mm", "Sd_mm", "qR_mm", "tan_
                  "right_worn_area_mm2", "right_Sh_mm", "right_Sd_mm", "right_qR_mm", "right_max_depth_mm",
                  "rail_worn_area_mm2", "rail_max_depth_mm", "right_rail_worn_area_mm2", "right_rail_max_depth_mm",
                  "step_km", "step_depth_mm", "volume_mm3", "archard_volume_mm3", "right_volume_mm3",
-                 "right_archard_volume_mm3", "cases", "cases_failed"}
+                 "right_archard_volume_mm3", "cases", "cases_failed", "points_untangled"}
 
 local function row(k, r)
   local m, st, info = r.m, r.st, r.info or {}
@@ -140,7 +140,7 @@ local function row(k, r)
     e.right_volume_mm3 = loop.volume_between(r0, b0.right_wheel.y, b0.right_wheel.z, b1.right_wheel.y,
                                              b1.right_wheel.z) * 1e9
     e.archard_volume_mm3, e.right_archard_volume_mm3 = info.archard.left * 1e9, info.archard.right * 1e9
-    e.cases, e.cases_failed = info.cases, info.failed
+    e.cases, e.cases_failed, e.points_untangled = info.cases, info.failed, info.folds
   end
   return e
 end

@@ -1,5 +1,5 @@
 -- One step of the wear loop (scripts/wear_loop.lua) with the example's default cases (examples/wear_evolution.lua: 90
--- on tangent track, 5 lateral forces in a 500 m curve each way: 100 cases), S1002/60E1 at 0.2 mm, exact rolling with
+-- on tangent track, 5 lateral forces (60 .. 100 kN) in a 300 m curve each way: 100 cases), S1002/60E1 at 0.2 mm, exact rolling with
 -- Archard/KTH: the time to place the curving cases, of one rate evaluation (the cases solved and mapped: an Euler
 -- step) and of a Heun step (two), CPU (all threads) and wall.
 --   build/wrc run tests/bench/bench_wear_step.lua [grid_mm=0.2] [method=exact] [threads=2] [tangent=90]
@@ -19,8 +19,8 @@ local Q = 200e3
 local function cases(state)
   local ws = loop.wheelset(state, {grid = math.max(grid, 0.5e-3)})  -- as the example places them
   return loop.generated_cases{Q = Q, V = 100 / 3.6, mu = 0.3, tangent = tangent, sigma = 1.5e-3,
-                              curves = {{radius = 500, yaw = 2.5e-3, share = 0.05}, {radius = -500, yaw = 2.5e-3,
-                              share = 0.05}}, forces = {30e3, 40e3, 50e3, 60e3, 70e3},
+                              curves = {{radius = 300, yaw = 2.5e-3, share = 0.05}, {radius = -300, yaw = 2.5e-3,
+                              share = 0.05}}, forces = {60e3, 70e3, 80e3, 90e3, 100e3},
                               y_for_force = function(sign, Y, yaw, from) return loop.y_for_force(ws, sign, Y, yaw, Q, from) end}
 end
 local function timed(what, f)

@@ -18,11 +18,11 @@ local Q, V, mu = 200e3, 100 / 3.6, 0.3
 local function initial() return loop.initial{wheel = wheel, rail = rail, wheelset = {grid = grid}} end
 local m0 = loop.measures(initial(), {threads = 1})
 
--- The cases on the state's profiles: the curving ones pressed against the flange with 40 and 60 kN.
+-- The cases on the state's profiles: the curving ones pressed against the flange with 40 and 60 kN (or spec.forces).
 local function cases(spec, st)
   local ws = loop.wheelset(st)
   return loop.generated_cases{Q = Q, V = V, mu = mu, tangent = spec.tangent, sigma = 1.5e-3, curves = spec.curves,
-                              forces = {40e3, 60e3},
+                              forces = spec.forces or {40e3, 60e3},
                               y_for_force = function(sign, Y, yaw, from) return loop.y_for_force(ws, sign, Y, yaw, Q, from) end}
 end
 local mixed = {tangent = 5, curves = {{radius = 500, yaw = 2.5e-3, share = 0.1},
@@ -152,10 +152,10 @@ do  -- tangent track alone (a narrow lateral distribution, sigma 0.5 mm): a groo
   check.ok(m.tan_gamma_e > m0.tan_gamma_e + 0.005, "tangent track: tan gamma_e rises")
 end
 
-do  -- curves alone: flange contact thins the flange
+do  -- curves alone: flange contact (80 and 100 kN: up the flange root toward Sd's height) thins the flange
   local st = initial()
-  local curves = {tangent = 0, curves = {{radius = 500, yaw = 2.5e-3, share = 0.5},
-                                         {radius = -500, yaw = 2.5e-3, share = 0.5}}}
+  local curves = {tangent = 0, forces = {80e3, 100e3}, curves = {{radius = 500, yaw = 2.5e-3, share = 0.5},
+                                                                 {radius = -500, yaw = 2.5e-3, share = 0.5}}}
   for _ = 1, 3 do st = step(st, curves) end
   local m = loop.measures(st, {threads = 1})
   print(("curves: %.3f km, Sd %.3f -> %.3f mm (left), %.3f -> %.3f mm (right)"):format(st.km, m0.left_wheel.Sd * 1e3,
