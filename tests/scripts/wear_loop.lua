@@ -166,7 +166,7 @@ end
 
 -- Bad cases: the key and the value named.
 check.fails(function() loop.generated_cases{Q = -1, V = V, mu = mu, tangent = 1, sigma = 1e-3} end,
-            "Q = %-1 must be a wheelset load", "a negative load")
+            "generated case 1: Q = -1 must be a wheelset load", "a negative load")
 local csv = os.tmpname()
 local f = io.open(csv, "w")
 f:write("y_mm,Q_kN,V_kmh,mu,share\n1,200,100,0.3,1\n2,200,100,,1\n")
