@@ -4,7 +4,8 @@
 # run; the profiles it writes are read back by wrc's readers as the points of profiles.csv and listed in the manifest.
 source "$(dirname "$0")/common.sh"
 WEAR="$SRC/examples/wear_evolution.lua"
-SMALL=(steps=3 tangent=5 curve_forces_kN=40 grid_mm=0.5 plots=false)
+CASES=(steps=3 tangent=5 curve_forces_kN=40 grid_mm=0.5)
+SMALL=("${CASES[@]}" plots=false)
 
 echo "== 1 and 2 threads give the same bytes"
 expect_status 0 "$WRC" run "$WEAR" "${SMALL[@]}" threads=1 out=one
@@ -49,6 +50,6 @@ LUA
 "$WRC" run readback.lua dir=one | grep -q "read back" || fail "the written profiles are not read back"
 # The profile files are the run's (listed in its manifest, ctx.write_profile): a run again into the folder accepts them.
 grep -q "^file left_wheel_step03.prw " one/manifest.txt || fail "the manifest does not list left_wheel_step03.prw"
-expect_status 0 "$WRC" run "$WEAR" "${SMALL[@]}" threads=1 plots=true out=one
+expect_status 0 "$WRC" run "$WEAR" "${CASES[@]}" threads=1 out=one
 grep -q "^file Sd.png " one/manifest.txt || fail "the figures are not listed in the manifest"
 echo "wear ok"
