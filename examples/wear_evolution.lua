@@ -35,6 +35,8 @@ local s = study.new{
     {"steps", "integer", 20, "wear steps", min = 1, max = 10000},
     {"step_mm", "number", 0.1, "largest wheel depth worn per step (mm)", min = 1e-4, max = 2},
     {"km_end", "number", 0, "stop at this distance (km; the last step shortened; 0: after `steps`)", min = 0},
+    {"scheme", "string", "heun", "time stepping: the start's rates averaged with those after an Euler step, or the " ..
+     "start's alone", choices = {"heun", "euler"}},
     {"smooth_mm", "number", 1, "standard deviation of the area-preserving smoothing (mm; 0: none)", min = 0,
      max = 20},
     {"grid_mm", "number", 0.2, "element size of the contact areas (mm)", min = 0.01, max = 5},
@@ -69,7 +71,7 @@ local wheel, rail = wrc.profile.load(opt.wheel, {kind = "wheel"}), wrc.profile.l
 local wheelset = {grid = opt.grid_mm * 1e-3}
 local wear = {model = opt.model, k = (opt.model == "archard" and opt.k > 0) and opt.k or nil}
 local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, wear = wear, method = opt.method,
-                      threads = opt.threads, rail_passes = opt.rail_passes,
+                      threads = opt.threads, rail_passes = opt.rail_passes, scheme = opt.scheme,
                       km_end = opt.km_end > 0 and opt.km_end or nil}
 local csv_cases = opt.cases ~= "" and loop.read_cases(opt.cases) or nil
 
