@@ -23,8 +23,8 @@ local two_pi = 2 * math.pi
 -- Cases
 
 -- A case: y (m), yaw (rad), Q (N, the wheelset's load), V (m/s), mu, share (of the distance, > 0), and the
--- kinematics: radius (m, the curve's radius, > 0 curving toward +y (the left rail outer... see docs), nil on
--- tangent track: yaw_rate = V / radius) or creepage = {xi, eta, phi} (prescribed at every area).
+-- kinematics: radius (m; > 0 a curve toward +y, whose outer rail is the right one; < 0 toward -y; nil on tangent
+-- track: yaw_rate = V / radius) or creepage = {xi, eta, phi} (prescribed at every area).
 local function check_case(c, where)
   local function need(key, ok, what)
     if type(c[key]) ~= "number" or c[key] ~= c[key] or not ok(c[key]) then
@@ -412,7 +412,7 @@ end
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =
 -- "heun" (default: the rates at the start and at the profiles an Euler step gives, averaged -- second order in the
 -- step, the cases solved twice) | "euler" (the rates at the start)}. The distance of the step is the one at which the
--- start's rates wear `step` off the wheel's deepest point. Returns the new state and what the step did: the distance
+-- start's rates wear `step` off the wheel's deepest point, shorter when Heun's mean rates reach deeper. Returns the new state and what the step did: the distance
 -- (m), the largest depth per body (m), the wheels' Archard volumes over the step (m^3), the cases and failed cases.
 function M.step(st, cases, o)
   local function cases_at(state) return type(cases) == "function" and cases(state) or cases end
@@ -438,6 +438,16 @@ function M.step(st, cases, o)
     for _, e in ipairs(r1.errors) do errors[#errors + 1] = e end
   elseif o.scheme ~= "euler" then
     error("wear step: scheme = " .. tostring(o.scheme) .. " must be \"heun\" or \"euler\"", 0)
+  end
+  -- Heun's mean can be steeper than the start's rates where the Euler step made a new spot of high pressure (the KTH
+  -- map's seizure): the distance then shrinks so that the step's largest wheel depth stays `step`.
+  local mean_largest = 0
+  for _, name in ipairs{"left_wheel", "right_wheel"} do
+    for _, v in ipairs(rate[name] or {}) do mean_largest = math.max(mean_largest, v) end
+  end
+  if mean_largest * distance > o.step then
+    distance = o.step / mean_largest
+    km = st.km + distance / 1000
   end
   local new, depth = advance(st, rate, distance, o, km)
   return new, {folds = new.folds or 0, distance = distance, depth = depth, archard = {left = archard.left * distance,

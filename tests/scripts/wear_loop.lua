@@ -63,15 +63,16 @@ do  -- volume per step against the Archard volumes, Euler's and Heun's
     local res1 = loop.solve(loop.wheelset(euler), list, options)  -- Heun's second rates: at Euler's profiles
     local heun = loop.step(st, list, heun_o)
     local distance = (euler.km - st.km) * 1000
-    check.rel((heun.km - st.km) * 1000, distance, 1e-12, "Heun's step runs Euler's distance")
+    local heun_distance = (heun.km - st.km) * 1000  -- Euler's, or shorter where the mean rates reach deeper
+    check.ok(heun_distance <= distance * (1 + 1e-12), "Heun's step runs at most Euler's distance")
     for _, side in ipairs{"left", "right"} do
       local a0, a1 = archard(list, res0, side), archard(list, res1, side)
       local before = solid(st.bodies[side .. "_wheel"].y, st.bodies[side .. "_wheel"].z, 0.45)
-      for _, run in ipairs{{"Euler", euler, a0}, {"Heun", heun, (a0 + a1) / 2}} do
+      for _, run in ipairs{{"Euler", euler, a0, distance}, {"Heun", heun, (a0 + a1) / 2, heun_distance}} do
         local b = run[2].bodies[side .. "_wheel"]
-        local removed, expected = before - solid(b.y, b.z, 0.45), run[3] * distance
+        local removed, expected = before - solid(b.y, b.z, 0.45), run[3] * run[4]
         print(("step %d %s wheel, %s: %.4f km, removed %.6g mm3, Archard %.6g mm3 (%+.3f %%)"):format(k, side, run[1],
-              distance / 1000, removed * 1e9, expected * 1e9, (removed / expected - 1) * 100))
+              run[4] / 1000, removed * 1e9, expected * 1e9, (removed / expected - 1) * 100))
         check.rel(removed, expected, 0.01, ("step %d, %s wheel, %s: volume removed against Archard's"):format(k, side,
                   run[1]))
       end
