@@ -206,6 +206,12 @@ local function finish_context(run, failed, shards)
   function ctx.path(name) return inside(name) end
   function ctx.read(name) return out.read_csv(inside(name)) end
   function ctx.write(name, text) out.text(inside(name), text) end
+  -- A profile written by p:write (its format from the extension, or options.format), listed as the tables are.
+  function ctx.write_profile(name, profile, options)
+    local path = inside(name)
+    profile:write(path, options or {})
+    if out.on_write then out.on_write(path) end
+  end
   return ctx
 end
 

@@ -12,6 +12,7 @@ void open_core(lua_State* L);      // wrc.version, wrc.paths
 void open_fs(lua_State* L);        // wrc.fs (folders, atomic files, listings, hashes), wrc.closest_name, wrc.cores
 void open_wheelset(lua_State* L);  // wrc.wheelset and the wrc.Wheelset metatable
 void open_kinematics(lua_State* L);  // wrc.conicity, p:flange_measures, p:curvature
+void open_wear(lua_State* L);        // wrc.wear: the kernels of a wear loop (damage/profile_wear.hpp)
 
 // A fresh state with the standard libraries, package paths for scripts/ (require "wrc.x.y" loads
 // scripts/x/y.lua) and the `wrc` module required into the global `wrc`. Used by the host and by the

@@ -30,6 +30,7 @@ int luaopen_wrc(lua_State* L) {
   open_profile(L);
   open_wheelset(L);
   open_kinematics(L);
+  open_wear(L);
   return 1;
 }
 

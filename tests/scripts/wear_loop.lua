@@ -1,0 +1,181 @@
+-- The wear loop (scripts/wear_loop.lua, examples/wear_evolution.lua) against independent references, at a reduced
+-- size (coarse grid, few cases, few steps):
+--   - the wheel volume each step removes, computed here from the profiles as solids of revolution (frustums), equals
+--     the Archard volumes of the step's contact areas (p.wear_volume, weighted by share and distance) within 1 %,
+--     with the area-preserving smoothing on;
+--   - halving the step size changes the worn area at the final km by < 2 %;
+--   - mirrored cases wear mirrored profiles: the left wheel of one run is the right wheel of the other;
+--   - tangent-track cases alone wear a groove into the tread (deepest inside the running band, the flange and the
+--     field side untouched) and raise tan gamma_e; curving cases with flange contact thin the flange (Sd falls);
+--   - bad cases are refused with the key and the value.
+local check = require "wrc.check"
+local loop = require "wrc.wear_loop"
+
+local wheel = wrc.profile.load("profiles/s1002.lua")
+local rail = wrc.profile.load("profiles/60e1.lua")
+local grid = 0.5e-3
+local Q, V, mu = 200e3, 100 / 3.6, 0.3
+local function initial() return loop.initial{wheel = wheel, rail = rail, wheelset = {grid = grid}} end
+local m0 = loop.measures(initial(), {threads = 1})
+
+-- The cases on the state's profiles: the curving ones pressed against the flange with 40 and 60 kN (or spec.forces).
+local function cases(spec, st)
+  local ws = loop.wheelset(st)
+  return loop.generated_cases{Q = Q, V = V, mu = mu, tangent = spec.tangent, sigma = 1.5e-3, curves = spec.curves,
+                              forces = spec.forces or {40e3, 60e3},
+                              y_for_force = function(sign, Y, yaw, from) return loop.y_for_force(ws, sign, Y, yaw, Q, from) end}
+end
+local mixed = {tangent = 5, curves = {{radius = 500, yaw = 2.5e-3, share = 0.1},
+                                      {radius = -500, yaw = 2.5e-3, share = 0.1}}}
+local options = {step = 0.1e-3, smooth = 1e-3, wear = {}, threads = 2}
+local function step(st, spec, o) return loop.step(st, function(state) return cases(spec, state) end, o or options) end
+
+-- The volume between a wheel profile and its axle, as frustums of the polyline's segments turned about the axle
+-- (radius r0 - z): pi (Ra^2 + Ra Rb + Rb^2) / 3 (yb - ya), signed along y so that folds cancel.
+local function solid(y, z, r0)
+  local v = 0
+  for i = 1, #y - 1 do
+    local a, b = r0 - z[i], r0 - z[i + 1]
+    v = v + math.pi * (a * a + a * b + b * b) / 3 * (y[i + 1] - y[i])
+  end
+  return v
+end
+
+do  -- volume per step against the Archard volumes, Euler's and Heun's
+  local st = initial()
+  -- The share-weighted Archard volume per metre rolled of one wheel over the cases' results.
+  local function archard(list, results, side)
+    local total, v = 0, 0
+    for _, c in ipairs(list) do total = total + c.share end
+    for i, e in ipairs(results) do
+      check.ok(e.converged, "case " .. i .. " converged")
+      for _, p in ipairs(e[side].patches) do v = v + list[i].share / total * p.wear_volume end
+    end
+    return v
+  end
+  for k = 1, 2 do
+    local list = cases(mixed, st)
+    local euler_o, heun_o = {}, {}
+    for key, v in pairs(options) do euler_o[key], heun_o[key] = v, v end
+    euler_o.scheme, heun_o.scheme = "euler", "heun"
+    local res0 = loop.solve(loop.wheelset(st), list, options)
+    local euler, info = loop.step(st, list, euler_o)
+    local res1 = loop.solve(loop.wheelset(euler), list, options)  -- Heun's second rates: at Euler's profiles
+    local heun = loop.step(st, list, heun_o)
+    local distance = (euler.km - st.km) * 1000
+    local heun_distance = (heun.km - st.km) * 1000  -- Euler's, or shorter where the mean rates reach deeper
+    check.ok(heun_distance <= distance * (1 + 1e-12), "Heun's step runs at most Euler's distance")
+    for _, side in ipairs{"left", "right"} do
+      local a0, a1 = archard(list, res0, side), archard(list, res1, side)
+      local before = solid(st.bodies[side .. "_wheel"].y, st.bodies[side .. "_wheel"].z, 0.45)
+      for _, run in ipairs{{"Euler", euler, a0, distance}, {"Heun", heun, (a0 + a1) / 2, heun_distance}} do
+        local b = run[2].bodies[side .. "_wheel"]
+        local removed, expected = before - solid(b.y, b.z, 0.45), run[3] * run[4]
+        print(("step %d %s wheel, %s: %.4f km, removed %.6g mm3, Archard %.6g mm3 (%+.3f %%)"):format(k, side, run[1],
+              run[4] / 1000, removed * 1e9, expected * 1e9, (removed / expected - 1) * 100))
+        check.rel(removed, expected, 0.01, ("step %d, %s wheel, %s: volume removed against Archard's"):format(k, side,
+                  run[1]))
+      end
+      check.ok(info.depth[side .. "_wheel"] <= options.step * (1 + 1e-12), "the step's largest depth")
+    end
+    st = heun
+  end
+end
+
+do  -- halving the step: the worn area at the same km (Archard with a constant k: the KTH map's jumps of k, 60-fold
+    -- where the pressure passes 0.8 H, make the first steps' running-in depend on the step: docs/guide/wear.md)
+  local function run(depth, km_end)
+    local st = initial()
+    local o = {step = depth, smooth = 1e-3, wear = {k = 1e-4}, threads = 2, km_end = km_end}
+    while st.km < km_end do st = step(st, mixed, o) end
+    return loop.measures(st, {threads = 1}).left_wheel.worn_area, st.step
+  end
+  local a, na = run(0.1e-3, 600)
+  local b, nb = run(0.05e-3, 600)
+  print(("worn area at 600 km: %.5f mm2 (%d steps of 0.1 mm), %.5f mm2 (%d steps of 0.05 mm)"):format(a * 1e6, na,
+        b * 1e6, nb))
+  check.ok(nb > na, "the halved step takes more steps")
+  check.rel(a, b, 0.02, "worn area at the final km with the step halved")
+end
+
+do  -- mirrored cases wear mirrored profiles
+  local skew = {}
+  for _, c in ipairs(cases(mixed, initial())) do  -- drop the symmetry: cases on one side only, and one curve
+    if c.y >= 0 and not (c.radius and c.radius > 0) then skew[#skew + 1] = c end
+  end
+  local mirror = {}
+  for i, c in ipairs(skew) do  -- fixed cases: the two runs see the same (mirrored) poses
+    mirror[i] = {y = -c.y, yaw = -c.yaw, Q = c.Q, V = c.V, mu = c.mu, share = c.share,
+                 radius = c.radius and -c.radius}
+  end
+  local a, b = initial(), initial()
+  for _ = 1, 2 do
+    a = loop.step(a, skew, options)
+    b = loop.step(b, mirror, options)
+  end
+  check.rel(a.km, b.km, 1e-6, "mirrored runs: the same distance")
+  local deepest = 0
+  for _, name in ipairs{"left_wheel", "right_wheel"} do
+    for _, v in ipairs(a.bodies[name].worn) do deepest = math.max(deepest, v) end
+  end
+  check.ok(deepest > 0.1e-3, "the mirrored runs wore the wheels")
+  for _, pair in ipairs{{"left_wheel", "right_wheel"}, {"right_wheel", "left_wheel"}} do
+    local p, q = a.bodies[pair[1]], b.bodies[pair[2]]
+    local worst = 0
+    for i = 1, #p.y do worst = math.max(worst, math.abs(p.y[i] - q.y[i]), math.abs(p.z[i] - q.z[i])) end
+    print(("mirror: %s against %s: largest difference %.3g um (deepest %.3g mm)"):format(pair[1], pair[2],
+          worst * 1e6, deepest * 1e3))
+    check.ok(worst < 1e-4 * deepest, ("mirror: %s of one run is %s of the other"):format(pair[1], pair[2]))
+  end
+  local la, ra = a.bodies.left_wheel, a.bodies.right_wheel
+  local diff = 0
+  for i = 1, #la.y do diff = math.max(diff, math.abs(la.z[i] - ra.z[i])) end
+  check.ok(diff > 1e-5, "the skewed cases wear the two wheels differently (the check above is not trivial)")
+end
+
+do  -- tangent track alone (a narrow lateral distribution, sigma 0.5 mm): a groove worn into the tread, conicity up
+  local st = initial()
+  local function narrow(state)
+    return loop.generated_cases{Q = Q, V = V, mu = mu, tangent = 7, sigma = 0.5e-3}
+  end
+  for _ = 1, 2 do st = loop.step(st, narrow, options) end
+  local m = loop.measures(st, {threads = 1})
+  local b = st.bodies.left_wheel
+  local deepest, at, outside = 0, nil, 0
+  for i = 1, #b.y do
+    if b.worn[i] > deepest then deepest, at = b.worn[i], b.y0[i] end
+    if math.abs(b.y0[i]) > 0.03 then outside = math.max(outside, b.worn[i]) end
+  end
+  print(("tangent: %.1f km, deepest %.3f mm at s = %.1f mm, beyond +-30 mm %.3g mm, tan gamma_e %.4f -> %.4f"):format(
+        st.km, deepest * 1e3, at * 1e3, outside * 1e3, m0.tan_gamma_e, m.tan_gamma_e))
+  check.ok(deepest > 0.05e-3 and at > -0.012 and at < 0.012, "tangent track: worn within the running band")
+  check.ok(outside == 0, "tangent track: the flange and the field side are not worn")
+  check.ok(m.tan_gamma_e > m0.tan_gamma_e + 0.005, "tangent track: tan gamma_e rises")
+end
+
+do  -- curves alone: flange contact (80 and 100 kN: up the flange root toward Sd's height) thins the flange
+  local st = initial()
+  local curves = {tangent = 0, forces = {80e3, 100e3}, curves = {{radius = 500, yaw = 2.5e-3, share = 0.5},
+                                                                 {radius = -500, yaw = 2.5e-3, share = 0.5}}}
+  for _ = 1, 3 do st = step(st, curves) end
+  local m = loop.measures(st, {threads = 1})
+  print(("curves: %.3f km, Sd %.3f -> %.3f mm (left), %.3f -> %.3f mm (right)"):format(st.km, m0.left_wheel.Sd * 1e3,
+        m.left_wheel.Sd * 1e3, m0.right_wheel.Sd * 1e3, m.right_wheel.Sd * 1e3))
+  check.ok(m.left_wheel.Sd < m0.left_wheel.Sd - 0.05e-3, "curves: Sd of the left wheel falls")
+  check.ok(m.right_wheel.Sd < m0.right_wheel.Sd - 0.05e-3, "curves: Sd of the right wheel falls")
+end
+
+-- Bad cases: the key and the value named.
+check.fails(function() loop.generated_cases{Q = -1, V = V, mu = mu, tangent = 1, sigma = 1e-3} end,
+            "generated case 1: Q = -1 must be a wheelset load", "a negative load")
+local csv = os.tmpname()
+local f = io.open(csv, "w")
+f:write("y_mm,Q_kN,V_kmh,mu,share\n1,200,100,0.3,1\n2,200,100,,1\n")
+f:close()
+check.fails(function() loop.read_cases(csv) end, ":3: mu = nil must be a friction coefficient", "an empty mu")
+f = io.open(csv, "w")
+f:write("y_mm,Q_kN,V_kmh,share\n1,200,100,1\n")
+f:close()
+check.fails(function() loop.read_cases(csv) end, "no column 'mu'", "a missing column")
+os.remove(csv)
+print("wear loop ok")
