@@ -379,6 +379,7 @@ void describe(const PatchContact& pc, FieldSink& out) {
               {"-", "separate contact regions of the area (p > 0, 8-connected, each >= 0.1 % of the force)"});
   out.number("penetration", pc.penetration, {"m", "deepest undeformed inter-penetration of the area (max h)"});
   out.number("rolling_radius", pc.rolling_radius, {"m", "wheel radius at the centre of pressure"});
+  describe(pc.ellipses, out);
   out.integer("iterations", s.iterations, {"-", "iterations of the normal solver (CG, or active set for the dense one)"});
   out.number("complementarity", s.residual.relative,
              {"-", "relative residual of the normal solution: max |gap| in contact or max overlap outside / max(h + approach)"});
