@@ -159,7 +159,7 @@ std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& g, std::span<cons
 ContactEllipses hertz_ellipses(const RelativeCurvature& k, double load, const Material& m) {
   ContactEllipses e;
   e.hertz = hertz_contact(k.kx, k.ky, load, m);
-  if (e.hertz) e.kalker = kalker_coefficients(e.hertz->a / e.hertz->b, m.nu);
+  if (e.hertz && m.nu >= 0 && m.nu <= 0.5) e.kalker = kalker_coefficients(e.hertz->a / e.hertz->b, m.nu);
   return e;
 }
 
@@ -191,12 +191,14 @@ void describe(const ContactEllipses& e, FieldSink& out) {
   out.number("kx", h.kx, {"1/m", "relative curvature along the track: cos(angle) / rolling radius"});
   out.number("ky", h.ky, {"1/m", "relative curvature across it: wheel + rail profile curvature (> 0 convex)"});
   out.end();
-  out.begin("kalker", {"", "Kalker's creep coefficients for hertz's a/b and the material's nu (creep.hpp)"});
-  out.number("C11", e.kalker.c11, {"-", "longitudinal: Fx = -G a b C11 xi"});
-  out.number("C22", e.kalker.c22, {"-", "lateral: Fy = -G a b C22 eta - G (a b)^1.5 C23 phi"});
-  out.number("C23", e.kalker.c23, {"-", "lateral-spin coupling"});
-  out.number("C33", e.kalker.c33, {"-", "spin: Mz = G (a b)^1.5 C23 eta - G (a b)^2 C33 phi"});
-  out.boolean("tabulated", e.kalker.tabulated, {"", "a/b within Kalker's table (0.1 .. 10); else extrapolated"});
+  if (!e.kalker) return;
+  const CreepCoefficients& k = *e.kalker;
+  out.begin("kalker", {"", "Kalker's creep coefficients for hertz's a/b and the material's nu (creep.hpp; only for nu in 0 .. 0.5)"});
+  out.number("C11", k.c11, {"-", "longitudinal: Fx = -G a b C11 xi"});
+  out.number("C22", k.c22, {"-", "lateral: Fy = -G a b C22 eta - G (a b)^1.5 C23 phi"});
+  out.number("C23", k.c23, {"-", "lateral-spin coupling"});
+  out.number("C33", k.c33, {"-", "spin: Mz = G (a b)^1.5 C23 eta - G (a b)^2 C33 phi"});
+  out.boolean("tabulated", k.tabulated, {"", "a/b within Kalker's table (0.1 .. 10); else extrapolated"});
   out.end();
 }
 

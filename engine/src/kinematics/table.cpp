@@ -178,9 +178,9 @@ void csv_wheel(const RigidWheel& w, std::vector<std::string>& row) {
   row.push_back(cell(on && c.wheel_curvature != 0 ? 1e3 / c.wheel_curvature : 0, on && c.wheel_curvature != 0));
   row.push_back(cell(on && c.rail_curvature != 0 ? 1e3 / c.rail_curvature : 0, on && c.rail_curvature != 0));
   const auto& h = c.ellipses.hertz;
-  const halfspace::CreepCoefficients& k = c.ellipses.kalker;
-  for (double v : {h ? h->a * 1e3 : 0, h ? h->b * 1e3 : 0, h ? h->p0 * 1e-6 : 0, k.c11, k.c22, k.c23, k.c33})
-    row.push_back(cell(v, on && h));
+  for (double v : {h ? h->a * 1e3 : 0, h ? h->b * 1e3 : 0, h ? h->p0 * 1e-6 : 0}) row.push_back(cell(v, on && h));
+  const halfspace::CreepCoefficients k = c.ellipses.kalker.value_or(halfspace::CreepCoefficients{});
+  for (double v : {k.c11, k.c22, k.c23, k.c33}) row.push_back(cell(v, on && c.ellipses.kalker));
   const bool two = on && w.contacts.size() > 1;
   const RigidContactPoint d = two ? w.contacts[1] : RigidContactPoint{};
   for (double v : {d.gap * 1e3, d.wheel_profile.x() * 1e3, d.rail_profile.x() * 1e3, d.rolling_radius * 1e3, d.angle * kDeg})
@@ -250,7 +250,7 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
       "nL     contact points of the left wheel (2: two-point contact)", "nR     the same, right wheel",
       "aL     Hertz semi-axis along the track, left touching point (m; 0: no Hertz ellipse, a concave pair)",
       "aR     the same, right (m)", "bL     Hertz semi-axis across the track, left (m)", "bR     the same, right (m)",
-      "C11L   Kalker's coefficient C11 for the left ellipse's a/b and nu (-)", "C11R   the same, right (-)",
+      "C11L   Kalker's coefficient C11 for the left ellipse's a/b and nu (-; 0 without an ellipse or nu < 0)", "C11R   the same, right (-)",
       "C22L   Kalker's C22, left (-)", "C22R   the same, right (-)", "C23L   Kalker's C23, left (-)",
       "C23R   the same, right (-)", "C33L   Kalker's C33, left (-)", "C33R   the same, right (-)"};
   h += "# columns:\n";
@@ -273,7 +273,8 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
     const auto ellipse = [](const RigidContactPoint& c, bool a) {
       return c.ellipses.hertz ? (a ? c.ellipses.hertz->a : c.ellipses.hertz->b) : 0.0;
     };
-    const halfspace::CreepCoefficients &kL = L.ellipses.kalker, &kR = R.ellipses.kalker;
+    const halfspace::CreepCoefficients kL = L.ellipses.kalker.value_or(halfspace::CreepCoefficients{}),
+                                       kR = R.ellipses.kalker.value_or(halfspace::CreepCoefficients{});
     for (double x : {ellipse(L, true), ellipse(R, true), ellipse(L, false), ellipse(R, false), kL.c11, kR.c11, kL.c22,
                      kR.c22, kL.c23, kR.c23, kL.c33, kR.c33}) {
       if (!std::isfinite(x)) fail("geometry table: a value is not finite at y = {} m", r.y);

@@ -54,12 +54,12 @@ std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& grid, std::span<c
                                                    std::vector<int>& label);
 
 // The fields of a contact that multibody tables carry. `ellipse`: of the region carrying the largest normal force
-// (elastic results); `hertz` and `kalker` (Kalker's coefficients for hertz's a/b and the material's nu): when the
-// relative curvatures are convex.
+// (elastic results); `hertz`: when the relative curvatures are convex; `kalker` (Kalker's coefficients for hertz's
+// a/b and the material's nu): with hertz, when nu lies within Kalker's table (0 .. 0.5).
 struct ContactEllipses {
   std::optional<EquivalentEllipse> ellipse;
   std::optional<HertzContact> hertz;
-  CreepCoefficients kalker;
+  std::optional<CreepCoefficients> kalker;
 };
 
 // Hertz and Kalker for the curvatures and load (N) with the material: `ellipse` left empty.
@@ -67,8 +67,8 @@ ContactEllipses hertz_ellipses(const RelativeCurvature& k, double load, const Ma
 // FASTSIM's ellipse of the region of `pressure` that carries the largest force (none without contact).
 std::optional<EquivalentEllipse> fastsim_ellipse(const Grid& grid, std::span<const double> pressure);
 
-// ellipse = {a, b} (when set), hertz = {a, b, p0, approach, load, kx, ky} and kalker = {C11, C22, C23, C33} (when
-// hertz is set).
+// ellipse = {a, b}, hertz = {a, b, p0, approach, load, kx, ky} and kalker = {C11, C22, C23, C33, tabulated}, each
+// when set.
 void describe(const ContactEllipses& e, FieldSink& out);
 
 }  // namespace wrc::halfspace
