@@ -193,7 +193,8 @@ void describe(const ContactEllipses& e, FieldSink& out) {
   out.end();
   if (!e.kalker) return;
   const CreepCoefficients& k = *e.kalker;
-  out.begin("kalker", {"", "Kalker's creep coefficients for hertz's a/b and the material's nu (creep.hpp; only for nu in 0 .. 0.5)"});
+  out.begin("kalker",
+            {"", "Kalker's creep coefficients for hertz's a/b and the material's nu (creep.hpp; only for nu in 0 .. 0.5)"});
   out.number("C11", k.c11, {"-", "longitudinal: Fx = -G a b C11 xi"});
   out.number("C22", k.c22, {"-", "lateral: Fy = -G a b C22 eta - G (a b)^1.5 C23 phi"});
   out.number("C23", k.c23, {"-", "lateral-spin coupling"});

@@ -159,7 +159,8 @@ std::vector<std::string> csv_columns() {
     for (const char* k : {"lifted", "touch_z_mm", "gap_mm", "contacts", "wheel_y_mm", "wheel_z_mm", "rail_y_mm",
                           "rail_z_mm", "track_x_mm", "track_y_mm", "track_z_mm", "r_mm", "angle_deg",
                           "wheel_curvature_per_m", "rail_curvature_per_m", "wheel_radius_mm", "rail_radius_mm",
-                          "hertz_a_mm", "hertz_b_mm", "hertz_p0_MPa", "C11", "C22", "C23", "C33", "2_gap_mm", "2_wheel_y_mm", "2_rail_y_mm", "2_r_mm", "2_angle_deg"})
+                          "hertz_a_mm", "hertz_b_mm", "hertz_p0_MPa", "C11", "C22", "C23", "C33", "2_gap_mm",
+                          "2_wheel_y_mm", "2_rail_y_mm", "2_r_mm", "2_angle_deg"})
       c.push_back(fmt::format("{}_{}", s, k));
   }
   return c;
@@ -250,7 +251,8 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
       "nL     contact points of the left wheel (2: two-point contact)", "nR     the same, right wheel",
       "aL     Hertz semi-axis along the track, left touching point (m; 0: no Hertz ellipse, a concave pair)",
       "aR     the same, right (m)", "bL     Hertz semi-axis across the track, left (m)", "bR     the same, right (m)",
-      "C11L   Kalker's coefficient C11 for the left ellipse's a/b and nu (-; 0 without an ellipse or nu < 0)", "C11R   the same, right (-)",
+      "C11L   Kalker's coefficient C11 for the left ellipse's a/b and nu (-; 0 without an ellipse or nu < 0)",
+      "C11R   the same, right (-)",
       "C22L   Kalker's C22, left (-)", "C22R   the same, right (-)", "C23L   Kalker's C23, left (-)",
       "C23R   the same, right (-)", "C33L   Kalker's C33, left (-)", "C33R   the same, right (-)"};
   h += "# columns:\n";
