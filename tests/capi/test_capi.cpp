@@ -3,6 +3,7 @@
 // independent, and one wheelset serves several threads at once with the results of sequential calls.
 #include "wrc/wrc.h"
 #include "approx.hpp"
+#include "halfspace/hertz_reference.hpp"
 
 #include <doctest/doctest.h>
 
@@ -401,6 +402,40 @@ TEST_CASE("a trajectory with rolling options: the creep forces of wrc_contact at
   CHECK(wrc_result_number(w, "left.creep_force.x", &v) == WRC_NOT_FOUND);
   wrc_result_free(w);
   CHECK(wrc_trajectory_free(tr) == WRC_OK);
+}
+
+TEST_CASE("the contact ellipses and Kalker's coefficients read by path: rigid points, tables and elastic patches") {
+  Fixture f;
+  const double Es = 2.1e11 / (2 * (1 - 0.3 * 0.3));  // the wheelset's default steel
+  // A rigid touching point's Hertz ellipse for the load given: the tests' own Hertz solution for the curvatures the
+  // result reports (cos(angle) / r along the track, wheel + rail across).
+  wrc_result* g = nullptr;
+  REQUIRE_MESSAGE(wrc_rigid_contact(f.ws, 0.0, 0.0, "hertz_load=80e3", &g) == WRC_OK, last());
+  const char* c = "left.contacts.1.";
+  const auto at = [&](const wrc_result* r, const std::string& p) { return number(r, p.c_str()); };
+  const double kx = std::cos(at(g, std::string(c) + "angle")) / at(g, std::string(c) + "rolling_radius");
+  const double ky = at(g, std::string(c) + "wheel_curvature") + at(g, std::string(c) + "rail_curvature");
+  const wrc::test::HertzContact ref = wrc::test::hertz_from_force(kx / 2, ky / 2, Es, 80e3);
+  CHECK(at(g, std::string(c) + "hertz.a") == within_rel(ref.a, 1e-6));
+  CHECK(at(g, std::string(c) + "hertz.b") == within_rel(ref.b, 1e-6));
+  CHECK(at(g, std::string(c) + "hertz.load") == 80e3);
+  CHECK(at(g, std::string(c) + "kalker.C11") > 3);  // S1002/60E1 at the centre: a/b near 1, C11 near 3.8 (nu 0.3)
+  wrc_result_free(g);
+  CHECK(wrc_rigid_contact(f.ws, 0.0, 0.0, "hertz_load=-5", &g) == WRC_ERROR);
+  CHECK(last().find("hertz_load = -5 N must be a positive number") != std::string::npos);
+  // A table row carries them too.
+  wrc_result* t = nullptr;
+  REQUIRE_MESSAGE(wrc_geometry_table(f.ws, "y=0,1e-3 progress=false", &t) == WRC_OK, last());
+  CHECK(number(t, "rows.1.left.contacts.1.hertz.a") == within_rel(ref.a * std::cbrt(100.0 / 80.0), 1e-6));  // a ~ F^(1/3)
+  CHECK(number(t, "hertz_load") == 100e3);  // the default
+  wrc_result_free(t);
+  // An elastic patch: Hertz for its own normal force, FASTSIM's ellipse, Kalker's coefficients.
+  wrc_result* e = nullptr;
+  REQUIRE_MESSAGE(wrc_equilibrium(f.ws, 0.0, 0.0, 200e3, nullptr, &e) == WRC_OK, last());
+  CHECK(number(e, "left.patches.1.hertz.load") == within_rel(number(e, "left.patches.1.normal_force"), 1e-15));
+  CHECK(number(e, "left.patches.1.ellipse.a") > 0);
+  CHECK(number(e, "left.patches.1.kalker.C22") > 0);
+  wrc_result_free(e);
 }
 
 TEST_CASE("rigid contact geometry, tables, conicity and flange measures through the C API") {

@@ -140,8 +140,10 @@ std::vector<Section> sections(const std::string& root) {
   // Rigid contact: roll free (forces), roll fixed; failed.
   {
     const GeometryModel& g = conformal->geometry();
-    const RigidResult free = solve_rigid(g, 2e-3, 0.0, RigidOptions{});
-    RigidOptions fixed;
+    RigidOptions with_material;  // as the call layer gives it: the contact points' Hertz ellipses too
+    with_material.material = conformal->contact_model().material();
+    const RigidResult free = solve_rigid(g, 2e-3, 0.0, with_material);
+    RigidOptions fixed = with_material;
     fixed.roll_mode = RollMode::fixed;
     const RigidResult held = solve_rigid(g, 7e-3, 0.0, fixed);
     RigidResult failed = free;
@@ -156,6 +158,7 @@ std::vector<Section> sections(const std::string& root) {
     GeometryTableOptions o;
     for (int k = 0; k <= 10; ++k) o.y.push_back(k * 1e-3);
     o.threads = 1;
+    o.rigid.material = conformal->contact_model().material();
     GeometryTable t = run_geometry_table(conformal->geometry(), o);
     if (t.jumps.empty()) throw Error("field_reference: the representative geometry table has no contact jump");
     t.threads_note = "example";

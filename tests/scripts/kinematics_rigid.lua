@@ -219,7 +219,7 @@ end
 f:close()
 check.ok(#data == #small.rows, "text table: one row per y")
 for i, v in ipairs(data) do
-  check.ok(#v == 22, "text table: 22 columns")
+  check.ok(#v == 34, "text table: 34 columns")
   local r = small.rows[i]
   check.near(v[1], r.y, 1e-15, "text y")
   check.near(v[4], r.rolling_radius_difference, 1e-12, "text Δr")

@@ -178,13 +178,14 @@ wrc_status wrc_trajectory_free(wrc_trajectory* trajectory);
 /* ---- rigid contact geometry, equivalent conicity, profile measures (docs/guide/geometry.md) ---- */
 
 /* The rigid contact at y, yaw (m, rad). Options: roll ("free": both wheels on their rails, the default; "fixed": held
- * at 0 with each wheel on its own rail; or a number: held at that roll, rad), Q, two_point_tolerance, start.z,
- * start.roll. Fields as ws:rigid has them: "z", "roll", "rolling_radius_difference" (absent when a wheel is lifted),
- * "left.lifted", "left.contacts.1.rolling_radius", "left.contacts.1.wheel_profile.y", ... Returns WRC_NOT_CONVERGED
+ * at 0 with each wheel on its own rail; or a number: held at that roll, rad), Q, hertz_load (N: the load of every
+ * contact point's Hertz ellipse), two_point_tolerance, start.z, start.roll. Fields as ws:rigid has them: "z", "roll",
+ * "rolling_radius_difference" (absent when a wheel is lifted), "left.lifted", "left.contacts.1.rolling_radius",
+ * "left.contacts.1.wheel_profile.y", "left.contacts.1.hertz.a", "left.contacts.1.kalker.C11", ... Returns WRC_NOT_CONVERGED
  * (with the result) when there is no such pose. */
 wrc_status wrc_rigid_contact(wrc_wheelset* wheelset, double y, double yaw, const char* options, wrc_result** out);
 /* A rigid contact geometry table in one call, on worker threads. Options: y.from, y.to, y.step (m; or y=a,b,c), yaw,
- * roll, Q, two_point_tolerance, threads, jump_threshold, csv=<path>, file=<path> (the multibody table), progress
+ * roll, Q, hertz_load, two_point_tolerance, threads, jump_threshold, csv=<path>, file=<path> (the multibody table), progress
  * (true: a progress line on stderr; default false, the library prints nothing). Fields: "rows.<i>.<field of
  * wrc_rigid_contact>", "jumps.<i>.side|y_before|y_after|wheel_jump|rail_jump", "seconds", "threads", "threads_note"
  * (why fewer threads ran than asked for). */

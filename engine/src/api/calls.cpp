@@ -100,7 +100,17 @@ RigidCall RigidCall::read(OptionReader& r) {
   return c;
 }
 
-RigidResult RigidCall::run(const Wheelset& wheelset) const { return solve_rigid(wheelset.geometry(), y, yaw, options); }
+namespace {
+// The rigid results' Hertz ellipses use the wheelset's material.
+RigidOptions with_material(RigidOptions o, const Wheelset& wheelset) {
+  o.material = wheelset.contact_model().material();
+  return o;
+}
+}  // namespace
+
+RigidResult RigidCall::run(const Wheelset& wheelset) const {
+  return solve_rigid(wheelset.geometry(), y, yaw, with_material(options, wheelset));
+}
 
 GeometryTableCall GeometryTableCall::read(OptionReader& r) {
   GeometryTableCall c;
@@ -110,7 +120,9 @@ GeometryTableCall GeometryTableCall::read(OptionReader& r) {
 }
 
 GeometryTable GeometryTableCall::run(const Wheelset& wheelset) const {
-  return run_geometry_table(wheelset.geometry(), options);
+  GeometryTableOptions o = options;
+  o.rigid = with_material(o.rigid, wheelset);
+  return run_geometry_table(wheelset.geometry(), o);
 }
 
 WheelsetConicityCall WheelsetConicityCall::read(OptionReader& r) {

@@ -426,4 +426,20 @@ GeometryModel build_geometry(std::shared_ptr<const Track> track, const std::arra
   return m;
 }
 
+ProfilePoint profile_point(const GeometryModel& g, int side, const Eigen::Vector3d& point, double wheel_y,
+                           double radius) {
+  const SideGeometry& sg = g.side[side];
+  const SidePlacement& pl = g.track->place[side];
+  ProfilePoint p;
+  p.wheel = {pl.sign * wheel_y - pl.tape_y, pl.radius - radius};
+  // The rail profile's frame: the track point mirrored onto the left side, unshifted and turned back by the cant.
+  const double yc = pl.sign * point.y() - pl.rail_dy, zc = point.z() - pl.rail_dz;
+  const double c = std::cos(pl.cant_angle), s = std::sin(pl.cant_angle);
+  p.rail = {c * yc + s * zc, -s * yc + c * zc};
+  if (sg.wheel_curve)
+    p.wheel_curvature = surface_curvature(*sg.wheel_curve, ProfileKind::wheel, sg.wheel_curve->param_at_y(p.wheel.x()));
+  if (sg.rail_curve) p.rail_curvature = surface_curvature(*sg.rail_curve, ProfileKind::rail, sg.rail_curve->closest(p.rail));
+  return p;
+}
+
 }  // namespace wrc

@@ -15,7 +15,7 @@
 #include "rolling_internal.hpp"
 
 #include "wrc/core/error.hpp"
-#include "wrc/core/union_find.hpp"
+#include "wrc/halfspace/ellipse.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,61 +24,12 @@
 namespace wrc::halfspace {
 namespace {
 
-// The flexibilities of each 8-connected region of the contact (p > 0) from its equivalent ellipse: the region's
-// extent along x and y (element edges included) gives a/b, its area pi a b. Regions are found as runs along the
-// rows, united with the touching runs of the next row (diagonals included); `label` gets the region of every element
-// (-1 outside).
+// The flexibilities of each 8-connected region of the contact (p > 0) from its equivalent ellipse (ellipse.hpp);
+// `label` gets the region of every element (-1 outside).
 std::vector<Flexibilities> region_flexibilities(const Material& m, const Grid& g, std::span<const double> p,
                                                 std::vector<int>& label) {
-  label.assign(static_cast<std::size_t>(g.size()), -1);
-  struct Run {
-    int j, i0, i1;
-  };
-  std::vector<Run> runs;
-  std::vector<int> row_start(static_cast<std::size_t>(g.ny) + 1, 0);
-  for (int j = 0; j < g.ny; ++j) {
-    row_start[static_cast<std::size_t>(j)] = static_cast<int>(runs.size());
-    const double* row = p.data() + static_cast<std::size_t>(g.nx) * j;
-    for (int i = 0; i < g.nx;) {
-      if (!(row[i] > 0)) {
-        ++i;
-        continue;
-      }
-      const int start = i;
-      while (i < g.nx && row[i] > 0) ++i;
-      runs.push_back({j, start, i - 1});
-    }
-  }
-  row_start[static_cast<std::size_t>(g.ny)] = static_cast<int>(runs.size());
-  UnionFind sets;
-  sets.reset(static_cast<int>(runs.size()));
-  for (int j = 1; j < g.ny; ++j)
-    for (int a = row_start[j - 1], b = row_start[j]; a < row_start[j] && b < row_start[j + 1];) {
-      const Run &ra = runs[static_cast<std::size_t>(a)], &rb = runs[static_cast<std::size_t>(b)];
-      if (ra.i1 + 1 >= rb.i0 && rb.i1 + 1 >= ra.i0) sets.unite(a, b);  // touching, diagonally included
-      (ra.i1 < rb.i1 ? a : b) += 1;
-    }
-  struct Extent {
-    int i0 = 1 << 30, i1 = -1, j0 = 1 << 30, j1 = -1;
-    double count = 0;
-  };
-  std::vector<int> region(runs.size(), -1);
-  std::vector<Extent> ext;
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    int& id = region[static_cast<std::size_t>(sets.find(static_cast<int>(r)))];
-    if (id < 0) id = static_cast<int>(ext.size()), ext.emplace_back();
-    const Run& run = runs[r];
-    Extent& e = ext[static_cast<std::size_t>(id)];
-    e.i0 = std::min(e.i0, run.i0), e.i1 = std::max(e.i1, run.i1), e.j0 = std::min(e.j0, run.j), e.j1 = std::max(e.j1, run.j);
-    e.count += run.i1 - run.i0 + 1;
-    std::fill(label.begin() + g.index(run.i0, run.j), label.begin() + g.index(run.i1, run.j) + 1, id);
-  }
   std::vector<Flexibilities> L;
-  for (const Extent& e : ext) {
-    const double aspect = ((e.i1 - e.i0 + 1) * g.dx) / ((e.j1 - e.j0 + 1) * g.dy), area = e.count * g.element_area();
-    L.push_back(kalker_flexibilities(std::sqrt(area * aspect / std::numbers::pi),
-                                     std::sqrt(area / (std::numbers::pi * aspect)), m));
-  }
+  for (const EquivalentEllipse& e : equivalent_ellipses(g, p, label)) L.push_back(kalker_flexibilities(e.a, e.b, m));
   return L;
 }
 

@@ -27,6 +27,19 @@ void check_case(double y, double yaw, const RigidOptions& o) {
     fail("rigid contact: roll = {} rad must be finite and within +-0.1 rad", o.roll);
   if (!(o.two_point_tolerance >= 0) || !(o.two_point_tolerance <= 1e-3))
     fail("rigid contact: two_point_tolerance = {} m must lie in [0, 1e-3]", o.two_point_tolerance);
+  if (!std::isfinite(o.hertz_load) || !(o.hertz_load > 0))
+    fail("rigid contact: hertz_load = {} N must be a positive number", o.hertz_load);
+  if (o.material) halfspace::validate(*o.material, "rigid contact");
+}
+
+// Every contact point's Hertz ellipse and Kalker's coefficients for the options' load and material.
+void add_ellipses(const RigidOptions& o, RigidResult& res) {
+  if (!o.material) return;
+  for (RigidWheel& w : res.wheel)
+    for (RigidContactPoint& c : w.contacts)
+      c.ellipses = halfspace::hertz_ellipses(
+          halfspace::wheel_rail_curvature(c.rolling_radius, c.angle, c.wheel_curvature, c.rail_curvature),
+          o.hertz_load, *o.material);
 }
 
 // The wheel radius at Y and its slope dR/dY, with a cone index that walks along as the rail lines are visited in
@@ -267,13 +280,6 @@ std::vector<int> gap_minima(const std::vector<double>& o, double tol) {
   return kept;
 }
 
-// Rail profile coordinates (its own frame as given) of a track-frame point of the placed rail.
-Eigen::Vector2d rail_profile_point(const SidePlacement& pl, double y, double z) {
-  const double yc = pl.sign * y - pl.rail_dy, zc = z - pl.rail_dz;
-  const double c = std::cos(pl.cant_angle), s = std::sin(pl.cant_angle);
-  return {c * yc + s * zc, -s * yc + c * zc};
-}
-
 // Contact point at line r, located between the lines by the parabola through the overlaps of r and its neighbours.
 RigidContactPoint make_contact(const GeometryModel& g, int side, const PoseFrame& f, const std::vector<double>& o,
                                const std::vector<double>& xs, int r) {
@@ -295,13 +301,11 @@ RigidContactPoint make_contact(const GeometryModel& g, int side, const PoseFrame
   c.rolling_radius = wheel_radius_at(sg.wheel, c.wheel_point.y());
   c.normal = wheel_inward_normal(sg.wheel, f, c.point);
   c.angle = contact_angle(side, c.normal);
-  const SidePlacement& pl = g.track->place[side];
-  c.wheel_profile = {pl.sign * c.wheel_point.y() - pl.tape_y, pl.radius - c.rolling_radius};
-  c.rail_profile = rail_profile_point(pl, c.point.y(), c.point.z());
-  if (sg.wheel_curve)
-    c.wheel_curvature = surface_curvature(*sg.wheel_curve, ProfileKind::wheel, sg.wheel_curve->param_at_y(c.wheel_profile.x()));
-  if (sg.rail_curve)
-    c.rail_curvature = surface_curvature(*sg.rail_curve, ProfileKind::rail, sg.rail_curve->closest(c.rail_profile));
+  const ProfilePoint pp = profile_point(g, side, c.point, c.wheel_point.y(), c.rolling_radius);
+  c.wheel_profile = pp.wheel;
+  c.rail_profile = pp.rail;
+  c.wheel_curvature = pp.wheel_curvature;
+  c.rail_curvature = pp.rail_curvature;
   return c;
 }
 
@@ -481,6 +485,7 @@ RigidResult solve_rigid(const GeometryModel& g, double y, double yaw, const Rigi
     if (o.roll_mode == RollMode::free) solve_free(g, y, yaw, o, res);
     else solve_fixed(g, y, yaw, o, res);
     flag_flange_climb(g, res);
+    add_ellipses(o, res);
   } catch (const Error& e) {
     res.converged = false;
     res.message = e.what();
@@ -509,6 +514,8 @@ RigidOptions read_rigid_options(OptionReader& r, RigidOptions o) {
     }
   }
   o.Q = r.number("Q", {"N", "the load the normal forces carry (roll free)"}, o.Q);
+  o.hertz_load = r.number("hertz_load", {"N", "the normal load of every contact point's Hertz ellipse (hertz, kalker)"},
+                          o.hertz_load);
   o.two_point_tolerance = r.number("two_point_tolerance", {"m", "a second gap minimum this close to 0 is a contact"},
                                    o.two_point_tolerance);
   if (auto s = r.table("start", {"-", "a start {z, roll} of the iteration"})) {
@@ -542,6 +549,7 @@ void describe(const RigidContactPoint& c, FieldSink& out) {
     out.number("wheel_lateral_radius", 1 / c.wheel_curvature, {"m", "1 / wheel_curvature (only when not 0)"});
   if (c.rail_curvature != 0)
     out.number("rail_lateral_radius", 1 / c.rail_curvature, {"m", "1 / rail_curvature (only when not 0)"});
+  describe(c.ellipses, out);
 }
 
 namespace {

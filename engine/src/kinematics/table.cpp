@@ -98,6 +98,8 @@ GeometryTable run_geometry_table(const GeometryModel& g, const GeometryTableOpti
   t.yaw = o.yaw;
   t.roll_mode = o.rigid.roll_mode;
   t.roll = o.rigid.roll;
+  t.hertz_load = o.rigid.hertz_load;
+  t.material = o.rigid.material;
   const std::size_t n = o.y.size();
   t.rows.resize(n);
   // As many contiguous chunks as threads, each solved in order from a cold start: at least 16 rows a chunk, as
@@ -157,7 +159,8 @@ std::vector<std::string> csv_columns() {
     for (const char* k : {"lifted", "touch_z_mm", "gap_mm", "contacts", "wheel_y_mm", "wheel_z_mm", "rail_y_mm",
                           "rail_z_mm", "track_x_mm", "track_y_mm", "track_z_mm", "r_mm", "angle_deg",
                           "wheel_curvature_per_m", "rail_curvature_per_m", "wheel_radius_mm", "rail_radius_mm",
-                          "2_gap_mm", "2_wheel_y_mm", "2_rail_y_mm", "2_r_mm", "2_angle_deg"})
+                          "hertz_a_mm", "hertz_b_mm", "hertz_p0_MPa", "C11", "C22", "C23", "C33", "2_gap_mm",
+                          "2_wheel_y_mm", "2_rail_y_mm", "2_r_mm", "2_angle_deg"})
       c.push_back(fmt::format("{}_{}", s, k));
   }
   return c;
@@ -175,6 +178,10 @@ void csv_wheel(const RigidWheel& w, std::vector<std::string>& row) {
     row.push_back(cell(v, on));
   row.push_back(cell(on && c.wheel_curvature != 0 ? 1e3 / c.wheel_curvature : 0, on && c.wheel_curvature != 0));
   row.push_back(cell(on && c.rail_curvature != 0 ? 1e3 / c.rail_curvature : 0, on && c.rail_curvature != 0));
+  const auto& h = c.ellipses.hertz;
+  for (double v : {h ? h->a * 1e3 : 0, h ? h->b * 1e3 : 0, h ? h->p0 * 1e-6 : 0}) row.push_back(cell(v, on && h));
+  const halfspace::CreepCoefficients k = c.ellipses.kalker.value_or(halfspace::CreepCoefficients{});
+  for (double v : {k.c11, k.c22, k.c23, k.c33}) row.push_back(cell(v, on && c.ellipses.kalker));
   const bool two = on && w.contacts.size() > 1;
   const RigidContactPoint d = two ? w.contacts[1] : RigidContactPoint{};
   for (double v : {d.gap * 1e3, d.wheel_profile.x() * 1e3, d.rail_profile.x() * 1e3, d.rolling_radius * 1e3, d.angle * kDeg})
@@ -210,7 +217,7 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
   const Track& tr = *g.track;
   const TrackParams& p = tr.params;
   std::string h;
-  h += "# wrc rigid contact geometry table, format 1\n";
+  h += "# wrc rigid contact geometry table, format 2\n";
   h += fmt::format("# wheel: {} ({}), rail: {} ({})\n", tr.wheel[kLeft].name, tr.wheel[kLeft].source, tr.rail[kLeft].name,
                    tr.rail[kLeft].source);
   if (tr.wheel[kRight].source != tr.wheel[kLeft].source || tr.rail[kRight].source != tr.rail[kLeft].source)
@@ -222,6 +229,11 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
                    t.roll_mode == RollMode::free ? std::string("free (both wheels on their rails)")
                                                  : fmt::format("fixed at {} rad (each wheel on its own rail)", t.roll),
                    t.yaw, t.rows.size());
+  if (t.material)
+    h += fmt::format("# Hertz ellipses for a normal load of {} N per contact point (hertz_load), E = {} Pa, nu = {}\n",
+                     t.hertz_load, t.material->E, t.material->nu);
+  else
+    h += "# no material given: no Hertz ellipses (their columns 0)\n";
   h += "# units SI (m, rad, 1/m). Track frame: x along the track, z up, +y toward the LEFT rail. Profile coordinates\n"
        "# are those of the profiles as loaded (wheel: s from the tape circle, + toward the field side; rail: y + toward\n"
        "# the field side, z up). Contact angle > 0 toward the track centre on both wheels. Curvature > 0 convex.\n";
@@ -236,11 +248,18 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
       "kwL    lateral curvature of the left wheel profile there (1/m)", "kwR    the same, right wheel (1/m)",
       "krL    lateral curvature of the left rail profile there (1/m)", "krR    the same, right rail (1/m)",
       "xL     longitudinal position of the left contact point (m; 0 at zero yaw)", "xR     the same, right (m)",
-      "nL     contact points of the left wheel (2: two-point contact)", "nR     the same, right wheel"};
+      "nL     contact points of the left wheel (2: two-point contact)", "nR     the same, right wheel",
+      "aL     Hertz semi-axis along the track, left touching point (m; 0: no Hertz ellipse, a concave pair)",
+      "aR     the same, right (m)", "bL     Hertz semi-axis across the track, left (m)", "bR     the same, right (m)",
+      "C11L   Kalker's coefficient C11 for the left ellipse's a/b and nu (-; 0 without an ellipse or nu < 0)",
+      "C11R   the same, right (-)",
+      "C22L   Kalker's C22, left (-)", "C22R   the same, right (-)", "C23L   Kalker's C23, left (-)",
+      "C23R   the same, right (-)", "C33L   Kalker's C33, left (-)", "C33R   the same, right (-)"};
   h += "# columns:\n";
   int k = 0;
   for (const char* c : columns) h += fmt::format("# {:2d} {}\n", ++k, c);
-  h += "# y z roll dr rL rR gL gR sL sR yrL yrR zrL zrR kwL kwR krL krR xL xR nL nR\n";
+  h += "# y z roll dr rL rR gL gR sL sR yrL yrR zrL zrR kwL kwR krL krR xL xR nL nR aL aR bL bR C11L C11R C22L C22R "
+       "C23L C23R C33L C33R\n";
   for (const RigidResult& r : t.rows) {
     const RigidContactPoint &L = r.wheel[kLeft].contacts[0], &R = r.wheel[kRight].contacts[0];
     std::vector<double> v{r.y, r.z, r.roll, r.rolling_radius_difference(), L.rolling_radius, R.rolling_radius,
@@ -252,7 +271,18 @@ void write_geometry_text(const GeometryTable& t, const GeometryModel& g, const s
       if (!std::isfinite(x)) fail("geometry table: a value is not finite at y = {} m", r.y);
       line += fmt::format("{: .12e} ", x);
     }
-    h += line + fmt::format("{} {}\n", r.wheel[kLeft].contacts.size(), r.wheel[kRight].contacts.size());
+    line += fmt::format("{} {}", r.wheel[kLeft].contacts.size(), r.wheel[kRight].contacts.size());
+    const auto ellipse = [](const RigidContactPoint& c, bool a) {
+      return c.ellipses.hertz ? (a ? c.ellipses.hertz->a : c.ellipses.hertz->b) : 0.0;
+    };
+    const halfspace::CreepCoefficients kL = L.ellipses.kalker.value_or(halfspace::CreepCoefficients{}),
+                                       kR = R.ellipses.kalker.value_or(halfspace::CreepCoefficients{});
+    for (double x : {ellipse(L, true), ellipse(R, true), ellipse(L, false), ellipse(R, false), kL.c11, kR.c11, kL.c22,
+                     kR.c22, kL.c23, kR.c23, kL.c33, kR.c33}) {
+      if (!std::isfinite(x)) fail("geometry table: a value is not finite at y = {} m", r.y);
+      line += fmt::format(" {: .12e}", x);
+    }
+    h += line + "\n";
   }
   write_file_atomic(path, h);
 }
@@ -317,6 +347,7 @@ void describe(const GeometryTable& t, FieldSink& out) {
   out.number("yaw", t.yaw, {"rad", "yaw of every row, > 0 counter-clockwise seen from above"});
   out.string("roll_mode", t.roll_mode == RollMode::free ? "free" : "fixed", {"", "free (roll solved) or fixed (held)"});
   out.number("roll", t.roll, {"rad", "the held roll (roll fixed)"});
+  out.number("hertz_load", t.hertz_load, {"N", "the normal load of the contact points' Hertz ellipses (hertz, kalker)"});
   out.number("seconds", t.seconds, {"s", "wall time"});
   out.integer("threads", t.threads, {"-", "worker threads used"});
   if (!t.threads_note.empty())

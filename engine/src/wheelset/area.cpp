@@ -4,7 +4,6 @@
 #include "warm_start.hpp"
 
 #include "wrc/core/error.hpp"
-#include "wrc/core/union_find.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
 #include <algorithm>
@@ -73,48 +72,38 @@ halfspace::NormalSolution solve_normal(const ContactModel& model, const AreaSolv
 
 }  // namespace
 
-// Separate contact regions of a solution: 8-connected components of {p > 0} carrying >= 0.1 % of the force. The
-// contact is cut into runs (maximal intervals of a row in contact); runs of neighbouring rows whose columns touch or
-// overlap diagonally are one region.
-int contact_regions(const halfspace::NormalSolution& sol) {
-  const halfspace::Grid& g = sol.grid;
-  if (sol.pressure.empty() || !(sol.force > 0)) return 0;
-  struct Run {
-    int i0, i1;    // columns
-    double force;  // N
-  };
-  std::vector<Run> runs;
-  std::vector<std::size_t> row_start(static_cast<std::size_t>(g.ny) + 1, 0);
-  const double dA = g.element_area();
-  for (int j = 0; j < g.ny; ++j) {
-    row_start[static_cast<std::size_t>(j)] = runs.size();
-    const double* p = sol.pressure.data() + static_cast<std::size_t>(g.index(0, j));
-    for (int i = 0; i < g.nx;) {
-      if (!(p[i] > 0)) {
-        ++i;
-        continue;
-      }
-      Run r{i, i, 0.0};
-      for (; i < g.nx && p[i] > 0; ++i) r.force += p[i] * dA;
-      r.i1 = i - 1;
-      runs.push_back(r);
-    }
+namespace {
+
+// The contact regions of a solution carrying >= 0.1 % of its force, and FASTSIM's ellipse of the one carrying the
+// most (halfspace/ellipse.hpp): one pass over the contact.
+struct Regions {
+  int count = 0;
+  std::optional<halfspace::EquivalentEllipse> largest;
+};
+Regions find_regions(const halfspace::NormalSolution& sol) {
+  Regions r;
+  if (sol.pressure.empty() || !(sol.force > 0)) return r;
+  std::vector<int> label;
+  for (const halfspace::EquivalentEllipse& e : halfspace::equivalent_ellipses(sol.grid, sol.pressure, label)) {
+    r.count += e.force >= 1e-3 * sol.force;
+    if (!r.largest || e.force > r.largest->force) r.largest = e;
   }
-  row_start[static_cast<std::size_t>(g.ny)] = runs.size();
-  UnionFind sets;
-  sets.reset(static_cast<int>(runs.size()));
-  for (std::size_t j = 1; j < static_cast<std::size_t>(g.ny); ++j)
-    for (std::size_t a = row_start[j - 1]; a < row_start[j]; ++a)
-      for (std::size_t b = row_start[j]; b < row_start[j + 1]; ++b)
-        if (runs[b].i0 <= runs[a].i1 + 1 && runs[b].i1 >= runs[a].i0 - 1)
-          sets.unite(static_cast<int>(a), static_cast<int>(b));
-  std::vector<double> force(runs.size(), 0.0);
-  const auto root = [&](std::size_t r) { return static_cast<std::size_t>(sets.find(static_cast<int>(r))); };
-  for (std::size_t r = 0; r < runs.size(); ++r) force[root(r)] += runs[r].force;
-  int regions = 0;
-  for (std::size_t r = 0; r < runs.size(); ++r) regions += root(r) == r && force[r] >= 1e-3 * sol.force;
-  return regions;
+  return r;
 }
+
+}  // namespace
+
+int contact_regions(const halfspace::NormalSolution& sol) { return find_regions(sol).count; }
+
+namespace {
+// The area's contact ellipses (PatchContact::ellipses) at its centre of pressure.
+void add_ellipses(const ContactModel& model, double wheel_y, PatchContact& pc) {
+  const ProfilePoint pp = profile_point(model.geometry(), pc.side, pc.point, wheel_y, pc.rolling_radius);
+  pc.ellipses = halfspace::hertz_ellipses(
+      halfspace::wheel_rail_curvature(pc.rolling_radius, pc.angle, pp.wheel_curvature, pp.rail_curvature),
+      pc.normal_force, model.material());
+}
+}  // namespace
 
 PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorkspace& ws,
                         std::vector<ContactWorkspace::Previous>& next_previous) {
@@ -136,8 +125,12 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
     copy_located(in, pc);
     surface.resultant(f, pc);
     pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
-    pc.regions = contact_regions(pc.solution);
-    pc.rolling_radius = wheel_surface_at(in.model.geometry().side[in.side].wheel, f.to_wheelset(pc.point).y()).radius;
+    const Regions regions = find_regions(pc.solution);
+    pc.regions = regions.count;
+    const double wheel_y = f.to_wheelset(pc.point).y();
+    pc.rolling_radius = wheel_surface_at(in.model.geometry().side[in.side].wheel, wheel_y).radius;
+    add_ellipses(in.model, wheel_y, pc);
+    pc.ellipses.ellipse = regions.largest;
     ++ws.times.areas;
     ws.times.elements += layout.grid.size();
     ws.times.iterations += pc.solution.iterations + pc.solution.coarse_iterations;

@@ -381,6 +381,7 @@ void describe(const PatchContact& pc, FieldSink& out) {
   out.number("penetration", pc.penetration, {"m", "deepest undeformed inter-penetration of the area (max h)"});
   out.number("rolling_radius", pc.rolling_radius, {"m", "wheel radius at the centre of pressure"});
   out.number("nu", pc.nu, {"-", "Poisson's ratio of the bodies: what the stresses below the area take (p:subsurface)"});
+  describe(pc.ellipses, out);
   out.integer("iterations", s.iterations, {"-", "iterations of the normal solver (CG, or active set for the dense one)"});
   out.number("complementarity", s.residual.relative,
              {"-", "relative residual of the normal solution: max |gap| in contact or max overlap outside / max(h + approach)"});

@@ -157,6 +157,19 @@ struct SideDiscretisation {
 GeometryModel build_geometry(std::shared_ptr<const Track> track, const std::array<SideDiscretisation, 2>& sides,
                              StrategyInfo strategy = {});
 
+// A contact point of one side in the profiles' own frames (as loaded, before placement) and the lateral curvature of
+// the profiles there (1/m, > 0 convex, from their smooth curves; 0 without one): what rigid contact points report
+// and the Hertz ellipse of a contact needs.
+struct ProfilePoint {
+  Eigen::Vector2d wheel = Eigen::Vector2d::Zero();  // (s from the tape circle, z) on the wheel profile (m)
+  Eigen::Vector2d rail = Eigen::Vector2d::Zero();   // (y, z) on the rail profile (m)
+  double wheel_curvature = 0, rail_curvature = 0;   // 1/m
+};
+// `point`: the contact point (track frame), `wheel_y`: its lateral coordinate in the wheelset frame, `radius`: the
+// wheel's radius there (m).
+ProfilePoint profile_point(const GeometryModel& geometry, int side, const Eigen::Vector3d& point, double wheel_y,
+                           double radius);
+
 // ---- profile operations used by discretisation strategies (profile frame, metres) ----
 
 // Constant-slope resampling (paper Section 2, item 2): a subset of the profile's points such that the turning

@@ -24,6 +24,7 @@
 #include "wrc/geometry/cone_line.hpp"
 #include "wrc/geometry/flange.hpp"
 #include "wrc/geometry/model.hpp"
+#include "wrc/halfspace/ellipse.hpp"
 
 #include <Eigen/Core>
 
@@ -37,10 +38,18 @@ namespace wrc {
 
 enum class RollMode { free, fixed };
 
+// The normal load per contact point that the Hertz ellipse and Kalker's coefficients of rigid results assume (N):
+// half the default Q, a wheel's static load.
+inline constexpr double kHertzLoad = 100e3;
+
 struct RigidOptions {
   RollMode roll_mode = RollMode::free;
   double roll = 0;                    // rad: the roll held with RollMode::fixed
   double Q = 200e3;                   // N: the load the normal forces carry (roll free)
+  double hertz_load = kHertzLoad;     // N: the load of every contact point's Hertz ellipse
+  // The pair's material (the wheelset's; the call layer sets it): with it every contact point gets its Hertz
+  // ellipse and Kalker's coefficients; without, none.
+  std::optional<halfspace::Material> material;
   double two_point_tolerance = 1e-6;  // m: a second separate minimum of the gap this close to zero is a contact
   // A start (z, roll) for the iteration, e.g. from the neighbouring row of a table (continuation).
   std::optional<Eigen::Vector2d> start;
@@ -59,6 +68,9 @@ struct RigidContactPoint {
   Eigen::Vector2d rail_profile = Eigen::Vector2d::Zero();   // (y, z) on the rail profile as loaded (m)
   // Lateral curvature of the profiles there (1/m; > 0 convex, < 0 concave: Hertz's sign), from their smooth curves.
   double wheel_curvature = 0, rail_curvature = 0;
+  // Hertz's ellipse for RigidOptions::hertz_load and the curvatures above (halfspace/ellipse.hpp; a along the track)
+  // and Kalker's coefficients for it, when RigidOptions::material is set and both relative curvatures are convex.
+  halfspace::ContactEllipses ellipses;
 };
 
 // Rigid contact of one wheel. point .. rolling_radius describe the deepest rail line itself (the reference of the
@@ -125,14 +137,15 @@ double touch_roll_reach(const GeometryModel& geometry);
 double touch_height(const GeometryModel& geometry, int side, double y, double yaw, double roll, std::string_view context);
 
 // Options as Lua and the C API give them: roll ("free", "fixed" or a number: fixed at that roll, rad), Q,
-// two_point_tolerance, start = {z =, roll =}.
+// hertz_load, two_point_tolerance, start = {z =, roll =}.
 RigidOptions read_rigid_options(OptionReader& options, RigidOptions base = {});
 
 // converged, tension, flange_climb (and flange_climb_reason when true), error, roll_mode, y, yaw, Q, z, roll, rolling_radius_difference (when both wheels touch),
 // Y, My, Mz, Y_Q (roll free), left/right = {lifted, flange_climb (flange_climb_reason), z, gap, two_point, point, normal, angle, rolling_radius,
 // normal_force (roll free), overlap, line, contacts = {{gap, line, point, wheel_point, normal, angle,
 // rolling_radius, wheel_profile = {y, z}, rail_profile = {y, z}, wheel_curvature, rail_curvature,
-// wheel_lateral_radius, rail_lateral_radius (1 / curvature, when not zero)}, ...}} (docs/guide/geometry.md).
+// wheel_lateral_radius, rail_lateral_radius (1 / curvature, when not zero), hertz, kalker (halfspace/ellipse.hpp)},
+// ...}} (docs/guide/geometry.md).
 void describe(const RigidResult& result, FieldSink& out);
 void describe(const RigidContactPoint& contact, FieldSink& out);
 

@@ -40,6 +40,8 @@ struct GeometryTable {
   double yaw = 0;
   RollMode roll_mode = RollMode::free;
   double roll = 0;                   // the held roll (roll fixed)
+  double hertz_load = kHertzLoad;    // N: the load of the contact points' Hertz ellipses (RigidOptions)
+  std::optional<halfspace::Material> material;  // the material they assume (none: no ellipses)
   std::vector<RigidResult> rows;     // one per y, in order
   std::vector<ContactJump> jumps;    // by y, then side
   double seconds = 0;

@@ -27,6 +27,7 @@
 // (wheelset/conformal.hpp); location, merging, solvers and results are shared.
 #pragma once
 
+#include "wrc/halfspace/ellipse.hpp"
 #include "wrc/halfspace/normal.hpp"
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/fields.hpp"
@@ -111,6 +112,10 @@ struct PatchContact {
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
                                        // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
                                        // inter-penetration area holds
+  // What multibody tables carry (halfspace/ellipse.hpp): FASTSIM's equivalent ellipse of the region carrying the most
+  // force; Hertz's ellipse for normal_force and the curvatures at the centre of pressure (the wheel's rolling radius
+  // and profile curvature, the rail's profile curvature) with Kalker's coefficients for it, when both are convex.
+  halfspace::ContactEllipses ellipses;
   Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll) of the normal problem, when asked for
   std::optional<PatchRolling> rolling;  // the tangential solution, when the call gave kinematics or creepages
   double nu = 0;                        // Poisson's ratio of the bodies (the model's material): what the stresses
@@ -274,7 +279,7 @@ inline constexpr const char* kPatchType = "wrc.Patch";
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
 // flange_climb_reason when true), force, moment, angle and rolling_radius (absent when lifted), patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
 // force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
-// iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
+// ellipse, hertz, kalker, iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
 // also its fields (wheelset/tangential.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
 void describe(const PatchContact& area, FieldSink& out);
 void describe(const WheelContact& wheel, FieldSink& out);

@@ -1,0 +1,206 @@
+// Hertz's ellipse, FASTSIM's equivalent ellipses and Kalker's coefficients of a contact (ellipse.hpp).
+#include "wrc/halfspace/ellipse.hpp"
+
+#include "wrc/core/error.hpp"
+#include "wrc/core/union_find.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace wrc::halfspace {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// K and K - E, the complete elliptic integrals of modulus e = sqrt(1 - kp^2), by the arithmetic-geometric mean:
+// K = pi / (2 M(1, kp)), K - E = K sum_n 2^(n-1) c_n^2 with c_0 = e (K - E kept as a sum: no cancellation as e -> 0).
+struct Elliptic {
+  double K, K_minus_E;
+};
+Elliptic elliptic(double kp) {
+  double a = 1, g = kp, c2 = (1 - kp) * (1 + kp), weight = 0.5, sum = 0.5 * c2;
+  for (int n = 0; n < 40 && c2 > 1e-30 * a * a; ++n) {  // quadratic convergence: ~6 steps; a cap against rounding
+    const double c = 0.5 * (a - g);
+    const double an = 0.5 * (a + g);
+    g = std::sqrt(a * g);
+    a = an;
+    c2 = c * c;
+    weight *= 2;
+    sum += weight * c2;
+  }
+  const double K = pi / (2 * a);
+  return {K, K * sum};
+}
+
+// Hertz's shape: the ratio of the larger to the smaller relative curvature as a function of kp = minor / major
+// semi-axis, (E / kp^2 - K) / (K - E); it falls from infinity at kp -> 0 to 1 at kp = 1.
+double curvature_ratio(double kp) {
+  const Elliptic f = elliptic(kp);
+  const double E = f.K - f.K_minus_E;
+  return (E / (kp * kp) - f.K) / f.K_minus_E;
+}
+
+// kp for the curvature ratio q > 1. ln(ratio) is nearly linear in ln kp (ratio ~ kp^-1.5 for small kp): secant steps
+// in ln kp from Greenwood's kp ~ q^(-2/3), kept inside a bracket that each step narrows (bisection when a step would
+// leave it); 4-6 evaluations.
+double axis_ratio(double q) {
+  const double target = std::log(q);
+  const auto f = [&](double x) { return std::log(curvature_ratio(std::exp(x))) - target; };  // decreasing in x
+  double lo = std::log(1e-12), hi = 0;
+  const auto narrow = [&](double x, double fx) { (fx > 0 ? lo : hi) = x; };  // the root lies above x where f > 0
+  double x0 = std::clamp(-2.0 / 3.0 * target, lo, -1e-9), f0 = f(x0);
+  narrow(x0, f0);
+  double x1 = 0.5 * (x0 + (f0 > 0 ? hi : lo)), f1 = f(x1);
+  for (int it = 0; it < 100 && f1 != 0 && hi - lo > 1e-14; ++it) {
+    narrow(x1, f1);
+    double next = f1 != f0 ? x1 - f1 * (x1 - x0) / (f1 - f0) : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - x1) < 1e-15) break;
+    x0 = x1, f0 = f1;
+    x1 = next, f1 = f(x1);
+  }
+  return std::exp(x1);
+}
+
+}  // namespace
+
+std::optional<HertzContact> hertz_contact(double kx, double ky, double force, const Material& m) {
+  if (!std::isfinite(kx) || !std::isfinite(ky) || !std::isfinite(force))
+    fail("hertz_contact: curvatures kx = {}, ky = {} 1/m and load {} N must be finite", kx, ky, force);
+  validate(m, "hertz_contact");
+  if (!(kx > 0) || !(ky > 0) || !(force > 0)) return std::nullopt;
+  const double Es = m.combined_modulus(), kmin = std::min(kx, ky), q = std::max(kx, ky) / kmin;
+  HertzContact h;
+  h.kx = kx;
+  h.ky = ky;
+  h.force = force;
+  double major, minor;
+  if (q < 1 + 1e-12) {  // a circle: a^3 = 3 F R / (4 E*), R = 1 / k
+    major = minor = std::cbrt(3 * force / (4 * Es * kmin));
+    h.approach = major * major * kmin;
+  } else {
+    // Johnson (3.64 .. 3.66): the smaller curvature kmin / 2 = A along the major axis, A = 3 F (K - E) / (2 pi e^2
+    // major^3 E*); the approach p0 minor K / E*.
+    const double kp = axis_ratio(q), e2 = (1 - kp) * (1 + kp);
+    const Elliptic f = elliptic(kp);
+    major = std::cbrt(3 * force * f.K_minus_E / (pi * e2 * kmin * Es));
+    minor = kp * major;
+    h.approach = 3 * force / (2 * pi * major * minor) * minor * f.K / Es;
+  }
+  h.a = kx <= ky ? major : minor;
+  h.b = kx <= ky ? minor : major;
+  h.p0 = 3 * force / (2 * pi * h.a * h.b);
+  return h;
+}
+
+RelativeCurvature wheel_rail_curvature(double rolling_radius, double angle, double wheel_curvature,
+                                       double rail_curvature) {
+  return {std::cos(angle) / rolling_radius, wheel_curvature + rail_curvature};
+}
+
+std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& g, std::span<const double> p, std::vector<int>& label) {
+  label.assign(static_cast<std::size_t>(g.size()), -1);
+  struct Run {
+    int j, i0, i1;
+    double force;
+  };
+  std::vector<Run> runs;
+  std::vector<int> row_start(static_cast<std::size_t>(g.ny) + 1, 0);
+  for (int j = 0; j < g.ny; ++j) {
+    row_start[static_cast<std::size_t>(j)] = static_cast<int>(runs.size());
+    const double* row = p.data() + static_cast<std::size_t>(g.nx) * j;
+    for (int i = 0; i < g.nx;) {
+      if (!(row[i] > 0)) {
+        ++i;
+        continue;
+      }
+      const int start = i;
+      double sum = 0;
+      for (; i < g.nx && row[i] > 0; ++i) sum += row[i];
+      runs.push_back({j, start, i - 1, sum});
+    }
+  }
+  row_start[static_cast<std::size_t>(g.ny)] = static_cast<int>(runs.size());
+  UnionFind sets;
+  sets.reset(static_cast<int>(runs.size()));
+  for (int j = 1; j < g.ny; ++j)
+    for (int a = row_start[j - 1], b = row_start[j]; a < row_start[j] && b < row_start[j + 1];) {
+      const Run &ra = runs[static_cast<std::size_t>(a)], &rb = runs[static_cast<std::size_t>(b)];
+      if (ra.i1 + 1 >= rb.i0 && rb.i1 + 1 >= ra.i0) sets.unite(a, b);  // touching, diagonally included
+      (ra.i1 < rb.i1 ? a : b) += 1;
+    }
+  struct Extent {
+    int i0 = 1 << 30, i1 = -1, j0 = 1 << 30, j1 = -1;
+    double count = 0, force = 0;
+  };
+  std::vector<int> region(runs.size(), -1);
+  std::vector<Extent> ext;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    int& id = region[static_cast<std::size_t>(sets.find(static_cast<int>(r)))];
+    if (id < 0) id = static_cast<int>(ext.size()), ext.emplace_back();
+    const Run& run = runs[r];
+    Extent& e = ext[static_cast<std::size_t>(id)];
+    e.i0 = std::min(e.i0, run.i0), e.i1 = std::max(e.i1, run.i1), e.j0 = std::min(e.j0, run.j), e.j1 = std::max(e.j1, run.j);
+    e.count += run.i1 - run.i0 + 1;
+    e.force += run.force;
+    std::fill(label.begin() + g.index(run.i0, run.j), label.begin() + g.index(run.i1, run.j) + 1, id);
+  }
+  std::vector<EquivalentEllipse> out;
+  out.reserve(ext.size());
+  const double dA = g.element_area();
+  for (const Extent& e : ext) {
+    const double aspect = ((e.i1 - e.i0 + 1) * g.dx) / ((e.j1 - e.j0 + 1) * g.dy), area = e.count * dA;
+    out.push_back({std::sqrt(area * aspect / pi), std::sqrt(area / (pi * aspect)), e.force * dA});
+  }
+  return out;
+}
+
+ContactEllipses hertz_ellipses(const RelativeCurvature& k, double load, const Material& m) {
+  ContactEllipses e;
+  e.hertz = hertz_contact(k.kx, k.ky, load, m);
+  if (e.hertz && m.nu >= 0 && m.nu <= 0.5) e.kalker = kalker_coefficients(e.hertz->a / e.hertz->b, m.nu);
+  return e;
+}
+
+std::optional<EquivalentEllipse> fastsim_ellipse(const Grid& grid, std::span<const double> pressure) {
+  std::vector<int> label;
+  const std::vector<EquivalentEllipse> all = equivalent_ellipses(grid, pressure, label);
+  if (all.empty()) return std::nullopt;
+  return *std::max_element(all.begin(), all.end(),
+                           [](const EquivalentEllipse& x, const EquivalentEllipse& y) { return x.force < y.force; });
+}
+
+void describe(const ContactEllipses& e, FieldSink& out) {
+  if (e.ellipse) {
+    out.begin("ellipse", {"", "FASTSIM's equivalent ellipse of the region carrying the most force: length and width "
+                              "of the region (element edges included) give a/b, its area pi a b"});
+    out.number("a", e.ellipse->a, {"m", "semi-axis along the rolling direction (grid x)"});
+    out.number("b", e.ellipse->b, {"m", "semi-axis across it (grid y)"});
+    out.end();
+  }
+  if (!e.hertz) return;
+  const HertzContact& h = *e.hertz;
+  out.begin("hertz", {"", "Hertz's ellipse from the relative curvatures at the point and the load (only where both "
+                          "curvatures are convex)"});
+  out.number("a", h.a, {"m", "semi-axis along the track (rolling direction)"});
+  out.number("b", h.b, {"m", "semi-axis across the track"});
+  out.number("p0", h.p0, {"Pa", "peak pressure 3 load / (2 pi a b)"});
+  out.number("approach", h.approach, {"m", "approach of the two bodies"});
+  out.number("load", h.force, {"N", "the normal load assumed"});
+  out.number("kx", h.kx, {"1/m", "relative curvature along the track: cos(angle) / rolling radius"});
+  out.number("ky", h.ky, {"1/m", "relative curvature across it: wheel + rail profile curvature (> 0 convex)"});
+  out.end();
+  if (!e.kalker) return;
+  const CreepCoefficients& k = *e.kalker;
+  out.begin("kalker",
+            {"", "Kalker's creep coefficients for hertz's a/b and the material's nu (creep.hpp; only for nu in 0 .. 0.5)"});
+  out.number("C11", k.c11, {"-", "longitudinal: Fx = -G a b C11 xi"});
+  out.number("C22", k.c22, {"-", "lateral: Fy = -G a b C22 eta - G (a b)^1.5 C23 phi"});
+  out.number("C23", k.c23, {"-", "lateral-spin coupling"});
+  out.number("C33", k.c33, {"-", "spin: Mz = G (a b)^1.5 C23 eta - G (a b)^2 C33 phi"});
+  out.boolean("tabulated", k.tabulated, {"", "a/b within Kalker's table (0.1 .. 10); else extrapolated"});
+  out.end();
+}
+
+}  // namespace wrc::halfspace
