@@ -44,24 +44,6 @@ double Friction::at(double w) const {
   return mu;
 }
 
-double Friction::slope(double w) const {
-  double d = 0;
-  for (int i = 0; i < 2; ++i) {
-    const double m = term[static_cast<std::size_t>(i)], s = velocity[static_cast<std::size_t>(i)], r = w / s;
-    if (m == 0) continue;
-    switch (law) {
-      case FrictionLaw::coulomb: break;
-      case FrictionLaw::linear: d -= r < 2 ? 0.5 * m / s : 0.0; break;
-      case FrictionLaw::rational:
-        d -= i == 0 ? m / (s * (1 + r) * (1 + r)) : 2 * m * r / (s * (1 + r * r) * (1 + r * r));
-        break;
-      case FrictionLaw::polach:
-      case FrictionLaw::exponential: d -= m * std::numbers::ln2 / s * std::exp(-std::numbers::ln2 * r); break;
-    }
-  }
-  return d;
-}
-
 const char* law_name(FrictionLaw law) {
   switch (law) {
     case FrictionLaw::coulomb: return "coulomb";

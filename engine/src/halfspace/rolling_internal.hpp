@@ -29,11 +29,8 @@ struct Level {
   double speed = 0;             // |V| (m/s), with a slip-dependent law
   std::vector<double> gp;       // a slip-dependent law: p_n times the law's factor (Pa), the bound being mu(w) gp
   bool falling() const { return friction.slip_dependent(); }
-  // A slip element's bound at slip s per |V| and its derivative with respect to |s| (Pa).
+  // A slip element's bound at slip s per |V| (Pa).
   double bound(int k, double s) const { return friction.at(speed * s) * gp[static_cast<std::size_t>(k)]; }
-  double bound_slope(int k, double s) const {
-    return friction.slope(speed * s) * speed * gp[static_cast<std::size_t>(k)];
-  }
   std::vector<double> wx, wy;   // rigid slip per |V| of the contact elements
   double scale = 0;             // max |w| over the contact
   int size() const { return static_cast<int>(cell.size()); }
@@ -50,6 +47,7 @@ struct LevelState {
   std::vector<unsigned char> state;  // kAdhesion or kSlip
   int iterations = 0, linear = 0, products = 0, coarse_linear = 0;
   std::vector<double> slip;  // after newton: the slip per |V| of these tractions (x, y per element), its last product
+  std::vector<double> bound;  // a slip-dependent law: each slip element's bound at its last slip (Pa)
   double residual = 0;
 };
 

@@ -10,13 +10,15 @@
 //   slip:      t . (M dp)_k + c_k t . dp_k = -t . s_k,  e . dp_k = g_k - |p_k|,   c_k = -(e . s_k) / |p_k| >= 0.
 // After each step the slip tractions are put back on the bound, and the split is updated: adhesion elements whose
 // traction exceeds mu_s p_n start to slip; slip elements whose slip runs along their traction (e . s > 0) adhere.
-// Friction falling with the slip velocity: the bound g_k = mu(|V| sigma_k) p_n of the slip magnitude sigma_k = -e . s_k
-// (per |V|) makes the bound equation e . dp_k + g'_k e . (M dp)_k = g_k - |p_k| (g' = dg / dsigma <= 0; the turn of
-// e is left out, as it vanishes at the solution); the step's magnitude is kept within mu_inf .. mu(0) p_n (no slip
-// is known yet to put it back on a bound) and the bound's residual joins the convergence measure, in slip units
-// (times M's diagonal). Its local
-// block 1 + g' K stays positive while |d mu / dw| |V| p_n is below about G: the friction falling faster would make
-// the steady problem lose uniqueness element by element (docs/guide/rolling.md).
+// Friction falling with the slip velocity: the bound g_k = mu(|V| sigma_k) p_n of a slip element depends on its slip
+// magnitude sigma_k = -e . s_k (per |V|). It is taken at the slip of the last iterate (a fixed point on the bounds
+// inside the Newton iteration on the split), and its change joins the convergence measure, in slip units (times M's
+// diagonal). Why not Newton on it too (the bound equation e . dp + g' e . (M dp) = g - |p|): measured on S1002/60E1,
+// that cycled between adhesion and slip at leading-edge elements, where the element's own elastic slip K g is as
+// large as the rigid slip and a steep law makes 1 + g' K small or negative, in cases the fixed point solves in 2-9
+// iterations. Where the law falls steeply enough (|d mu / dw| |V| beyond about 12, e.g. Polach's B = 3 s/m at 30
+// m/s) the discrete problem has several solutions at those elements and neither converges: the solve fails with
+// its message (docs/guide/rolling.md).
 //
 // Why this preconditioner (measured on Hertzian patches of 300 to 2,500 elements, partial slip): a sweep from the
 // leading edge with each element's own and upstream coupling needed 15-19 GMRES iterations per Newton step, growing
@@ -103,17 +105,14 @@ class Linearisation {
   Linearisation(const Level& level, SlipOperator& op, const LocalBlocks& K, const LevelState& st,
                 const std::vector<double>& s)
       : L_(level), op_(op), K_(K), st_(st), c_(static_cast<std::size_t>(level.size()), 0.0),
-        ex_(c_.size(), 0.0), ey_(c_.size(), 0.0), mag_(c_.size(), 0.0), g_(L_.falling() ? c_.size() : 0, 0.0),
-        dg_(g_.size(), 0.0) {
+        ex_(c_.size(), 0.0), ey_(c_.size(), 0.0), mag_(c_.size(), 0.0) {
     for (int k = 0; k < L_.size(); ++k) {
       const auto q = static_cast<std::size_t>(k);
       if (st_.state[q] != kSlip) continue;
       mag_[q] = std::sqrt(st_.px[q] * st_.px[q] + st_.py[q] * st_.py[q]);
       ex_[q] = st_.px[q] / mag_[q];
       ey_[q] = st_.py[q] / mag_[q];
-      const double sigma = std::max(0.0, -(ex_[q] * s[2 * k] + ey_[q] * s[2 * k + 1]));
-      c_[q] = sigma / mag_[q];
-      if (!g_.empty()) g_[q] = L_.bound(k, sigma), dg_[q] = L_.bound_slope(k, sigma);
+      c_[q] = std::max(0.0, -(ex_[q] * s[2 * k] + ey_[q] * s[2 * k + 1])) / mag_[q];
     }
   }
   // The right-hand side -F of the step (a slip traction off the bound is brought back to it).
@@ -122,7 +121,7 @@ class Linearisation {
       const auto q = static_cast<std::size_t>(k);
       if (st_.state[q] == kSlip) {
         b[2 * k] = -(-dir_y(k) * s[2 * k] + dir_x(k) * s[2 * k + 1]);
-        b[2 * k + 1] = kappa() * ((g_.empty() ? L_.gk[q] : g_[q]) - mag_[q]);
+        b[2 * k + 1] = kappa() * ((L_.falling() ? st_.bound[q] : L_.gk[q]) - mag_[q]);
       } else {
         b[2 * k] = -s[2 * k];
         b[2 * k + 1] = -s[2 * k + 1];
@@ -135,9 +134,8 @@ class Linearisation {
       if (st_.state[static_cast<std::size_t>(k)] != kSlip) continue;
       const double ex = dir_x(k), ey = dir_y(k), tx = -ey, ty = ex;
       const double mt = tx * out[2 * k] + ty * out[2 * k + 1];
-      const double me = g_.empty() ? 0.0 : dg_[static_cast<std::size_t>(k)] * (ex * out[2 * k] + ey * out[2 * k + 1]);
       out[2 * k] = mt + c_[static_cast<std::size_t>(k)] * (tx * v[2 * k] + ty * v[2 * k + 1]);
-      out[2 * k + 1] = kappa() * (ex * v[2 * k] + ey * v[2 * k + 1] + me);
+      out[2 * k + 1] = kappa() * (ex * v[2 * k] + ey * v[2 * k + 1]);
     }
   }
   // z = P r: adhesion runs by the row sum and B's circulant inverse, then the slip elements swept from upstream.
@@ -147,19 +145,14 @@ class Linearisation {
     for (int k = 0; k < L_.size(); ++k) {  // contact elements are in marching order: upstream ones come first
       if (st_.state[static_cast<std::size_t>(k)] != kSlip) continue;
       const double ex = dir_x(k), ey = dir_y(k), tx = -ey, ty = ex, c = c_[static_cast<std::size_t>(k)];
-      double r1 = r[2 * k], r2 = r[2 * k + 1];
-      const double dg = g_.empty() ? 0.0 : dg_[static_cast<std::size_t>(k)];
+      double r1 = r[2 * k];
       const int u = L_.up[static_cast<std::size_t>(k)];
-      if (u >= 0) {  // the upstream block is -K
-        r1 += tx * kx * z[2 * u] + ty * ky * z[2 * u + 1];
-        r2 += kappa() * dg * (ex * kx * z[2 * u] + ey * ky * z[2 * u + 1]);
-      }
-      // [tx kx + c tx, ty ky + c ty; kappa ex (1 + g' kx), kappa ey (1 + g' ky)] z_k = (r1, r2)
-      const double a11 = tx * (kx + c), a12 = ty * (ky + c), a21 = kappa() * ex * (1 + dg * kx),
-                   a22 = kappa() * ey * (1 + dg * ky);
+      if (u >= 0) r1 += tx * kx * z[2 * u] + ty * ky * z[2 * u + 1];  // the upstream block is -K
+      // [tx kx + c tx, ty ky + c ty; kappa ex, kappa ey] z_k = (r1, r2)
+      const double a11 = tx * (kx + c), a12 = ty * (ky + c), a21 = kappa() * ex, a22 = kappa() * ey;
       const double det = a11 * a22 - a12 * a21;
-      z[2 * k] = (a22 * r1 - a12 * r2) / det;
-      z[2 * k + 1] = (a11 * r2 - a21 * r1) / det;
+      z[2 * k] = (a22 * r1 - a12 * r[2 * k + 1]) / det;
+      z[2 * k + 1] = (a11 * r[2 * k + 1] - a21 * r1) / det;
     }
   }
 
@@ -204,7 +197,6 @@ class Linearisation {
   LocalBlocks K_;
   const LevelState& st_;
   std::vector<double> c_, ex_, ey_, mag_;
-  std::vector<double> g_, dg_;  // a slip-dependent law: the bound at the slip and its slope (slip elements)
 };
 
 double dot(const double* __restrict a, const double* __restrict b, std::size_t n) {
@@ -329,18 +321,28 @@ bool update_split(const Level& L, LevelState& st, const std::vector<double>& s) 
   return changed;
 }
 
-// Slip tractions back on the bound after a step (their direction from the step). A slip-dependent bound's magnitude
-// is the step's, kept within the law's range mu_inf .. mu(0) times p_n (an inexact step can miss a small element's
-// bound far: its equation weighs little in GMRES's norm).
+// Slip tractions back on the bound after a step (their direction from the step); a slip-dependent one on its bound
+// at the last slip.
 void renormalise(const Level& L, LevelState& st) {
   for (int k = 0; k < L.size(); ++k) {
     const auto q = static_cast<std::size_t>(k);
     if (st.state[q] != kSlip) continue;
     const double mag = std::sqrt(st.px[q] * st.px[q] + st.py[q] * st.py[q]);
     if (!(mag > 0)) continue;
-    const double to = L.falling() ? std::clamp(mag, L.friction.kinetic_coefficient * L.gp[q], L.gs[q]) : L.gk[q];
+    const double to = L.falling() ? st.bound[q] : L.gk[q];
     st.px[q] *= to / mag;
     st.py[q] *= to / mag;
+  }
+}
+
+// A slip-dependent law: each slip element's bound at its present slip.
+void update_bounds(const Level& L, LevelState& st, const std::vector<double>& s) {
+  if (!L.falling()) return;
+  for (int k = 0; k < L.size(); ++k) {
+    const auto q = static_cast<std::size_t>(k);
+    if (st.state[q] != kSlip) continue;
+    const double mag = std::hypot(st.px[q], st.py[q]);
+    if (mag > 0) st.bound[q] = L.bound(k, std::max(0.0, -(st.px[q] * s[2 * k] + st.py[q] * s[2 * k + 1]) / mag));
   }
 }
 
@@ -358,6 +360,8 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
   pack();
   op.slip(p.data(), s.data());
   bool changed = !settled || update_split(L, st, s), converged = false;
+  if (L.falling()) st.bound = L.gk;
+  update_bounds(L, st, s);
   for (int it = 0;; ++it) {
     const double err = residual_of(L, st, s, 0.5 * (K.kx + K.ky));
     st.residual = err;
@@ -380,6 +384,7 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
     pack();
     op.slip(p.data(), s.data());
     changed = update_split(L, st, s);
+    update_bounds(L, st, s);
   }
   st.products += op.products;
   st.slip = std::move(s);  // of the final tractions: the solution's slip needs no product of its own
