@@ -290,8 +290,8 @@ double residual_of(const Level& L, const LevelState& st, const std::vector<doubl
                                  st.py[static_cast<std::size_t>(k)] * st.py[static_cast<std::size_t>(k)]);
       err = std::max(err, std::abs(-st.py[static_cast<std::size_t>(k)] / g * sx + st.px[static_cast<std::size_t>(k)] / g * sy));
       if (L.falling()) {
-        const double sigma = std::max(0.0, -(st.px[static_cast<std::size_t>(k)] * sx + st.py[static_cast<std::size_t>(k)] * sy) / g);
-        err = std::max(err, kappa * std::abs(g - L.bound(k, sigma)));
+        const auto q = static_cast<std::size_t>(k);
+        err = std::max(err, kappa * std::abs(g - L.bound(k, std::max(0.0, -(st.px[q] * sx + st.py[q] * sy) / g))));
       }
     } else {
       err = std::max(err, std::sqrt(sx * sx + sy * sy));
