@@ -26,8 +26,6 @@ Friction Friction::falling(FrictionLaw law, double mu_inf, std::array<double, 2>
   return f;
 }
 
-double Friction::polach_B() const { return std::numbers::ln2 / velocity[0]; }
-
 double Friction::at(double w) const {
   double mu = kinetic_coefficient;
   for (int i = 0; i < 2; ++i) {

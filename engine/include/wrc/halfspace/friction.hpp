@@ -40,9 +40,6 @@ struct Friction {
   static Friction falling(FrictionLaw law, double mu_inf, std::array<double, 2> terms, std::array<double, 2> velocities);
   bool slip_dependent() const { return law != FrictionLaw::coulomb; }
   double at(double w) const;     // mu at the slip velocity w >= 0 (m/s); Coulomb: the kinetic coefficient
-  // Polach's parameters of a polach law: mu0, A, B (s/m).
-  double polach_A() const { return kinetic_coefficient / static_coefficient; }
-  double polach_B() const;
 };
 
 const char* law_name(FrictionLaw law);
