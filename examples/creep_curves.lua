@@ -5,12 +5,16 @@
 --     geometry gives the area at 100 km/h (omega . n / V), by the exact theory and by FASTSIM;
 --   - the traction, adhesion/slip map and frictional power density of the left area at y = 3 mm from the full
 --     kinematics: pure rolling at r0 (the larger rolling radius there gives the longitudinal creepage, the cone the
---     spin), each element with its own rigid slip.
+--     spin), each element with its own rigid slip;
+--   - Fx(xi) on the tread (y = 0) with friction falling with the slip velocity: Polach's law with the parameters of
+--     his dry and wet rails (friction = {preset = "polach_dry"}, "polach_wet"), exact and FASTSIM, against mu(V xi) N,
+--     the force of full sliding; the maximum of each curve.
 --
 --   wrc run examples/creep_curves.lua [out=results/creep] [grid_mm=0.2] [points=20] [plots=true]
 --
 -- Writes into `out`: creep_curves.csv (every point of the curves: y_mm, curve, creepage, F / (mu N) exact and
--- FASTSIM), curves_xi.png, curves_eta.png, curves_spin.png, traction.csv (the area's grids: x_mm, y_mm are the grid's
+-- FASTSIM), curves_xi.png, curves_eta.png, curves_spin.png, falling_friction.csv and .png (the curves with Polach's
+-- law), traction.csv (the area's grids: x_mm, y_mm are the grid's
 -- coordinates, on the default conformal area x along the track and s along the rail's profile), traction_*.png and
 -- summary.txt (the numbers of docs/guide/rolling.md "Rolling contact").
 local out = require "wrc.output"
@@ -89,6 +93,40 @@ note("curves: %d points, %.1f s CPU", #rows, os.clock() - t0)
 out.csv(dir .. "/creep_curves.csv",
         {"y_mm", "curve", "creepage_permille", "phi_per_m", "F_muN_exact", "F_muN_fastsim"}, rows)
 
+-- Falling friction: Fx(xi) on the tread at y = 0 up to xi = 5 % (slip velocities up to 1.4 m/s at 100 km/h), the
+-- points denser at small xi.
+local falling = {}
+do
+  local e = ws:equilibrium{y = 0, yaw = 0, Q = Q}
+  local laws = {{"polach_dry", 0.55, 0.40, 0.60}, {"polach_wet", 0.30, 0.40, 0.20}}  -- preset, mu0, A, B (s/m)
+  local frows = {}
+  for _, law in ipairs(laws) do
+    local name, mu0, A, B = law[1], law[2], law[3], law[4]
+    local cv = {name = name, c = {}, exact = {}, fastsim = {}, sliding = {}}
+    for k = 1, 2 * points do
+      local xi = 0.05 * (k / (2 * points)) ^ 2
+      local f = {}
+      for _, method in ipairs{"exact", "fastsim"} do
+        local a = ws:contact{y = 0, z = e.z, roll = e.roll, yaw = 0, grids = false, creepage = {xi = xi}, V = V,
+                             friction = {preset = name}, method = method}.left.patches[1]
+        f[method] = -a.Fx / a.normal_force
+      end
+      local sliding = mu0 * ((1 - A) * math.exp(-B * V * xi) + A)  -- mu(V xi): every element sliding at V xi
+      cv.c[k], cv.exact[k], cv.fastsim[k], cv.sliding[k] = xi * 1e3, f.exact, f.fastsim, sliding
+      frows[#frows + 1] = {law = name, xi_permille = xi * 1e3, F_N_exact = f.exact, F_N_fastsim = f.fastsim,
+                           mu_of_V_xi = sliding}
+    end
+    local top = 1
+    for k = 2, #cv.exact do if cv.exact[k] > cv.exact[top] then top = k end end
+    cv.top = top
+    note("falling friction %s (mu0 %.2f, A %.2f, B %.2f s/m), y = 0, 100 km/h: maximum -Fx / N = %.3f at xi = %.2f "
+         .. "permille (w = %.2f m/s), at 50 permille %.3f (exact; FASTSIM %.3f; mu(V xi) %.3f)", name, mu0, A, B,
+         cv.exact[top], cv.c[top], V * cv.c[top] * 1e-3, cv.exact[#cv.c], cv.fastsim[#cv.c], cv.sliding[#cv.c])
+    falling[#falling + 1] = cv
+  end
+  out.csv(dir .. "/falling_friction.csv", {"law", "xi_permille", "F_N_exact", "F_N_fastsim", "mu_of_V_xi"}, frows)
+end
+
 -- One area in detail: the left wheel at y = 3 mm, full kinematics.
 local y = 3e-3
 local e = ws:equilibrium{y = y, yaw = 0, Q = Q}
@@ -159,6 +197,23 @@ if plots then
   plot("curves_xi", {"xi"}, "-Fx / (mu N)", "S1002 / 60E1, 100 km/h, mu = 0.3: longitudinal creep force")
   plot("curves_eta", {"eta"}, "-Fy / (mu N)", "lateral creep force, no spin")
   plot("curves_spin", {"eta", "eta_spin"}, "-Fy / (mu N)", "lateral creep force, with the spin of the area at 100 km/h")
+  local series = {}
+  for i, cv in ipairs(falling) do
+    local colour = i == 1 and "#d62728" or "#1f6fb4"
+    local label = cv.name == "polach_dry" and "dry" or "wet"
+    series[#series + 1] = {x = cv.c, y = cv.exact, style = "lines lw 2 lc rgb '" .. colour .. "'",
+                           title = label .. ", exact"}
+    series[#series + 1] = {x = cv.c, y = cv.fastsim, style = "lines lw 2 dt 2 lc rgb '" .. colour .. "'",
+                           title = label .. ", FASTSIM"}
+    series[#series + 1] = {x = cv.c, y = cv.sliding, style = "lines lw 1 dt 3 lc rgb '" .. colour .. "'",
+                           title = label .. ": mu(V xi), full sliding"}
+    series[#series + 1] = {x = {cv.c[cv.top]}, y = {cv.exact[cv.top]}, style = "points pt 7 ps 1.5 lc rgb '" .. colour
+                           .. "'", title = string.format("%s: maximum %.3f at %.1f permille", label, cv.exact[cv.top],
+                                                         cv.c[cv.top])}
+  end
+  out.plot{file = dir .. "/falling_friction.png", series = series, ylabel = "-Fx / N",
+           xlabel = "longitudinal creepage xi (permille)", extra = {"set key right top", "set yrange [0:*]"},
+           title = "S1002 / 60E1 tread, 100 km/h: Polach's falling friction (Polach 2005, dry and wet rail)"}
   out.map{file = dir .. "/traction_magnitude.png", x = gx, y = gy, value = tmag, xlabel = xlab,
           ylabel = ylab, cblabel = "|p_t| (MPa)", title = "y = 3 mm, left area: tangential traction"}
   out.map{file = dir .. "/traction_utilisation.png", x = gx, y = gy, value = ratio, xlabel = xlab,

@@ -572,6 +572,41 @@ TEST_CASE("rolling contact through the C API: creep forces, grids and the option
   CHECK(last().find("mu_kinetic") != std::string::npos);
 }
 
+TEST_CASE("rolling contact through the C API: a falling friction law and a friction profile as option text") {
+  Fixture f;
+  wrc_result* c = nullptr;
+  // Full sliding at w = V xi = 1 m/s: |Fx| = mu(1 m/s) sum p dA, Polach's mu written out.
+  const double mu = 0.4 * (0.6 * std::exp(-0.6) + 0.4);
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0,
+                              "creepage.xi=0.05 V=20 friction.law=polach friction.mu0=0.4 friction.A=0.4 friction.B=0.6",
+                              &c) == WRC_OK, last());
+  std::size_t n = 0;
+  REQUIRE(wrc_result_count(c, "left.patches.1.pressure", &n) == WRC_OK);
+  std::vector<double> p(n);
+  REQUIRE(wrc_result_numbers(c, "left.patches.1.pressure", p.data(), p.size(), &n) == WRC_OK);
+  double N = 0;
+  for (double v : p) N += v;
+  N *= std::pow(number(c, "left.patches.1.grid.dx"), 2);
+  CHECK(-number(c, "left.patches.1.Fx") == within_rel(mu * N, 0.01));
+  wrc_result_free(c);
+  // A profile of mu across the left rail (lists), the right rail's plain mu: the left tread's friction is 0.2.
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0,
+                              "creepage.xi=0.05 V=20 mu=0.3 friction_profile.left.y=-0.1,0.1 "
+                              "friction_profile.left.mu=0.2,0.2", &c) == WRC_OK, last());
+  wrc_result* d = nullptr;
+  REQUIRE(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage.xi=0.05 V=20 mu=0.2", &d) == WRC_OK);
+  CHECK(number(c, "left.patches.1.Fx") == within_rel(number(d, "left.patches.1.Fx"), 1e-9));
+  CHECK(number(c, "right.patches.1.Fx") == within_rel(number(d, "right.patches.1.Fx") * 1.5, 1e-3));
+  wrc_result_free(c);
+  wrc_result_free(d);
+  for (const char* bad : {"creepage.xi=1e-3 friction.preset=polach_dry", "V=20 friction.law=polach friction.mu0=0.4",
+                          "V=20 mu=0.3 friction_profile.y=0,-0.01 friction_profile.mu=0.3,0.3"}) {
+    CAPTURE(bad);
+    CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, bad, &c) == WRC_ERROR);
+    CHECK(last().find("wrc_contact") != std::string::npos);
+  }
+}
+
 TEST_CASE("wrc_profile_write: each format read back by wrc_profile_load gives the points, bad calls a status") {
   Fixture f;
   const auto dir = std::filesystem::temp_directory_path() / ("wrc_capi_write_" + std::to_string(getpid()));

@@ -118,7 +118,11 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
  * vy (m/s), yaw_rate (rad/s), slip_reference (deformed or undeformed: where the rigid slip is taken,
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
- * mu (or mu_static and mu_kinetic), method (exact or fastsim), rolling_tolerance; search (strategy, the default, or
+ * mu (or mu_static and mu_kinetic, or a law falling with the slip velocity: friction.law=polach friction.mu0=
+ * friction.A= friction.B=, friction.law=linear|rational|exponential with friction.mu_inf, m1, s1, m2, s2, or
+ * friction.preset=polach_dry|polach_wet|contact_example), friction_profile.y=..., friction_profile.mu=... (lists: mu
+ * across the rail's profile; or friction_profile.left.y= ... per wheel), method (exact or fastsim),
+ * rolling_tolerance; search (strategy, the default, or
  * brute: every rail line against every cone, a check of the strategy). The areas then hold Fx, Fy, Mz,
  * creepage.*, creep_force.*, adhesion, power, px, py, slip_x, slip_y, adhesion_map, power_density, and the damage
  * indices Tgamma, Tgamma_spin, rcf_damage, fi_surf, ... (docs/guide/damage.md); with a wear model (wear.model=archard

@@ -30,14 +30,16 @@ void validate(const TangentialProblem& pb, std::string_view context) {
   for (std::size_t k = 0; k < pb.extra_x.size(); ++k)
     if (!std::isfinite(pb.extra_x[k]) || !std::isfinite(pb.extra_y[k]))
       fail("{}: the extra rigid slip is not finite at element {}", context, k);
-  const Friction& f = pb.friction;
-  for (double mu : {f.static_coefficient, f.kinetic_coefficient})
-    if (!(mu >= kFrictionMin && mu <= kFrictionMax))
-      fail("{}: friction coefficients mu_static = {}, mu_kinetic = {} must be in [{:g}, {:g}]", context,
-           f.static_coefficient, f.kinetic_coefficient, kFrictionMin, kFrictionMax);
-  if (f.kinetic_coefficient > f.static_coefficient)
-    fail("{}: the kinetic friction coefficient {} exceeds the static one {}", context, f.kinetic_coefficient,
-         f.static_coefficient);
+  validate(pb.friction, context);
+  if (pb.friction.slip_dependent() && !(pb.speed > 0 && std::isfinite(pb.speed)))
+    fail("{}: the {} friction law depends on the slip velocity: the rolling speed is {} m/s, expected > 0", context,
+         law_name(pb.friction.law), pb.speed);
+  if (!pb.friction_scale.empty() && pb.friction_scale.size() != n)
+    fail("{}: the friction scale has {} values for {} elements", context, pb.friction_scale.size(), n);
+  for (std::size_t k = 0; k < pb.friction_scale.size(); ++k)
+    if (!(pb.friction_scale[k] > 0 && std::isfinite(pb.friction_scale[k])))
+      fail("{}: the friction scale at element {} (i = {}, j = {}) is {}, expected a finite value > 0", context, k,
+           k % pb.grid.nx, k / pb.grid.nx, pb.friction_scale[k]);
   if (pb.direction != 1 && pb.direction != -1)
     fail("{}: rolling direction {} must be +1 (toward +x) or -1", context, pb.direction);
 }
@@ -57,10 +59,11 @@ void rigid_slip(const TangentialProblem& pb, std::vector<double>& wx, std::vecto
 
 namespace detail {
 
-Level make_level(const Field& f, const Friction& friction, int direction) {
+Level make_level(const Field& f, const Friction& friction, int direction, double speed) {
   Level L;
   L.direction = direction;
   L.friction = friction;
+  L.speed = speed;
   const Grid& g = f.grid;
   int i0 = g.nx, i1 = -1, j0 = g.ny, j1 = -1;
   for (int j = 0; j < g.ny; ++j)
@@ -81,6 +84,7 @@ Level make_level(const Field& f, const Friction& friction, int direction) {
   L.field.pressure.assign(n, 0.0);
   L.field.wx.assign(n, 0.0);
   L.field.wy.assign(n, 0.0);
+  if (!f.scale.empty()) L.field.scale.assign(n, 1.0);
   std::vector<int> element(n, -1);
   for (int j = 0; j < c.ny; ++j)
     for (int step = 0; step < c.nx; ++step) {  // marching order: from the upstream end of the row
@@ -91,11 +95,18 @@ Level make_level(const Field& f, const Friction& friction, int direction) {
       L.field.pressure[to] = f.pressure[from];
       L.field.wx[to] = f.wx[from];
       L.field.wy[to] = f.wy[from];
+      if (!f.scale.empty()) L.field.scale[to] = f.scale[from];
       if (!(f.pressure[from] > 0)) continue;
       element[to] = L.size();
       L.cell.push_back(static_cast<int>(to));
-      L.gs.push_back(friction.static_coefficient * f.pressure[from]);
-      L.gk.push_back(friction.kinetic_coefficient * f.pressure[from]);
+      const double gp = (f.scale.empty() ? 1.0 : f.scale[from]) * f.pressure[from];
+      L.gs.push_back(friction.static_coefficient * gp);
+      if (L.falling()) {
+        L.gp.push_back(gp);
+        L.gk.push_back(friction.at(speed * std::hypot(f.wx[from], f.wy[from])) * gp);
+      } else {
+        L.gk.push_back(friction.kinetic_coefficient * gp);
+      }
       L.wx.push_back(f.wx[from]);
       L.wy.push_back(f.wy[from]);
       L.scale = std::max(L.scale, std::hypot(f.wx[from], f.wy[from]));
@@ -119,6 +130,8 @@ Field coarsen(const Level& L) {
   c.pressure.assign(n, 0.0);
   c.wx.assign(n, 0.0);
   c.wy.assign(n, 0.0);
+  const bool scaled = !L.field.scale.empty();
+  if (scaled) c.scale.assign(n, 0.0);
   std::vector<double> cells(n, 0.0), contacts(n, 0.0);
   for (int j = 0; j < f.ny; ++j)
     for (int i = 0; i < f.nx; ++i) {
@@ -130,11 +143,13 @@ Field coarsen(const Level& L) {
         contacts[q] += 1;
         c.wx[q] += L.field.wx[k];
         c.wy[q] += L.field.wy[k];
+        if (scaled) c.scale[q] += L.field.scale[k];
       }
     }
   for (std::size_t q = 0; q < n; ++q) {
     c.pressure[q] /= cells[q];
     if (contacts[q] > 0) c.wx[q] /= contacts[q], c.wy[q] /= contacts[q];
+    if (scaled) c.scale[q] = contacts[q] > 0 ? c.scale[q] / contacts[q] : 1.0;
   }
   return c;
 }
@@ -231,7 +246,7 @@ LevelState solve_level(const Level& L, const Material& material, const ShearCach
                        const TangentialOptions& opt, bool& converged) {
   LevelState st;
   if (opt.nested && L.size() > opt.coarse_limit) {
-    const Level C = detail::make_level(detail::coarsen(L), L.friction, L.direction);
+    const Level C = detail::make_level(detail::coarsen(L), L.friction, L.direction, L.speed);
     TangentialOptions copt = opt;
     copt.tolerance = std::max(opt.tolerance, 1e-4);  // a start: the fine grid finishes the job
     bool coarse_converged = false;
@@ -339,7 +354,8 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   top.grid = pb.grid;
   top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
   rigid_slip(pb, top.wx, top.wy);
-  const Level L = detail::make_level(top, pb.friction, pb.direction);
+  top.scale.assign(pb.friction_scale.begin(), pb.friction_scale.end());
+  const Level L = detail::make_level(top, pb.friction, pb.direction, pb.speed);
   const bool slipping = L.size() > 0 && L.scale > 0;  // without rigid slip: no traction, all in adhesion
   LevelState st;
   if (slipping) st = solve_top(L, pb.grid, material(), cache_, ws, opt);

@@ -12,6 +12,7 @@ namespace wrc::halfspace::detail {
 struct Field {
   Grid grid;
   std::vector<double> pressure, wx, wy;
+  std::vector<double> scale;  // the friction law's factor per element (TangentialProblem::friction_scale); empty: 1
 };
 
 // One grid level as the Newton solver sees it: the field cropped to the contact's bounding box plus the upstream
@@ -23,15 +24,21 @@ struct Level {
   int i0 = 0, j0 = 0;           // cropped cell (0, 0) is cell (i0, j0) of the field it was cropped from
   std::vector<int> cell;        // contact element -> cropped grid index
   std::vector<int> up;          // contact element -> its upstream neighbour (contact element) or -1
-  std::vector<double> gs, gk;   // traction bounds mu_s p_n, mu_k p_n (Pa)
+  std::vector<double> gs, gk;   // traction bounds mu_s p_n, mu_k p_n (Pa); a slip-dependent law: mu(0) p_n and
+                                // mu(|V| |w|) p_n, the bound at the rigid slip (a start)
+  double speed = 0;             // |V| (m/s), with a slip-dependent law
+  std::vector<double> gp;       // a slip-dependent law: p_n times the law's factor (Pa), the bound being mu(w) gp
+  bool falling() const { return friction.slip_dependent(); }
+  // A slip element's bound at slip s per |V| (Pa).
+  double bound(int k, double s) const { return friction.at(speed * s) * gp[static_cast<std::size_t>(k)]; }
   std::vector<double> wx, wy;   // rigid slip per |V| of the contact elements
   double scale = 0;             // max |w| over the contact
   int size() const { return static_cast<int>(cell.size()); }
 };
 
-Level make_level(const Field& field, const Friction& friction, int direction);
+Level make_level(const Field& field, const Friction& friction, int direction, double speed);
 // The field of a level made twice as coarse (coarse cell (I, J) covers cells 2I..2I+1, 2J..2J+1 of the cropped
-// grid): pressure and rigid slip averaged (the slip over the contact cells only).
+// grid): pressure and rigid slip averaged (the slip and the friction factor over the contact cells only).
 Field coarsen(const Level& level);
 
 // The state of a level's solution: traction (Pa) and state per contact element.
@@ -40,6 +47,7 @@ struct LevelState {
   std::vector<unsigned char> state;  // kAdhesion or kSlip
   int iterations = 0, linear = 0, products = 0, coarse_linear = 0;
   std::vector<double> slip;  // after newton: the slip per |V| of these tractions (x, y per element), its last product
+  std::vector<double> bound;  // a slip-dependent law: each slip element's bound at its last slip (Pa)
   double residual = 0;
 };
 

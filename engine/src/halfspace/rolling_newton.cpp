@@ -10,6 +10,15 @@
 //   slip:      t . (M dp)_k + c_k t . dp_k = -t . s_k,  e . dp_k = g_k - |p_k|,   c_k = -(e . s_k) / |p_k| >= 0.
 // After each step the slip tractions are put back on the bound, and the split is updated: adhesion elements whose
 // traction exceeds mu_s p_n start to slip; slip elements whose slip runs along their traction (e . s > 0) adhere.
+// Friction falling with the slip velocity: the bound g_k = mu(|V| sigma_k) p_n of a slip element depends on its slip
+// magnitude sigma_k = -e . s_k (per |V|). It is taken at the slip of the last iterate (a fixed point on the bounds
+// inside the Newton iteration on the split), and its change joins the convergence measure, in slip units (times M's
+// diagonal). Why not Newton on it too (the bound equation e . dp + g' e . (M dp) = g - |p|): measured on S1002/60E1,
+// that cycled between adhesion and slip at leading-edge elements, where the element's own elastic slip K g is as
+// large as the rigid slip and a steep law makes 1 + g' K small or negative, in cases the fixed point solves in 2-9
+// iterations. Where the law falls steeply enough (|d mu / dw| |V| beyond about 12, e.g. Polach's B = 3 s/m at 30
+// m/s) the discrete problem has several solutions at those elements and neither converges: the solve fails with
+// its message (docs/guide/rolling.md).
 //
 // Why this preconditioner (measured on Hertzian patches of 300 to 2,500 elements, partial slip): a sweep from the
 // leading edge with each element's own and upstream coupling needed 15-19 GMRES iterations per Newton step, growing
@@ -112,7 +121,7 @@ class Linearisation {
       const auto q = static_cast<std::size_t>(k);
       if (st_.state[q] == kSlip) {
         b[2 * k] = -(-dir_y(k) * s[2 * k] + dir_x(k) * s[2 * k + 1]);
-        b[2 * k + 1] = kappa() * (L_.gk[q] - mag_[q]);
+        b[2 * k + 1] = kappa() * ((L_.falling() ? st_.bound[q] : L_.gk[q]) - mag_[q]);
       } else {
         b[2 * k] = -s[2 * k];
         b[2 * k + 1] = -s[2 * k + 1];
@@ -270,8 +279,9 @@ int gmres(Linearisation& lin, const std::vector<double>& b, std::vector<double>&
   }
 }
 
-// The convergence measure: max |s| over adhesion and max |t . s| over slip, relative to the rigid slip scale.
-double residual_of(const Level& L, const LevelState& st, const std::vector<double>& s) {
+// The convergence measure: max |s| over adhesion and max |t . s| over slip, relative to the rigid slip scale; with a
+// slip-dependent law also the slip elements' | |p| - g(sigma) | times M's diagonal `kappa` (a slip).
+double residual_of(const Level& L, const LevelState& st, const std::vector<double>& s, double kappa) {
   double err = 0;
   for (int k = 0; k < L.size(); ++k) {
     const double sx = s[2 * k], sy = s[2 * k + 1];
@@ -279,6 +289,10 @@ double residual_of(const Level& L, const LevelState& st, const std::vector<doubl
       const double g = std::sqrt(st.px[static_cast<std::size_t>(k)] * st.px[static_cast<std::size_t>(k)] +
                                  st.py[static_cast<std::size_t>(k)] * st.py[static_cast<std::size_t>(k)]);
       err = std::max(err, std::abs(-st.py[static_cast<std::size_t>(k)] / g * sx + st.px[static_cast<std::size_t>(k)] / g * sy));
+      if (L.falling()) {
+        const auto q = static_cast<std::size_t>(k);
+        err = std::max(err, kappa * std::abs(g - L.bound(k, std::max(0.0, -(st.px[q] * sx + st.py[q] * sy) / g))));
+      }
     } else {
       err = std::max(err, std::sqrt(sx * sx + sy * sy));
     }
@@ -307,16 +321,28 @@ bool update_split(const Level& L, LevelState& st, const std::vector<double>& s) 
   return changed;
 }
 
-// Slip tractions back on the bound after a step (their direction from the step).
+// Slip tractions back on the bound after a step (their direction from the step); a slip-dependent one on its bound
+// at the last slip.
 void renormalise(const Level& L, LevelState& st) {
   for (int k = 0; k < L.size(); ++k) {
     const auto q = static_cast<std::size_t>(k);
     if (st.state[q] != kSlip) continue;
     const double mag = std::sqrt(st.px[q] * st.px[q] + st.py[q] * st.py[q]);
-    if (mag > 0) {
-      st.px[q] *= L.gk[q] / mag;
-      st.py[q] *= L.gk[q] / mag;
-    }
+    if (!(mag > 0)) continue;
+    const double to = L.falling() ? st.bound[q] : L.gk[q];
+    st.px[q] *= to / mag;
+    st.py[q] *= to / mag;
+  }
+}
+
+// A slip-dependent law: each slip element's bound at its present slip.
+void update_bounds(const Level& L, LevelState& st, const std::vector<double>& s) {
+  if (!L.falling()) return;
+  for (int k = 0; k < L.size(); ++k) {
+    const auto q = static_cast<std::size_t>(k);
+    if (st.state[q] != kSlip) continue;
+    const double mag = std::hypot(st.px[q], st.py[q]);
+    if (mag > 0) st.bound[q] = L.bound(k, std::max(0.0, -(st.px[q] * s[2 * k] + st.py[q] * s[2 * k + 1]) / mag));
   }
 }
 
@@ -334,8 +360,10 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
   pack();
   op.slip(p.data(), s.data());
   bool changed = !settled || update_split(L, st, s), converged = false;
+  if (L.falling()) st.bound = L.gk;
+  update_bounds(L, st, s);
   for (int it = 0;; ++it) {
-    const double err = residual_of(L, st, s);
+    const double err = residual_of(L, st, s, 0.5 * (K.kx + K.ky));
     st.residual = err;
     if (!changed && err <= opt.tolerance) {
       converged = true;
@@ -356,6 +384,7 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
     pack();
     op.slip(p.data(), s.data());
     changed = update_split(L, st, s);
+    update_bounds(L, st, s);
   }
   st.products += op.products;
   st.slip = std::move(s);  // of the final tractions: the solution's slip needs no product of its own

@@ -1,6 +1,7 @@
 #include "lua/convert.hpp"
 
 #include "wrc/profile/profile.hpp"
+#include "wrc/wheelset/tangential.hpp"
 
 #include <cmath>
 #include <string>
@@ -108,6 +109,70 @@ OptionValue to_option_at(lua_State* L, int idx, std::string_view context, int de
 
 OptionValue to_option(lua_State* L, int idx, std::string_view context) { return to_option_at(L, idx, context, 0); }
 
+namespace {
+
+// A function of the rail's lateral coordinate as the table {y = {...}, mu = {...}} of its values, sampled where
+// wheelset/tangential.hpp says. The function runs protected: its error becomes this call's.
+OptionValue sampled_function(lua_State* L, int idx, std::string_view context) {
+  const int n = static_cast<int>(std::lround((kFrictionProfileTo - kFrictionProfileFrom) / kFrictionProfileStep)) + 1;
+  std::vector<OptionValue> ys, mus;
+  for (int i = 0; i < n; ++i) {
+    const double y = kFrictionProfileFrom + i * kFrictionProfileStep;
+    lua_pushvalue(L, idx);
+    lua_pushnumber(L, y);
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+      const std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(no message)";
+      lua_pop(L, 1);
+      fail("{}: the function failed at y = {} m: {}", context, y, msg);
+    }
+    int isnum = 0;
+    const double mu = lua_tonumberx(L, -1, &isnum);
+    const char* got = type_name(L, -1);
+    lua_pop(L, 1);
+    if (!isnum) fail("{}: the function returned a {} at y = {} m, expected a number (mu)", context, got, y);
+    ys.push_back(OptionValue::of(y));
+    mus.push_back(OptionValue::of(mu));
+  }
+  OptionTable t;
+  t.set("y", OptionValue::of(std::move(ys)));
+  t.set("mu", OptionValue::of(std::move(mus)));
+  return OptionValue::of(std::move(t));
+}
+
+// friction_profile: a function, a table {left =, right =} of functions or tables, or a table {y =, mu =}.
+OptionValue friction_profile_option(lua_State* L, int idx, std::string_view context) {
+  if (lua_type(L, idx) == LUA_TFUNCTION) return sampled_function(L, idx, context);
+  if (lua_type(L, idx) != LUA_TTABLE) return to_option_at(L, idx, context, 1);
+  OptionTable sides;
+  bool functions = false;
+  for (const char* side : {"left", "right"}) {
+    lua_pushstring(L, side);
+    lua_rawget(L, idx);  // raw: a metamethod that raised would longjmp past the C++ objects here
+    const int top = lua_gettop(L);
+    if (lua_type(L, top) == LUA_TFUNCTION) {
+      sides.set(side, sampled_function(L, top, fmt::format("{}.{}", context, side)));
+      functions = true;
+    } else if (!lua_isnil(L, top)) {
+      sides.set(side, to_option_at(L, top, fmt::format("{}.{}", context, side), 2));
+    }
+    lua_pop(L, 1);
+  }
+  if (!functions) return to_option_at(L, idx, context, 1);
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    const bool side = lua_type(L, -2) == LUA_TSTRING &&
+                      (std::string_view(lua_tostring(L, -2)) == "left" || std::string_view(lua_tostring(L, -2)) == "right");
+    lua_pop(L, 1);
+    if (!side) {
+      lua_pop(L, 1);
+      fail("{}: with functions per wheel only the keys 'left' and 'right'", context);
+    }
+  }
+  return OptionValue::of(std::move(sides));
+}
+
+}  // namespace
+
 OptionTable to_options(lua_State* L, int idx, std::string_view context, std::initializer_list<std::string_view> skip) {
   if (lua_isnoneornil(L, idx)) return {};
   check_table(L, idx, context);
@@ -122,7 +187,10 @@ OptionTable to_options(lua_State* L, int idx, std::string_view context, std::ini
     const std::string key = lua_tostring(L, -2);
     bool skipped = false;
     for (auto k : skip) skipped = skipped || k == key;
-    if (!skipped) t.entries.emplace_back(key, to_option_at(L, lua_gettop(L), fmt::format("{}: '{}'", context, key), 1));
+    const std::string where = fmt::format("{}: '{}'", context, key);
+    if (!skipped)
+      t.entries.emplace_back(key, key == "friction_profile" ? friction_profile_option(L, lua_gettop(L), where)
+                                                            : to_option_at(L, lua_gettop(L), where, 1));
     lua_pop(L, 1);
   }
   return t;

@@ -17,6 +17,14 @@ namespace wrc {
 
 const char* method_name(RollingMethod m) { return m == RollingMethod::exact ? "exact" : "fastsim"; }
 
+double FrictionProfile::at(double v) const {
+  if (v <= y.front()) return mu.front();
+  if (v >= y.back()) return mu.back();
+  const auto k = static_cast<std::size_t>(std::upper_bound(y.begin(), y.end(), v) - y.begin());
+  const double t = (v - y[k - 1]) / (y[k] - y[k - 1]);
+  return (1 - t) * mu[k - 1] + t * mu[k];
+}
+
 namespace {
 
 // The offset along n from the plane point X0 to the wheel's surface (m): the root of (distance to the axle) -
@@ -134,6 +142,29 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   return a;
 }
 
+// The lateral coordinate of a track-frame point in its rail profile's own frame (the inverse of SidePlacement::rail).
+double rail_profile_y(const SidePlacement& place, const Eigen::Vector3d& X) {
+  const double yc = place.sign * X.y() - place.rail_dy, zc = X.z() - place.rail_dz;
+  return std::cos(place.cant_angle) * yc + std::sin(place.cant_angle) * zc;
+}
+
+// The friction law's factor at every contact element of an area from its rail's friction profile: mu(0) there over
+// the law's own (1 outside the contact).
+std::vector<double> profile_scale(const ContactModel& model, const Pose& pose, const PatchContact& pc,
+                                  const FrictionProfile& profile, double mu0) {
+  const AreaGeometry geo(model, pose, pc, SlipReference::deformed);
+  const SidePlacement& place = model.geometry().track->place[static_cast<std::size_t>(pc.side)];
+  const halfspace::Grid& g = pc.solution.grid;
+  std::vector<double> scale(static_cast<std::size_t>(g.size()), 1.0);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const auto q = static_cast<std::size_t>(g.index(i, j));
+      if (pc.solution.pressure[q] > 0)
+        scale[q] = profile.at(rail_profile_y(place, geo.contact_point(i, j, pc.h[q]))) / mu0;
+    }
+  return scale;
+}
+
 // The creep force (track frame) and its moment about c of the tangential tractions: on a plane fx t1 + fy t2 at the
 // origin plus mz n; on a conformal area each element's traction px e_x + py t2(j) at its point on the rail's surface
 // (as the pressure acts there along n(j)), summed per row.
@@ -184,7 +215,12 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   pb.extra_y = slip.extra_y;
   pb.direction = slip.V > 0 ? 1 : -1;
   pb.friction = rq.friction;
+  pb.speed = std::abs(slip.V);
   PatchRolling r;
+  if (const auto& profile = rq.friction_profile[static_cast<std::size_t>(pc.side)]) {
+    r.friction_scale = profile_scale(model, pose, pc, *profile, rq.friction.static_coefficient);
+    pb.friction_scale = r.friction_scale;
+  }
   r.method = rq.method;
   r.friction = rq.friction;
   r.V = slip.V;
@@ -256,14 +292,19 @@ void drop_grids(PatchRolling& r) {
   r.rigid_x = {};
   r.rigid_y = {};
   damage::drop_grids(r.damage);
+  r.friction_scale = {};
 }
 
 void describe(const PatchRolling& r, FieldSink& out) {
   out.string("method", method_name(r.method), {"", "tangential solver: exact or fastsim (with rolling keys)"});
   out.begin("mu", {"", "the friction coefficients"});
-  out.number("static", r.friction.static_coefficient, {"-", "static coefficient: |traction| <= mu p in adhesion"});
-  out.number("kinetic", r.friction.kinetic_coefficient, {"-", "kinetic coefficient: |traction| = mu p in slip"});
+  out.number("static", r.friction.static_coefficient,
+             {"-", "static coefficient: |traction| <= mu p in adhesion (a falling law: mu(0))"});
+  out.number("kinetic", r.friction.kinetic_coefficient,
+             {"-", "kinetic coefficient: |traction| = mu p in slip (a falling law: mu at large slip velocity)"});
   out.end();
+  out.string("friction_law", halfspace::law_name(r.friction.law),
+             {"", "coulomb, or the law falling with the slip velocity: polach, linear, rational, exponential"});
   out.number("V", r.V, {"m/s", "forward speed, which scales the slip velocities and the power (with creepage alone: 1)"});
   out.begin("creepage", {"", "the creepages at the area's reference point (frame.origin)"});
   out.number("xi", r.creepage.xi, {"-", "longitudinal creepage along t1, > 0 braking (wheel surface slower than the rail's)"});
@@ -300,6 +341,11 @@ void describe(const PatchRolling& r, FieldSink& out) {
   out.grid("power_density", density.data(), nx, ny, {"W/m^2", "frictional power density, -(traction . slip) >= 0"});
   out.grid("rigid_slip_x", wx.data(), nx, ny, {"m/s", "rigid slip velocity along t1 of the elements in contact (0 outside)"});
   out.grid("rigid_slip_y", wy.data(), nx, ny, {"m/s", "rigid slip velocity along t2 of the elements in contact (0 outside)"});
+  std::vector<double> mu0(vx.size(), 0.0);  // the law's mu(0) per element, from a friction profile
+  for (std::size_t k = 0; k < mu0.size(); ++k)
+    if (s.state[k] != halfspace::kExterior)
+      mu0[k] = r.friction.static_coefficient * (r.friction_scale.empty() ? 1.0 : r.friction_scale[k]);
+  out.grid("mu_map", mu0.data(), nx, ny, {"-", "the friction law's mu(0) at each element in contact (0 outside)"});
 }
 
 void describe(const CreepTotals& c, FieldSink& out) {
@@ -352,13 +398,136 @@ void read_slip(OptionReader& r, RollingRequest& q) {
   if (!r.documenting()) check_speed(r, q.V);
 }
 
+// Named parameter sets of Polach's law (docs/guide/rolling.md gives them with their sources).
+struct FrictionPreset {
+  const char* name;
+  double mu0, A, B;  // -, -, s/m
+};
+constexpr FrictionPreset kFrictionPresets[] = {
+    {"polach_dry", 0.55, 0.40, 0.60},       // Polach 2005, Wear 258, dry rail
+    {"polach_wet", 0.30, 0.40, 0.20},       // Polach 2005, wet rail
+    {"contact_example", 0.36, 0.38, 0.70},  // CONTACT's user guide, creep curve example (mu_stat, A, B)
+};
+
+void check_coefficient(const OptionReader& r, const char* key, double v) {
+  if (!(v >= halfspace::kFrictionMin && v <= halfspace::kFrictionMax))
+    fail("{}: the friction coefficient {} = {} must be in [{:g}, {:g}] (wheel on rail: 0.05 .. 0.6)", r.context(), key,
+         v, halfspace::kFrictionMin, halfspace::kFrictionMax);
+}
+
+// friction = {law = "polach", mu0 =, A =, B =} or {law = "linear" | "rational" | "exponential", mu_inf =, m1 =, s1 =,
+// m2 =, s2 =} or {preset = ...}.
+halfspace::Friction read_law(OptionReader& t) {
+  using halfspace::FrictionLaw;
+  const auto preset = t.choice("preset", {"polach_dry", "polach_wet", "contact_example"},
+                               {"-", "a named parameter set of Polach's law (instead of law and its coefficients)"});
+  const auto law = t.choice("law", {"polach", "linear", "rational", "exponential"},
+                            {"-", "friction falling with the slip velocity w: Polach's law or CONTACT's L = 2, 3, 4"});
+  const auto mu0 = t.number("mu0", {"-", "polach: mu at zero slip velocity"});
+  const auto A = t.number("A", {"-", "polach: mu(infinity) / mu0, in [0, 1]"});
+  const auto B = t.number("B", {"s/m", "polach: the exponential decay rate, > 0"});
+  const auto mu_inf = t.number("mu_inf", {"-", "linear, rational, exponential: mu at large slip velocity (CONTACT FKIN)"});
+  const auto m1 = t.number("m1", {"-", "linear, rational, exponential: the first term's size at w = 0, >= 0"});
+  const auto s1 = t.number("s1", {"m/s", "the first term's velocity (CONTACT SABSH1, here m/s)"});
+  const auto m2 = t.number("m2", {"-", "the second term's size at w = 0, >= 0 (default 0)"});
+  const auto s2 = t.number("s2", {"m/s", "the second term's velocity (CONTACT SABSH2, m/s)"});
+  if (t.documenting()) return {};
+  if (preset) {
+    if (law || mu0 || A || B || mu_inf || m1 || s1 || m2 || s2)
+      fail("{}: 'preset' gives the whole law; no 'law' or coefficients with it", t.context());
+    for (const FrictionPreset& p : kFrictionPresets)
+      if (*preset == p.name) return halfspace::Friction::polach(p.mu0, p.A, p.B);
+  }
+  if (!law) fail("{}: 'law' (polach, linear, rational, exponential) or 'preset' is required", t.context());
+  const auto need = [&](const std::optional<double>& v, const char* key) {
+    if (!v) fail("{}: the {} law needs '{}'", t.context(), *law, key);
+    return *v;
+  };
+  if (*law == "polach") {
+    for (const char* key : {"mu_inf", "m1", "s1", "m2", "s2"})
+      if (t.has(key)) fail("{}: '{}' is not a coefficient of the polach law (mu0, A, B)", t.context(), key);
+    const double m = need(mu0, "mu0"), a = need(A, "A"), b = need(B, "B");
+    check_coefficient(t, "mu0", m);
+    if (!(a >= 0 && a <= 1)) fail("{}: A = {} must be in [0, 1] (mu falls from mu0 to A mu0)", t.context(), a);
+    if (!(b > 0)) fail("{}: B = {} s/m must be > 0", t.context(), b);
+    if (a * m < halfspace::kFrictionMin) check_coefficient(t, "A mu0", a * m);
+    return halfspace::Friction::polach(m, a, b);
+  }
+  for (const char* key : {"mu0", "A", "B"})
+    if (t.has(key)) fail("{}: '{}' is a coefficient of the polach law, not of the {} law", t.context(), key, *law);
+  const double mi = need(mu_inf, "mu_inf");
+  check_coefficient(t, "mu_inf", mi);
+  const std::array<double, 2> terms{m1.value_or(0), m2.value_or(0)};
+  const std::array<std::optional<double>, 2> vel{s1, s2};
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!(terms[i] >= 0)) fail("{}: m{} = {} must be >= 0 (friction falls with slip)", t.context(), i + 1, terms[i]);
+    if (terms[i] > 0 && !vel[i]) fail("{}: m{} > 0 needs its velocity s{} (m/s)", t.context(), i + 1, i + 1);
+    if (vel[i] && !(*vel[i] > 0)) fail("{}: s{} = {} m/s must be > 0", t.context(), i + 1, *vel[i]);
+  }
+  const FrictionLaw kind = *law == "linear" ? FrictionLaw::linear
+                           : *law == "rational" ? FrictionLaw::rational
+                                                : FrictionLaw::exponential;
+  halfspace::Friction f = halfspace::Friction::falling(kind, mi, terms, {s1.value_or(1), s2.value_or(1)});
+  check_coefficient(t, "mu_inf + m1 + m2", f.static_coefficient);
+  return f;
+}
+
+// friction_profile = {y = {...}, mu = {...}} (both rails) or {left = {...}, right = {...}}.
+FrictionProfile read_profile(OptionReader& t) {
+  FrictionProfile p;
+  const auto y = t.numbers("y", {"m", "the rail profile's lateral coordinate (its file's frame), increasing"});
+  const auto mu = t.numbers("mu", {"-", "mu(0) of the friction law at each y (linear between, constant beyond)"});
+  if (t.documenting()) return p;
+  if (!y || !mu) fail("{}: a friction profile needs 'y' (m) and 'mu', lists of equal length", t.context());
+  if (y->size() != mu->size() || y->empty())
+    fail("{}: 'y' has {} values and 'mu' {}: expected equal, non-empty lists", t.context(), y->size(), mu->size());
+  for (std::size_t i = 0; i < y->size(); ++i) {
+    if (i > 0 && !((*y)[i] > (*y)[i - 1]))
+      fail("{}: y[{}] = {} m does not increase from y[{}] = {} m", t.context(), i + 1, (*y)[i], i, (*y)[i - 1]);
+    if (!((*mu)[i] >= halfspace::kFrictionMin && (*mu)[i] <= halfspace::kFrictionMax))
+      fail("{}: mu[{}] = {} must be in [{:g}, {:g}]", t.context(), i + 1, (*mu)[i], halfspace::kFrictionMin,
+           halfspace::kFrictionMax);
+  }
+  p.y = std::move(*y);
+  p.mu = std::move(*mu);
+  return p;
+}
+
+void read_friction_profile(OptionReader& r, RollingRequest& q) {
+  auto t = r.table("friction_profile", {"-", "mu across the rail's profile: {y =, mu =} or per wheel {left =, right =}"});
+  if (!t) return;
+  const bool sides = t->documenting() || t->has("left") || t->has("right");
+  if (sides) {
+    for (int side : {kLeft, kRight})
+      if (auto s = t->table(side_name(side), {"-", "this wheel's rail: {y =, mu =}"})) {
+        q.friction_profile[static_cast<std::size_t>(side)] = read_profile(*s);
+        s->finish();
+      }
+  }
+  if (!sides || t->documenting()) {
+    const FrictionProfile p = read_profile(*t);
+    if (!t->documenting()) q.friction_profile = {p, p};
+  }
+  t->finish();
+}
+
 halfspace::Friction read_friction(OptionReader& r) {
   const auto mu = r.number("mu", {"-", "friction coefficient (static = kinetic)"});
   const auto mus = r.number("mu_static", {"-", "static friction coefficient (with mu_kinetic)"});
   const auto muk = r.number("mu_kinetic", {"-", "kinetic friction coefficient (default: mu_static)"});
   halfspace::Friction f;
+  if (auto t = r.table("friction", {"-", "friction falling with the slip velocity: {law =, ...} or {preset =}"})) {
+    if (!r.documenting() && (mu || mus || muk))
+      fail("{}: 'friction' gives the friction law; 'mu', 'mu_static', 'mu_kinetic' cannot be given with it",
+           r.context());
+    f = read_law(*t);
+    t->finish();
+    if (!r.documenting()) return f;
+  }
   if (r.documenting()) return f;
-  if (!mu && !mus) fail("{}: the friction coefficient 'mu' (or 'mu_static' and 'mu_kinetic') is required", r.context());
+  if (!mu && !mus)
+    fail("{}: the friction coefficient 'mu' (or 'mu_static' and 'mu_kinetic', or a 'friction' law) is required",
+         r.context());
   f.static_coefficient = mus.value_or(mu.value_or(0));
   f.kinetic_coefficient = muk.value_or(mu.value_or(f.static_coefficient));
   for (auto [name, v] : {std::pair{"mu_static", f.static_coefficient}, {"mu_kinetic", f.kinetic_coefficient}})
@@ -379,7 +548,8 @@ void RollingRequest::validate(std::string_view context, bool plausible) const {
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   bool any = r.documenting() || r.has("creepage");
   for (const char* key : {"V", "omega", "vy", "yaw_rate", "slip_reference"}) any |= r.has(key);
-  for (const char* key : {"mu", "mu_static", "mu_kinetic", "method", "rolling_tolerance", "wear", "fatigue"})
+  for (const char* key : {"mu", "mu_static", "mu_kinetic", "friction", "friction_profile", "method", "rolling_tolerance",
+                          "wear", "fatigue"})
     if (r.has(key) && !any)
       fail("{}: '{}' is given but neither V (the wheelset's kinematics) nor creepage: {} needs one of them",
            r.context(), key, std::string_view(key) == "wear" || std::string_view(key) == "fatigue" ? "rolling contact" : "friction");
@@ -387,6 +557,10 @@ std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   RollingRequest q;
   read_slip(r, q);
   q.friction = read_friction(r);
+  if (!r.documenting() && q.friction.slip_dependent() && q.creepage && !r.has("V"))
+    fail("{}: the {} friction law depends on the slip velocity: give V (m/s) with the creepages", r.context(),
+         halfspace::law_name(q.friction.law));
+  read_friction_profile(r, q);
   const bool fastsim = q.method == RollingMethod::fastsim;
   q.method = r.choice("method", {"exact", "fastsim"}, {"-", "tangential solver: exact, or FASTSIM"},
                       fastsim ? "fastsim" : "exact") == "fastsim"

@@ -16,11 +16,13 @@
 //   s_I = w_I - (u_{I+} - u_I) / dx,   I+ = the element upstream of I (at x + direction dx),
 // with w the rigid slip per |V| (creep.hpp: w = (xi - phi y, eta + phi x) for creepages about a reference point).
 // Coulomb's law with the traction bound g = mu p_n: adhesion |p| <= mu_s p_n and s = 0, or slip |p| = mu_k p_n
-// and p = -mu_k p_n s / |s|: the traction opposes the slip. The upwind difference is Kalker's discretisation of the
-// material derivative (CONTACT with the rolling step dq = dx).
+// and p = -mu_k p_n s / |s|: the traction opposes the slip. With friction falling with the slip velocity
+// (friction.hpp) the bound of a slip element is mu(|V| |s|) p_n, and of an adhesion element mu(0) p_n. The upwind
+// difference is Kalker's discretisation of the material derivative (CONTACT with the rolling step dq = dx).
 #pragma once
 
 #include "wrc/halfspace/creep.hpp"
+#include "wrc/halfspace/friction.hpp"
 #include "wrc/halfspace/grid.hpp"
 #include "wrc/halfspace/shear.hpp"
 
@@ -29,19 +31,6 @@
 #include <vector>
 
 namespace wrc::halfspace {
-
-// The range of a friction coefficient: wheel on rail 0.05 .. 0.6. Far below it the traction bound mu p_n underflows
-// (mu = 1e-300 made the exact solver's result not finite); a huge coefficient is the no-slip limit (Kalker's linear
-// theory, e.g. mu = 1e9), up to where mu p_n stays a number the solvers can square.
-inline constexpr double kFrictionMin = 1e-4, kFrictionMax = 1e12;
-
-// Coulomb friction; kinetic <= static (a static coefficient above the kinetic one allows adhesion up to mu_s p_n
-// and slides at mu_k p_n), both in [kFrictionMin, kFrictionMax].
-struct Friction {
-  double static_coefficient = 0;   // mu_s (-)
-  double kinetic_coefficient = 0;  // mu_k (-)
-  static Friction coulomb(double mu) { return {mu, mu}; }
-};
 
 struct TangentialProblem {
   Grid grid;
@@ -54,6 +43,12 @@ struct TangentialProblem {
   std::span<const double> extra_x = {}, extra_y = {};
   int direction = +1;  // rolling toward +x (+1) or -x (-1)
   Friction friction;
+  // The rolling speed |V| (m/s): a slip-dependent friction law takes the slip velocity w = speed |s| of each
+  // element (s the slip per |V|); required > 0 with such a law, unused otherwise.
+  double speed = 0;
+  // Optional, per element (> 0): the factor of the friction law there (every coefficient of the law scaled by it),
+  // e.g. friction varying across the rail's profile. Empty: 1.
+  std::span<const double> friction_scale = {};
 };
 
 struct TangentialOptions {
@@ -139,8 +134,9 @@ TangentialSolution solve_fastsim(const Material& material, const TangentialProbl
 void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
 
 // Throws wrc::Error naming `context` on a bad problem: grid, sizes, non-finite or negative pressure, non-finite
-// creepages or rigid slip, friction coefficients outside [kFrictionMin, kFrictionMax] or kinetic > static, direction
-// not +-1.
+// creepages or rigid slip, friction coefficients outside [kFrictionMin, kFrictionMax] or kinetic > static, a bad
+// falling law (friction.hpp), a slip-dependent law without a speed > 0, a friction scale of the wrong size or not
+// > 0, direction not +-1.
 void validate(const TangentialProblem& problem, std::string_view context);
 
 // The rigid slip per |V| of the problem at every element (x and y components).

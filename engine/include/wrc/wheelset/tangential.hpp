@@ -34,8 +34,10 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace wrc {
 
@@ -57,11 +59,23 @@ struct Kinematics {
 
 enum class RollingMethod { exact, fastsim };
 
+// Friction varying across a rail's profile: mu(0) of the friction law (mu, or mu_static, or a falling law's mu0)
+// against the rail profile's own lateral coordinate y (m, the profile file's frame: +y toward the field side, for
+// either rail), linear between the points, constant beyond the ends. The law's other coefficients scale with it.
+struct FrictionProfile {
+  std::vector<double> y, mu;  // m (increasing), -
+  double at(double y) const;
+};
+// Where a front end samples a friction profile given as a function of y (Lua): every 0.1 mm over -100 .. 100 mm of
+// the rail profile's lateral coordinate, wider than any rail head.
+inline constexpr double kFrictionProfileFrom = -0.1, kFrictionProfileTo = 0.1, kFrictionProfileStep = 1e-4;  // m
+
 struct RollingRequest {
   std::optional<Kinematics> kinematics;          // either the wheelset's velocities
   std::optional<halfspace::Creepages> creepage;    // or creepages prescribed at every area's reference point
   double V = 1;                                  // m/s: with `creepage`, the speed of the slip velocities and power
-  halfspace::Friction friction;                    // mu (static = kinetic) or mu_static and mu_kinetic
+  halfspace::Friction friction;                    // mu (static = kinetic), mu_static and mu_kinetic, or a law
+  std::array<std::optional<FrictionProfile>, 2> friction_profile;  // per side (kLeft, kRight): mu across the rail
   RollingMethod method = RollingMethod::exact;
   double tolerance = 1e-6;                       // the exact solver's (halfspace/rolling.hpp)
   // The damage indices every solved area gets (PatchRolling::damage): T gamma and the fatigue indices always, the
@@ -73,12 +87,16 @@ struct RollingRequest {
 
 // Reads a call's rolling keys: V, omega, vy, yaw_rate, slip_reference ("deformed" | "undeformed") (kinematics) or
 // creepage = {xi, eta, phi} (with V optional),
-// and mu or mu_static and mu_kinetic, method ("exact" | "fastsim"), rolling_tolerance, and the damage options
-// `wear = {...}` and `fatigue = {...}` (damage/damage.hpp). Returns nothing when none of V, omega, vy, yaw_rate,
-// creepage, mu, mu_static, mu_kinetic, method, wear, fatigue is given (a frictionless call). Throws
+// and mu or mu_static and mu_kinetic or friction = {law = "polach" | "linear" | "rational" | "exponential", ...} or
+// friction = {preset = ...} (docs/guide/rolling.md), friction_profile = {y =, mu =} or {left = {y =, mu =}, right =
+// ...}, method ("exact" | "fastsim"), rolling_tolerance, and the damage options `wear = {...}` and `fatigue = {...}`
+// (damage/damage.hpp). Returns nothing when none of V, omega, vy, yaw_rate, creepage, mu, mu_static, mu_kinetic,
+// friction, method, wear, fatigue is given (a frictionless call). Throws
 // wrc::Error naming the key on: V = 0 (the creepages are slip velocities divided by V: undefined), kinematics keys
 // without V, creepage together with omega, vy or yaw_rate, a missing, zero, negative or non-finite mu, a kinetic
-// coefficient above the static one, an unknown method, a creepage that is not a finite number.
+// coefficient above the static one, an unknown method, a creepage that is not a finite number, a falling law with a
+// prescribed creepage and no V (its slip velocities need the speed), a friction profile whose y does not increase or
+// whose mu is outside the friction range.
 std::optional<RollingRequest> read_rolling_request(OptionReader& options);
 
 // The tangential solution of one contact area.
@@ -95,6 +113,7 @@ struct PatchRolling {
   double adhesion = 0;                 // fraction of the contact area in adhesion
   double power = 0;                    // W: frictional power, |V| sum -(p . s) dA >= 0
   halfspace::TangentialSolution solution;  // grids on the area's grid: px, py (Pa), sx, sy (slip per |V|), state
+  std::vector<double> friction_scale;  // with a friction profile: the law's factor per element (1 outside); else empty
   std::vector<double> rigid_x, rigid_y;  // the rigid slip per |V| of the contact elements (0 outside), per element
   damage::PatchDamage damage;          // the damage indices of the area (RollingRequest::damage)
 };
