@@ -16,10 +16,11 @@ class Result(Mapping):
     __slots__ = ("_fields", "_units")
 
     def __init__(self, fields, units=None):
-        object.__setattr__(self, "_fields", dict(fields))
-        object.__setattr__(self, "_units", dict(units or {}))
+        # The module hands over dicts of its own: kept, not copied (a batch makes hundreds of Results per element).
+        object.__setattr__(self, "_fields", fields if type(fields) is dict else dict(fields))
+        object.__setattr__(self, "_units", units if type(units) is dict else dict(units or {}))
         grid = self._fields.get("grid")
-        if isinstance(grid, Result) and {"nx", "ny", "dx", "dy", "x0", "y0"} <= grid.keys():
+        if type(grid) is Result and {"nx", "ny", "dx", "dy", "x0", "y0"} <= grid._fields.keys():
             # The coordinates of the element centres: u along t1 (x, rolling), v along t2 (y, lateral), as
             # frame.origin + u t1 + v t2 (the result's own grid description; grids are (ny, nx): row j is v[j]).
             grid._fields.setdefault("x", grid.x0 + grid.dx * np.arange(grid.nx))
