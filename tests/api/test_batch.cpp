@@ -6,7 +6,7 @@
 //  - a solve that fails: not_converged with the one-by-one call's message and its result, or a result with
 //    on_failure = "return";
 //  - the stop flag skips the elements not begun; the batchable keys come from the operation table.
-#include "geometry/geometry_fixtures.hpp"
+#include "wheelset/synthetic_wheelset.hpp"
 #include "wrc/api/batch.hpp"
 #include "wrc/api/calls.hpp"
 #include "wrc/core/error.hpp"
@@ -26,16 +26,7 @@ using namespace wrc;
 namespace {
 
 const Wheelset& synthetic_wheelset() {
-  static const std::shared_ptr<const Wheelset> ws = [] {
-    WheelsetProfiles p;
-    const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
-    p.wheel = {wheel, wheel};
-    p.rail = {rail, rail};
-    WheelsetParams params;
-    params.contact.element = 0.5e-3;  // coarse: fast tests
-    params.check_setup = false;       // a synthetic pair
-    return build_wheelset(p, params);
-  }();
+  static const std::shared_ptr<const Wheelset> ws = test::synthetic_wheelset();
   return *ws;
 }
 

@@ -4,9 +4,9 @@
 // index against the hand formula on the grid, and T gamma on the S1002 / 60E1 wheelset in rolling against the
 // creep forces summed here from the traction grids.
 #include "halfspace/rolling_cases.hpp"
+#include "wheelset/paper_profiles.hpp"
 #include "wrc/damage/damage.hpp"
 #include "wrc/equilibrium/wheel.hpp"
-#include "wrc/profile/reader.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 #include "approx.hpp"
 
@@ -269,29 +269,12 @@ TEST_CASE("describe(PatchDamage): every field documented, values as computed") {
   }
 }
 
-namespace {
-
-std::string profile_file(const char* name) { return fmt::format("{}/{}.csv", WRC_TEST_PROFILES, name); }
-
-WheelsetProfiles paper_profiles() {
-  LoadOptions w, r;
-  w.kind = ProfileKind::wheel;
-  r.kind = ProfileKind::rail;
-  const Profile wheel = load_profile_file(profile_file("s1002"), w), rail = load_profile_file(profile_file("60e1"), r);
-  WheelsetProfiles p;
-  p.wheel = {wheel, wheel};
-  p.rail = {rail, rail};
-  return p;
-}
-
-}  // namespace
-
 TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) of the traction grids summed here") {
   WheelsetParams params;
   params.contact.element = 0.5e-3;
   for (ContactSurface surface : {ContactSurface::conformal, ContactSurface::planar}) {
     params.contact.surface = surface;
-    const auto ws = build_wheelset(paper_profiles(), params);
+    const auto ws = build_wheelset(test::paper_profiles(), params);
     auto work = ws->make_workspace();
     RollingRequest rq;
     rq.kinematics = Kinematics{30.0, std::nullopt, 0.0, 0.01};  // yaw rate: lateral creepage and more spin

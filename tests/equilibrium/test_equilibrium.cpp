@@ -10,7 +10,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
-#include "wrc/wheelset/wheelset.hpp"
+#include "wheelset/synthetic_wheelset.hpp"
 #include "approx.hpp"
 
 #include <Eigen/Geometry>
@@ -400,14 +400,7 @@ TEST_CASE("cases and options are validated by the solvers themselves") {
 // normal solve did not converge from the previous step's state, where a cold solve did). Here the kept pressures are
 // made unusable (infinite), so that the warm start itself is refused by the normal solver.
 TEST_CASE("trajectory: a step that fails warm is solved cold, with the result of a cold call") {
-  WheelsetProfiles p;
-  const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
-  p.wheel = {wheel, wheel};
-  p.rail = {rail, rail};
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  params.check_setup = false;  // a synthetic pair
-  const auto ws = build_wheelset(p, params);
+  const auto ws = test::synthetic_wheelset();
   Trajectory tr(ws);
   auto poison = [&] {
     for (auto& side : tr.workspace().previous)
@@ -436,14 +429,7 @@ TEST_CASE("trajectory: a step that fails warm is solved cold, with the result of
 // A trajectory's wheel step checks its case before the side selects the last approaches (an out-of-range side indexed
 // past them before).
 TEST_CASE("trajectory: a wheel step with a side out of range is an error") {
-  WheelsetProfiles p;
-  const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
-  p.wheel = {wheel, wheel};
-  p.rail = {rail, rail};
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  params.check_setup = false;  // a synthetic pair
-  Trajectory tr(build_wheelset(p, params));
+  Trajectory tr(test::synthetic_wheelset());
   CHECK_THROWS_WITH_AS(tr.wheel({5, 1e-3, 0, 0, 80e3}), doctest::Contains("side = 5 must be 0 (left) or 1 (right)"), Error);
   CHECK(tr.wheel({kLeft, 1e-3, 0.002, 0, 80e3}).converged);
 }

@@ -10,10 +10,9 @@
 //    at most two Newton iterations of the exact solver's last solve, where a cold solve needs ~6 evaluations and
 //    starts its tangential problem from the coarse grid's solution.
 #include "approx.hpp"
-#include "geometry/geometry_fixtures.hpp"
+#include "wheelset/synthetic_wheelset.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
 #include "wrc/equilibrium/wheel.hpp"
-#include "wrc/wheelset/wheelset.hpp"
 
 #include <doctest/doctest.h>
 
@@ -24,20 +23,10 @@
 #include <string>
 
 using namespace wrc;
+using wrc::test::synthetic_wheelset;
 using wrc::test::within_abs;
 
 namespace {
-
-std::shared_ptr<const Wheelset> synthetic_wheelset() {
-  WheelsetProfiles p;
-  const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
-  p.wheel = {wheel, wheel};
-  p.rail = {rail, rail};
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  params.check_setup = false;  // a synthetic pair
-  return build_wheelset(p, params);
-}
 
 // Step k of a hunting-like motion at 1 kHz (y = 3 mm sin(2 pi 1.5 Hz t), the yaw following the path at V), its
 // case and rolling request.

@@ -1,9 +1,9 @@
 // Friction falling with the slip velocity and friction varying per element (friction.hpp), in the exact solver and
 // FASTSIM, against references computed here: the law evaluated at the slip velocity of full sliding, the slip of the
 // exact solution recomputed by direct sums of the influence coefficients, constant friction, and zones solved apart.
+#include "direct_slip.hpp"
 #include "rolling_cases.hpp"
 
-#include "wrc/halfspace/influence.hpp"
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <numbers>
 
+using wrc::test::direct_slip;
 using wrc::test::within_rel;
 using namespace wrc::halfspace;
 using wrc::test::hertz_patch;
@@ -28,36 +29,6 @@ double polach(double mu0, double A, double B, double w) { return mu0 * ((1 - A) 
 TangentialSolution solve(bool exact, const TangentialProblem& pb) {
   static const RollingSolver solver(kSteel);
   return exact ? solver.solve(pb) : solve_fastsim(kSteel, pb);
-}
-
-// The slip per |V| of a solution's tractions by direct sums over the influence coefficients (no FFT).
-void direct_slip(const TangentialProblem& pb, const TangentialSolution& s, std::vector<double>& sx,
-                 std::vector<double>& sy) {
-  const Grid& g = pb.grid;
-  const ShearInfluenceTable t(kSteel, g.dx, g.dy, g.nx + 2, g.ny);
-  const auto u = [&](int i, int j, double& ux, double& uy) {
-    ux = uy = 0;
-    for (int l = 0; l < g.ny; ++l)
-      for (int k = 0; k < g.nx; ++k) {
-        const auto q = static_cast<std::size_t>(g.index(k, l));
-        ux += t.xx(i - k, j - l) * s.px[q] + t.xy(i - k, j - l) * s.py[q];
-        uy += t.xy(i - k, j - l) * s.px[q] + t.yy(i - k, j - l) * s.py[q];
-      }
-  };
-  std::vector<double> wx, wy;
-  rigid_slip(pb, wx, wy);
-  sx.assign(static_cast<std::size_t>(g.size()), 0.0);
-  sy.assign(sx.size(), 0.0);
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const auto q = static_cast<std::size_t>(g.index(i, j));
-      if (!(pb.pressure[q] > 0)) continue;
-      double ax, ay, bx, by;
-      u(i, j, ax, ay);
-      u(i + pb.direction, j, bx, by);
-      sx[q] = wx[q] - (bx - ax) / g.dx;
-      sy[q] = wy[q] - (by - ay) / g.dx;
-    }
 }
 
 }  // namespace
@@ -129,7 +100,7 @@ TEST_CASE("falling friction, exact solver: the traction of every slip element is
         pb.speed = V;
         const TangentialSolution s = solve(true, pb);
         std::vector<double> sx, sy;
-        direct_slip(pb, s, sx, sy);
+        direct_slip(kSteel, pb, s, sx, sy);
         const double wscale = std::max({std::abs(c.xi), std::abs(c.eta), std::abs(c.phi) * 6e-3});
         int slip = 0, adhesion = 0;
         double lowest = 1;  // the lowest mu met in slip / mu0: the law is exercised

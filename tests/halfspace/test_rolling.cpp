@@ -1,9 +1,9 @@
 // Kalker's exact steady-rolling problem (RollingSolver) against independent references: Carter's two-dimensional
 // solution, Kalker's linear theory (his published table), full sliding, direct sums of the influence coefficients,
 // and the symmetries of the problem.
+#include "direct_slip.hpp"
 #include "rolling_cases.hpp"
 
-#include "wrc/halfspace/influence.hpp"
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
@@ -16,6 +16,7 @@
 #include <random>
 #include <thread>
 
+using wrc::test::direct_slip;
 using wrc::test::within_rel;
 using namespace wrc::halfspace;
 using wrc::test::hertz_patch;
@@ -24,37 +25,6 @@ using wrc::test::rolling_problem;
 namespace {
 
 const Material kSteel{2.1e11, 0.28};
-
-// The slip per |V| of a traction field by direct sums over the influence coefficients (no FFT), at every grid
-// element: s = w - (u_{I+} - u_I) / dx, u including the displacement of the element upstream of the grid's edge.
-void direct_slip(const Material& m, const TangentialProblem& pb, const TangentialSolution& s, std::vector<double>& sx,
-                 std::vector<double>& sy) {
-  const Grid& g = pb.grid;
-  const ShearInfluenceTable t(m, g.dx, g.dy, g.nx + 2, g.ny);
-  const auto u = [&](int i, int j, double& ux, double& uy) {  // displacement at cell (i, j), i may be -1 or nx
-    ux = uy = 0;
-    for (int l = 0; l < g.ny; ++l)
-      for (int k = 0; k < g.nx; ++k) {
-        const auto q = static_cast<std::size_t>(g.index(k, l));
-        ux += t.xx(i - k, j - l) * s.px[q] + t.xy(i - k, j - l) * s.py[q];
-        uy += t.xy(i - k, j - l) * s.px[q] + t.yy(i - k, j - l) * s.py[q];
-      }
-  };
-  std::vector<double> wx, wy;
-  rigid_slip(pb, wx, wy);
-  sx.assign(g.size(), 0.0);
-  sy.assign(g.size(), 0.0);
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const auto q = static_cast<std::size_t>(g.index(i, j));
-      if (!(pb.pressure[q] > 0)) continue;
-      double ax, ay, bx, by;
-      u(i, j, ax, ay);
-      u(i + pb.direction, j, bx, by);
-      sx[q] = wx[q] - (bx - ax) / g.dx;
-      sy[q] = wy[q] - (by - ay) / g.dx;
-    }
-}
 
 double total(const std::vector<double>& v, const Grid& g) {
   double s = 0;

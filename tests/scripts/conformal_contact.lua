@@ -16,6 +16,7 @@
 local check = require "wrc.check"
 local here = arg[0]:match("(.*/)") or "./"
 local H = dofile(here .. "../halfspace/hertz_reference.lua")
+local P = dofile(here .. "../data/profile/helpers.lua")
 
 local E, nu = 2.1e11, 0.3
 local Estar = E / (2 * (1 - nu * nu))
@@ -24,24 +25,17 @@ local function norm(a) return math.sqrt(a.x * a.x + a.y * a.y + a.z * a.z) end
 -- 1. The flat limit ------------------------------------------------------------------------------------------------
 do
   local r0, load, line_step, gauge_depth = 0.45, 100e3, 0.02e-3, 0.2e-3
-  local wy, wz = {}, {}
-  for k = 0, 130 do wy[#wy + 1], wz[#wz + 1] = -0.070 + k * 1e-3, 0.0 end
-  local wheel = wrc.profile.points{kind = "wheel", y = wy, z = wz, name = "cylinder"}
+  local wheel = P.cone_wheel(0)
   print("flat limit: cylinder r0 = 450 mm on a crowned rail, 100 kN; errors against Hertz (%), conformal vs planar")
   for _, q in ipairs{1, 5} do
     local R = r0 / q
-    local ry, rz = {}, {}
-    local n = math.floor(0.025 / line_step + 0.5)
-    for k = -n, n do ry[#ry + 1], rz[#rz + 1] = k * line_step, math.sqrt(R * R - (k * line_step) ^ 2) - R end
-    local rail = wrc.profile.points{kind = "rail", y = ry, z = rz, name = "crown"}
+    local rail = P.crowned_rail(R, 0.025, line_step)
     local ref = H.from_force(1 / (2 * r0), 1 / (2 * R), Estar, load)
     for _, nb in ipairs{8, 16} do
       local element = math.min(ref.a, ref.b) / nb
-      local yg = math.sqrt(R * R - (R - gauge_depth) ^ 2)
       local function solve(surface)
-        local ws = wrc.wheelset{wheel = wheel, rail = rail, radius = r0, cant = 0, gauge_depth = gauge_depth,
-                                gauge = 2 * (0.75 - yg), E = E, nu = nu, grid = element, surface = surface,
-                                strategy = {"coarse", "topology"}}
+        local ws = P.crown_wheelset(wheel, rail, R, {radius = r0, gauge_depth = gauge_depth, E = E, nu = nu,
+                                                     grid = element, surface = surface})
         return ws:contact{z = -ref.delta}.left.patches[1]
       end
       local c, p = solve("conformal"), solve("planar")

@@ -12,6 +12,7 @@ local check = require "wrc.check"
 local out = require "wrc.output"
 local here = arg[0]:match("(.*/)") or "./"
 local H = dofile(here .. "../halfspace/hertz_reference.lua")
+local P = dofile(here .. "../data/profile/helpers.lua")
 
 local E, nu = 2.1e11, 0.25
 local Estar = E / (2 * (1 - nu * nu))
@@ -20,30 +21,9 @@ local line_step = 0.02e-3
 local half_width = 0.025
 local gauge_depth = 0.2e-3
 
--- A wheel of conicity `slope` (radius r0 - slope s; 0: a cylinder).
-local function wheel(slope)
-  local y, z = {}, {}
-  for k = 0, 130 do
-    local s = -0.070 + k * 1e-3
-    y[#y + 1], z[#z + 1] = s, slope * s
-  end
-  return wrc.profile.points{kind = "wheel", y = y, z = z, name = "cone"}
-end
-
-local function crowned_rail(R)
-  local y, z = {}, {}
-  local n = math.floor(half_width / line_step + 0.5)
-  for k = -n, n do
-    local yk = k * line_step
-    y[#y + 1], z[#z + 1] = yk, math.sqrt(R * R - yk * yk) - R
-  end
-  return wrc.profile.points{kind = "rail", y = y, z = z, name = string.format("crown R%.0f", R * 1e3)}
-end
-
 local function wheelset(w, R, element)
-  local yg = math.sqrt(R * R - (R - gauge_depth) ^ 2)
-  return wrc.wheelset{wheel = w, rail = crowned_rail(R), radius = r0, cant = 0, gauge_depth = gauge_depth,
-                      gauge = 2 * (0.75 - yg), E = E, nu = nu, grid = element, strategy = {"coarse", "topology"}}
+  return P.crown_wheelset(w, P.crowned_rail(R, half_width, line_step), R,
+                          {radius = r0, gauge_depth = gauge_depth, E = E, nu = nu, grid = element})
 end
 
 -- Kalker's table (3 significant digits): within half a unit of the last digit.
@@ -66,7 +46,7 @@ print("contact ellipses: cylinder and cone wheels r0 = 450 mm on crowned rails, 
 print(string.format("%6s %7s %9s %9s %9s %9s %9s %9s", "slope", "R_mm", "a_mm", "b_mm", "ell_a_%", "ell_b_%",
                     "hz_a_%", "hz_b_%"))
 for _, case in ipairs{{slope = 0, R = r0}, {slope = 0, R = r0 / 4}, {slope = 0.2, R = 0.08}} do
-  local w = wheel(case.slope)
+  local w = P.cone_wheel(case.slope)
   local what = string.format("slope %g, R %g mm: ", case.slope, case.R * 1e3)
   -- Rigid: the touching point's Hertz ellipse for the default load and for a given one.
   local coarse = wheelset(w, case.R, 0.2e-3)
@@ -113,7 +93,7 @@ end
 -- Geometry tables: the CSV and the multibody table carry the rows' Hertz ellipses and coefficients.
 local dir = (arg.tmp or os.getenv("WRC_TEST_TMP") or "/tmp") .. "/contact_ellipses"
 out.mkdir(dir)
-local ws = wheelset(wheel(0.2), 0.08, 0.2e-3)
+local ws = wheelset(P.cone_wheel(0.2), 0.08, 0.2e-3)
 local t = ws:geometry_table{y = {from = -1e-3, to = 1e-3, step = 0.5e-3}, hertz_load = 75e3, csv = dir .. "/t.csv",
                             file = dir .. "/t.txt", progress = false}
 local _, rows = out.read_csv(dir .. "/t.csv")

@@ -16,6 +16,7 @@ local check = require "wrc.check"
 local here = arg[0]:match("(.*/)") or "./"
 local H = dofile(here .. "../halfspace/hertz_reference.lua")
 local C = dofile(here .. "contact_helpers.lua")
+local P = dofile(here .. "../data/profile/helpers.lua")
 
 local levels = math.tointeger(tonumber(arg.levels or 4))
 assert(levels and levels >= 1 and levels <= 6, "levels must be 1..6")
@@ -27,28 +28,8 @@ local line_step = tonumber(arg.line_step or 0.02e-3)  -- m between rail lines
 local half_width = 0.025   -- m: the rail extends to +-25 mm (the widest inter-penetration is +-9.4 mm)
 local gauge_depth = 0.2e-3 -- m: the gauge point on the crown (the pair has no flange)
 
-local function cylinder_wheel()
-  local y, z = {}, {}
-  for k = 0, 130 do y[#y + 1], z[#z + 1] = -0.070 + k * 1e-3, 0.0 end
-  return wrc.profile.points{kind = "wheel", y = y, z = z, name = "cylinder"}
-end
-
-local function crowned_rail(R)
-  local y, z = {}, {}
-  local n = math.floor(half_width / line_step + 0.5)
-  for k = -n, n do
-    local yk = k * line_step
-    y[#y + 1], z[#z + 1] = yk, math.sqrt(R * R - yk * yk) - R
-  end
-  return wrc.profile.points{kind = "rail", y = y, z = z, name = string.format("crown R%.0f", R * 1e3)}
-end
-
--- The crown (rail profile y = 0) under the tape circle (y = 0.75): the gauge point is on the gauge side of the
--- crown at gauge_depth below its top.
 local function wheelset(wheel, rail, R, element)
-  local yg = math.sqrt(R * R - (R - gauge_depth) ^ 2)
-  return wrc.wheelset{wheel = wheel, rail = rail, radius = r0, cant = 0, gauge_depth = gauge_depth,
-                      gauge = 2 * (0.75 - yg), E = E, nu = nu, grid = element, strategy = {"coarse", "topology"}}
+  return P.crown_wheelset(wheel, rail, R, {radius = r0, gauge_depth = gauge_depth, E = E, nu = nu, grid = element})
 end
 
 -- Semi-axes measured on the pressure grid, on the row and the column through the element nearest the centre
@@ -93,7 +74,7 @@ for _, q in ipairs(arg.q and {tonumber(arg.q)} or {1, 2, 5, 10}) do
   local R = r0 / q
   local A, B = 1 / (2 * r0), 1 / (2 * R)
   local ref = H.from_force(A, B, Estar, load)
-  local wheel, rail = cylinder_wheel(), crowned_rail(R)
+  local wheel, rail = P.cone_wheel(0), P.crowned_rail(R, half_width, line_step)
   local errors = {}
   for level = 1, levels do
     local n = 2 ^ (level + 1)  -- elements on the minor semi-axis: 4, 8, 16, ...
@@ -174,7 +155,7 @@ print(string.format("worst: force %.3f %%, peak pressure %.3f %%, semi-axes %.2f
 do
   local q, n = 5, 8
   local R = r0 / q
-  local wheel, rail = cylinder_wheel(), crowned_rail(R)
+  local wheel, rail = P.cone_wheel(0), P.crowned_rail(R, half_width, line_step)
   local delta = H.from_force(1 / (2 * r0), q / (2 * r0), Estar, load).delta
   print("yawed cylinder on the crown, B/A = 5 at zero yaw, 100 kN at zero yaw")
   print(string.format("%8s %10s %10s %9s %9s", "yaw_rad", "max_h_um", "delta_um", "dF_%", "dpmax_%"))

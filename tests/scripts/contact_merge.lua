@@ -18,6 +18,7 @@
 local check = require "wrc.check"
 local here = arg[0]:match("(.*/)") or "./"
 local C = dofile(here .. "contact_helpers.lua")
+local P = dofile(here .. "../data/profile/helpers.lua")
 
 local E, nu = 2.1e11, 0.3
 local Estar = E / (2 * (1 - nu * nu))
@@ -27,12 +28,6 @@ local outer = 0.015           -- the rail extends this far beyond each crown (m)
 local gauge_depth = 0.2e-3
 local element = 0.25e-3
 local delta = 50e-6           -- penetration at the higher crown (m): each patch ~25 kN
-
-local function cylinder_wheel()
-  local y, z = {}, {}
-  for k = 0, 130 do y[#y + 1], z[#z + 1] = -0.070 + k * 1e-3, 0.0 end
-  return wrc.profile.points{kind = "wheel", y = y, z = z, name = "cylinder"}
-end
 
 -- Crowns at profile y = -d/2 (gauge side, top at 0) and +d/2 (top at -drop), a V-shaped valley between them.
 local function two_crown_rail(d, drop)
@@ -46,7 +41,7 @@ local function two_crown_rail(d, drop)
   return wrc.profile.points{kind = "rail", y = y, z = z, name = string.format("two crowns %g mm apart", d * 1e3)}
 end
 
-local wheel = cylinder_wheel()
+local wheel = P.cone_wheel(0)
 local function wheelset(d, drop, tolerance, solver)
   local yg = d / 2 + math.sqrt(Rc * Rc - (Rc - gauge_depth) ^ 2)  -- gauge point on the first crown's gauge side
   return wrc.wheelset{wheel = wheel, rail = two_crown_rail(d, drop), radius = r0, cant = 0, E = E, nu = nu,

@@ -4,6 +4,7 @@
 // wheel with Fz given, an equilibrium and a small sweep. The profile files are written by the fixture
 // tests/data/profile/write_text_profiles.lua (17 significant digits: they read back exactly).
 #include "lua/lua.hpp"
+#include "wheelset/paper_profiles.hpp"
 #include "wheelset/vertical_load.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -18,27 +19,12 @@
 #include <numbers>
 #include <string>
 
+using wrc::test::paper_profiles;
+using wrc::test::profile_file;
 using wrc::test::within_rel;
 using namespace wrc;
 
 namespace {
-
-std::string profile_file(const char* name) { return fmt::format("{}/{}.csv", WRC_TEST_PROFILES, name); }
-
-Profile load_text(const char* name, ProfileKind kind) {
-  LoadOptions o;
-  o.kind = kind;
-  return load_profile_file(profile_file(name), o);
-}
-
-// S1002 wheels on 60E1 rails, both sides, read from the text files.
-WheelsetProfiles paper_profiles() {
-  WheelsetProfiles profiles;
-  const Profile wheel = load_text("s1002", ProfileKind::wheel), rail = load_text("60e1", ProfileKind::rail);
-  profiles.wheel = {wheel, wheel};
-  profiles.rail = {rail, rail};
-  return profiles;
-}
 
 // The paper's wheelset on the coarser 0.5 mm grid the wheel and warm-start tests use.
 constexpr double kCoarseElement = 0.5e-3;

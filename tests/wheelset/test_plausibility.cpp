@@ -1,12 +1,11 @@
 // The flange of a wheel profile and the flange-climb criteria (wheelset/plausibility.hpp) against the nominal
 // dimensions of S1002 (EN 13715: flange height 28 mm, thickness 32.5 mm at 10 mm above the tape circle, flank 70 deg)
 // and Nadal's formula written out here.
-#include "wrc/profile/reader.hpp"
+#include "wheelset/paper_profiles.hpp"
 #include "wrc/wheelset/plausibility.hpp"
 #include "approx.hpp"
 
 #include <doctest/doctest.h>
-#include <fmt/format.h>
 
 #include <cmath>
 
@@ -15,11 +14,7 @@ using namespace wrc;
 
 namespace {
 
-Profile s1002() {
-  LoadOptions o;
-  o.kind = ProfileKind::wheel;
-  return load_profile_file(fmt::format("{}/s1002.csv", WRC_TEST_PROFILES), o);
-}
+Profile s1002() { return test::load_text("s1002", ProfileKind::wheel); }
 
 }  // namespace
 

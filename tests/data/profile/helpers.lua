@@ -1,6 +1,6 @@
--- Helpers of the profile and track tests (loaded with dofile from WRC_TEST_DATA): geometry measured on
--- polylines, and writers of sample files in each reader's format (written here, independently of the
--- readers, from the analytic profiles).
+-- Helpers of the profile, track and contact tests (loaded with dofile from WRC_TEST_DATA, or relative to the
+-- script): geometry measured on polylines, writers of sample files in each reader's format (written here,
+-- independently of the readers, from the analytic profiles), and the Hertzian pairs of the contact tests.
 local H = {}
 
 -- Distance (m) from (y, z) to the polyline ys, zs (sorted by y): nearest segment, searched outward from
@@ -104,6 +104,39 @@ function H.canted_60e1(step, depth)
     zs[i] = s * y0[i] + c * z0[i] - tz
   end
   return wrc.profile.points{kind = "rail", name = "60E1 canted 1:40", y = ys, z = zs}
+end
+
+-- Hertzian pairs of the contact tests. A wheel of conicity `slope` (radius r0 - slope s, s in [-70, 60] mm every
+-- mm); slope 0: a cylinder (z exactly 0).
+function H.cone_wheel(slope)
+  local y, z = {}, {}
+  for k = 0, 130 do
+    local s = -0.070 + k * 1e-3
+    y[#y + 1], z[#z + 1] = s, slope == 0 and 0.0 or slope * s
+  end
+  return wrc.profile.points{kind = "wheel", y = y, z = z, name = slope == 0 and "cylinder" or "cone"}
+end
+
+-- A rail crowned by a circular arc of lateral radius R (m), top at y = z = 0, points `step` apart out to
+-- +-half_width (m): the rail lines themselves under strategy {"coarse", "topology"} (which does not resample).
+function H.crowned_rail(R, half_width, step)
+  local y, z = {}, {}
+  local n = math.floor(half_width / step + 0.5)
+  for k = -n, n do
+    local yk = k * step
+    y[#y + 1], z[#z + 1] = yk, math.sqrt(R * R - yk * yk) - R
+  end
+  return wrc.profile.points{kind = "rail", y = y, z = z, name = string.format("crown R%.0f", R * 1e3)}
+end
+
+-- A wheelset of a wheel on the crowned rail of radius R, cant 0, its crown (rail profile y = 0) under the tape
+-- circle (y = 0.75): the gauge point is on the gauge side of the crown, o.gauge_depth below its top. o: radius,
+-- gauge_depth, E, nu, grid, surface (nil: the default).
+function H.crown_wheelset(wheel, rail, R, o)
+  local yg = math.sqrt(R * R - (R - o.gauge_depth) ^ 2)
+  return wrc.wheelset{wheel = wheel, rail = rail, radius = o.radius, cant = 0, gauge_depth = o.gauge_depth,
+                      gauge = 2 * (0.75 - yg), E = o.E, nu = o.nu, grid = o.grid, surface = o.surface,
+                      strategy = {"coarse", "topology"}}
 end
 
 local function write(path, text)
