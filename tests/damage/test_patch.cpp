@@ -9,6 +9,7 @@
 #include "wrc/equilibrium/wheel.hpp"
 #include "wrc/wheelset/wheelset.hpp"
 #include "approx.hpp"
+#include "field_recorder.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -197,59 +198,13 @@ TEST_CASE("compute_damage refuses bad fields, naming them") {
   CHECK(none.Tgamma_per_area == 0);
 }
 
-namespace {
-
-// Records what describe() emits, with paths and documentation.
-class Recorder final : public FieldSink {
- public:
-  std::map<std::string, double> nums;
-  std::map<std::string, std::string> strs;
-  std::map<std::string, std::size_t> arrays;
-  std::map<std::string, FieldDoc> docs;
-  std::map<std::string, int> emitted;  // how often each path was described
-  bool finite = true;
-  void number(std::string_view k, double v) override {
-    nums[path(k)] = v;
-    finite = finite && std::isfinite(v);
-  }
-  void integer(std::string_view k, long long v) override { nums[path(k)] = static_cast<double>(v); }
-  void boolean(std::string_view k, bool v) override { nums[path(k)] = v; }
-  void string(std::string_view k, std::string_view v) override { strs[path(k)] = std::string(v); }
-  void numbers(std::string_view k, const double* v, std::size_t n) override {
-    arrays[path(k)] = n;
-    for (std::size_t i = 0; i < n; ++i) finite = finite && std::isfinite(v[i]);
-  }
-  void integers(std::string_view k, const long long*, std::size_t n) override { arrays[path(k)] = n; }
-  void grid(std::string_view k, const double* v, int nx, int ny) override { numbers(k, v, std::size_t(nx) * ny); }
-  void begin(std::string_view k) override { prefix.push_back(path(k) + "."); }
-  void begin_list(std::string_view k, std::size_t) override {
-    begin(k);
-    items.push_back(0);
-  }
-  void item() override { prefix.push_back(prefix.back() + std::to_string(++items.back()) + "."); }
-  void end() override { prefix.pop_back(); }
-
- protected:
-  void document(std::string_view k, FieldDoc doc) override {
-    docs[path(k)] = doc;
-    ++emitted[path(k)];
-  }
-
- private:
-  std::string path(std::string_view k) const { return (prefix.empty() ? "" : prefix.back()) + std::string(k); }
-  std::vector<std::string> prefix;
-  std::vector<int> items;
-};
-
-}  // namespace
-
 TEST_CASE("describe(PatchDamage): every field documented, values as computed") {
   const Sliding s = sliding(0.02, 0, 0.3, 10);
   for (WearModel model : {WearModel::archard, WearModel::usfd}) {
     DamageOptions o;
     o.wear.model = model;
     const PatchDamage d = compute_damage(s.fields(10), o);
-    Recorder rec;
+    test::FieldRecorder rec;
     describe(d, rec);
     CHECK(rec.finite);
     std::size_t fields = rec.nums.size() + rec.strs.size() + rec.arrays.size();
@@ -308,7 +263,7 @@ TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) o
         // solve filled them): each once, no name in common with the area's own.
         DamageOptions no_wear;
         no_wear.with_wear = false;
-        Recorder area_rec, damage_rec, wear_rec;
+        test::FieldRecorder area_rec, damage_rec, wear_rec;
         describe(pc, area_rec);
         describe(compute_damage(area_fields(pc), no_wear), damage_rec);
         describe(d, wear_rec);

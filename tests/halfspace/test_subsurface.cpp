@@ -4,6 +4,7 @@
 #include "wrc/halfspace/subsurface.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
+#include "field_recorder.hpp"
 #include "halfspace/hamilton_reference.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -484,44 +485,6 @@ TEST_CASE("shakedown point: load factor, traction coefficient and the regime on 
   CHECK(r.shakedown.subsurface_limit == kPointShakedownLimit);
 }
 
-namespace {
-
-// Records what describe() emits, with paths.
-class Recorder final : public wrc::FieldSink {
- public:
-  std::map<std::string, double> nums;
-  std::map<std::string, std::string> strs;
-  std::map<std::string, std::size_t> grids;
-  void number(std::string_view k, double v) override {
-    nums[path(k)] = v;
-    finite = finite && std::isfinite(v);
-  }
-  void integer(std::string_view k, long long v) override { nums[path(k)] = static_cast<double>(v); }
-  void boolean(std::string_view k, bool v) override { nums[path(k)] = v; }
-  void string(std::string_view k, std::string_view v) override { strs[path(k)] = std::string(v); }
-  void numbers(std::string_view k, const double*, std::size_t n) override { grids[path(k)] = n; }
-  void integers(std::string_view k, const long long*, std::size_t n) override { grids[path(k)] = n; }
-  void grid(std::string_view k, const double* v, int nx, int ny) override {
-    grids[path(k)] = static_cast<std::size_t>(nx) * ny;
-    for (int i = 0; i < nx * ny; ++i) finite = finite && std::isfinite(v[i]);
-  }
-  void begin(std::string_view k) override { prefix.push_back(path(k) + "."); }
-  void begin_list(std::string_view k, std::size_t) override {
-    prefix.push_back(path(k) + ".");
-    items.push_back(0);
-  }
-  void item() override { prefix.push_back(prefix.back() + std::to_string(++items.back()) + "."); }
-  void end() override { prefix.pop_back(); }
-  bool finite = true;
-
- private:
-  std::string path(std::string_view k) const { return (prefix.empty() ? "" : prefix.back()) + std::string(k); }
-  std::vector<std::string> prefix;
-  std::vector<int> items;
-};
-
-}  // namespace
-
 TEST_CASE("describe: the maxima, the shakedown point and the grids of every depth, all finite") {
   const double a = 3e-3;
   const Grid g = hertz_grid(a, 6, 1);
@@ -530,7 +493,7 @@ TEST_CASE("describe: the maxima, the shakedown point and the grids of every dept
   rq.z = {0.5 * a, 0.2 * a};
   rq.shear_yield = 400e6;  // p0 / k = 2.25, below first yield at 2.79
   const SubsurfaceResult r = compute_subsurface(steel, {g, p}, rq);
-  Recorder rec;
+  wrc::test::FieldRecorder rec;
   describe(r, rec);
   CHECK(rec.finite);
   CHECK(rec.nums.at("von_mises_max") == r.von_mises_max.value);
@@ -544,10 +507,10 @@ TEST_CASE("describe: the maxima, the shakedown point and the grids of every dept
   CHECK(rec.strs.at("method") == method_name(r.method));
   for (const char* name : {"sigma_xx", "sigma_yy", "sigma_zz", "sigma_xy", "sigma_xz", "sigma_yz", "sigma_1", "sigma_2",
                            "sigma_3", "von_mises", "tresca", "max_shear"})
-    CHECK(rec.grids.at(fmt::format("depths.1.{}", name)) == static_cast<std::size_t>(g.size()));
+    CHECK(rec.arrays.at(fmt::format("depths.1.{}", name)) == static_cast<std::size_t>(g.size()));
   // Without load: zeros everywhere, no NaN, limits absent.
   const std::vector<double> zero(g.size(), 0.0);
-  Recorder empty;
+  wrc::test::FieldRecorder empty;
   describe(compute_subsurface(steel, {g, zero}, rq), empty);
   CHECK(empty.finite);
   CHECK(empty.nums.at("von_mises_max") == 0);
