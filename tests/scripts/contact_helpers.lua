@@ -1,6 +1,6 @@
 -- Helpers shared by the normal-contact Lua tests (contact_*.lua; loaded with dofile from the tests' own folder):
 -- measures of a solved contact area (a patch of ws:contact / ws:wheel) computed from its pressure and h grids,
--- and the inter-penetration area of its segments projected onto its contact plane. Run on its own it checks
+-- the inter-penetration area of its segments projected onto its contact plane, and the placed wheel's radius. Run on its own it checks
 -- itself on a synthetic area.
 local M = {}
 
@@ -188,6 +188,18 @@ function M.contact_inside(p, lines)
     end
   end
   return loaded, bad_h, outside
+end
+
+-- The placed left wheel's radius (m) at lateral position Y (from the wheelset centre) of wheelset w, interpolated
+-- between its points.
+function M.wheel_radius(w, Y)
+  local wy, wz = w.left_wheel.y, w.left_wheel.z
+  for k = 1, #wy - 1 do
+    if wy[k] <= Y and Y <= wy[k + 1] then
+      return -(wz[k] + (wz[k + 1] - wz[k]) * (Y - wy[k]) / (wy[k + 1] - wy[k]))
+    end
+  end
+  error("Y outside the wheel")
 end
 
 -- Self-check on a synthetic area: a 3 x 3 block and a separate element on a 5 x 5 grid.

@@ -14,11 +14,6 @@ local s1002_fine = wrc.profile.load("profiles/s1002.lua", {step = 0.01e-3})  -- 
 local canted = H.canted_60e1(0.1e-3, 0.030)
 local canted_fine = H.canted_60e1(0.01e-3, 0.030)
 
-local function has(list, pattern)
-  for _, t in ipairs(list) do if t:find(pattern, 1, true) then return true end end
-  return false
-end
-
 local function near_profile(p, ref, tol, what, keep)
   local d, wy, wz, n = H.max_distance(p, ref, keep)
   check.ok(n > 100, what .. ": compared " .. n .. " points")
@@ -34,7 +29,7 @@ end
 local prw = H.write_simpack(tmp .. "s1002.prw", s1002, {mirror_y = true, inversion = true, units = 1000})
 local w1 = wrc.profile.load(prw)
 check.ok(w1.kind == "wheel", "the .prw type = 1 gives a wheel")
-check.ok(has(w1.transforms, "mirror.y = 1") and has(w1.transforms, "inversion = 1") and has(w1.transforms, "units.len.f"),
+check.ok(H.has(w1.transforms, "mirror.y = 1") and H.has(w1.transforms, "inversion = 1") and H.has(w1.transforms, "units.len.f"),
          "the Simpack processing keys are reported: " .. table.concat(w1.transforms, "; "))
 near_profile(w1, s1002_fine, 1e-5, "S1002 .prw (mirror.y, inversion)")
 check.ok(w1.metadata.comment == "wrc test sample ! not a comment", "a quoted '!' is not a comment")
@@ -46,7 +41,7 @@ near_profile(wrc.profile.load(prw_m), s1002_fine, 1e-5, "S1002 .prw in metres wi
 -- MiniProf wheel (X from the flange back, Y toward the flange tip).
 local whl = H.write_miniprof(tmp .. "s1002.whl", s1002)
 local w2 = wrc.profile.load(whl)
-check.ok(w2.kind == "wheel" and has(w2.transforms, "toward the flange tip (standard)"), "MiniProf wheel orientation reported")
+check.ok(w2.kind == "wheel" and H.has(w2.transforms, "toward the flange tip (standard)"), "MiniProf wheel orientation reported")
 near_profile(w2, s1002_fine, 1e-5, "S1002 .whl")
 
 -- Plain text and CSV (kind given as an option; the CSV header names the unit).
@@ -54,7 +49,7 @@ local txt = H.write_text(tmp .. "s1002.txt", s1002, false)
 near_profile(wrc.profile.load(txt, {kind = "wheel"}), s1002_fine, 1e-5, "S1002 .txt")
 local csv = H.write_text(tmp .. "s1002.csv", s1002, true)
 local w3 = wrc.profile.load(csv, {kind = "wheel"})
-check.ok(has(w3.transforms, "header 'y_mm' 'z_mm'"), "the CSV header's unit is reported")
+check.ok(H.has(w3.transforms, "header 'y_mm' 'z_mm'"), "the CSV header's unit is reported")
 near_profile(w3, s1002_fine, 1e-5, "S1002 .csv")
 
 -- The canted 60E1 as .prr (origin at the canted top, gauge side at -y, z down in the file).
@@ -68,9 +63,9 @@ local ban_up = H.write_miniprof(tmp .. "uic60_up.ban", canted, {x_sign = -1, y_s
 local ban_down = H.write_miniprof(tmp .. "uic60_down.ban", canted, {x_sign = -1, y_sign = -1})
 local r2 = wrc.profile.load(ban_up, {mirror_y = true})
 local r3 = wrc.profile.load(ban_down, {mirror_y = true})
-check.ok(has(r2.transforms, "Y points up (standard)"), "Y up detected: " .. table.concat(r2.transforms, "; "))
-check.ok(has(r3.transforms, "Y points down (reversed)"), "Y down detected: " .. table.concat(r3.transforms, "; "))
-check.ok(has(r3.transforms, "mirror_y (option)"), "the mirror option is reported")
+check.ok(H.has(r2.transforms, "Y points up (standard)"), "Y up detected: " .. table.concat(r2.transforms, "; "))
+check.ok(H.has(r3.transforms, "Y points down (reversed)"), "Y down detected: " .. table.concat(r3.transforms, "; "))
+check.ok(H.has(r3.transforms, "mirror_y (option)"), "the mirror option is reported")
 check.ok(r3.metadata.marked_points ~= nil, "points marked with '\"' are read and counted")
 near_profile(r2, canted_fine, 1e-5, "60E1 canted .ban, Y up")
 near_profile(r3, canted_fine, 1e-5, "60E1 canted .ban, Y down")
@@ -85,10 +80,10 @@ local y5, z5 = r5:points()
 local y1, z1 = r1:points()
 check.near(y5[10] - y1[10], 0.001, 1e-12, "shift.y applied")
 check.near(z5[10] - z1[10], -0.002, 1e-12, "shift.z applied")
-check.ok(r5.name == "shifted" and has(r5.transforms, "shift (option)"), "name and shift reported")
+check.ok(r5.name == "shifted" and H.has(r5.transforms, "shift (option)"), "name and shift reported")
 local r6 = wrc.profile.load(prr, {crop = {z = {-0.020, 0.001}}})
 check.ok(r6:bounds().z_min >= -0.020 and #r6 < #r1, "crop keeps z >= -20 mm")
-check.ok(has(r6.transforms, "crop (option)"), "crop reported")
+check.ok(H.has(r6.transforms, "crop (option)"), "crop reported")
 
 -- A reader chosen by id for another extension, and the kind option checked against the file.
 local dat = H.write_simpack(tmp .. "s1002_simpack.dat", s1002, {mirror_y = true})
@@ -108,14 +103,14 @@ check.fails(function() wrc.profile.load(tmp .. "s1002.xyz") end, "no reader for 
 local samples = os.getenv("WRC_TEST_DATA") .. "/profile/samples/"
 local mw = wrc.profile.load(samples .. "s1002.prw")
 check.ok(mw.kind == "wheel" and mw.name == "s1002", "s1002.prw: a wheel named after the file")
-check.ok(has(mw.transforms, "5 mirror.y = 1") and has(mw.transforms, "6 inversion = 1")
-         and has(mw.transforms, "units.len.f = +1.000000000000000e+03"),
+check.ok(H.has(mw.transforms, "5 mirror.y = 1") and H.has(mw.transforms, "6 inversion = 1")
+         and H.has(mw.transforms, "units.len.f = +1.000000000000000e+03"),
          "s1002.prw: the processing keys are applied and reported: " .. table.concat(mw.transforms, "; "))
 check.ok(mw.metadata.comment == "S1002 h28 e32.5 6.7% ! sampled every 0.5 mm", "s1002.prw: a quoted '!' is kept")
 near_profile(mw, s1002_fine, 1e-5, "s1002.prw vs analytic S1002")
 
 local ww = wrc.profile.load(samples .. "s1002.whl")
-check.ok(ww.kind == "wheel" and has(ww.transforms, "toward the flange tip (standard)"),
+check.ok(ww.kind == "wheel" and H.has(ww.transforms, "toward the flange tip (standard)"),
          "s1002.whl: Y toward the flange tip detected: " .. table.concat(ww.transforms, "; "))
 check.ok(ww.metadata.Sh == "28.00" and ww.metadata.Sd == "32.50" and ww.metadata.ColumnDef == "X,Y,A",
          "s1002.whl: the header keys are kept")
@@ -126,9 +121,9 @@ local mr = wrc.profile.load(samples .. "60e1_canted.prr")
 local mb = wrc.profile.load(samples .. "60e1_canted.ban", {mirror_y = true})
 local mt = wrc.profile.load(samples .. "60e1_rotated.prr")
 check.ok(mr.kind == "rail" and mb.kind == "rail" and mt.kind == "rail", "the rail samples are rails")
-check.ok(has(mb.transforms, "Y points down (reversed)"), "60e1_canted.ban: Y found pointing down")
+check.ok(H.has(mb.transforms, "Y points down (reversed)"), "60e1_canted.ban: Y found pointing down")
 check.ok(mb.metadata.marked_points == tostring(#mb - 2), "60e1_canted.ban: the points marked with '\"' are counted")
-check.ok(has(mt.transforms, "2 shift.y") and has(mt.transforms, "rotated by -0.0249947936 rad"),
+check.ok(H.has(mt.transforms, "2 shift.y") and H.has(mt.transforms, "rotated by -0.0249947936 rad"),
          "60e1_rotated.prr: shift, then rotate in degrees (units.ang.f) by -atan(1/40): " .. table.concat(mt.transforms, "; "))
 near_profile(mb, mr, 1e-6, "60e1_canted.ban vs .prr")
 near_profile(mr, mb, 1e-6, "60e1_canted.prr vs .ban")

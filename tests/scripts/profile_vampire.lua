@@ -14,13 +14,7 @@ local s1002 = wrc.profile.load("profiles/s1002.lua", {step = 0.5e-3})
 local e60 = wrc.profile.load("profiles/60e1.lua", {step = 0.5e-3})
 local INCH = 25.4
 
-local function write(name, text)
-  local path = tmp .. name
-  local f = assert(io.open(path, "w"))
-  f:write(text)
-  f:close()
-  return path
-end
+local function write(name, text) return H.write(tmp .. name, text) end
 
 -- Rows from a profile: d(y) = distance from the track centre (mm), Z(z) (mm); the right profile gets dz_right (mm)
 -- added to Z. `sep` separates the fields; `comment` is appended to every 10th row.
@@ -47,11 +41,6 @@ local function same(p, ref, dz, what)
   print(string.format("  %-56s %d points, largest difference %.2e m", what, #y1, worst))
 end
 
-local function has(list, pattern)
-  for _, t in ipairs(list) do if t:find(pattern, 1, true) then return true end end
-  return false
-end
-
 -- Wheels: every tread datum; the right profile 0.3 mm larger in radius (Z toward the flange tip + 0.3).
 local datums = {
   {line = "TREADDATUM EUROPEAN", mm = 70, sep = " ", name = "european"},
@@ -67,7 +56,7 @@ for _, c in ipairs(datums) do
   local left = wrc.profile.load(path)
   check.ok(left.kind == "wheel", c.name .. ": WHEELPROFILE gives a wheel")
   check.ok(left.metadata.title == "S1002 new, " .. c.name and left.metadata.flange_back == "1360", c.name .. ": metadata")
-  check.ok(has(left.transforms, "left side (columns yl zl)"), c.name .. ": the side read is reported")
+  check.ok(H.has(left.transforms, "left side (columns yl zl)"), c.name .. ": the side read is reported")
   same(left, s1002, 0, "wheel " .. c.line .. ", left")
   same(wrc.profile.load(path, {side = "right"}), s1002, -0.3e-3, "wheel " .. c.line .. ", right")
 end

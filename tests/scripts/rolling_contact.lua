@@ -11,6 +11,7 @@
 --     the creep forces of ws:contact at its poses;
 --   - bad input: clear errors (mu <= 0 or NaN, V = 0, creepage NaN, conflicting or unknown keys).
 local check = require "wrc.check"
+local C = dofile((arg[0]:match("(.*/)") or "./") .. "contact_helpers.lua")
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
@@ -60,20 +61,11 @@ end
 
 -- The rigid slip of every element of the wide, curved patch of the centred wheelset (zero yaw, roll ~ 0): the wheel's
 -- point at lateral position Y and track x moves at V - omega d along the track, d its height below the axle:
--- sqrt(R(Y)^2 - x^2) with R the wheel radius there (the placed profile, interpolated here), less half the overlap h
+-- sqrt(R(Y)^2 - x^2) with R the wheel radius there (the placed profile, interpolated), less half the overlap h
 -- along the normal's vertical part (the contact point lies midway between the surfaces). Across the track the spin
 -- gives V phi x, with phi = omega (n . axle) / V of the element's own normal: the plane's n, or the row's on a
 -- conformal area, where it varies across the patch. Not the linear field of the creepages: R varies quadratically
 -- over the 20 mm wide patch.
-local function radius(w, Y)
-  local wy, wz = w.left_wheel.y, w.left_wheel.z
-  for k = 1, #wy - 1 do
-    if wy[k] <= Y and Y <= wy[k + 1] then
-      return -(wz[k] + (wz[k + 1] - wz[k]) * (Y - wy[k]) / (wy[k + 1] - wy[k]))
-    end
-  end
-  error("Y outside the wheel")
-end
 for surface, w in pairs{conformal = ws, planar = wp} do
   local c = w:contact(pose(e0, {V = V, mu = 0.3}))
   local p = c.left.patches[1]
@@ -92,7 +84,7 @@ for surface, w in pairs{conformal = ws, planar = wp} do
           n = {x = 0, y = p.rows.normal_y[j], z = p.rows.normal_z[j]}
           x, Y = o.x + u, p.rows.y[j] - p.h[j][k] * n.y - e0.y
         end
-        local expected = 1 - (math.sqrt(radius(w, Y) ^ 2 - x * x) - 0.5 * p.h[j][k] * n.z) / r0
+        local expected = 1 - (math.sqrt(C.wheel_radius(w, Y) ^ 2 - x * x) - 0.5 * p.h[j][k] * n.z) / r0
         worst = math.max(worst, math.abs(p.rigid_slip_x[j][k] / V - expected))
         lo, hi = math.min(lo, expected), math.max(hi, expected)
         local phi = (n.y * axle.y + n.z * axle.z) / r0

@@ -4,12 +4,13 @@
 -- undeformed surface, h deeper (CONTACT's convention: its rigid slip on the actual wheel and rail surfaces).
 --   - every element of the wide, curved patch of the centred wheelset at y = 0, planar and conformal: with
 --     "undeformed" the longitudinal rigid slip is 1 - D / r0, D = sqrt(R(Y)^2 - x^2) the depth below the axle of the
---     wheel's undeformed surface at the element (R: the placed wheel profile, interpolated here; Y: the lateral
+--     wheel's undeformed surface at the element (R: the placed wheel profile, interpolated; Y: the lateral
 --     position of the wheel's point), with "deformed" 1 - (D - h n_z / 2) / r0; so the two differ by h n_z / (2 r0);
 --   - the area's xi (at its reference point) moves by the same amount, and Fx follows it;
 --   - the lateral rigid slip (spin) does not change (a shift along n moves the point within the axle's plane);
 --   - bad input: an unknown value, the key with prescribed creepages or without V.
 local check = require "wrc.check"
+local C = dofile((arg[0]:match("(.*/)") or "./") .. "contact_helpers.lua")
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
@@ -22,16 +23,6 @@ local function pose(extra)
   local t = {y = e0.y, z = e0.z, roll = e0.roll, yaw = e0.yaw}
   for k, v in pairs(extra) do t[k] = v end
   return t
-end
-
-local function radius(w, Y)  -- the placed left wheel's radius at lateral position Y (from the wheelset centre)
-  local wy, wz = w.left_wheel.y, w.left_wheel.z
-  for k = 1, #wy - 1 do
-    if wy[k] <= Y and Y <= wy[k + 1] then
-      return -(wz[k] + (wz[k + 1] - wz[k]) * (Y - wy[k]) / (wy[k + 1] - wy[k]))
-    end
-  end
-  error("Y outside the wheel")
 end
 
 for surface, w in pairs{conformal = ws, planar = wp} do
@@ -55,7 +46,7 @@ for surface, w in pairs{conformal = ws, planar = wp} do
           nz = pu.rows.normal_z[j]
           x, Y = o.x + a, pu.rows.y[j] - h * pu.rows.normal_y[j] - e0.y
         end
-        local D = math.sqrt(radius(w, Y) ^ 2 - x * x)
+        local D = math.sqrt(C.wheel_radius(w, Y) ^ 2 - x * x)
         worst = math.max(worst, math.abs(pu.rigid_slip_x[j][k] / V - (1 - D / r0)))
         local shift = 0.5 * h * nz / r0
         worst_diff = math.max(worst_diff, math.abs((pd.rigid_slip_x[j][k] - pu.rigid_slip_x[j][k]) / V - shift))

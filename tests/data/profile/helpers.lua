@@ -225,6 +225,12 @@ function H.steepest_flange(wheel)
   return steepest, steep_y
 end
 
+-- Whether a string of `list` holds `pattern` (plain text).
+function H.has(list, pattern)
+  for _, t in ipairs(list) do if t:find(pattern, 1, true) then return true end end
+  return false
+end
+
 function H.tmpdir()
   local d = (arg and arg.tmp) or os.getenv("WRC_TEST_TMP") or "/tmp"
   return d
