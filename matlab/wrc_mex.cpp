@@ -14,6 +14,7 @@
 #include <wrc/wrc.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -268,13 +269,31 @@ std::string option_text(const Arguments& args) {
   return text;
 }
 
-// An argument the C function takes positionally: required (the C API has no default for it, nor does this layer).
-double argument(Arguments& args, const char* key, const char* c_function, const char* all) {
-  const mxArray* v = args.take(key);
-  if (!v)
-    fail("wrc:missingArgument", args.function + ": '" + key + "' is missing (" + c_function + " takes " + all +
-                                    " as arguments: give each)");
-  return number_of(v, args.function + ": '" + key + "'");
+// A side given as 'left' or 'right'.
+int side_of(const Arguments& a, const mxArray* v) {
+  const std::string s = text_of(v, a.function + ": side");
+  if (s == "left") return WRC_LEFT;
+  if (s == "right") return WRC_RIGHT;
+  fail("wrc:usage", a.function + ": side = '" + s + "' must be 'left' or 'right'");
+}
+
+// The arguments a C function takes positionally, read by name in its order: each required (the C API has no default
+// for them, nor does this layer). Numbers, and "side" as WRC_LEFT or WRC_RIGHT.
+template <std::size_t N>
+std::array<double, N> positional(Arguments& a, const char* c_function, const char* const (&keys)[N]) {
+  std::string all;  // "y, z, roll and yaw"
+  for (std::size_t k = 0; k < N; ++k) all += (k == 0 ? "" : k + 1 < N ? ", " : " and ") + std::string(keys[k]);
+  std::array<double, N> values{};
+  for (std::size_t k = 0; k < N; ++k) {
+    const std::string key = keys[k];
+    const bool side = key == "side";
+    const mxArray* v = a.take(keys[k]);
+    if (!v)
+      fail("wrc:missingArgument", a.function + ": '" + key + "' is missing (" + c_function + " takes " + all +
+                                      (side ? ")" : " as arguments: give each)"));
+    values[k] = side ? side_of(a, v) : number_of(v, a.function + ": '" + key + "'");
+  }
+  return values;
 }
 
 // ---- results: paths into nested structs ----
@@ -448,47 +467,59 @@ mxArray* result_struct(const wrc_result* r) {
   return s;
 }
 
-// A solve's outputs: its result struct; a solve that did not converge is an error unless the caller asked for the
-// second output (ok = false then, the result holds converged = 0 and error).
-void solved(wrc_status s, Result& res, int nlhs, mxArray** plhs) {
-  if (s != WRC_OK && s != WRC_NOT_CONVERGED) fail_status(s);
-  const std::string message = s == WRC_NOT_CONVERGED ? wrc_last_error() : "";
-  if (s == WRC_NOT_CONVERGED && nlhs < 2) fail("wrc:notConverged", message);
-  plhs[0] = result_struct(res.r);
-  if (nlhs >= 2) plhs[1] = mxCreateLogicalScalar(s == WRC_OK);
-}
-
 // ---- commands ----
 
+// A call of a command: its outputs, its arguments after the command name, and the function its messages name.
 struct Call {
   int nlhs;
   mxArray** plhs;
   int nrhs;
   const mxArray* const* prhs;  // after the command name
+  const char* function;        // "wrc.contact"
 
   const mxArray* at(int i, const char* what) const {
     if (i >= nrhs) fail("wrc:usage", std::string("missing argument: ") + what);
     return prhs[i];
   }
-  Arguments args(int from, const char* function) const {
+  Arguments args(int from) const {
     return Arguments(prhs + std::min(from, nrhs), std::max(0, nrhs - from), function);
+  }
+  // The first argument: a live object of `kind`.
+  template <class T>
+  T* object(Kind kind) const {
+    return static_cast<T*>(object_of(at(0, (std::string("a ") + kind_name(kind)).c_str()), kind, function));
+  }
+  // The result of `call(&result)` as the first output.
+  template <class F>
+  void result(F&& call) const {
+    Result res;
+    check(call(&res.r));
+    plhs[0] = result_struct(res.r);
+  }
+  // A solve's outputs: its result struct; a solve that did not converge is an error unless the caller asked for the
+  // second output (ok = false then, the result holds converged = 0 and error).
+  template <class F>
+  void solved(F&& solve) const {
+    Result res;
+    const wrc_status s = solve(&res.r);
+    if (s != WRC_OK && s != WRC_NOT_CONVERGED) fail_status(s);
+    const std::string message = s == WRC_NOT_CONVERGED ? wrc_last_error() : "";
+    if (s == WRC_NOT_CONVERGED && nlhs < 2) fail("wrc:notConverged", message);
+    plhs[0] = result_struct(res.r);
+    if (nlhs >= 2) plhs[1] = mxCreateLogicalScalar(s == WRC_OK);
   }
 };
 
-wrc_wheelset* wheelset_of(const Call& c, const char* function) {
-  return static_cast<wrc_wheelset*>(object_of(c.at(0, "a wheelset"), Kind::wheelset, function));
-}
-
 void profile_load(const Call& c) {
-  const std::string path = text_of(c.at(0, "the profile's path"), "wrc.profile.load: the path");
-  const Arguments a = c.args(1, "wrc.profile.load");
+  const std::string path = text_of(c.at(0, "the profile's path"), std::string(c.function) + ": the path");
+  const Arguments a = c.args(1);
   wrc_profile* p = nullptr;
   check(wrc_profile_load(path.c_str(), option_text(a).c_str(), &p));
   c.plhs[0] = add_handle(Kind::profile, p);
 }
 
 void profile_points(const Call& c) {
-  Arguments a = c.args(0, "wrc.profile.points");
+  Arguments a = c.args(0);
   const mxArray* kind = a.take("kind");
   const mxArray* y = a.take("y");
   const mxArray* z = a.take("z");
@@ -507,7 +538,7 @@ void profile_points(const Call& c) {
 }
 
 void points(const Call& c) {
-  const auto* p = static_cast<const wrc_profile*>(object_of(c.at(0, "a profile"), Kind::profile, "points"));
+  const auto* p = c.object<const wrc_profile>(Kind::profile);
   std::size_t n = 0;
   const wrc_status s = wrc_profile_points(p, nullptr, nullptr, 0, &n);
   if (s != WRC_OK && s != WRC_TOO_SMALL) fail_status(s);
@@ -519,22 +550,20 @@ void points(const Call& c) {
 }
 
 void write(const Call& c) {
-  const auto* p = static_cast<const wrc_profile*>(object_of(c.at(0, "a profile"), Kind::profile, "write"));
-  const std::string path = text_of(c.at(1, "the file's path"), "write: the path");
-  const Arguments a = c.args(2, "write");
+  const auto* p = c.object<const wrc_profile>(Kind::profile);
+  const std::string path = text_of(c.at(1, "the file's path"), std::string(c.function) + ": the path");
+  const Arguments a = c.args(2);
   check(wrc_profile_write(p, path.c_str(), option_text(a).c_str()));
 }
 
 void flange_measures(const Call& c) {
   const auto* p = static_cast<const wrc_profile*>(object_of(c.at(0, "a profile"), Kind::profile, "flange_measures"));
-  const Arguments a = c.args(1, "wrc.flange_measures");
-  Result res;
-  check(wrc_profile_flange_measures(p, option_text(a).c_str(), &res.r));
-  c.plhs[0] = result_struct(res.r);
+  const Arguments a = c.args(1);
+  c.result([&](wrc_result** r) { return wrc_profile_flange_measures(p, option_text(a).c_str(), r); });
 }
 
 void wheelset(const Call& c) {
-  Arguments a = c.args(0, "wrc.wheelset");
+  Arguments a = c.args(0);
   const char* keys[6] = {"wheel", "rail", "left_wheel", "right_wheel", "left_rail", "right_rail"};
   const wrc_profile* p[6] = {};
   for (int k = 0; k < 6; ++k)
@@ -551,121 +580,84 @@ void wheelset(const Call& c) {
   c.plhs[0] = add_handle(Kind::wheelset, ws);
 }
 
-int side_of(Arguments& a, const char* c_function) {
-  const mxArray* v = a.take("side");
-  if (!v)
-    fail("wrc:missingArgument", a.function + ": 'side' is missing (" + c_function + " takes side, y, yaw, roll and Fz)");
-  const std::string s = text_of(v, a.function + ": side");
-  if (s == "left") return WRC_LEFT;
-  if (s == "right") return WRC_RIGHT;
-  fail("wrc:usage", a.function + ": side = '" + s + "' must be 'left' or 'right'");
-}
-
 void contact(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.contact");
-  Arguments a = c.args(1, "wrc.contact");
-  const char* all = "y, z, roll and yaw";
-  const double y = argument(a, "y", "wrc_contact", all), z = argument(a, "z", "wrc_contact", all),
-               roll = argument(a, "roll", "wrc_contact", all), yaw = argument(a, "yaw", "wrc_contact", all);
-  Result res;
-  solved(wrc_contact(ws, y, z, roll, yaw, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  Arguments a = c.args(1);
+  const auto [y, z, roll, yaw] = positional(a, "wrc_contact", {"y", "z", "roll", "yaw"});
+  c.solved([&](wrc_result** r) { return wrc_contact(ws, y, z, roll, yaw, option_text(a).c_str(), r); });
 }
 
 void wheel(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.wheel");
-  Arguments a = c.args(1, "wrc.wheel");
-  const char* all = "side, y, yaw, roll and Fz";
-  const int side = side_of(a, "wrc_wheel");
-  const double y = argument(a, "y", "wrc_wheel", all), yaw = argument(a, "yaw", "wrc_wheel", all),
-               roll = argument(a, "roll", "wrc_wheel", all), Fz = argument(a, "Fz", "wrc_wheel", all);
-  Result res;
-  solved(wrc_wheel(ws, side, y, yaw, roll, Fz, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  Arguments a = c.args(1);
+  const auto [side, y, yaw, roll, Fz] = positional(a, "wrc_wheel", {"side", "y", "yaw", "roll", "Fz"});
+  c.solved([&](wrc_result** r) {
+    return wrc_wheel(ws, static_cast<int>(side), y, yaw, roll, Fz, option_text(a).c_str(), r);
+  });
 }
 
 void equilibrium(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.equilibrium");
-  Arguments a = c.args(1, "wrc.equilibrium");
-  const char* all = "y, yaw and Q";
-  const double y = argument(a, "y", "wrc_equilibrium", all), yaw = argument(a, "yaw", "wrc_equilibrium", all),
-               Q = argument(a, "Q", "wrc_equilibrium", all);
-  Result res;
-  solved(wrc_equilibrium(ws, y, yaw, Q, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  Arguments a = c.args(1);
+  const auto [y, yaw, Q] = positional(a, "wrc_equilibrium", {"y", "yaw", "Q"});
+  c.solved([&](wrc_result** r) { return wrc_equilibrium(ws, y, yaw, Q, option_text(a).c_str(), r); });
 }
 
 void rigid(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.rigid");
-  Arguments a = c.args(1, "wrc.rigid");
-  const char* all = "y and yaw";
-  const double y = argument(a, "y", "wrc_rigid_contact", all), yaw = argument(a, "yaw", "wrc_rigid_contact", all);
-  Result res;
-  solved(wrc_rigid_contact(ws, y, yaw, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  Arguments a = c.args(1);
+  const auto [y, yaw] = positional(a, "wrc_rigid_contact", {"y", "yaw"});
+  c.solved([&](wrc_result** r) { return wrc_rigid_contact(ws, y, yaw, option_text(a).c_str(), r); });
 }
 
 void geometry_table(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.geometry_table");
-  const Arguments a = c.args(1, "wrc.geometry_table");
-  Result res;
-  check(wrc_geometry_table(ws, option_text(a).c_str(), &res.r));
-  c.plhs[0] = result_struct(res.r);
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  const Arguments a = c.args(1);
+  c.result([&](wrc_result** r) { return wrc_geometry_table(ws, option_text(a).c_str(), r); });
 }
 
 void wheelset_conicity(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.conicity");
-  const Arguments a = c.args(1, "wrc.conicity");
-  Result res;
-  check(wrc_wheelset_conicity(ws, option_text(a).c_str(), &res.r));
-  c.plhs[0] = result_struct(res.r);
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  const Arguments a = c.args(1);
+  c.result([&](wrc_result** r) { return wrc_wheelset_conicity(ws, option_text(a).c_str(), r); });
 }
 
 void conicity(const Call& c) {
-  Arguments a = c.args(0, "wrc.conicity");
+  Arguments a = c.args(0);
   const mxArray* y = a.take("y");
   const mxArray* dr = a.take("dr");
   if (!y || !dr) fail("wrc:missingArgument", "wrc.conicity: 'y' and 'dr' (the Δr table, m) are required");
   const std::vector<double> yv = numbers_of(y, "wrc.conicity: y"), dv = numbers_of(dr, "wrc.conicity: dr");
   if (yv.size() != dv.size())
     fail("wrc:usage", "wrc.conicity: y has " + std::to_string(yv.size()) + " values, dr " + std::to_string(dv.size()));
-  Result res;
-  check(wrc_conicity(yv.data(), dv.data(), yv.size(), option_text(a).c_str(), &res.r));
-  c.plhs[0] = result_struct(res.r);
+  c.result([&](wrc_result** r) { return wrc_conicity(yv.data(), dv.data(), yv.size(), option_text(a).c_str(), r); });
 }
 
 void trajectory(const Call& c) {
-  wrc_wheelset* ws = wheelset_of(c, "wrc.trajectory");
-  const Arguments a = c.args(1, "wrc.trajectory");
+  wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
+  const Arguments a = c.args(1);
   wrc_trajectory* tr = nullptr;
   check(wrc_trajectory_new(ws, option_text(a).c_str(), &tr));
   c.plhs[0] = add_handle(Kind::trajectory, tr);
 }
 
-wrc_trajectory* trajectory_of(const Call& c, const char* function) {
-  return static_cast<wrc_trajectory*>(object_of(c.at(0, "a trajectory"), Kind::trajectory, function));
-}
-
 void trajectory_contact(const Call& c) {
-  wrc_trajectory* tr = trajectory_of(c, "tr.contact");
-  Arguments a = c.args(1, "tr.contact");
-  const char* all = "y, z, roll and yaw";
-  const char* fn = "wrc_trajectory_contact_with";
-  const double y = argument(a, "y", fn, all), z = argument(a, "z", fn, all), roll = argument(a, "roll", fn, all),
-               yaw = argument(a, "yaw", fn, all);
-  Result res;
-  solved(wrc_trajectory_contact_with(tr, y, z, roll, yaw, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+  wrc_trajectory* tr = c.object<wrc_trajectory>(Kind::trajectory);
+  Arguments a = c.args(1);
+  const auto [y, z, roll, yaw] = positional(a, "wrc_trajectory_contact_with", {"y", "z", "roll", "yaw"});
+  c.solved([&](wrc_result** r) { return wrc_trajectory_contact_with(tr, y, z, roll, yaw, option_text(a).c_str(), r); });
 }
 
 void trajectory_wheel(const Call& c) {
-  wrc_trajectory* tr = trajectory_of(c, "tr.wheel");
-  Arguments a = c.args(1, "tr.wheel");
-  const char* all = "side, y, yaw, roll and Fz";
-  const char* fn = "wrc_trajectory_wheel_with";
-  const int side = side_of(a, fn);
-  const double y = argument(a, "y", fn, all), yaw = argument(a, "yaw", fn, all), roll = argument(a, "roll", fn, all),
-               Fz = argument(a, "Fz", fn, all);
-  Result res;
-  solved(wrc_trajectory_wheel_with(tr, side, y, yaw, roll, Fz, option_text(a).c_str(), &res.r), res, c.nlhs, c.plhs);
+  wrc_trajectory* tr = c.object<wrc_trajectory>(Kind::trajectory);
+  Arguments a = c.args(1);
+  const auto [side, y, yaw, roll, Fz] = positional(a, "wrc_trajectory_wheel_with", {"side", "y", "yaw", "roll", "Fz"});
+  c.solved([&](wrc_result** r) {
+    return wrc_trajectory_wheel_with(tr, static_cast<int>(side), y, yaw, roll, Fz, option_text(a).c_str(), r);
+  });
 }
 
-void trajectory_reset(const Call& c) { check(wrc_trajectory_reset(trajectory_of(c, "tr.reset"))); }
+void trajectory_reset(const Call& c) { check(wrc_trajectory_reset(c.object<wrc_trajectory>(Kind::trajectory))); }
 
 void free_command(const Call& c) {
   const bool quiet = c.nrhs > 1 && mxIsLogicalScalarTrue(c.prhs[1]);
@@ -682,33 +674,35 @@ void version(const Call& c) { c.plhs[0] = mxCreateString(wrc_version()); }
 
 void live_count(const Call& c) { c.plhs[0] = mxCreateDoubleScalar(static_cast<double>(live.size())); }
 
+// The commands: the +wrc package's name, the function the messages name, the handler.
 struct Command {
   const char* name;
+  const char* function;
   void (*run)(const Call&);
 };
 
 const Command commands[] = {
-    {"profile_load", profile_load},
-    {"profile_points", profile_points},
-    {"points", points},
-    {"write", write},
-    {"flange_measures", flange_measures},
-    {"wheelset", wheelset},
-    {"contact", contact},
-    {"wheel", wheel},
-    {"equilibrium", equilibrium},
-    {"rigid", rigid},
-    {"geometry_table", geometry_table},
-    {"wheelset_conicity", wheelset_conicity},
-    {"conicity", conicity},
-    {"trajectory", trajectory},
-    {"trajectory_contact", trajectory_contact},
-    {"trajectory_wheel", trajectory_wheel},
-    {"trajectory_reset", trajectory_reset},
-    {"free", free_command},
-    {"kind", kind},
-    {"version", version},
-    {"live", live_count},
+    {"profile_load", "wrc.profile.load", profile_load},
+    {"profile_points", "wrc.profile.points", profile_points},
+    {"points", "points", points},
+    {"write", "write", write},
+    {"flange_measures", "wrc.flange_measures", flange_measures},
+    {"wheelset", "wrc.wheelset", wheelset},
+    {"contact", "wrc.contact", contact},
+    {"wheel", "wrc.wheel", wheel},
+    {"equilibrium", "wrc.equilibrium", equilibrium},
+    {"rigid", "wrc.rigid", rigid},
+    {"geometry_table", "wrc.geometry_table", geometry_table},
+    {"wheelset_conicity", "wrc.conicity", wheelset_conicity},
+    {"conicity", "wrc.conicity", conicity},
+    {"trajectory", "wrc.trajectory", trajectory},
+    {"trajectory_contact", "tr.contact", trajectory_contact},
+    {"trajectory_wheel", "tr.wheel", trajectory_wheel},
+    {"trajectory_reset", "tr.reset", trajectory_reset},
+    {"free", "wrc.free", free_command},
+    {"kind", "kind", kind},
+    {"version", "wrc.version", version},
+    {"live", "live", live_count},
 };
 
 void dispatch(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -718,7 +712,7 @@ void dispatch(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   if (nrhs < 1) fail("wrc:usage", "wrc_mex(command, ...): the +wrc package calls it (see docs/matlab.md)");
   const std::string name = text_of(prhs[0], "wrc_mex's command");
   for (const Command& cmd : commands)
-    if (name == cmd.name) return cmd.run(Call{nlhs, plhs, nrhs - 1, prhs + 1});
+    if (name == cmd.name) return cmd.run(Call{nlhs, plhs, nrhs - 1, prhs + 1, cmd.function});
   fail("wrc:usage", "wrc_mex: unknown command '" + name + "'");
 }
 
