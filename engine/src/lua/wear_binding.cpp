@@ -9,6 +9,7 @@
 #include "wrc/damage/profile_wear.hpp"
 
 #include <string>
+#include <vector>
 
 namespace wrc::lua {
 namespace {
@@ -30,13 +31,21 @@ struct Args {
   }
 };
 
+// Pushes a kernel's results (arrays and numbers); returns their count.
+void push_value(lua_State* L, const std::vector<double>& v) { push_array(L, v); }
+void push_value(lua_State* L, double v) { lua_pushnumber(L, v); }
+template <class... T>
+int push(lua_State* L, const T&... v) {
+  (push_value(L, v), ...);
+  return sizeof...(T);
+}
+
 // wrc.wear.arc_length{y =, z =} -> arc (m)
 int arc_length(lua_State* L) {
   Args a(L, "wrc.wear.arc_length");
   const auto y = a.need("y", "m", "points"), z = a.need("z", "m", "points");
   a.r.finish();
-  push_array(L, damage::arc_length(y, z));
-  return 1;
+  return push(L, damage::arc_length(y, z));
 }
 
 // wrc.wear.cells{arc =} -> the points' cell lengths (m)
@@ -44,8 +53,7 @@ int cells(lua_State* L) {
   Args a(L, "wrc.wear.cells");
   const auto arc = a.need("arc", "m", "arc length of the points");
   a.r.finish();
-  push_array(L, damage::cell_lengths(arc));
-  return 1;
+  return push(L, damage::cell_lengths(arc));
 }
 
 // wrc.wear.project{y =, z =, points_y =, points_z =} -> arc, distance (m) of the nearest polyline points
@@ -55,9 +63,7 @@ int project(lua_State* L) {
   const auto py = a.need("points_y", "m", "points"), pz = a.need("points_z", "m", "points");
   a.r.finish();
   const damage::Projection p = damage::project_onto(y, z, py, pz);
-  push_array(L, p.arc);
-  push_array(L, p.distance);
-  return 2;
+  return push(L, p.arc, p.distance);
 }
 
 // wrc.wear.deposit{arc =, centre =, width =, area =} -> depth per point (m), the area beyond the ends
@@ -68,9 +74,7 @@ int deposit(lua_State* L) {
   const auto area = a.need("area", "m^2", "strip areas");
   a.r.finish();
   const damage::Deposit d = damage::deposit_strips(arc, c, w, area);
-  push_array(L, d.depth);
-  lua_pushnumber(L, d.outside);
-  return 2;
+  return push(L, d.depth, d.outside);
 }
 
 // wrc.wear.smooth{arc =, depth =, length =} -> depth per point (m), the area sum kept
@@ -79,8 +83,7 @@ int smooth(lua_State* L) {
   const auto arc = a.need("arc", "m", "arc length of the points"), d = a.need("depth", "m", "depth per point");
   const double length = a.r.need_number("length", OptionDoc{"m", "standard deviation of the Gaussian"});
   a.r.finish();
-  push_array(L, damage::smooth_depths(arc, d, length));
-  return 1;
+  return push(L, damage::smooth_depths(arc, d, length));
 }
 
 // wrc.wear.normals{y =, z =, kind =} -> ny, nz: unit normals into the body
@@ -90,9 +93,7 @@ int normals(lua_State* L) {
   const ProfileKind kind = a.kind();
   a.r.finish();
   const damage::Normals n = damage::inward_normals(y, z, kind);
-  push_array(L, n.ny);
-  push_array(L, n.nz);
-  return 2;
+  return push(L, n.ny, n.nz);
 }
 
 // wrc.wear.move{y =, z =, depth =, kind =} -> y, z moved by depth into the body
@@ -103,9 +104,7 @@ int move(lua_State* L) {
   const ProfileKind kind = a.kind();
   a.r.finish();
   const Polyline p = damage::move_along_normals(y, z, d, kind);
-  push_array(L, p.y);
-  push_array(L, p.z);
-  return 2;
+  return push(L, p.y, p.z);
 }
 
 // wrc.wear.area_between{y =, z =, y2 =, z2 =} -> the area between two polylines of as many points (m^2)
@@ -114,8 +113,7 @@ int area_between(lua_State* L) {
   const auto y = a.need("y", "m", "first polyline"), z = a.need("z", "m", "first polyline");
   const auto y2 = a.need("y2", "m", "second polyline"), z2 = a.need("z2", "m", "second polyline");
   a.r.finish();
-  lua_pushnumber(L, damage::area_between(y, z, y2, z2));
-  return 1;
+  return push(L, damage::area_between(y, z, y2, z2));
 }
 
 }  // namespace
