@@ -9,6 +9,7 @@
 //     flange-root areas of the sweep's equilibria: the forces at the same pose.
 //
 //   bench_conformal [reps=5] [step_mm=0.1] [threads=2] [sweep=1]
+#include "bench/timing.hpp"
 #include "wheelset/angle_corrected.hpp"
 
 #include "lua/bindings.hpp"
@@ -35,33 +36,17 @@
 
 namespace {
 
-double thread_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
-double process_cpu_s() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-double wall_s() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-std::string loadavg() {
-  std::ifstream f("/proc/loadavg");
-  std::string a, b, c;
-  f >> a >> b >> c;
-  return a + " " + b + " " + c;
-}
+using wrc::bench::cpu_ms;
+using wrc::bench::loadavg;
+using wrc::bench::process_cpu_s;
+using wrc::bench::wall_s;
 
 double best_ms(int reps, const std::function<void()>& f) {
   double best = INFINITY;
   for (int r = 0; r < reps; ++r) {
-    const double t0 = thread_ms();
+    const double t0 = cpu_ms();
     f();
-    best = std::min(best, thread_ms() - t0);
+    best = std::min(best, cpu_ms() - t0);
   }
   return best;
 }

@@ -7,6 +7,7 @@
 // Poses: |y| <= 10 mm, |yaw| <= 30 mrad, |roll| <= 10 mrad, deepest penetration log-uniform in 1 um .. 1 mm (as the
 // tests). Times are thread CPU time (one core), the best of `reps` passes over the pose set, per pose, for
 // locate_contact (search + segments + patches; not the Lua result tables of ws:contact).
+#include "bench/timing.hpp"
 #include "geometry/geometry_fixtures.hpp"
 #include "lua/bindings.hpp"
 #include "lua/strategy_binding.hpp"
@@ -26,12 +27,7 @@
 
 namespace {
 
-// CPU time of the calling thread: the time on one core, unaffected by waiting for a core on a shared machine.
-double cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+using wrc::bench::thread_cpu_s;  // the time on one core, unaffected by waiting for a core on a shared machine
 
 struct Args {
   int poses = 300, brute_poses = 12, check_poses = 300, reps = 5;
@@ -83,12 +79,12 @@ PairTimes time_pair(const wrc::GeometryModel& m, wrc::PoseSearch& sa, wrc::PoseS
   for (int r = 0; r < reps; ++r) {
     for (int which = 0; which < 2; ++which) {
       wrc::PoseSearch& s = which == 0 ? sa : sb;
-      const double t0 = cpu_seconds();
+      const double t0 = thread_cpu_s();
       for (int i = 0; i < n; ++i) {
         wrc::locate_contact(m, poses[i], st, s);
         if (r == 0 && which == 0) tests += st.counters(wrc::kLeft).tests + st.counters(wrc::kRight).tests;
       }
-      const double dt = (cpu_seconds() - t0) / n;
+      const double dt = (thread_cpu_s() - t0) / n;
       (which == 0 ? t.a : t.b) = std::min(which == 0 ? t.a : t.b, dt);
     }
   }

@@ -14,6 +14,7 @@
 //   bench_equilibrium [quick] [grid_mm=0.2] [step_mm=0.1] [threads=2]
 //
 // `quick` runs a 0.5 mm sweep step and fewer repetitions (a smoke run).
+#include "bench/timing.hpp"
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/wheelset_binding.hpp"
@@ -37,6 +38,11 @@
 
 namespace {
 
+using wrc::bench::loadavg;
+using wrc::bench::process_cpu_s;
+using wrc::bench::thread_cpu_s;
+using wrc::bench::wall_s;
+
 struct Args {
   bool quick = false;
   double grid_mm = 0.2, step_mm = 0.1;
@@ -59,29 +65,6 @@ Args parse(int argc, char** argv) {
     else if (k == "threads") a.threads = std::max(1, std::atoi(eq + 1));
   }
   return a;
-}
-
-double process_cpu_s() {
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-double thread_cpu_s() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-double wall_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::string loadavg() {
-  std::ifstream f("/proc/loadavg");
-  std::string a, b, c;
-  f >> a >> b >> c;
-  return a.empty() ? std::string("?") : a + " " + b + " " + c;
 }
 
 // Wall and process CPU time of a section.

@@ -8,6 +8,7 @@
 //   3. the same table on 2 threads (wall time) and at yaw 1 deg (the general 3-D path, 1 thread).
 //
 //   bench_geometry_table [runs=7]
+#include "bench/timing.hpp"
 #include "lua/bindings.hpp"
 #include "lua/wheelset_binding.hpp"
 #include "wrc/kinematics/table.hpp"
@@ -28,20 +29,9 @@
 
 namespace {
 
-double thread_cpu_s() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-double wall_s() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-std::string loadavg() {
-  std::ifstream f("/proc/loadavg");
-  std::string a, b, c;
-  f >> a >> b >> c;
-  return a.empty() ? std::string("?") : a + " " + b + " " + c;
-}
+using wrc::bench::loadavg;
+using wrc::bench::thread_cpu_s;
+using wrc::bench::wall_s;
 
 struct Stats {
   double best = 0, median = 0;
