@@ -66,7 +66,7 @@ def main():
     t_batch1, c_batch1, b1 = best_of(a.repeat, lambda: ws.wheel(side="left", y=ys, Fz=100e3, threads=1))
     t_loop, c_loop, loop = best_of(a.repeat, lambda: [ws.wheel(side="left", y=float(y), Fz=100e3) for y in ys])
     gc.collect()  # not a pass over the loop's Results inside the first reads
-    (t_field, _), (t_items, c_items) = first_read(lambda: b.force.y), first_read(lambda: b.items)
+    (t_field, c_field), (t_items, c_items) = first_read(lambda: b.force.y), first_read(lambda: b.items)
     fy_loop = np.array([w.force.y for w in loop])
     assert not b.errors and not b1.errors, (b.errors, b1.errors)
     assert np.array_equal(b.force.y, fy_loop) and np.array_equal(b1.force.y, fy_loop), "batch differs from the loop"
@@ -77,7 +77,8 @@ def main():
     for t, c, x in ((t_batch, c_batch, b), (t_batch1, c_batch1, b1)):
         print(f"  python batch, threads = {x.threads}:  wall {t:.4f} s, cpu {c:.4f} s   (wall: solves {x.seconds:.4f} s "
               f"+ after them {t - x.seconds:.4f} s)")
-    print(f"  first read of b.force.y: {t_field * 1e3:.3f} ms; of b.items ({b.size} wrc.Result): {t_items:.4f} s")
+    print(f"  first read of b.force.y: wall {t_field * 1e3:.3f} ms, cpu {c_field * 1e3:.3f} ms; of b.items ({b.size} "
+          f"wrc.Result): wall {t_items:.4f} s, cpu {c_items:.4f} s")
     print(f"  python loop of calls:       wall {t_loop:.4f} s, cpu {c_loop:.4f} s")
     print(f"  loop / batch ({b.threads} threads), wall = {t_loop / t_batch:.2f}x   (goal on 2 cores: >= 1.7x); "
           f"with b.items read: {t_loop / (t_batch + t_items):.2f}x")
