@@ -63,58 +63,31 @@ def split_batch(context, kwargs, batch_keys, option_error):
 
 
 # ---- the result: fields stacked over the batch ----
+#
+# The elements' results stay in the engine's form (a wrc._wrc._BatchNodes: one node per element, engine/src/python/
+# batch_fields.cpp), which stacks a field into one array when it is first read; each element's wrc.Result is made
+# only when Batch.items is first read.
 
 _MISSING = object()
 
 
-def _is_node(v):
-    return hasattr(v, "keys") and not isinstance(v, dict) or isinstance(v, dict)
-
-
-def _field(v, key):
-    if isinstance(v, dict):
-        return v.get(key, _MISSING)
-    return getattr(v, key, _MISSING)
-
-
-def _stack(values, shape):
-    """A BatchNode, BatchList or array of the values (one per element, _MISSING where an element has none), or
-    _MISSING when they do not stack (arrays, grids, values of different kinds)."""
-    present = [v for v in values if v is not _MISSING]
-    if not present:
+def _stack(got, shape):
+    """A BatchNode, BatchList or array of the batch's shape from what _BatchNodes.field gives, or _MISSING when the
+    field does not stack (arrays, grids, values of different kinds)."""
+    if got is None:
         return _MISSING
-    if all(_is_node(v) for v in present):
-        return BatchNode(values, shape)
-    if all(isinstance(v, list) for v in present):
-        return BatchList(values, shape)
-    full = len(present) == len(values)
-    if all(isinstance(v, (bool, np.bool_)) for v in present):
-        if full:
-            return np.array(values, dtype=bool).reshape(shape)
-    elif all(isinstance(v, numbers.Integral) and not isinstance(v, (bool, np.bool_)) for v in present):
-        if full:
-            return np.array(values, dtype=np.int64).reshape(shape)
-    elif all(isinstance(v, str) for v in present):
-        a = np.empty(len(values), dtype=object)
-        a[:] = [None if v is _MISSING else v for v in values]
-        return a.reshape(shape)
-    elif not all(isinstance(v, numbers.Real) for v in present):
-        return _MISSING  # arrays, grids: per element only (Batch.items)
-    return np.array([np.nan if v is _MISSING else float(v) for v in values], dtype=np.float64).reshape(shape)
+    if isinstance(got, np.ndarray):
+        return got.reshape(shape)
+    return BatchList(got, shape) if got.is_list else BatchNode(got, shape)
 
 
 class BatchNode:
     """A table of the results stacked over the batch: its fields are arrays of the batch's shape (or nested nodes
     and lists), in the order the results give them."""
 
-    def __init__(self, values, shape):
-        self._values, self._shape, self._cache = values, shape, {}
-        keys = {}
-        for v in values:
-            if v is not _MISSING:
-                for k in v.keys():
-                    keys.setdefault(k, None)
-        self._keys = list(keys)
+    def __init__(self, nodes, shape):
+        self._nodes, self._shape, self._cache = nodes, tuple(shape), {}
+        self._keys = nodes.keys()
 
     def __getattr__(self, name):
         if name.startswith("_"):
@@ -122,8 +95,7 @@ class BatchNode:
         if name not in self._cache:
             if name not in self._keys:
                 raise AttributeError(f"no field '{name}' in the batch's results (fields: {', '.join(self._keys)})")
-            self._cache[name] = _stack([_MISSING if v is _MISSING else _field(v, name) for v in self._values],
-                                       self._shape)
+            self._cache[name] = _stack(self._nodes.field(name), self._shape)
         got = self._cache[name]
         if got is _MISSING:
             raise AttributeError(f"the field '{name}' does not stack over the batch (arrays and grids of each "
@@ -163,9 +135,9 @@ class BatchList:
     batch's shape (NaN where an element has fewer than k + 1), and ``b.patches.pmax`` the field of every item as an
     array of shape batch shape + (longest,), NaN-padded."""
 
-    def __init__(self, values, shape):
-        self._values, self._shape = values, shape
-        self.count = np.array([0 if v is _MISSING else len(v) for v in values], dtype=np.int64).reshape(shape)
+    def __init__(self, nodes, shape):
+        self._nodes, self._shape = nodes, shape
+        self.count = nodes.counts().reshape(shape)
         self._longest = int(self.count.max()) if self.count.size else 0
         self._items = {}
         self._padded = None
@@ -181,8 +153,7 @@ class BatchList:
         if not 0 <= k < self._longest:
             raise IndexError(f"item {k} of a list whose longest has {self._longest} items")
         if k not in self._items:
-            self._items[k] = BatchNode([v[k] if v is not _MISSING and len(v) > k else _MISSING for v in self._values],
-                                       self._shape)
+            self._items[k] = BatchNode(self._nodes.item(k), self._shape)
         return self._items[k]
 
     def __iter__(self):
@@ -192,9 +163,7 @@ class BatchList:
         if name.startswith("_"):
             raise AttributeError(name)
         if self._padded is None:  # items along a last axis
-            L = self._longest
-            flat = [v[k] if v is not _MISSING and len(v) > k else _MISSING for v in self._values for k in range(L)]
-            self._padded = BatchNode(flat, tuple(self._shape) + (L,))
+            self._padded = BatchNode(self._nodes.padded(self._longest), tuple(self._shape) + (self._longest,))
         return getattr(self._padded, name)
 
     def to_dict(self):
@@ -211,27 +180,34 @@ class Batch(BatchNode):
     float64 with NaN where an element failed or has no such field; int64 and bool arrays when every element has the
     field, float64 with NaN otherwise. Strings are object arrays (None where absent). List fields (patches) are
     :class:`BatchList` (padded with NaN to the longest, with ``count``). Arrays and grids of each element are in
-    ``items`` only.
+    ``items`` only. A field's array is made when the field is first read, from the engine's results.
 
     Also: ``shape``, ``size``, ``ok`` (bool array: the element has a result in the arrays), ``items`` (object array
-    of the batch's shape: each element's wrc.Result, None where it failed), ``errors`` (list of the failed elements'
-    exceptions, each with ``.index``, its index into the batch: wrc.Error, or wrc.NotConverged with ``.result``),
-    ``threads`` (worker threads run), ``seconds`` (wall time of the solves).
+    of the batch's shape: each element's wrc.Result, None where it failed; made when first read), ``errors`` (list
+    of the failed elements' exceptions, each with ``.index``, its index into the batch: wrc.Error, or
+    wrc.NotConverged with ``.result``), ``threads`` (worker threads run), ``seconds`` (wall time of the solves).
     """
 
-    def __init__(self, operation, shape, results, errors, threads, seconds):
-        values = [_MISSING if r is None else r for r in results]
-        super().__init__(values, tuple(shape))
+    def __init__(self, operation, shape, nodes, errors, threads, seconds):
+        super().__init__(nodes, shape)
         self.operation = operation
         self.shape = tuple(shape)
-        self.size = len(results)
-        items = np.empty(len(results), dtype=object)
-        items[:] = list(results)
-        self.items = items.reshape(self.shape)
-        self.ok = np.array([r is not None for r in results], dtype=bool).reshape(self.shape)
+        self.size = len(nodes)
+        self.ok = nodes.present().reshape(self.shape)
         self.errors = errors
         self.threads = threads
         self.seconds = seconds
+        self._items_made = None
+
+    @property
+    def items(self):
+        """Each element's wrc.Result (None where it failed), an object array of the batch's shape: made from the
+        engine's results when first read, the same objects afterwards."""
+        if self._items_made is None:
+            items = np.empty(self.size, dtype=object)
+            items[:] = self._nodes.results()
+            self._items_made = items.reshape(self.shape)
+        return self._items_made
 
     def __len__(self):
         return self.shape[0] if self.shape else 1

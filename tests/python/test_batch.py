@@ -3,6 +3,7 @@ Wheelset.contact, .wheel, .equilibrium and .rigid.
 
 The reference of every batch is the same calls made one by one (each a fresh, cold call of the engine): a batch must
 equal them bit for bit (np.array_equal on every field, NaN where a field is NaN in both), on one or two threads."""
+import gc
 import os
 import signal
 import threading
@@ -221,3 +222,37 @@ def test_keyboard_interrupt_stops_between_elements(ws):
     assert elapsed < 3.0, elapsed  # stopped, not run to the end
     # the wheelset still works
     assert ws.wheel(side="left", y=0.0, Fz=100e3).converged
+
+
+def results_alive():
+    return sum(isinstance(o, wrc.Result) for o in gc.get_objects())
+
+
+def test_items_are_made_when_first_read_and_fields_do_not_depend_on_it(ws):
+    kw = dict(side="left", y=np.linspace(0, 7e-3, 4), Fz=np.array([100e3, 100e3, np.nan, 100e3]), threads=2)
+    gc.collect()
+    before = results_alive()
+    fields_first = ws.wheel(**kw)
+    # no Result per element before b.items is read: the fields come from the engine's results
+    fy, pmax, count = fields_first.force.y, fields_first.patches.pmax, fields_first.patches.count
+    assert results_alive() == before
+    items = fields_first.items
+    assert results_alive() > before and fields_first.items is items
+    assert items[2] is None and np.isnan(fy[2]) and count[2] == 0
+    # read in the other order, and after the wheelset is closed (the batch keeps its results): the same arrays
+    items_first = ws.wheel(**kw)
+    later = items_first.items
+    ws2 = wrc.wheelset(wheel=wrc.profile.load(os.path.join(ROOT, "profiles/s1002.lua")),
+                       rail=wrc.profile.load(os.path.join(ROOT, "profiles/60e1.lua")), grid=0.4e-3)
+    closed = ws2.wheel(**kw)
+    ws2.close()
+    del ws2
+    for b in (items_first, closed):
+        for got, want in ((b.force.y, fy), (b.patches.pmax, pmax), (b.patches.count, count)):
+            assert got.dtype == want.dtype and np.array_equal(got, want, equal_nan=True)
+    for i in (0, 1, 3):
+        same(later[i], items[i], f"items[{i}]")
+        same(closed.items[i], items[i], f"items[{i}]")
+        same(items[i], ws.wheel(side="left", y=float(kw["y"][i]), Fz=100e3), f"items[{i}]")
+        assert fy[i] == items[i].force.y
+        assert np.array_equal(pmax[i, :count[i]], [p.pmax for p in items[i].patches])

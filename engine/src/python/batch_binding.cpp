@@ -1,6 +1,8 @@
 // Batch calls of Wheelset.contact, .wheel, .equilibrium and .rigid (python/wrc/batch.py, docs/python.md): when an
 // argument that batches holds an array, the elements run through the call layer's batch runner (wrc/api/batch.hpp)
-// on worker threads with the GIL released, each into its own FieldTree, and become a wrc.Batch.
+// on worker threads with the GIL released, each into its own FieldTree, and become a wrc.Batch that reads its
+// fields and items from the trees when asked (batch_fields.hpp).
+#include "python/batch_fields.hpp"
 #include "python/bindings.hpp"
 #include "python/convert.hpp"
 #include "wrc/api/batch.hpp"
@@ -133,23 +135,26 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
       }))
     throw OptionFailure(el.front().message);
 
-  py::list results, errors;
+  // The results stay in the engine's form (batch_fields.hpp): fields are stacked and items made when first read.
+  auto kept = std::make_shared<BatchTrees>();
+  kept->roots.reserve(el.size());
+  for (FieldTree& t : trees) kept->roots.push_back(std::move(t.root));
+  std::vector<bool> present(el.size());
+  py::list errors;
   const py::object unravel = py::module_::import("numpy").attr("unravel_index");
   for (std::size_t i = 0; i < el.size(); ++i) {
-    const bool described = el[i].status == api::BatchStatus::done || el[i].status == api::BatchStatus::not_converged;
-    py::object result = described ? to_python(trees[i].root) : py::none();
-    trees[i].root = FieldNode();  // its memory back as soon as it is converted
-    if (el[i].status == api::BatchStatus::done) {
-      results.append(result);
-      continue;
-    }
-    results.append(py::none());
+    present[i] = el[i].status == api::BatchStatus::done;
+    if (present[i]) continue;
+    FieldNode& root = kept->roots[i];
+    py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(root) : py::none();
+    root = FieldNode();  // not in the batch's fields: its memory back now
     py::tuple index = py::tuple(unravel(i, shape));
     py::list plain;
     for (auto n : index) plain.append(n.cast<long long>());
     errors.append(element_error(el[i], result, py::tuple(plain)));
   }
-  py::object b = batch_module().attr("Batch")(operation, shape, results, errors, run.threads, run.seconds);
+  const py::object nodes = batch_nodes(std::move(kept), present);
+  py::object b = batch_module().attr("Batch")(operation, shape, nodes, errors, run.threads, run.seconds);
   if (!run.threads_note.empty()) b.attr("threads_note") = run.threads_note;
   return b;
 }
@@ -158,6 +163,7 @@ void register_batch(py::module_& m) {
   m.def("batch_keys", &api::batch_keys, py::arg("operation"),
         "The keys of an operation (contact, wheel, equilibrium, rigid) that may be arrays in a batch call: its keys of "
         "type number, from the engine's option table (a nested key as 'creepage.xi').");
+  register_batch_fields(m);
 }
 
 }  // namespace wrc::python
