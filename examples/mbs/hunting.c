@@ -3,11 +3,11 @@
  * The model (docs/guide/hunting.md): a wheelset of mass m and yaw inertia I, held by a lateral spring ky and a yaw
  * spring kpsi to a frame that runs at the constant speed V on straight track; its degrees of freedom are the lateral
  * displacement y and the yaw psi, its roll follows y as the rigid contact geometry gives it (roll free), each wheel
- * carries W / 2. Wheels S1002 on rails 60E1 at 1:40, gauge 1430 mm (nearly linear rolling radius difference up to
- * +-2 mm), r0 = 0.46 m. The contact forces come either from wrc's exact rolling contact at every time step (contact=
- * exact: one trajectory, warm-started, both wheels with their vertical force given, Kalker's exact theory or FASTSIM
- * on the elastic contact areas) or from the rigid geometry table with Kalker's linear creep law saturated by
- * Vermeulen & Johnson's cubic (contact=table: cheap, for checks and figures).
+ * carries W / 2. Wheels S1002 on rails 60E1 at 1:40, gauge 1428 mm (a rolling radius difference nearly linear up to
+ * +-1 mm, Hertz-like tread contact), r0 = 0.46 m. The contact forces come either from wrc's rolling contact at every
+ * time step (contact=exact: one trajectory, warm-started, both wheels with their vertical force given, Kalker's exact
+ * theory or FASTSIM on the elastic contact areas) or from the rigid geometry table with Kalker's linear creep law
+ * (contact=table: only the geometry nonlinear; cheap, for checks).
  *
  * The linear model, written apart from the simulation and calling none of it: Wickens' 4-state wheelset (A. H.
  * Wickens, Fundamentals of Rail Vehicle Dynamics, Swets & Zeitlinger 2003; K. Knothe & S. Stichel, Rail Vehicle
@@ -18,8 +18,8 @@
  * the largest real part of its eigenvalues crosses zero.
  *
  * The simulated critical speed: each run starts from y = y0 at rest and integrates (Heun, step dt) for T seconds; the
- * decay rate sigma is the slope of ln(amplitude) of the peaks of y after the first 20 % of the run. Bisection on the
- * sign of sigma between V_lo and V_hi, the result the zero of sigma interpolated in the last bracket.
+ * decay rate sigma is the slope of ln(amplitude) of the peaks of y (analyse()). Bisection on the sign of sigma between
+ * V_lo and V_hi, the result the zero of sigma interpolated in the last bracket.
  *
  *   hunting [key=value ...]     (keys: see usage(); out=DIR writes CSV files, gnuplot scripts and PNG figures)
  *
@@ -43,7 +43,7 @@ static const double kPi = 3.14159265358979323846;
 /* ---------------------------------------------------------------- parameters */
 
 typedef struct {
-  double m, Iz, ky, kpsi, W;     /* kg, kg m^2, N/m, N m/rad, N (axle load) */
+  double m, Iz, ky, kpsi, W;    /* kg, kg m^2, N/m, N m/rad, N (axle load) */
   double r0, gauge, E, nu, mu;  /* m, m, Pa, -, - */
   double grid;                  /* element size of the exact contact (m) */
   const char* method;           /* exact | fastsim */
@@ -412,8 +412,8 @@ static int forces_exact(Sim* s, const double x[4], double* Fy, double* Mz) {
     wrc_result* r = NULL;
     const wrc_status st = wrc_trajectory_wheel_with(s->tr, side, x[0], x[1], roll, s->p->W / 2, opts, &r);
     if (st != WRC_OK) {
-      fprintf(stderr, "hunting: wheel %d at y = %.4f mm, yaw = %.4f mrad, V = %.2f m/s: %s\n", side, x[0] * 1e3,
-              x[1] * 1e3, s->V, wrc_last_error());
+      fprintf(stderr, "hunting: %s wheel at y = %.4f mm, yaw = %.4f mrad, V = %.2f m/s: %s\n",
+              side ? "right" : "left", x[0] * 1e3, x[1] * 1e3, s->V, wrc_last_error());
       wrc_result_free(r);
       return 1;
     }
@@ -771,8 +771,10 @@ static void print_linear(const Linear* L, double v_lin, double yhat) {
 }
 
 int main(int argc, char** argv) {
+  setvbuf(stdout, NULL, _IOLBF, 0);  /* progress, line by line, also into a file */
   Params p = defaults();
   for (int i = 1; i < argc; ++i) {
+    if (strcmp(argv[i], "help") == 0) return usage(), 0;
     const int bad = set_param(&p, argv[i]);
     if (bad) {
       fprintf(stderr, "hunting: %s '%s'\n", bad == 1 ? "unknown argument" : "bad value in", argv[i]);
