@@ -55,7 +55,7 @@ typedef struct {
   double creep_scale;           /* multiplies the engine's creep forces: a deliberately wrong engine, for tests */
   double check;                 /* > 0: exit 2 unless |V_sim / V_lin - 1| <= check */
   double v_cycle, T_cycle;      /* limit cycle: speed (0: 1.1 V_sim) and length (s; 0: none) */
-  int bif_points;               /* bifurcation diagram: speeds (0: none) */
+  int bif_points, bif_small;    /* bifurcation diagram: speeds (0: none); 1: also from the small disturbance */
   double bif_from, bif_to, bif_y0, bif_T;  /* as fractions of V_sim; start amplitude (m); run length (s) */
   const char* out;              /* output folder (NULL: none) */
 } Params;
@@ -64,7 +64,7 @@ static Params defaults(void) {
   Params p = {.m = 1500, .Iz = 800, .ky = 15e6, .kpsi = 1e6, .W = 150e3, .r0 = 0.46, .gauge = 1.428, .E = 210e9,
               .nu = 0.3, .mu = 0.3, .grid = 0.5e-3, .method = "exact", .table = 0, .y0 = 0.5e-3, .dt = 0.5e-3,
               .T = 1.0, .v_lo = 0, .v_hi = 0, .bracket = 0.1, .bisections = 5, .creep_scale = 1, .check = 0, .v_cycle = 0,
-              .T_cycle = 0, .bif_points = 0, .bif_from = 0.6, .bif_to = 1.2, .bif_y0 = 3e-3, .bif_T = 3,
+              .T_cycle = 0, .bif_points = 0, .bif_small = 1, .bif_from = 0.6, .bif_to = 1.2, .bif_y0 = 3e-3, .bif_T = 3,
               .out = NULL};
   return p;
 }
@@ -81,6 +81,7 @@ static void usage(void) {
           "  check=TOL   exit 2 unless the simulated critical speed is within TOL of the linear one\n"
           "  V_cycle T_cycle   the limit cycle above the critical speed (T_cycle=0: none)\n"
           "  bif_points bif_from bif_to bif_y0 bif_T   the bifurcation diagram (speeds as fractions of V_crit)\n"
+          "  bif_small=0   the bifurcation diagram from the large disturbance alone\n"
           "  out=DIR   CSV files, gnuplot scripts and figures\n");
 }
 
@@ -105,6 +106,7 @@ static int set_param(Params* p, const char* arg) {
     }
   if (n == 10 && strncmp(arg, "bisections", n) == 0) return (p->bisections = atoi(v)) < 0 ? 2 : 0;
   if (n == 10 && strncmp(arg, "bif_points", n) == 0) return (p->bif_points = atoi(v)) < 0 ? 2 : 0;
+  if (n == 9 && strncmp(arg, "bif_small", n) == 0) return (p->bif_small = atoi(v)) < 0 ? 2 : 0;
   if (n == 7 && strncmp(arg, "contact", n) == 0) {
     p->table = strcmp(v, "table") == 0;
     return (p->table || strcmp(v, "exact") == 0) ? 0 : 2;
@@ -564,9 +566,9 @@ static int simulate(Sim* s, double V, double y0, double T, Run* r) {
   const double c0 = process_cpu();
   r->y[0] = x[0];
   for (size_t k = 1; k < n; ++k) {
-    if (rhs(s, x, k1)) return 1;
+    if (rhs(s, x, k1)) goto failed;
     for (int i = 0; i < 4; ++i) xp[i] = x[i] + dt * k1[i];
-    if (rhs(s, xp, k2)) return 1;
+    if (rhs(s, xp, k2)) goto failed;
     for (int i = 0; i < 4; ++i) x[i] += 0.5 * dt * (k1[i] + k2[i]);
     r->y[k] = x[0];
   }
@@ -574,6 +576,10 @@ static int simulate(Sim* s, double V, double y0, double T, Run* r) {
   s->steps += (long)n - 1;
   analyse(r, dt, y0);
   return 0;
+failed:
+  free(r->y);
+  r->y = NULL;
+  return 1;
 }
 
 /* ---------------------------------------------------------------- output */
@@ -680,39 +686,60 @@ static double simulated_critical(Sim* s, double lo, double hi, Run* stable, Run*
   return stable->V - stable->sigma * (unstable->V - stable->V) / (unstable->sigma - stable->sigma);
 }
 
-/* The bifurcation diagram: at each speed the amplitude reached from a large and from the small disturbance. */
-static int bifurcation(Sim* s, double v_crit, double dt) {
+/* One point of the bifurcation diagram: the amplitude the run ends with (0 if it decayed); NAN if it failed (the
+ * message is printed; the other points go on). */
+static double end_amplitude(Sim* s, double V, double y0, double T, double* frequency) {
+  Run r;
+  *frequency = NAN;
+  if (simulate(s, V, y0, T, &r)) return NAN;
+  free(r.y);
+  /* A decaying run has no amplitude left: its last peaks, below a micrometre or still falling fast, count as 0. */
+  if (!(r.amplitude > 1e-6 && !(r.sigma < -2))) return 0;
+  *frequency = r.cycle_frequency;
+  return r.amplitude;
+}
+
+/* The bifurcation diagram: at each speed the amplitude reached from a large and (bif_small) from the small
+ * disturbance. */
+static int bifurcation(Sim* s, double v_crit) {
   const Params* p = s->p;
   Out o;
   if (p->out && out_open(&o, p->out, "hunting_bifurcation.csv")) return 1;
   if (p->out) fprintf(o.f, "V_m_s,V_over_Vcrit,amplitude_from_large_mm,amplitude_from_small_mm,frequency_Hz\n");
-  printf("bifurcation diagram (amplitude after %.1f s from y0 = %.2f mm and from %.2f mm):\n", p->bif_T,
-         p->bif_y0 * 1e3, p->y0 * 1e3);
+  printf("bifurcation diagram (amplitude after %.1f s from y0 = %.2f mm and from %.2f mm; nan: the run failed):\n",
+         p->bif_T, p->bif_y0 * 1e3, p->y0 * 1e3);
+  int failures = 0;
   for (int i = 0; i < p->bif_points; ++i) {
     const double f = p->bif_points == 1 ? p->bif_from
                                          : p->bif_from + (p->bif_to - p->bif_from) * i / (p->bif_points - 1);
-    Run big, small;
-    if (simulate(s, f * v_crit, p->bif_y0, p->bif_T, &big) || simulate(s, f * v_crit, p->y0, p->bif_T, &small)) {
-      if (p->out) fclose(o.f), remove(o.tmp);
-      return 1;
-    }
-    /* A decaying run has no amplitude left: its last peaks, below a micrometre, count as 0. */
-    const double A1 = big.amplitude > 1e-6 && big.sigma > -2 ? big.amplitude : 0;
-    const double A2 = small.amplitude > 1e-6 && small.sigma > -2 ? small.amplitude : 0;
-    const double fc = A1 > 0 ? big.cycle_frequency : NAN;
-    printf("  V = %7.3f m/s (%.3f V_crit): %.3f mm, %.3f mm, %.2f Hz\n", big.V, f, A1 * 1e3, A2 * 1e3, fc);
-    if (p->out) fprintf(o.f, "%.6g,%.6g,%.6g,%.6g,%.6g\n", big.V, f, A1 * 1e3, A2 * 1e3, fc);
-    free(big.y), free(small.y);
+    double fc, fs;
+    const double A1 = end_amplitude(s, f * v_crit, p->bif_y0, p->bif_T, &fc);
+    const double A2 = p->bif_small ? end_amplitude(s, f * v_crit, p->y0, p->bif_T, &fs) : NAN;
+    failures += isnan(A1) + (p->bif_small && isnan(A2));
+    printf("  V = %7.3f m/s (%.3f V_crit): %.3f mm, %.3f mm, %.2f Hz\n", f * v_crit, f, A1 * 1e3, A2 * 1e3, fc);
+    if (p->out) fprintf(o.f, "%.6g,%.6g,%.6g,%.6g,%.6g\n", f * v_crit, f, A1 * 1e3, A2 * 1e3, fc);
   }
-  (void)dt;
+  if (failures) printf("  %d of the runs failed (above)\n", failures);
   return p->out ? out_close(&o) : 0;
 }
 
-static const char* kFigureYt =
-    "set terminal pngcairo size 900,500 font 'Liberation Sans,11'\n"
-    "set output 'hunting_y_t.png'\nset datafile separator ','\nset key autotitle columnhead noenhanced top right\n"
-    "set xlabel 't (s)'\nset ylabel 'y (mm)'\nset grid\n"
-    "plot for [i=2:*] 'hunting_y_t.csv' using 1:i with lines lw 1.5\n";
+/* y(t): the last stable and unstable runs of the bisection above, the limit cycle (if run) below. */
+static int figure_y_t(const char* dir, int n_runs) {
+  char script[1500];
+  snprintf(script, sizeof script,
+           "set terminal pngcairo size 900,%d font 'Liberation Sans,11'\n"
+           "set output 'hunting_y_t.png'\nset datafile separator ','\nset grid\n"
+           "set key top right noenhanced box opaque\nset xlabel 't (s)'\nset ylabel 'y (mm)'\n"
+           "set multiplot layout %d,1\n"
+           "plot 'hunting_y_t.csv' using 1:2 with lines lw 1.5 title columnhead, '' using 1:3 with lines lw 1.5 "
+           "title columnhead\n"
+           "%s"
+           "unset multiplot\n",
+           n_runs > 2 ? 800 : 450, n_runs > 2 ? 2 : 1,
+           n_runs > 2 ? "plot 'hunting_y_t.csv' using 1:4 with lines lw 1.5 lc 3 title columnhead\n" : "");
+  return plot(dir, "hunting_y_t", script);
+}
+
 static const char* kFigureBif =
     "set terminal pngcairo size 900,500 font 'Liberation Sans,11'\n"
     "set output 'hunting_bifurcation.png'\nset datafile separator ','\nset grid\n"
@@ -744,11 +771,11 @@ static int study(Sim* s, const Linear* L, double v_lin) {
     printf("limit cycle at V = %.3f m/s: amplitude %.3f mm, frequency %.3f Hz (linear model's at V_crit: %.3f Hz)\n",
            v, runs[2].amplitude * 1e3, runs[2].cycle_frequency, fabs(cimag(least_stable(L, v_lin))) / (2 * kPi));
   }
-  if (p->out && (write_runs(p->out, "hunting_y_t.csv", runs, n_runs, p->dt) || plot(p->out, "hunting_y_t", kFigureYt)))
+  if (p->out && (write_runs(p->out, "hunting_y_t.csv", runs, n_runs, p->dt) || figure_y_t(p->out, n_runs)))
     rc = 1;
   for (int j = 0; j < n_runs; ++j) free(runs[j].y);
   if (!rc && p->bif_points > 0 && isfinite(v_sim))
-    rc = bifurcation(s, v_sim, p->dt) || (p->out && plot(p->out, "hunting_bifurcation", kFigureBif));
+    rc = bifurcation(s, v_sim) || (p->out && plot(p->out, "hunting_bifurcation", kFigureBif));
   if (rc) return 1;
   if (p->check > 0 && !(fabs(ratio - 1) <= p->check)) {
     printf("CHECK FAILED: the simulated critical speed is not within %.1f %% of the linear one\n", 100 * p->check);
