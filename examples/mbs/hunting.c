@@ -740,12 +740,22 @@ static int figure_y_t(const char* dir, int n_runs) {
   return plot(dir, "hunting_y_t", script);
 }
 
-static const char* kFigureBif =
-    "set terminal pngcairo size 900,500 font 'Liberation Sans,11'\n"
-    "set output 'hunting_bifurcation.png'\nset datafile separator ','\nset grid\n"
-    "set xlabel 'V (m/s)'\nset ylabel 'amplitude of y (mm)'\nset key top left\n"
-    "plot 'hunting_bifurcation.csv' using 1:3 with linespoints pt 7 title 'from the large disturbance', \\\n"
-    "     '' using 1:4 with linespoints pt 6 title 'from the small disturbance'\n";
+/* The bifurcation diagram, with the linear and the simulated critical speeds marked. */
+static int figure_bifurcation(const char* dir, double v_lin, double v_sim) {
+  char script[1500];
+  snprintf(script, sizeof script,
+           "set terminal pngcairo size 900,500 font 'Liberation Sans,11'\n"
+           "set output 'hunting_bifurcation.png'\nset datafile separator ','\nset grid\n"
+           "set xlabel 'V (m/s)'\nset ylabel 'amplitude of y (mm)'\nset key top left box opaque\n"
+           "set arrow from %.6g, graph 0 to %.6g, graph 1 nohead dt 2 lc rgb 'black'\n"
+           "set arrow from %.6g, graph 0 to %.6g, graph 1 nohead dt 3 lc rgb 'red'\n"
+           "set label 'linear' at %.6g, graph 0.95 right offset -0.5,0\n"
+           "set label 'simulated' at %.6g, graph 0.88 right offset -0.5,0 tc rgb 'red'\n"
+           "plot 'hunting_bifurcation.csv' using 1:3 with points pt 7 ps 1.3 title 'from the large disturbance', \\\n"
+           "     '' using 1:4 with points pt 6 ps 1.8 title 'from the small disturbance'\n",
+           v_lin, v_lin, v_sim, v_sim, v_lin, v_sim);
+  return plot(dir, "hunting_bifurcation", script);
+}
 
 static int study(Sim* s, const Linear* L, double v_lin) {
   const Params* p = s->p;
@@ -775,7 +785,7 @@ static int study(Sim* s, const Linear* L, double v_lin) {
     rc = 1;
   for (int j = 0; j < n_runs; ++j) free(runs[j].y);
   if (!rc && p->bif_points > 0 && isfinite(v_sim))
-    rc = bifurcation(s, v_sim) || (p->out && plot(p->out, "hunting_bifurcation", kFigureBif));
+    rc = bifurcation(s, v_sim) || (p->out && figure_bifurcation(p->out, v_lin, v_sim));
   if (rc) return 1;
   if (p->check > 0 && !(fabs(ratio - 1) <= p->check)) {
     printf("CHECK FAILED: the simulated critical speed is not within %.1f %% of the linear one\n", 100 * p->check);
