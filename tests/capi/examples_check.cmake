@@ -33,6 +33,23 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "examples/c with find_package(wrc) failed:\n${out}\n${err}")
 endif()
 
+# 1b. The hunting wheelset (examples/mbs) with CMake's package too, run from "/" with the rigid table (a fraction of a
+# second): it must find the installed profiles and print both critical speeds.
+set(mbuild ${PREFIX}/build-mbs)
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE}/examples/mbs -B ${mbuild} -DCMAKE_PREFIX_PATH=${PREFIX}
+                        -DCMAKE_C_FLAGS=${flags} -DCMAKE_EXE_LINKER_FLAGS=${flags}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  execute_process(COMMAND ${CMAKE_COMMAND} --build ${mbuild} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endif()
+if(rc EQUAL 0)
+  execute_process(COMMAND ${mbuild}/hunting contact=table bisections=2 WORKING_DIRECTORY / RESULT_VARIABLE rc
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endif()
+if(NOT rc EQUAL 0 OR NOT out MATCHES "critical speed: linear [0-9.]+ m/s.*simulated [0-9.]+ m/s")
+  message(FATAL_ERROR "examples/mbs with find_package(wrc) failed (${rc}):\n${out}\n${err}")
+endif()
+
 # 2. pkg-config.
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${PREFIX}/lib/pkgconfig pkg-config --cflags --libs wrc
                 OUTPUT_VARIABLE pc OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE rc)
