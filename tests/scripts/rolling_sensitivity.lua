@@ -131,3 +131,59 @@ for _, y in ipairs{0, 3e-3, 6.5e-3} do
     end
   end
 end
+
+-- ws:wheel (Fz prescribed, z solved): jacobian_fz, the Jacobian with Fz held, against differences of ws:wheel itself
+-- (force_tolerance 1e-8: the solved z's own error then changes the forces by far less than the differences); its
+-- column z is d(.)/dFz, dFz/dFz = 1. Step 10 N (1e-4 of Fz): at the flange root (here a 60 deg contact, the wheel
+-- lighter than in the equilibrium) the forces bend with Fz, and the differences at 30 and 100 N are 3 % apart from
+-- the 10 N one, which they approach.
+for _, y in ipairs{3e-3, 6.5e-3} do
+  local e = ws:equilibrium{y = y, Q = 200e3}
+  local creepage = {xi = 1e-3, eta = 0.5e-3, phi = 0.2}
+  local base = {side = "left", y = y, roll = e.roll, yaw = 0, Fz = 100e3, creepage = creepage, mu = 0.3,
+                rolling_tolerance = 1e-9, force_tolerance = 1e-8}
+  local args = copy(base)
+  args.sensitivity = true
+  local J = ws:wheel(args).jacobian_fz
+  local steps = {xi = 2e-6, phi = 2e-4, y = 1e-6, roll = 1e-6, yaw = 1e-6, z = 10}
+  for _, col in ipairs{"xi", "phi", "y", "roll", "yaw", "z"} do
+    local p, m = copy(base), copy(base)
+    local h = steps[col]
+    if creepage[col] then
+      p.creepage, m.creepage = copy(creepage), copy(creepage)
+      p.creepage[col], m.creepage[col] = creepage[col] + h, creepage[col] - h
+    else
+      local key = col == "z" and "Fz" or col
+      p[key], m[key] = base[key] + h, base[key] - h
+    end
+    local a, b = ws:wheel(p), ws:wheel(m)
+    local d = {}
+    for i, v in ipairs{"x", "y", "z"} do
+      d[i] = (a.force[v] - b.force[v]) / (2 * h)
+      d[i + 3] = (a.moment[v] - b.moment[v]) / (2 * h)
+    end
+    local err = column_error(J[col], d)
+    check.ok(err <= tol, ("ws:wheel y = %.1f mm: jacobian_fz column %s within 1 %% (%.3g %%)"):format(y * 1e3, col,
+                                                                                                  err * 100))
+  end
+  check.rel(J.z[3], 1, 1e-9, "ws:wheel: dFz/dFz = 1")
+end
+
+-- The trajectories give the same Jacobians (their steps at the trajectory's tolerances).
+do
+  local e = ws:equilibrium{y = 3e-3, Q = 200e3}
+  local pose = {y = 3e-3, z = e.z, roll = e.roll, yaw = 0}
+  local creepage = {xi = 1e-3, eta = 0.5e-3, phi = 0.2}
+  local J = call(pose, creepage, "exact", true).left.jacobian
+  local tr = ws:trajectory{}
+  local args = copy(pose)
+  args.creepage, args.mu, args.sensitivity = creepage, 0.3, true
+  local T = tr:contact(args).left.jacobian
+  for _, col in ipairs(columns) do
+    check.ok(column_error(T[col], J[col]) <= tol, "tr:contact: jacobian column " .. col .. " as ws:contact's")
+  end
+  local w = tr:wheel{side = "left", y = 3e-3, roll = e.roll, Fz = 100e3, creepage = creepage, mu = 0.3, sensitivity = true}
+  check.ok(w.jacobian ~= nil and w.jacobian_fz ~= nil and math.abs(w.jacobian_fz.z[3] - 1) < 1e-9,
+           "tr:wheel: jacobian and jacobian_fz")
+  check.ok(ws:contact(pose).left.jacobian == nil, "no jacobian without sensitivity")
+end

@@ -256,11 +256,16 @@ double read_max_penetration(OptionReader& r, double fallback) {
   return v;
 }
 
+bool read_sensitivity(OptionReader& r) {
+  return r.boolean("sensitivity", {"-", "each wheel's jacobian by the creepages and the pose (ws:wheel: and "
+                                        "jacobian_fz, Fz held); ws:contact: also d(force, moment)/d(z, roll) of "
+                                        "both wheels"}, false);
+}
+
 ContactRequest read_contact_request(OptionReader& r) {
   ContactRequest req;
   req.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, req.keep_grids);
-  req.sensitivity = r.boolean("sensitivity", {"-", "d(force, moment)/d(z, roll) of both wheels, and each wheel's "
-                                                   "jacobian by the creepages and the pose"}, req.sensitivity);
+  req.sensitivity = read_sensitivity(r);
   req.max_penetration = read_max_penetration(r, req.max_penetration);
   req.rolling = read_rolling_request(r);
   return req;

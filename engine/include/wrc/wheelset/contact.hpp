@@ -263,6 +263,9 @@ struct ContactRequest {
 // Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),
 // max_penetration (m, > 0; default kMaxPenetration) and the rolling keys (read_rolling_request).
 ContactRequest read_contact_request(OptionReader& options);
+// Reads `sensitivity` (default false): the calls' one key for the Jacobians (ws:contact, ws:wheel, tr:contact,
+// tr:wheel and their C and Python forms).
+bool read_sensitivity(OptionReader& options);
 // Reads max_penetration (m, finite and > 0) over `fallback`.
 double read_max_penetration(OptionReader& options, double fallback = kMaxPenetration);
 
