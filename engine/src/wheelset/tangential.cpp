@@ -277,7 +277,7 @@ Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const Pat
   }
   const std::vector<halfspace::TangentialDerivative> d =
       r.method == RollingMethod::fastsim ? halfspace::linearise_fastsim(model.material(), pb, r.solution, changes)
-                                         : model.rolling_solver().linearise(pb, r.solution, changes, ws.rolling);
+                                         : model.rolling_solver().linearise(pb, r.solution, changes, ws.rolling, 1e-6);
   const Eigen::Vector3d c(0, pose.y, pose.z);
   for (int col = 0; col < 7; ++col) {
     Eigen::Vector3d dF, dM;
