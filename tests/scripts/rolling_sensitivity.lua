@@ -187,3 +187,13 @@ do
            "tr:wheel: jacobian and jacobian_fz")
   check.ok(ws:contact(pose).left.jacobian == nil, "no jacobian without sensitivity")
 end
+
+-- Friction falling with the slip velocity is not linearised: an error naming the law, not a wrong Jacobian.
+do
+  local ok, err = pcall(function()
+    return ws:contact{y = 0, z = -0.1e-3, roll = 0, creepage = {xi = 1e-3}, V = 30, friction = {preset = "polach_dry"},
+                      sensitivity = true}
+  end)
+  check.ok(not ok and tostring(err):find("polach friction law falls with the slip velocity", 1, true) ~= nil,
+           "a falling friction law with sensitivity: " .. tostring(err))
+end
