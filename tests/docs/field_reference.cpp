@@ -95,7 +95,7 @@ std::vector<Section> sections(const std::string& root) {
   {
     const Pose pose{2e-3, -0.1e-3, 0.0, 0.0};
     ContactRequest req;
-    req.sensitivity = true;
+    req.sensitivity = req.jacobian = true;
     req.rolling = rolling(RollingMethod::exact, false);
     const ContactResult kin = evaluate_contact(cm, pose, *ws, req);
     req.rolling = rolling(RollingMethod::fastsim, true, damage::WearModel::usfd);

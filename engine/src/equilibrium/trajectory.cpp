@@ -24,7 +24,7 @@ Trajectory::Trajectory(std::shared_ptr<const Wheelset> wheelset, const Trajector
 
 ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingRequest>& rolling, bool sensitivity) {
   ContactRequest req;
-  req.sensitivity = sensitivity;
+  req.jacobian = sensitivity;
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
   req.rolling = rolling;

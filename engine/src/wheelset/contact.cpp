@@ -223,7 +223,7 @@ ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorks
     res.sensitivity += wc.sensitivity;
     add_creep(res.creep, wc.creep);
   }
-  if (request.sensitivity) add_jacobian(model, res, request.rolling, ws);
+  if (request.jacobian) add_jacobian(model, res, request.rolling, ws);
   if (!request.keep_grids) drop_grids(res);
   return res;
 }
@@ -234,7 +234,7 @@ ContactResult evaluate_vertical_load(const ContactModel& model, const Pose& pose
                                      const ContactRequest& request, const VerticalLoad& load) {
   if (!std::isfinite(load.force) || !(load.force > 0))
     fail("contact: a vertical load of {} N must be a positive number", load.force);
-  if (request.only_side < 0 || request.sensitivity || request.rolling)
+  if (request.only_side < 0 || request.sensitivity || request.jacobian || request.rolling)
     fail("contact: a vertical force is prescribed to one wheel (only_side), without sensitivities or rolling");
   return evaluate(model, pose, ws, request, &load);
 }
@@ -265,7 +265,7 @@ bool read_sensitivity(OptionReader& r) {
 ContactRequest read_contact_request(OptionReader& r) {
   ContactRequest req;
   req.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, req.keep_grids);
-  req.sensitivity = read_sensitivity(r);
+  req.sensitivity = req.jacobian = read_sensitivity(r);
   req.max_penetration = read_max_penetration(r, req.max_penetration);
   req.rolling = read_rolling_request(r);
   return req;

@@ -244,7 +244,9 @@ class ContactWorkspace {
 };
 
 struct ContactRequest {
-  bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems) and every wheel's Jacobian
+  bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems)
+  bool jacobian = false;     // fill every wheel's Jacobian (WheelContact::jacobian); the calls' key `sensitivity` sets
+                             // both
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
   double tolerance = 0;      // in ]0, 1e-2]: the normal solver's tolerance for this evaluation (inexact Newton
