@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -570,6 +571,45 @@ TEST_CASE("rolling contact through the C API: creep forces, grids and the option
     CHECK(last().find("wrc_contact") != std::string::npos);
   }
   CHECK(last().find("mu_kinetic") != std::string::npos);
+}
+
+TEST_CASE("the C API's Jacobian (sensitivity=true): paths, and its xi and z columns against differences of wrc_contact") {
+  Fixture f;
+  const double z = -0.05e-3;
+  const auto force = [&](double zz, const char* options, std::array<double, 6>& F) {
+    wrc_result* r = nullptr;
+    REQUIRE_MESSAGE(wrc_contact(f.ws, 0, zz, 0, 0, options, &r) == WRC_OK, last());
+    const char* paths[6] = {"left.force.x", "left.force.y", "left.force.z", "left.moment.x", "left.moment.y", "left.moment.z"};
+    for (int i = 0; i < 6; ++i) F[static_cast<std::size_t>(i)] = number(r, paths[i]);
+    wrc_result_free(r);
+  };
+  wrc_result* c = nullptr;
+  REQUIRE_MESSAGE(wrc_contact(f.ws, 0, z, 0, 0, "creepage.xi=1e-3 creepage.phi=0.2 mu=0.3 sensitivity=true", &c) == WRC_OK,
+                  last());
+  std::array<double, 6> jxi{}, jz{}, a{}, b{};
+  size_t n = 0;
+  REQUIRE(wrc_result_numbers(c, "left.jacobian.xi", jxi.data(), 6, &n) == WRC_OK);
+  CHECK(n == 6);
+  REQUIRE(wrc_result_numbers(c, "left.jacobian.z", jz.data(), 6, &n) == WRC_OK);
+  for (const char* col : {"eta", "phi", "y", "roll", "yaw"}) {
+    CAPTURE(col);
+    CHECK(wrc_result_count(c, (std::string("left.jacobian.") + col).c_str(), &n) == WRC_OK);
+    CHECK(n == 6);
+  }
+  wrc_result_free(c);
+  const double h = 2e-6;  // 0.2 % of xi
+  force(z, "creepage.xi=0.001002 creepage.phi=0.2 mu=0.3", a);
+  force(z, "creepage.xi=0.000998 creepage.phi=0.2 mu=0.3", b);
+  CHECK(jxi[0] == within_rel((a[0] - b[0]) / (2 * h), 0.01));  // dFx/dxi
+  const double hz = 1e-7;
+  force(z + hz, "creepage.xi=1e-3 creepage.phi=0.2 mu=0.3", a);
+  force(z - hz, "creepage.xi=1e-3 creepage.phi=0.2 mu=0.3", b);
+  CHECK(jz[2] == within_rel((a[2] - b[2]) / (2 * hz), 0.01));  // dFz/dz
+  CHECK(jz[0] == within_rel((a[0] - b[0]) / (2 * hz), 0.02));  // dFx/dz: the bound's change through the pressure
+  // Without the option: no jacobian.
+  REQUIRE(wrc_contact(f.ws, 0, z, 0, 0, "creepage.xi=1e-3 mu=0.3", &c) == WRC_OK);
+  CHECK(wrc_result_count(c, "left.jacobian.xi", &n) != WRC_OK);
+  wrc_result_free(c);
 }
 
 TEST_CASE("rolling contact through the C API: a falling friction law and a friction profile as option text") {

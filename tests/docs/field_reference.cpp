@@ -71,7 +71,8 @@ std::vector<Section> sections(const std::string& root) {
   const ContactModel& cm = conformal->contact_model();
   std::vector<Section> out;
 
-  // A wheel: frictionless, rolling (exact, FASTSIM), planar; failed and past flange climb.
+  // A wheel: frictionless, rolling (exact, FASTSIM), planar, a trajectory's step with sensitivity; failed and past
+  // flange climb.
   {
     const WheelCase c{kLeft, 2e-3, 0.0, 0.0, 100e3};
     WheelResult exact =
@@ -79,7 +80,7 @@ std::vector<Section> sections(const std::string& root) {
     const WheelResult fastsim = solve_wheel(cm, c, *ws, {}, std::nullopt, rolling(RollingMethod::fastsim, false));
     const WheelResult plain = solve_wheel(planar->contact_model(), c, *pws);
     Trajectory tr(conformal);
-    const WheelResult step = tr.wheel(c, rolling(RollingMethod::fastsim, false));
+    const WheelResult step = tr.wheel(c, rolling(RollingMethod::fastsim, false), true);  // with its jacobians
     WheelResult failed = exact;
     failed.converged = false;
     failed.message = "example";
@@ -94,7 +95,7 @@ std::vector<Section> sections(const std::string& root) {
   {
     const Pose pose{2e-3, -0.1e-3, 0.0, 0.0};
     ContactRequest req;
-    req.sensitivity = true;
+    req.sensitivity = req.jacobian = true;
     req.rolling = rolling(RollingMethod::exact, false);
     const ContactResult kin = evaluate_contact(cm, pose, *ws, req);
     req.rolling = rolling(RollingMethod::fastsim, true, damage::WearModel::usfd);

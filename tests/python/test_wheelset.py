@@ -213,3 +213,18 @@ def test_calls_from_several_threads_equal_serial_calls(ws):
     with ThreadPoolExecutor(4) as pool:
         parallel = list(pool.map(lambda y: ws.contact(y=y, z=-30e-6).force.z, ys))
     assert parallel == serial
+
+
+def test_jacobian_with_sensitivity(ws):
+    # Each wheel's Jacobian arrives through the same fields as in Lua; its xi column against a difference of the call.
+    args = dict(y=0, z=-0.05e-3, roll=0, yaw=0, mu=0.3)
+    c = ws.contact(**args, creepage={"xi": 1e-3}, sensitivity=True)
+    J = c["left"]["jacobian"]
+    for col in ("xi", "eta", "phi", "y", "z", "roll", "yaw"):
+        assert np.asarray(J[col]).shape == (6,)
+    h = 2e-6
+    a = ws.contact(**args, creepage={"xi": 1e-3 + h})["left"]["force"]
+    b = ws.contact(**args, creepage={"xi": 1e-3 - h})["left"]["force"]
+    assert J["xi"][0] == pytest.approx((a.x - b.x) / (2 * h), rel=0.01)
+    w = ws.wheel(side="left", y=0, Fz=100e3, creepage={"xi": 1e-3}, mu=0.3, sensitivity=True)
+    assert w["jacobian_fz"]["z"][2] == pytest.approx(1, rel=1e-9)

@@ -114,7 +114,10 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 
 /* Contact at a prescribed pose (m, rad). WRC_ERROR for a pose far too deep: a wheel and its rail inter-penetrating
  * deeper than max_penetration (m, default 1e-3; an option), or |y|, |z| beyond the wheel radius, |roll|, |yaw| beyond
- * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity, max_penetration; with
+ * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity (each wheel's Jacobian: paths
+ * left.jacobian.xi, .eta, .phi, .y, .z, .roll, .yaw, 6 numbers each, d(Fx, Fy, Fz, Mx, My, Mz) in the track frame,
+ * moments about the wheelset centre; N per unit creepage, N m per 1/m of spin, N/m, N m/m, N/rad, N m/rad;
+ * docs/guide/sensitivity.md; and sensitivity.z, sensitivity.roll of both wheels), max_penetration; with
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
  * vy (m/s), yaw_rate (rad/s), slip_reference (deformed or undeformed: where the rigid slip is taken,
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
@@ -131,8 +134,9 @@ wrc_status wrc_contact(wrc_wheelset* wheelset, double y, double z, double roll, 
                        wrc_result** out);
 /* One wheel (WRC_LEFT or WRC_RIGHT) with its vertical contact force Fz (N, at most 1e10) prescribed at y, yaw, roll.
  * Options: force_tolerance, max_iterations, max_evaluations, max_penetration (m; deeper and still short of Fz: out of
- * reach; a solution deeper: not converged),
- * and the rolling options of wrc_contact (Fz then includes the vertical part of the creep forces). */
+ * reach; a solution deeper: not converged), sensitivity (the wheel's jacobian.* as wrc_contact's, and jacobian_fz.*
+ * with Fz held, its z column per N of Fz), and the rolling options of wrc_contact (Fz then includes the vertical part
+ * of the creep forces). */
 wrc_status wrc_wheel(wrc_wheelset* wheelset, int side, double y, double yaw, double roll, double Fz,
                      const char* options, wrc_result** out);
 /* The static equilibrium under the vertical load Q (N) at the centre: z and roll solved at y, yaw. Options: grids
@@ -164,7 +168,8 @@ wrc_status wrc_trajectory_contact(wrc_trajectory* trajectory, double y, double z
                                   wrc_result** out);
 /* The same with options (NULL or "": none): the rolling options of wrc_contact (V, omega, vy, yaw_rate or
  * creepage.xi/eta/phi, mu or mu_static and mu_kinetic, method "exact" | "fastsim", rolling_tolerance), read at every
- * step, since a multibody code's velocities change from step to step. */
+ * step, since a multibody code's velocities change from step to step, and sensitivity (each wheel's jacobian.*, as
+ * wrc_contact's; wrc_trajectory_wheel_with also jacobian_fz.*). */
 wrc_status wrc_trajectory_contact_with(wrc_trajectory* trajectory, double y, double z, double roll, double yaw,
                                        const char* options, wrc_result** out);
 /* One wheel with its vertical force Fz (N) given, as wrc_wheel, from the previous steps' approach (its depth below

@@ -164,15 +164,19 @@ TrajectoryContactCall TrajectoryContactCall::read(OptionReader& r) {
   TrajectoryContactCall c;
   c.pose = read_pose(r);
   c.rolling = read_rolling_request(r);
+  c.sensitivity = read_sensitivity(r);
   return c;
 }
 
-ContactResult TrajectoryContactCall::run(Trajectory& trajectory) const { return trajectory.contact(pose, rolling); }
+ContactResult TrajectoryContactCall::run(Trajectory& trajectory) const {
+  return trajectory.contact(pose, rolling, sensitivity);
+}
 
 TrajectoryWheelCall TrajectoryWheelCall::read(OptionReader& r) {
   TrajectoryWheelCall c;
   c.wheel = read_wheel_case(r);
   c.rolling = read_rolling_request(r);
+  c.sensitivity = read_sensitivity(r);
   return c;
 }
 
@@ -180,7 +184,7 @@ void TrajectoryWheelCall::validate() const { wheel.validate("wheel"); }
 
 WheelResult TrajectoryWheelCall::run(Trajectory& trajectory) const {
   validate();
-  return trajectory.wheel(wheel, rolling);
+  return trajectory.wheel(wheel, rolling, sensitivity);
 }
 
 // ---- sweeps, strategy checks ----

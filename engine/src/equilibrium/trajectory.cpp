@@ -22,8 +22,9 @@ Trajectory::Trajectory(std::shared_ptr<const Wheelset> wheelset, const Trajector
     fail("trajectory: tolerance must be in [1e-14, 1e-2[, got {}", options.tolerance);
 }
 
-ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingRequest>& rolling) {
+ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingRequest>& rolling, bool sensitivity) {
   ContactRequest req;
+  req.jacobian = sensitivity;
   req.keep_grids = options_.keep_grids;
   req.tolerance = options_.tolerance;
   req.rolling = rolling;
@@ -39,13 +40,14 @@ ContactResult Trajectory::contact(const Pose& pose, const std::optional<RollingR
   }
 }
 
-WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingRequest>& rolling) {
+WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingRequest>& rolling, bool sensitivity) {
   c.validate("wheel");  // as solve_wheel would, before the side indexes the approaches
   const int side = c.side;
   WheelOptions opt;
   opt.limits.normal_tolerance = options_.tolerance;
   opt.final_at_model_tolerance = false;
   opt.limits.max_penetration = options_.max_penetration;
+  opt.sensitivity = sensitivity;
   // The secant's iterates are no time steps: start each from the last alone (the evaluations then keep no older
   // areas, so a later contact() step cannot extrapolate across them either).
   workspace_->extrapolate = false;

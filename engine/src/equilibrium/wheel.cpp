@@ -159,6 +159,13 @@ class WheelSolver {
   double stiffness() const { return stiffness_; }
 
   // The result from the last evaluation: converged only within the force tolerance and max_penetration.
+  // The solved wheel's Jacobians (its grids are still there).
+  void jacobian(const std::optional<RollingRequest>& rolling) {
+    add_jacobian(model_, cur_, rolling, ws_);
+    WheelContact& w = cur_.wheel[c_.side];
+    w.jacobian_fz = constant_fz(*w.jacobian);
+  }
+
   void finish() {
     const SolveLimits& l = opt_.limits;
     res_.iterations = evaluations_;
@@ -322,6 +329,7 @@ WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWo
   } catch (const UnreachableLoad& e) {
     res.message = e.what();
   }
+  if (opt.sensitivity && res.converged) solver.jacobian(rolling);
   solver.finish();
   if (rolling) res.hint = {res.wheel.creep.force.z(), solver.stiffness()};
   return res;
@@ -344,6 +352,7 @@ WheelOptions read_wheel_options(OptionReader& r) {
   WheelOptions o;
   o.limits = read_solve_limits(r);
   o.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, o.keep_grids);
+  o.sensitivity = read_sensitivity(r);
   if (!r.documenting()) o.validate(r.context());
   return o;
 }

@@ -195,4 +195,76 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
   out.adhesion_area = adhesion * dA;
 }
 
+
+namespace {
+
+// The derivative of project()'s traction p (on |p| = g, nearest to q in the layer's norm: p_i (l_i + lambda) = l_i q_i)
+// for dq and dg: dp_i = (l_i dq_i - p_i dlambda) / (l_i + lambda), dlambda from p . dp = g dg. lambda is recovered from
+// p and q (least squares over the two components).
+void project_derivative(double lx, double ly, double qx, double qy, double px, double py, double g, double dqx,
+                        double dqy, double dg, double& dpx, double& dpy) {
+  const double lam = std::max(0.0, (lx * (qx - px) * px + ly * (qy - py) * py) / (px * px + py * py));
+  const double ax = 1 / (lx + lam), ay = 1 / (ly + lam);
+  const double num = px * lx * dqx * ax + py * ly * dqy * ay - g * dg, den = px * px * ax + py * py * ay;
+  const double dlam = num / den;
+  dpx = (lx * dqx - px * dlam) * ax;
+  dpy = (ly * dqy - py * dlam) * ay;
+}
+
+}  // namespace
+
+std::vector<TangentialDerivative> linearise_fastsim(const Material& material, const TangentialProblem& pb,
+                                                    const TangentialSolution& sol,
+                                                    std::span<const TangentialChange> changes) {
+  detail::check_linearisation(pb, sol, changes, "linearise_fastsim");
+  validate(material, "linearise_fastsim");
+  const Grid& g = pb.grid;
+  std::vector<int> label;
+  const std::vector<Flexibilities> flex = region_flexibilities(material, g, pb.pressure, label);
+  const Creepages& c = pb.creepages;
+  const double half = 0.5 * g.dx, muk = pb.friction.kinetic_coefficient;
+  std::vector<TangentialDerivative> out;
+  for (const TangentialChange& ch : changes) {
+    TangentialDerivative& d = out.emplace_back();
+    d.grid = g;
+    d.px.assign(pb.pressure.size(), 0.0);
+    d.py.assign(pb.pressure.size(), 0.0);
+    const Creepages& dc = ch.creepages;
+    for (int j = 0; j < g.ny; ++j) {
+      const double y = g.y(j) - pb.ref_y;
+      // upstream element's layer displacement, rigid slip and their derivatives (0 outside the contact)
+      double ux = 0, uy = 0, wxu = 0, wyu = 0, dux = 0, duy = 0, dwxu = 0, dwyu = 0;
+      for (int step = 0; step < g.nx; ++step) {
+        const int i = pb.direction > 0 ? g.nx - 1 - step : step;
+        const auto k = static_cast<std::size_t>(g.index(i, j));
+        if (sol.state[k] == kExterior) {
+          ux = uy = wxu = wyu = dux = duy = dwxu = dwyu = 0;
+          continue;
+        }
+        const Flexibilities& L = flex[static_cast<std::size_t>(label[k])];
+        const double x = g.x(i) - pb.ref_x, sx = L.x / L.spin, sy = L.y / L.spin;
+        // the march's rigid slip (the spin scaled per axis) and its change (the reference point moving too)
+        const double wx = c.xi - c.phi * sx * y + (pb.extra_x.empty() ? 0.0 : pb.extra_x[k]);
+        const double wy = c.eta + c.phi * sy * x + (pb.extra_y.empty() ? 0.0 : pb.extra_y[k]);
+        const double dwx = dc.xi - dc.phi * sx * y + c.phi * sx * ch.ref_y + (ch.extra_x.empty() ? 0.0 : ch.extra_x[k]);
+        const double dwy = dc.eta + dc.phi * sy * x - c.phi * sy * ch.ref_x + (ch.extra_y.empty() ? 0.0 : ch.extra_y[k]);
+        const double qx = (ux - half * (wx + wxu)) / L.x, qy = (uy - half * (wy + wyu)) / L.y;
+        const double dqx = (dux - half * (dwx + dwxu)) / L.x, dqy = (duy - half * (dwy + dwyu)) / L.y;
+        double dpx = dqx, dpy = dqy;
+        if (sol.state[k] == kSlip) {
+          const double gp = pb.friction_scale.empty() ? 1.0 : pb.friction_scale[k];
+          const double dg = ch.pressure.empty() ? 0.0 : muk * gp * ch.pressure[k];
+          project_derivative(L.x, L.y, qx, qy, sol.px[k], sol.py[k], muk * gp * pb.pressure[k], dqx, dqy, dg, dpx, dpy);
+        }
+        d.px[k] = dpx;
+        d.py[k] = dpy;
+        ux = L.x * sol.px[k], uy = L.y * sol.py[k], wxu = wx, wyu = wy;
+        dux = L.x * dpx, duy = L.y * dpy, dwxu = dwx, dwyu = dwy;
+      }
+    }
+    detail::summarise(d, pb, sol, ch);
+  }
+  return out;
+}
+
 }  // namespace wrc::halfspace

@@ -383,4 +383,94 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   return out;
 }
 
+
+void detail::check_linearisation(const TangentialProblem& pb, const TangentialSolution& sol,
+                                 std::span<const TangentialChange> changes, std::string_view context) {
+  validate(pb, context);
+  if (pb.friction.slip_dependent())
+    fail("{}: the {} friction law falls with the slip velocity: its solution is not linearised (constant friction "
+         "only)", context, law_name(pb.friction.law));
+  const auto n = static_cast<std::size_t>(pb.grid.size());
+  if (sol.grid.nx != pb.grid.nx || sol.grid.ny != pb.grid.ny || sol.px.size() != n || sol.py.size() != n ||
+      sol.state.size() != n)
+    fail("{}: the solution's grids ({} x {}, {} values) do not fit the problem's {} x {} grid", context, sol.grid.nx,
+         sol.grid.ny, sol.px.size(), pb.grid.nx, pb.grid.ny);
+  for (std::size_t k = 0; k < n; ++k)
+    if ((sol.state[k] != kExterior) != (pb.pressure[k] > 0))
+      fail("{}: the solution's contact differs from the problem's at element {} (not its solution)", context, k);
+  for (const TangentialChange& c : changes)
+    for (const std::vector<double>* v : {&c.extra_x, &c.extra_y, &c.pressure})
+      if (!v->empty() && v->size() != n)
+        fail("{}: a change has {} values for {} elements", context, v->size(), n);
+}
+
+void detail::summarise(TangentialDerivative& d, const TangentialProblem& pb, const TangentialSolution& sol,
+                       const TangentialChange& c) {
+  const Grid& g = d.grid;
+  const double dA = g.element_area();
+  double fx = 0, fy = 0, mz = 0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const auto k = static_cast<std::size_t>(g.index(i, j));
+      fx += d.px[k];
+      fy += d.py[k];
+      mz += (g.x(i) - pb.ref_x) * d.py[k] - (g.y(j) - pb.ref_y) * d.px[k];
+    }
+  d.fx = fx * dA;
+  d.fy = fy * dA;
+  d.mz = mz * dA - c.ref_x * sol.fy + c.ref_y * sol.fx;  // the moment's point moves with the reference point
+}
+
+std::vector<TangentialDerivative> RollingSolver::linearise(const TangentialProblem& pb, const TangentialSolution& sol,
+                                                           std::span<const TangentialChange> changes,
+                                                           RollingWorkspace& ws, double tolerance) const {
+  detail::check_linearisation(pb, sol, changes, "RollingSolver::linearise");
+  Field top;
+  top.grid = pb.grid;
+  top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
+  rigid_slip(pb, top.wx, top.wy);
+  top.scale.assign(pb.friction_scale.begin(), pb.friction_scale.end());
+  const Level L = detail::make_level(top, pb.friction, pb.direction, pb.speed);
+  LevelState st;
+  for (int k = 0; k < L.size(); ++k) {
+    const std::size_t f = grid_index(L, pb.grid, k);
+    st.px.push_back(sol.px[f]);
+    st.py.push_back(sol.py[f]);
+    st.state.push_back(sol.state[f]);
+  }
+  std::shared_ptr<const ShearSpectrum> linear, periodic;
+  if (L.size() > 0) {
+    linear = cache_.get(L.field.grid, ShearSpectrum::Kind::linear);
+    periodic = cache_.get(L.field.grid, ShearSpectrum::Kind::periodic);
+  }
+  std::vector<TangentialDerivative> out;
+  std::vector<double> dw(2 * st.px.size()), dg(st.px.size()), dp;
+  for (const TangentialChange& c : changes) {
+    TangentialDerivative& d = out.emplace_back();
+    d.grid = pb.grid;
+    d.px.assign(pb.pressure.size(), 0.0);
+    d.py.assign(pb.pressure.size(), 0.0);
+    const Creepages& w = c.creepages;
+    const double phi = pb.creepages.phi;
+    for (int k = 0; k < L.size(); ++k) {
+      const std::size_t f = grid_index(L, pb.grid, k);
+      const double x = pb.grid.x(static_cast<int>(f) % pb.grid.nx) - pb.ref_x;
+      const double y = pb.grid.y(static_cast<int>(f) / pb.grid.nx) - pb.ref_y;
+      // w = (xi - phi (y - ref_y), eta + phi (x - ref_x)) + extra, differentiated
+      dw[2 * k] = w.xi - w.phi * y + phi * c.ref_y + (c.extra_x.empty() ? 0.0 : c.extra_x[f]);
+      dw[2 * k + 1] = w.eta + w.phi * x - phi * c.ref_x + (c.extra_y.empty() ? 0.0 : c.extra_y[f]);
+      dg[static_cast<std::size_t>(k)] =
+          c.pressure.empty() ? 0.0 : L.gk[static_cast<std::size_t>(k)] * c.pressure[f] / pb.pressure[f];
+    }
+    if (L.size() > 0) d.iterations = detail::linearise(L, material(), *linear, *periodic, ws, st, dw, dg, tolerance, dp);
+    for (int k = 0; k < L.size(); ++k) {
+      const std::size_t f = grid_index(L, pb.grid, k);
+      d.px[f] = dp[2 * static_cast<std::size_t>(k)];
+      d.py[f] = dp[2 * static_cast<std::size_t>(k) + 1];
+    }
+    detail::summarise(d, pb, sol, c);
+  }
+  return out;
+}
+
 }  // namespace wrc::halfspace

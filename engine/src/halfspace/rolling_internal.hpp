@@ -65,9 +65,24 @@ LevelState start_from(const Level& level, std::span<const double> px, std::span<
 bool newton(const Level& level, const Material& material, const ShearSpectrum& linear, const ShearSpectrum& periodic,
             RollingWorkspace& ws, const TangentialOptions& options, LevelState& state, bool settled = false);
 
+// The linearisation of a converged `state` (newton's, at its split) for right-hand sides of the rigid slip's change
+// dw (x, y per contact element) and the slip elements' bound change dg (Pa per contact element): dp (x, y per contact
+// element) by GMRES to the relative residual rtol. Returns the GMRES iterations.
+int linearise(const Level& level, const Material& material, const ShearSpectrum& linear, const ShearSpectrum& periodic,
+              RollingWorkspace& ws, const LevelState& state, const std::vector<double>& dw,
+              const std::vector<double>& dg, double rtol, std::vector<double>& dp);
+
 // The slip per |V| of the contact elements for the tractions of `state` (one product).
 void slip_of(const Level& level, const ShearSpectrum& linear, RollingWorkspace& ws, const LevelState& state,
              std::vector<double>& sx, std::vector<double>& sy);
+
+// The checks of a linearisation's input (RollingSolver::linearise, linearise_fastsim): the problem, a constant
+// friction law, a solution on the problem's grid with the problem's contact, changes of the grid's size.
+void check_linearisation(const TangentialProblem& problem, const TangentialSolution& solution,
+                         std::span<const TangentialChange> changes, std::string_view context);
+// A derivative's fx, fy and mz (about the reference point, moving by change.ref_x, ref_y) from its px, py.
+void summarise(TangentialDerivative& d, const TangentialProblem& problem, const TangentialSolution& solution,
+               const TangentialChange& change);
 
 // A solution of `grid` with no traction, no slip and every element exterior.
 TangentialSolution empty_solution(const Grid& grid);

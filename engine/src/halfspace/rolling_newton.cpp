@@ -138,6 +138,9 @@ class Linearisation {
       out[2 * k + 1] = kappa() * (ex * v[2 * k] + ey * v[2 * k + 1]);
     }
   }
+  // The bound equation e . dp = g - |p| is in Pa, the others in slip per |V|: scaled by the typical slip per
+  // traction (M's diagonal), so that GMRES's residual norm weighs them alike.
+  double kappa() const { return 0.5 * (K_.kx + K_.ky); }
   // z = P r: adhesion runs by the row sum and B's circulant inverse, then the slip elements swept from upstream.
   void precondition(const double* r, double* z) {
     adhesion_part(r, z);
@@ -157,9 +160,6 @@ class Linearisation {
   }
 
  private:
-  // The bound equation e . dp = g - |p| is in Pa, the others in slip per |V|: scaled by the typical slip per
-  // traction (M's diagonal), so that GMRES's residual norm weighs them alike.
-  double kappa() const { return 0.5 * (K_.kx + K_.ky); }
   // The slip direction e_k of the traction at the linearisation point (slip elements).
   double dir_x(int k) const { return ex_[static_cast<std::size_t>(k)]; }
   double dir_y(int k) const { return ey_[static_cast<std::size_t>(k)]; }
@@ -389,6 +389,32 @@ bool newton(const Level& L, const Material& material, const ShearSpectrum& linea
   st.products += op.products;
   st.slip = std::move(s);  // of the final tractions: the solution's slip needs no product of its own
   return converged;
+}
+
+int linearise(const Level& L, const Material& material, const ShearSpectrum& linear, const ShearSpectrum& periodic,
+              RollingWorkspace& ws, const LevelState& st, const std::vector<double>& dw, const std::vector<double>& dg,
+              double rtol, std::vector<double>& dp) {
+  const int n = L.size();
+  SlipOperator op(L, linear, periodic, ws);
+  const LocalBlocks K = local_blocks(material, L.field.grid);
+  std::vector<double> p(2 * static_cast<std::size_t>(n)), s(p.size()), b(p.size());
+  for (int k = 0; k < n; ++k) p[2 * k] = st.px[static_cast<std::size_t>(k)], p[2 * k + 1] = st.py[static_cast<std::size_t>(k)];
+  op.slip(p.data(), s.data());
+  Linearisation lin(L, op, K, st, s);
+  // The step's equations with the solution's residuals replaced by the data's change: adhesion M dp = -dw; slip
+  // t . (M dp) + c t . dp = -t . dw and e . dp = dg (scaled as the solve scales it).
+  for (int k = 0; k < n; ++k) {
+    const auto q = static_cast<std::size_t>(k);
+    if (st.state[q] == kSlip) {
+      const double mag = std::hypot(st.px[q], st.py[q]), ex = st.px[q] / mag, ey = st.py[q] / mag;
+      b[2 * k] = -(-ey * dw[2 * k] + ex * dw[2 * k + 1]);
+      b[2 * k + 1] = lin.kappa() * dg[q];
+    } else {
+      b[2 * k] = -dw[2 * k];
+      b[2 * k + 1] = -dw[2 * k + 1];
+    }
+  }
+  return gmres(lin, b, dp, rtol, 2000, ws);
 }
 
 void slip_of(const Level& L, const ShearSpectrum& linear, RollingWorkspace& ws, const LevelState& st,

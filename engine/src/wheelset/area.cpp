@@ -6,6 +6,8 @@
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 
@@ -145,23 +147,116 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
   return pc;
 }
 
-void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
+RigidMotion pose_motion(const Pose& pose, int coordinate) {
+  RigidMotion m;
+  switch (coordinate) {
+    case kPoseY: m.translation = Eigen::Vector3d::UnitY(); break;
+    case kPoseZ: m.translation = Eigen::Vector3d::UnitZ(); break;
+    case kPoseRoll: m.rotation = Eigen::Vector3d(std::cos(pose.yaw), std::sin(pose.yaw), 0); break;
+    case kPoseYaw: m.rotation = Eigen::Vector3d::UnitZ(); break;
+    default: fail("pose_motion: coordinate {} is not 0 (y), 1 (z), 2 (roll) or 3 (yaw)", coordinate);
+  }
+  return m;
+}
+
+namespace {
+// The area's normal force and its moment (the creep force taken out when the area rolls).
+Eigen::Vector3d normal_part(const PatchContact& pc) {
+  return pc.rolling ? Eigen::Vector3d(pc.force - pc.rolling->force) : pc.force;
+}
+
+// dh of a rigid motion along the wheel's own normal at every element: the wheel's surface there (a surface of
+// revolution about the axle) moves by dX = T + W x (X - c) and the gap along the direction h is measured in (the
+// plane's normal; on the curved surface the wheel's normal) closes by dX . n_w / (n_w . n_h).
+void wheel_motion(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RigidMotion& m,
+                  std::vector<double>& dh) {
   const AreaSurface& surface = surface_of(pc);
-  const halfspace::NormalSolution& sol = pc.solution;
-  pc.sensitivity.setZero();
-  if (!(sol.force > 0)) return;
+  const WheelCones& wheel = model.geometry().side[static_cast<std::size_t>(pc.side)].wheel;
+  const PoseFrame frame(pose);
+  const Eigen::Vector3d c(0, pose.y, pose.z);
+  const halfspace::Grid& g = pc.solution.grid;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const Eigen::Vector3d X = surface.element_point(pc, i, j), n = wheel_inward_normal(wheel, frame, X);
+      const double along = pc.conformal ? 1.0 : n.dot(pc.normal);
+      dh[static_cast<std::size_t>(g.index(i, j))] = -(m.translation + m.rotation.cross(X - c)).dot(n) / along;
+    }
+}
+
+// A conformal area's h and origin differenced over its layouts at the pose -+ kLayoutStep in one coordinate (the
+// geometry alone: relocated, laid out on the same lattice, no solve): dh where both layouts reach the element (the
+// others keep `dh`), and the origin's motion.
+void layout_motion(const ContactModel& model, const Pose& pose, const PatchContact& pc, int coordinate,
+                   ContactWorkspace& ws, std::vector<double>& dh, Eigen::Vector2d& dref) {
+  ConformalLayoutAt at[2];
+  for (int k = 0; k < 2; ++k) {
+    Pose p = pose;
+    double* coordinates[4] = {&p.y, &p.z, &p.roll, &p.yaw};
+    *coordinates[coordinate] += (k == 0 ? -1 : 1) * kLayoutStep;
+    at[k] = conformal_layout_at(model, ws.locator.locate(p), pc);
+  }
+  for (std::size_t q = 0; q < dh.size(); ++q)
+    if (std::isfinite(at[0].h[q]) && std::isfinite(at[1].h[q])) dh[q] = (at[1].h[q] - at[0].h[q]) / (2 * kLayoutStep);
+  dref.setZero();
+  if (at[0].origin.allFinite() && at[1].origin.allFinite()) dref = (at[1].origin - at[0].origin) / (2 * kLayoutStep);
+}
+
+// The normal response to dh: the change of the normal force and of its moment about the centre (moving by T).
+NormalColumn respond(const ContactModel& model, const Pose& pose, const PatchContact& pc,
+                     const halfspace::NormalSolution& sol, const RigidMotion& m, std::vector<double> dh,
+                     ContactWorkspace& ws, double tolerance) {
+  NormalColumn col;
+  halfspace::NormalResponse r = model.options().dense
+                                    ? halfspace::normal_response_dense(model.material(), sol, dh)
+                                    : model.solver().response(sol, dh, ws.normal, tolerance);
+  surface_of(pc).response(pc, pose, r, col.dF, col.dM);
+  col.dM -= m.translation.cross(normal_part(pc));  // the centre moves
+  col.dp = std::move(r.pressure);
+  col.dh = std::move(dh);
+  return col;
+}
+
+// The rows' motion of the Newton steps' sensitivities (surface.hpp).
+NormalColumn column_of(const ContactModel& model, const Pose& pose, const PatchContact& pc,
+                       const halfspace::NormalSolution& sol, int coordinate, ContactWorkspace& ws, double tolerance) {
+  std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()), 0.0);
+  if (!(sol.force > 0)) return {.dp = dh, .dh = dh};
   if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
-  std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()));
-  for (int col = 0; col < 2; ++col) {
-    surface.motion(pc, pose, col, dh);
-    // A Jacobian for Newton steps needs a few digits: at 1e-2 the response agrees with a 1e-8 one to ~1e-5.
-    const halfspace::NormalResponse r = model.options().dense
-                                            ? halfspace::normal_response_dense(model.material(), sol, dh)
-                                            : model.solver().response(sol, dh, ws.normal, 1e-2);
+  const RigidMotion m = pose_motion(pose, coordinate);
+  surface_of(pc).motion(pc, pose, m, dh);
+  return respond(model, pose, pc, sol, m, std::move(dh), ws, tolerance);
+}
+}  // namespace
+
+NormalColumn normal_column(const ContactModel& model, const Pose& pose, const PatchContact& pc, int coordinate,
+                           ContactWorkspace& ws, double tolerance) {
+  const halfspace::NormalSolution& sol = pc.solution;
+  std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()), 0.0);
+  if (!(sol.force > 0)) return {.dp = dh, .dh = dh};
+  if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
+  const RigidMotion m = pose_motion(pose, coordinate);
+  wheel_motion(model, pose, pc, m, dh);
+  Eigen::Vector2d dref = Eigen::Vector2d::Zero();
+  if (pc.conformal) layout_motion(model, pose, pc, coordinate, ws, dh, dref);
+  NormalColumn col = respond(model, pose, pc, sol, m, std::move(dh), ws, tolerance);
+  col.dref = dref;
+  if (pc.conformal) {
+    row_turning(model, pose, pc, coordinate, col.dn);
     Eigen::Vector3d dF, dM;
-    surface.response(pc, pose, col, r, dF, dM);
-    pc.sensitivity.block<3, 1>(0, col) = dF;
-    pc.sensitivity.block<3, 1>(3, col) = dM;
+    turning_wrench(pc, pose, col.dn, dF, dM);
+    col.dF += dF;
+    col.dM += dM;
+  }
+  return col;
+}
+
+void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& pc, ContactWorkspace& ws) {
+  pc.sensitivity.setZero();
+  for (int col = 0; col < 2; ++col) {
+    // A Jacobian for Newton steps needs a few digits: at 1e-2 the response agrees with a 1e-8 one to ~1e-5.
+    const NormalColumn c = column_of(model, pose, pc, pc.solution, col == 0 ? kPoseZ : kPoseRoll, ws, 1e-2);
+    pc.sensitivity.block<3, 1>(0, col) = c.dF;
+    pc.sensitivity.block<3, 1>(3, col) = c.dM;
   }
 }
 
@@ -169,13 +264,7 @@ double vertical_stiffness(const ContactModel& model, const Pose& pose, const Pat
   if (!(pc.solution.force > 0) || pc.solution.pressure.empty()) return 0;
   halfspace::NormalSolution sol = pc.solution;
   sol.load = {};  // the response of the pressure at its approach (a predictor's solution holds its force instead)
-  std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()));
-  const AreaSurface& surface = surface_of(pc);
-  surface.motion(pc, pose, 0, dh);
-  const halfspace::NormalResponse r = model.solver().response(sol, dh, ws.normal, 1e-2);
-  Eigen::Vector3d dF, dM;
-  surface.response(pc, pose, 0, r, dF, dM);
-  return -dF.z();  // the approach moves the wheel down
+  return -column_of(model, pose, pc, sol, kPoseZ, ws, 1e-2).dF.z();  // the approach moves the wheel down
 }
 
 }  // namespace wrc::areas

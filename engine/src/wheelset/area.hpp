@@ -54,6 +54,21 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
 // d(force, moment)/d(z, roll) of a solved area (its pressure grid kept): the normal problem's pressure response to
 // the rigid motions of the wheelset, on its contact set (halfspace/normal.hpp).
 void area_sensitivity(const ContactModel& model, const Pose& pose, PatchContact& area, ContactWorkspace& ws);
+// The normal problem's part of an area's Jacobian for one pose coordinate (PoseCoordinate): the response of its
+// pressure (`dp`, Pa per unit) to the wheelset's rigid motion on its contact set, the change of its normal force and
+// of their moment about the centre (the centre's motion included), and dh (m per unit, per element). The response is
+// solved to the relative residual `tolerance`. dh: on a conformal area the layout's own h differenced over the layouts
+// at the pose -+ kLayoutStep (geometry only, no solve; the wheel's normal where a layout misses the element), and its
+// rows turn with the wheel's normal (row_turning); on a plane along the wheel's own normal at every element.
+inline constexpr double kLayoutStep = 1e-6;  // m or rad: moves the wheel's surface by ~1 um, where h is smooth
+struct NormalColumn {
+  Eigen::Vector3d dF = Eigen::Vector3d::Zero(), dM = Eigen::Vector3d::Zero();
+  std::vector<double> dp, dh;
+  std::vector<Eigen::Vector3d> dn;  // conformal: each row's normal turning (row_turning); empty on a plane
+  Eigen::Vector2d dref = Eigen::Vector2d::Zero();  // conformal: the reference point's motion (m: x, arc length)
+};
+NormalColumn normal_column(const ContactModel& model, const Pose& pose, const PatchContact& area, int coordinate,
+                           ContactWorkspace& ws, double tolerance);
 // Separate contact regions of a solution (8-connected, each >= 0.1 % of the force).
 int contact_regions(const halfspace::NormalSolution& sol);
 

@@ -3,6 +3,7 @@
 #include "surface.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/geometry/wheel_surface.hpp"
 
 #include <Eigen/Geometry>
 
@@ -293,30 +294,33 @@ class ConformalAreaSurface final : public AreaSurface {
     pc.point = sol.force > 0 ? surface_point(surf, sol.grid, surf.x0 + sol.cop_x, sol.cop_y) : pc.origin;
   }
 
-  // Element (i, j) measures h along n_j, so a rigid motion dX = dz e_z + droll a x (X - c) (a = Rz(yaw) e_x the roll
-  // axis, c the centre) changes it by -dX . n_j; for the roll, -(a x (X - c)) . n = -a . ((X_j - c) x n) - x a . (e_x x n)
-  // at X = (x, y_j, z_j).
-  void motion(const PatchContact& pc, const Pose& pose, int column, std::vector<double>& dh) const override {
+  // Element (i, j) measures h along n_j, so a rigid motion dX = T + W x (X - c) changes it by -dX . n_j =
+  // -(T . n_j + W . ((X_j - c) x n_j) + x W . (e_x x n_j)) at X = (x, y_j, z_j). (The Jacobian takes the wheel's own
+  // normal at every element instead: area.cpp, wheel_motion.)
+  void motion(const PatchContact& pc, const Pose& pose, const RigidMotion& m, std::vector<double>& dh) const override {
     const ConformalSurface& surf = *pc.conformal;
     const halfspace::Grid& grid = pc.solution.grid;
-    const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
+    const Eigen::Vector3d c(0, pose.y, pose.z);
     for (int j = 0; j < grid.ny; ++j) {
       const Eigen::Vector3d n = surf.normal(j);
-      const double k0 = column == 0 ? n.z() : a.dot((surf.point(j, 0.0) - c).cross(n));
-      const double k1 = column == 0 ? 0.0 : a.dot(Eigen::Vector3d::UnitX().cross(n));
+      const double k0 = m.translation.dot(n) + m.rotation.dot((surf.point(j, 0.0) - c).cross(n));
+      const double k1 = m.rotation.dot(Eigen::Vector3d::UnitX().cross(n));
       for (int i = 0; i < grid.nx; ++i)
         dh[static_cast<std::size_t>(grid.index(i, j))] = -(k0 + k1 * (surf.x0 + grid.x(i)));
     }
   }
 
+  Eigen::Vector3d element_point(const PatchContact& pc, int i, int j) const override {
+    return pc.conformal->point(j, pc.conformal->x0 + pc.solution.grid.x(i));
+  }
+
   // Each row's dP and dQ, pushed along its normal (row_wrench).
-  void response(const PatchContact& pc, const Pose& pose, int column, const halfspace::NormalResponse& r,
-                Eigen::Vector3d& dF, Eigen::Vector3d& dM) const override {
+  void response(const PatchContact& pc, const Pose& pose, const halfspace::NormalResponse& r, Eigen::Vector3d& dF,
+                Eigen::Vector3d& dM) const override {
     const ConformalSurface& surf = *pc.conformal;
     std::vector<double> P, Q;
     row_sums(pc.solution.grid, r.pressure, surf.x0, P, Q);
     row_wrench(surf, P, Q, Eigen::Vector3d(0, pose.y, pose.z), dF, dM);
-    if (column == 0) dM -= Eigen::Vector3d::UnitZ().cross(pc.force);  // the centre moves with z
   }
 
   // The rows (s, y, z, normal_y, normal_z, angle per grid row: the normals of its elements) and, with the grids, the
@@ -353,6 +357,86 @@ const ConformalAreaSurface kConformal;
 }  // namespace
 
 const AreaSurface& conformal_surface() { return kConformal; }
+void row_turning(const ContactModel& model, const Pose& pose, const PatchContact& pc, int coordinate,
+                 std::vector<Eigen::Vector3d>& dn) {
+  const ConformalSurface& surf = *pc.conformal;
+  const halfspace::Grid& g = pc.solution.grid;
+  const WheelCones& wheel = model.geometry().side[static_cast<std::size_t>(pc.side)].wheel;
+  std::vector<double> P, Q;
+  row_sums(g, pc.solution.pressure, surf.x0, P, Q);
+  Pose lo = pose, hi = pose;
+  double* a[4] = {&lo.y, &lo.z, &lo.roll, &lo.yaw};
+  double* b[4] = {&hi.y, &hi.z, &hi.roll, &hi.yaw};
+  *a[coordinate] -= kRowTurnStep;
+  *b[coordinate] += kRowTurnStep;
+  const PoseFrame f0(pose), fl(lo), fh(hi);
+  const auto yz = [](Eigen::Vector3d v) { return Eigen::Vector3d(0, v.y(), v.z()).normalized(); };
+  dn.assign(static_cast<std::size_t>(g.ny), Eigen::Vector3d::Zero());
+  for (int j = 0; j < g.ny; ++j) {
+    const auto js = static_cast<std::size_t>(j);
+    const double x = P[js] > 0 ? Q[js] / P[js] : surf.x0;
+    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j), nw = yz(wheel_inward_normal(wheel, f0, X));
+    const Eigen::Vector3d nr = 2 * nw.dot(n) * n - nw;  // the rail's: n bisects it and the wheel's
+    const Eigen::Vector3d nl = (nr + yz(wheel_inward_normal(wheel, fl, X))).normalized();
+    const Eigen::Vector3d nh = (nr + yz(wheel_inward_normal(wheel, fh, X))).normalized();
+    dn[js] = (nh - nl) / (2 * kRowTurnStep);
+  }
+}
+
+void turning_wrench(const PatchContact& pc, const Pose& pose, const std::vector<Eigen::Vector3d>& dn,
+                    Eigen::Vector3d& dF, Eigen::Vector3d& dM) {
+  const ConformalSurface& surf = *pc.conformal;
+  std::vector<double> P, Q;
+  row_sums(pc.solution.grid, pc.solution.pressure, surf.x0, P, Q);
+  const Eigen::Vector3d c(0, pose.y, pose.z);
+  dF.setZero();
+  dM.setZero();
+  for (int j = 0; j < surf.rows(); ++j) {
+    const auto js = static_cast<std::size_t>(j);
+    dF += dn[js] * P[js];
+    dM += (surf.point(j, 0.0) - c).cross(dn[js]) * P[js] + Eigen::Vector3d::UnitX().cross(dn[js]) * Q[js];
+  }
+}
+
+ConformalLayoutAt conformal_layout_at(const ContactModel& model, const LocationState& st, const PatchContact& pc) {
+  const ConformalSurface& surf = *pc.conformal;
+  const halfspace::Grid& g = pc.solution.grid;
+  const double lo = surf.s0 + g.y(0) - 0.5 * g.dy, hi = surf.s0 + g.y(g.ny - 1) + 0.5 * g.dy;
+  const std::vector<double>& arc = model.rail_arc(pc.side);
+  ConformalLayoutAt out;
+  out.h.assign(static_cast<std::size_t>(g.size()), NAN);
+  out.origin.setConstant(NAN);
+  // The side's patches with a segment on the area's rows, laid out together as the area was.
+  std::vector<int> patches;
+  std::vector<SegmentInfo> all;
+  for (int p = 0; p < static_cast<int>(st.patches(pc.side).size()); ++p) {
+    std::vector<SegmentInfo> segs;
+    collect_segments(model.geometry(), st, pc.side, st.patches(pc.side)[static_cast<std::size_t>(p)], segs);
+    const bool on_rows = std::any_of(segs.begin(), segs.end(), [&](const SegmentInfo& x) {
+      const double S = arc[static_cast<std::size_t>(x.line)];
+      return S >= lo && S <= hi;
+    });
+    if (!on_rows) continue;
+    patches.push_back(p);
+    all.insert(all.end(), segs.begin(), segs.end());
+  }
+  if (patches.empty()) return out;
+  const AreaInput in{model, st, pc.side, patches, all, st.patches(pc.side)[static_cast<std::size_t>(patches.front())]};
+  PatchContact moved;
+  moved.side = pc.side;
+  const AreaLayout l = kConformal.lay_out(in, moved);
+  const ConformalSurface& ms = *moved.conformal;
+  out.origin = {ms.x0, ms.s0};
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {  // the same lattice element in the moved layout's grid
+      const double x = surf.x0 + g.x(i) - ms.x0, s = surf.s0 + g.y(j) - ms.s0;
+      const long a = std::lround((x - l.grid.x0) / l.grid.dx), b = std::lround((s - l.grid.y0) / l.grid.dy);
+      if (a < 0 || b < 0 || a >= l.grid.nx || b >= l.grid.ny) continue;
+      out.h[static_cast<std::size_t>(g.index(i, j))] =
+          moved.h[static_cast<std::size_t>(l.grid.index(static_cast<int>(a), static_cast<int>(b)))];
+    }
+  return out;
+}
 
 }  // namespace areas
 }  // namespace wrc

@@ -223,6 +223,7 @@ ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorks
     res.sensitivity += wc.sensitivity;
     add_creep(res.creep, wc.creep);
   }
+  if (request.jacobian) add_jacobian(model, res, request.rolling, ws);
   if (!request.keep_grids) drop_grids(res);
   return res;
 }
@@ -233,7 +234,7 @@ ContactResult evaluate_vertical_load(const ContactModel& model, const Pose& pose
                                      const ContactRequest& request, const VerticalLoad& load) {
   if (!std::isfinite(load.force) || !(load.force > 0))
     fail("contact: a vertical load of {} N must be a positive number", load.force);
-  if (request.only_side < 0 || request.sensitivity || request.rolling)
+  if (request.only_side < 0 || request.sensitivity || request.jacobian || request.rolling)
     fail("contact: a vertical force is prescribed to one wheel (only_side), without sensitivities or rolling");
   return evaluate(model, pose, ws, request, &load);
 }
@@ -255,10 +256,16 @@ double read_max_penetration(OptionReader& r, double fallback) {
   return v;
 }
 
+bool read_sensitivity(OptionReader& r) {
+  return r.boolean("sensitivity", {"-", "each wheel's jacobian by the creepages and the pose (ws:wheel: and "
+                                        "jacobian_fz, Fz held); ws:contact: also d(force, moment)/d(z, roll) of "
+                                        "both wheels"}, false);
+}
+
 ContactRequest read_contact_request(OptionReader& r) {
   ContactRequest req;
   req.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids in the result"}, req.keep_grids);
-  req.sensitivity = r.boolean("sensitivity", {"-", "d(force, moment)/d(z, roll) of every area"}, req.sensitivity);
+  req.sensitivity = req.jacobian = read_sensitivity(r);
   req.max_penetration = read_max_penetration(r, req.max_penetration);
   req.rolling = read_rolling_request(r);
   return req;
@@ -422,6 +429,8 @@ void describe(const WheelContact& wc, FieldSink& out) {
                {"m", "normal-force weighted mean of the areas' rolling radii (only when the wheel carries load)"});
   }
   describe(wc.creep, out);
+  if (wc.jacobian) describe_jacobian("jacobian", *wc.jacobian, false, out);
+  if (wc.jacobian_fz) describe_jacobian("jacobian_fz", *wc.jacobian_fz, true, out);
   out.begin_list("patches", wc.patches.size(), {"", "the wheel's contact areas"});
   for (const PatchContact& pc : wc.patches) {
     out.item();

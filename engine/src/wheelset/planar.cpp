@@ -79,17 +79,19 @@ std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, c
   return h;
 }
 
-// The rigid motion's terms of a plane (pressure acts along its one normal n at plane point X): the roll moves X by
-// a x (X - c), which changes h by -(a x (X - c)) . n = -(k0 + ku u + kv v) in plane coordinates (u, v).
+// The rigid motion's terms of a plane (pressure acts along its one normal n at plane point X): dX = T + W x (X - c)
+// changes h by -dX . n = -(k0 + ku u + kv v) in plane coordinates (u, v).
+// The rigid motion's terms of a plane (pressure acts along its one normal n at plane point X): dX = T + W x (X - c)
+// changes h by -dX . n = -(k0 + ku u + kv v) in plane coordinates (u, v).
 struct PlaneLever {
   Eigen::Vector3d oc, t1n, t2n;  // (O - c) x n, t1 x n, t2 x n
-  double k0, ku, kv;             // their components along the roll axis a
-  PlaneLever(const PatchContact& pc, const Pose& pose) {
-    const Eigen::Vector3d c(0, pose.y, pose.z), a(std::cos(pose.yaw), std::sin(pose.yaw), 0);
+  double k0 = 0, ku = 0, kv = 0; // T . n + W . oc, W . t1n, W . t2n
+  PlaneLever(const PatchContact& pc, const Pose& pose, const RigidMotion& m = {}) {
+    const Eigen::Vector3d c(0, pose.y, pose.z);
     oc = (pc.origin - c).cross(pc.normal);
     t1n = pc.t1.cross(pc.normal);
     t2n = pc.t2.cross(pc.normal);
-    k0 = a.dot(oc), ku = a.dot(t1n), kv = a.dot(t2n);
+    k0 = m.translation.dot(pc.normal) + m.rotation.dot(oc), ku = m.rotation.dot(t1n), kv = m.rotation.dot(t2n);
   }
 };
 
@@ -126,21 +128,23 @@ class PlanarAreaSurface final : public AreaSurface {
     pc.angle_min = pc.angle_max = pc.angle;  // one plane: the pressure acts along one normal
   }
 
-  void motion(const PatchContact& pc, const Pose& pose, int column, std::vector<double>& dh) const override {
+  void motion(const PatchContact& pc, const Pose& pose, const RigidMotion& m, std::vector<double>& dh) const override {
     const halfspace::Grid& grid = pc.solution.grid;
-    const PlaneLever k(pc, pose);
+    const PlaneLever k(pc, pose, m);
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i)
-        dh[static_cast<std::size_t>(grid.index(i, j))] =
-            column == 0 ? -pc.normal.z() : -(k.k0 + k.ku * grid.x(i) + k.kv * grid.y(j));
+        dh[static_cast<std::size_t>(grid.index(i, j))] = -(k.k0 + k.ku * grid.x(i) + k.kv * grid.y(j));
+  }
+
+  Eigen::Vector3d element_point(const PatchContact& pc, int i, int j) const override {
+    return pc.origin + pc.solution.grid.x(i) * pc.t1 + pc.solution.grid.y(j) * pc.t2;
   }
 
   // dF = n dN; dM from the response's force and first moments (normal.hpp).
-  void response(const PatchContact& pc, const Pose& pose, int column, const halfspace::NormalResponse& r,
-                Eigen::Vector3d& dF, Eigen::Vector3d& dM) const override {
+  void response(const PatchContact& pc, const Pose& pose, const halfspace::NormalResponse& r, Eigen::Vector3d& dF,
+                Eigen::Vector3d& dM) const override {
     const PlaneLever k(pc, pose);
     dM = k.oc * r.force + k.t1n * r.moment_x + k.t2n * r.moment_y;
-    if (column == 0) dM -= Eigen::Vector3d::UnitZ().cross(pc.normal) * pc.solution.force;  // the centre moves with z
     dF = pc.normal * r.force;
   }
 

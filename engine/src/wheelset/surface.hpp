@@ -38,6 +38,17 @@ struct AreaLayout {
   std::vector<double> deepening;  // per grid row: dh/dz, h's growth as the wheel moves down
 };
 
+// A rigid motion of the wheelset per unit of one of its pose coordinates (Pose: y, z, roll, yaw): its centre c moves by
+// `translation`, its points X by translation + rotation x (X - c).
+struct RigidMotion {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();
+};
+enum PoseCoordinate { kPoseY = 0, kPoseZ = 1, kPoseRoll = 2, kPoseYaw = 3 };
+// y: e_y; z: e_z; roll: about the roll axis Rz(yaw) e_x; yaw: about e_z (the pose's rotations, docs/design.md
+// section 2).
+RigidMotion pose_motion(const Pose& pose, int coordinate);
+
 class AreaSurface {
  public:
   virtual ~AreaSurface() = default;
@@ -48,12 +59,15 @@ class AreaSurface {
   // What the solved pressure (area.solution) exerts on the wheel at the pose `frame`: area.normal_force, force,
   // moment (about the wheelset centre), point (centre of pressure), normal, angle, angle_min, angle_max.
   virtual void resultant(const PoseFrame& frame, PatchContact& area) const = 0;
-  // The sensitivities, in two steps per column (0: the wheelset moving by dz = 1 m, 1: rolling by 1 rad). motion: the
-  // change of h per element (dh = -dX . n, the wheel's rigid motion toward the rail). response: the change of the
-  // area's force and moment about the centre (the centre moving with z included) for the pressure response `r` to dh.
-  virtual void motion(const PatchContact& area, const Pose& pose, int column, std::vector<double>& dh) const = 0;
-  virtual void response(const PatchContact& area, const Pose& pose, int column, const halfspace::NormalResponse& r,
+  // The sensitivities, in two steps per rigid motion of the wheelset (pose_motion). motion: the change of h per element
+  // (dh = -dX . n, the wheel's rigid motion toward the rail). response: the change of the area's normal force and its
+  // moment about the centre c held where it is, for the pressure response `r` to dh (the caller adds the centre's
+  // own motion, -translation x force).
+  virtual void motion(const PatchContact& area, const Pose& pose, const RigidMotion& m, std::vector<double>& dh) const = 0;
+  virtual void response(const PatchContact& area, const Pose& pose, const halfspace::NormalResponse& r,
                         Eigen::Vector3d& dF, Eigen::Vector3d& dM) const = 0;
+  // Where element (i, j) of the area's grid is (track frame, m): on the plane, or on the rail's surface.
+  virtual Eigen::Vector3d element_point(const PatchContact& area, int i, int j) const = 0;
   // The surface's own fields of an area, after the fields every area has.
   virtual void describe(const PatchContact& area, FieldSink& out) const = 0;
 };
@@ -63,6 +77,23 @@ const AreaSurface& conformal_surface();  // conformal.cpp
 inline const AreaSurface& surface_for(ContactSurface kind) {
   return kind == ContactSurface::conformal ? conformal_surface() : planar_surface();
 }
+// A conformal area laid out again for the located patches `st` of another pose (the side's patches with a segment on
+// the area's rows), on the area's lattice: its origin (track x, arc length S: the reference point) and h at each of
+// the area's elements (m; NaN where the new grid does not reach, and everything NaN when no patch is left).
+struct ConformalLayoutAt {
+  Eigen::Vector2d origin;
+  std::vector<double> h;
+};
+ConformalLayoutAt conformal_layout_at(const ContactModel& model, const LocationState& st, const PatchContact& area);
+// How a conformal area's row normals (the bisectors of the rail's and the wheel's normals, wrc/wheelset/conformal.hpp)
+// turn per unit of a pose coordinate (PoseCoordinate), per row: the wheel's normal at the row's centre of pressure
+// differenced geometrically (central, kRowTurnStep m or rad: no solve), the rail's held.
+inline constexpr double kRowTurnStep = 1e-6;
+void row_turning(const ContactModel& model, const Pose& pose, const PatchContact& area, int coordinate,
+                 std::vector<Eigen::Vector3d>& dn);
+// The change of a conformal area's normal force and moment about the centre when its rows' normals turn by dn.
+void turning_wrench(const PatchContact& area, const Pose& pose, const std::vector<Eigen::Vector3d>& dn,
+                    Eigen::Vector3d& dF, Eigen::Vector3d& dM);
 // The surface a solved area was laid out on.
 inline const AreaSurface& surface_of(const PatchContact& area) {
   return area.conformal ? conformal_surface() : planar_surface();

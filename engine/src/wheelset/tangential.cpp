@@ -168,7 +168,8 @@ std::vector<double> profile_scale(const ContactModel& model, const Pose& pose, c
 // The creep force (track frame) and its moment about c of the tangential tractions: on a plane fx t1 + fy t2 at the
 // origin plus mz n; on a conformal area each element's traction px e_x + py t2(j) at its point on the rail's surface
 // (as the pressure acts there along n(j)), summed per row.
-void creep_wrench(const PatchContact& pc, const halfspace::TangentialSolution& s, const Eigen::Vector3d& c,
+template <class Tractions>  // TangentialSolution or TangentialDerivative
+void creep_wrench(const PatchContact& pc, const Tractions& s, const Eigen::Vector3d& c,
                   Eigen::Vector3d& force, Eigen::Vector3d& moment) {
   if (!pc.conformal) {
     force = s.fx * pc.t1 + s.fy * pc.t2;
@@ -197,6 +198,97 @@ void creep_wrench(const PatchContact& pc, const halfspace::TangentialSolution& s
 
 }  // namespace
 
+namespace {
+
+// The tangential problem of an area (its friction scale apart).
+halfspace::TangentialProblem area_problem(const PatchContact& pc, const AreaSlip& slip, const RollingRequest& rq) {
+  halfspace::TangentialProblem pb;
+  pb.grid = pc.solution.grid;
+  pb.pressure = pc.solution.pressure;
+  pb.creepages = slip.creepages;
+  pb.extra_x = slip.extra_x;
+  pb.extra_y = slip.extra_y;
+  pb.direction = slip.V > 0 ? 1 : -1;
+  pb.friction = rq.friction;
+  pb.speed = std::abs(slip.V);
+  return pb;
+}
+
+// With kinematics, the change of the rigid slip for a pose coordinate, as TangentialChange has it (creepages at the
+// reference point, the extra slip per element; the reference point's motion ch.ref_x, ref_y given): the velocity field
+// v = vc + Omega x (X - c) changes with the centre c (translation T), the axle's direction (rotation W: dOmega =
+// omega W x axle) and the contact points, which move along n by -dh / 2 (deformed; -dh undeformed) as the wheel's
+// surface approaches. The frames are the rows' (conformal: on the rail, which does not move; planar: the plane, held
+// as the normal sensitivities hold it).
+void kinematic_change(const ContactModel& model, const Pose& pose, const PatchContact& pc, const Kinematics& k,
+                      const halfspace::Creepages& creepages, const areas::NormalColumn& normal, int coordinate,
+                      halfspace::TangentialChange& ch) {
+  const AreaGeometry geo(model, pose, pc, k.slip_reference);
+  const VelocityField field = velocity_field(k, model.geometry().track->params.radius, pose);
+  const areas::RigidMotion m = areas::pose_motion(pose, coordinate);
+  const double omega = k.omega.value_or(k.V / model.geometry().track->params.radius), speed = std::abs(k.V);
+  const Eigen::Vector3d axle = PoseFrame(pose).matrix().col(1), d_omega = omega * m.rotation.cross(axle);
+  const double below = k.slip_reference == SlipReference::undeformed ? 1.0 : 0.5;
+  const halfspace::Grid& g = pc.solution.grid;
+  const int j0 = std::clamp(static_cast<int>(std::lround(-g.y0 / g.dy)), 0, g.ny - 1);
+  // The spin's change from Omega's (the frame held); xi and eta 0: the extra slip takes the rest of each element's.
+  halfspace::Creepages& d = ch.creepages;
+  d = {0.0, 0.0, d_omega.dot(geo.frame(j0).n) / speed};
+  ch.extra_x.assign(static_cast<std::size_t>(g.size()), 0.0);
+  ch.extra_y.assign(ch.extra_x.size(), 0.0);
+  for (int j = 0; j < g.ny; ++j) {
+    const ElementFrame f = geo.frame(j);
+    for (int i = 0; i < g.nx; ++i) {
+      const auto q = static_cast<std::size_t>(g.index(i, j));
+      if (!(pc.solution.pressure[q] > 0)) continue;
+      const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), dX = -below * normal.dh[q] * f.n;
+      const Eigen::Vector3d dv = d_omega.cross(X - field.c) - field.omega.cross(m.translation) + field.omega.cross(dX);
+      // the element's rigid slip changes by (dv . t1, dv . t2) / |V|; the creepages' field takes its part
+      ch.extra_x[q] = dv.dot(f.t1) / speed - (d.xi - d.phi * g.y(j) + creepages.phi * ch.ref_y);
+      ch.extra_y[q] = dv.dot(f.t2) / speed - (d.eta + d.phi * g.x(i) - creepages.phi * ch.ref_x);
+    }
+  }
+}
+
+}  // namespace
+
+Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq,
+                          const std::array<areas::NormalColumn, 4>& normal, const std::array<Eigen::Vector2d, 4>& dref,
+                          ContactWorkspace& ws) {
+  Jacobian J = Jacobian::Zero();
+  if (!pc.rolling || !(pc.solution.force > 0)) return J;
+  const PatchRolling& r = *pc.rolling;
+  if (r.solution.px.empty() || pc.solution.pressure.empty())
+    fail("contact sensitivity: the {} wheel's area has no traction grid (kept grids are needed)", side_name(pc.side));
+  const AreaSlip slip = area_slip(model, pose, pc, rq);
+  halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
+  pb.friction_scale = r.friction_scale;
+  std::vector<halfspace::TangentialChange> changes(7);
+  changes[0].creepages.xi = 1;
+  changes[1].creepages.eta = 1;
+  changes[2].creepages.phi = 1;
+  for (int c = 0; c < 4; ++c) {
+    const auto cs = static_cast<std::size_t>(c);
+    halfspace::TangentialChange& ch = changes[3 + cs];
+    ch.pressure = normal[cs].dp;
+    ch.ref_x = dref[cs].x();
+    ch.ref_y = dref[cs].y();
+    if (rq.kinematics) kinematic_change(model, pose, pc, *rq.kinematics, slip.creepages, normal[cs], c, ch);
+  }
+  const std::vector<halfspace::TangentialDerivative> d =
+      r.method == RollingMethod::fastsim ? halfspace::linearise_fastsim(model.material(), pb, r.solution, changes)
+                                         : model.rolling_solver().linearise(pb, r.solution, changes, ws.rolling, 1e-6);
+  const Eigen::Vector3d c(0, pose.y, pose.z);
+  for (int col = 0; col < 7; ++col) {
+    Eigen::Vector3d dF, dM;
+    creep_wrench(pc, d[static_cast<std::size_t>(col)], c, dF, dM);
+    if (col >= 3) dM -= areas::pose_motion(pose, col - 3).translation.cross(r.force);  // the centre moves
+    J.block<3, 1>(0, col) = dF;
+    J.block<3, 1>(3, col) = dM;
+  }
+  return J;
+}
+
 void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContact& pc, const RollingRequest& rq,
                         ContactWorkspace& ws, std::vector<ContactWorkspace::Previous>& next) {
   if (pc.rolling) {  // replace an earlier solution
@@ -207,15 +299,7 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   if (pc.solution.pressure.empty() || pc.h.empty())
     fail("rolling contact: the {} wheel's area has no pressure grid (kept grids are needed)", side_name(pc.side));
   const AreaSlip slip = area_slip(model, pose, pc, rq);
-  halfspace::TangentialProblem pb;
-  pb.grid = pc.solution.grid;
-  pb.pressure = pc.solution.pressure;
-  pb.creepages = slip.creepages;
-  pb.extra_x = slip.extra_x;
-  pb.extra_y = slip.extra_y;
-  pb.direction = slip.V > 0 ? 1 : -1;
-  pb.friction = rq.friction;
-  pb.speed = std::abs(slip.V);
+  halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
   PatchRolling r;
   if (const auto& profile = rq.friction_profile[static_cast<std::size_t>(pc.side)]) {
     r.friction_scale = profile_scale(model, pose, pc, *profile, rq.friction.static_coefficient);

@@ -2,7 +2,11 @@
 // apart from the normal problem's code (contact.cpp) so that each can change without the other.
 #pragma once
 
+#include "area.hpp"
+
 #include "wrc/wheelset/contact.hpp"
+
+#include <array>
 
 namespace wrc {
 
@@ -11,6 +15,14 @@ namespace wrc {
 // workspace's last solution of the same area (workspace.tangential) and appends its own to `next`.
 void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContact& area, const RollingRequest& request,
                         ContactWorkspace& workspace, std::vector<ContactWorkspace::Previous>& next);
+// The creep force's part of a rolling area's Jacobian (Jacobian; its grids kept): the columns xi, eta, phi from the
+// tangential solver's linearisation for a change of the creepages at the reference point (the rest of the rigid slip
+// held), the pose columns y, z, roll, yaw for the normal problem's pressure response `normal[c]` (the traction bounds
+// of the slip elements), the reference point's motion `dref[c]` (m per unit: grid x and y) and, with kinematics, the
+// rigid slip's change; moments about the wheelset centre, its motion included.
+Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const PatchContact& area,
+                          const RollingRequest& request, const std::array<areas::NormalColumn, 4>& normal,
+                          const std::array<Eigen::Vector2d, 4>& dref, ContactWorkspace& workspace);
 // Accumulates an area's (or a wheel's) creep totals.
 void add_creep(CreepTotals& total, const PatchContact& area);
 void add_creep(CreepTotals& total, const CreepTotals& part);

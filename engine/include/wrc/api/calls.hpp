@@ -135,6 +135,7 @@ struct TrajectoryCall {
 struct TrajectoryContactCall {
   Pose pose;
   std::optional<RollingRequest> rolling;
+  bool sensitivity = false;  // each wheel's Jacobian (ContactRequest::sensitivity)
   static TrajectoryContactCall read(OptionReader& r);
   ContactResult run(Trajectory& trajectory) const;
 };
@@ -143,6 +144,7 @@ struct TrajectoryContactCall {
 struct TrajectoryWheelCall {
   WheelCase wheel;
   std::optional<RollingRequest> rolling;
+  bool sensitivity = false;  // the wheel's Jacobians (WheelOptions::sensitivity)
   static TrajectoryWheelCall read(OptionReader& r);
   void validate() const;
   WheelResult run(Trajectory& trajectory) const;

@@ -33,10 +33,13 @@ class Trajectory {
   // Contact at a prescribed pose (as evaluate_contact), warm-started from the previous step; with `rolling`, the
   // tangential problem of every area too (creep forces, as ws:contact's rolling keys; "fastsim" for speed). A step
   // that fails warm is evaluated again cold before it throws.
-  ContactResult contact(const Pose& pose, const std::optional<RollingRequest>& rolling = std::nullopt);
+  // `sensitivity`: each wheel's Jacobian too (WheelContact::jacobian; and jacobian_fz from wheel()).
+  ContactResult contact(const Pose& pose, const std::optional<RollingRequest>& rolling = std::nullopt,
+                        bool sensitivity = false);
   // One wheel with its vertical force prescribed (as solve_wheel, `rolling` included), from the previous steps'
   // approach; a step that fails (or throws) so is solved again from a cold start, whose result it returns.
-  WheelResult wheel(const WheelCase& c, const std::optional<RollingRequest>& rolling = std::nullopt);
+  WheelResult wheel(const WheelCase& c, const std::optional<RollingRequest>& rolling = std::nullopt,
+                    bool sensitivity = false);
   // Forget the previous steps.
   void reset();
   const TrajectoryOptions& options() const { return options_; }

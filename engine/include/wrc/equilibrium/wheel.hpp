@@ -36,6 +36,9 @@ struct WheelOptions {
   // trajectory, content with limits.normal_tolerance, turns it off.
   bool final_at_model_tolerance = true;
   bool keep_grids = true;  // the result's pressure and h grids (`grids`, as ws:contact and ws:equilibrium have it)
+  // The wheel's Jacobian at the solved pose (WheelContact::jacobian) and with its Fz held (jacobian_fz), when it
+  // converged (`sensitivity`, as ws:contact has it).
+  bool sensitivity = false;
   // Throws wrc::Error naming the first member out of its range (its key, value, unit and range).
   void validate(std::string_view context) const;
 };

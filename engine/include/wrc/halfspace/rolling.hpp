@@ -90,6 +90,28 @@ struct TangentialSolution {
   double adhesion_fraction() const { return contact_area > 0 ? adhesion_area / contact_area : 0.0; }
 };
 
+// A first-order change of a tangential problem per unit of some parameter (a creepage, a pose coordinate): of its
+// creepages and reference point (as TangentialProblem has them: FASTSIM scales the spin's part), of the extra rigid
+// slip and of the pressure (per element of the problem's grid; each vector empty: no change). Dimensionless, m, Pa.
+struct TangentialChange {
+  Creepages creepages;
+  double ref_x = 0, ref_y = 0;
+  std::vector<double> extra_x, extra_y;
+  std::vector<double> pressure;
+};
+
+// The first-order change of a converged solution's traction for a TangentialChange, with the contact area and the
+// adhesion / slip split held fixed (the solution's linearisation): adhesion elements keep zero slip, slip elements
+// keep their traction on the bound mu_k p_n (which changes by mu_k dp_n) and opposite to their slip. Per element (0
+// outside the contact), per unit of the parameter: px, py (Pa); fx, fy (N) and mz (N m about the reference point,
+// its change included) as TangentialSolution sums them.
+struct TangentialDerivative {
+  Grid grid;
+  std::vector<double> px, py;
+  double fx = 0, fy = 0, mz = 0;
+  int iterations = 0;  // GMRES iterations (exact) / 0 (FASTSIM)
+};
+
 // Buffers of one thread for RollingSolver (not shareable; reused across solves).
 class RollingWorkspace {
  public:
@@ -115,6 +137,13 @@ class RollingSolver {
   TangentialSolution solve(const TangentialProblem& problem, RollingWorkspace& workspace,
                            const TangentialOptions& options = {}) const;
   TangentialSolution solve(const TangentialProblem& problem, const TangentialOptions& options = {}) const;
+  // The linearisation of `solution` (this solver's for `problem`) for each change: its Newton linearisation at the
+  // converged split (the Jacobian products and preconditioner of the solve), solved by GMRES to the relative residual
+  // `tolerance`. Throws wrc::Error on a solution that does not fit the problem, and for a friction law falling with
+  // the slip velocity (not linearised).
+  std::vector<TangentialDerivative> linearise(const TangentialProblem& problem, const TangentialSolution& solution,
+                                              std::span<const TangentialChange> changes, RollingWorkspace& workspace,
+                                              double tolerance = 1e-9) const;
 
  private:
   ShearCache cache_;
@@ -132,6 +161,13 @@ class RollingSolver {
 TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& problem);
 // The same into `solution`, reusing its grids' storage (a dynamics code calling it at every step).
 void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
+
+// FASTSIM's derivative for each change: the strip march differentiated with each element's state (adhesion, slip)
+// held, the slip elements' projection onto the bound differentiated exactly, the regions' flexibilities fixed.
+// Throws wrc::Error as RollingSolver::linearise does.
+std::vector<TangentialDerivative> linearise_fastsim(const Material& material, const TangentialProblem& problem,
+                                                    const TangentialSolution& solution,
+                                                    std::span<const TangentialChange> changes);
 
 // Throws wrc::Error naming `context` on a bad problem: grid, sizes, non-finite or negative pressure, non-finite
 // creepages or rigid slip, friction coefficients outside [kFrictionMin, kFrictionMax] or kinetic > static, a bad

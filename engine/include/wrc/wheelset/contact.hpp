@@ -83,6 +83,15 @@ inline constexpr double kBytesPerElement = 400;
 // Rows of a force/moment sensitivity: (Fx, Fy, Fz, Mx, My, Mz); columns: (z, roll) of the pose.
 using Sensitivity = Eigen::Matrix<double, 6, 2>;
 
+// A wheel's Jacobian (ContactRequest::sensitivity; docs/guide/sensitivity.md): rows the derivatives of (Fx, Fy, Fz,
+// Mx, My, Mz), the wheel's force and moment (WheelContact::force, moment: track frame, moments about the wheelset
+// centre, creep forces included); columns (xi, eta, phi, y, z, roll, yaw): the creepages at every area's reference
+// point (N per unit creepage; phi: N m), then the pose (N/m, N/rad; N m/m, N m/rad). Computed from the solvers'
+// linearisations at the solution's contact areas and adhesion / slip splits.
+using Jacobian = Eigen::Matrix<double, 6, 7>;
+inline constexpr const char* kJacobianColumns[7] = {"xi", "eta", "phi", "y", "z", "roll", "yaw"};
+inline constexpr int kJacobianPose = 3;  // the first pose column (y)
+
 // One potential contact area (one or more merged inter-penetration patches of one wheel) and its solution.
 // A conformal area (`conformal` set, wheelset/conformal.hpp) has no plane: origin, t1, t2 are the local frame at its
 // grid's origin on the curved surface, `normal` is the direction of the resultant force (normal_force = |force|,
@@ -141,6 +150,10 @@ struct WheelContact {
   double angle = 0;           // contact angle of the resultant force (rad)
   double rolling_radius = 0;  // normal-force weighted mean of the areas' rolling radii (m); not described when lifted
   Sensitivity sensitivity = Sensitivity::Zero();
+  std::optional<Jacobian> jacobian;  // with ContactRequest::sensitivity
+  // ws:wheel with sensitivity: the Jacobian with the wheel's vertical force Fz held (z adjusting): column z is
+  // d(.)/dFz (per N), the others d(.)/d(column) at constant Fz.
+  std::optional<Jacobian> jacobian_fz;
   std::string flange_climb;   // why the wheel is past flange climb (wheelset/plausibility.hpp); "" when it is not
   CreepTotals creep;
 };
@@ -232,6 +245,8 @@ class ContactWorkspace {
 
 struct ContactRequest {
   bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems)
+  bool jacobian = false;     // fill every wheel's Jacobian (WheelContact::jacobian); the calls' key `sensitivity` sets
+                             // both
   bool keep_grids = true;    // keep pressure and h grids in the result (large)
   int only_side = -1;        // kLeft or kRight: evaluate that wheel only
   double tolerance = 0;      // in ]0, 1e-2]: the normal solver's tolerance for this evaluation (inexact Newton
@@ -250,6 +265,9 @@ struct ContactRequest {
 // Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),
 // max_penetration (m, > 0; default kMaxPenetration) and the rolling keys (read_rolling_request).
 ContactRequest read_contact_request(OptionReader& options);
+// Reads `sensitivity` (default false): the calls' one key for the Jacobians (ws:contact, ws:wheel, tr:contact,
+// tr:wheel and their C and Python forms).
+bool read_sensitivity(OptionReader& options);
 // Reads max_penetration (m, finite and > 0) over `fallback`.
 double read_max_penetration(OptionReader& options, double fallback = kMaxPenetration);
 
@@ -270,6 +288,14 @@ void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWo
 // adds the creep forces to the areas', wheels' and total forces and moments (replacing an earlier solution).
 void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
                  ContactWorkspace& workspace);
+// Fills every wheel's Jacobian of a result (its grids kept); `rolling`: the request its tangential problems were
+// solved for (none: frictionless, the creepage columns 0).
+void add_jacobian(const ContactModel& model, ContactResult& result, const std::optional<RollingRequest>& rolling,
+                  ContactWorkspace& workspace);
+// The Jacobian at constant Fz of a wheel's Jacobian J (WheelContact::jacobian_fz): z adjusts so that Fz stays,
+// dz = -(dFz/dq) / (dFz/dz) per unit of column q; the z column becomes d(.)/dFz = J.col(z) / (dFz/dz). Throws
+// wrc::Error when dFz/dz is not negative (no vertical stiffness).
+Jacobian constant_fz(const Jacobian& J);
 // Releases the pressure, gap and h grids of a result.
 void drop_grids(ContactResult& result);
 
@@ -286,6 +312,8 @@ void describe(const WheelContact& wheel, FieldSink& out);
 // With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.
 void describe(const ContactResult& result, FieldSink& out, bool sensitivity = false);
 void describe_sensitivity(const Sensitivity& s, FieldSink& out);
+// A Jacobian as fields: one list of 6 values (Fx, Fy, Fz, Mx, My, Mz) per column, named by kJacobianColumns.
+void describe_jacobian(const char* name, const Jacobian& J, bool constant_fz, FieldSink& out);
 // Creep totals as fields (nothing when no area was solved): creep_force, creep_moment, power.
 void describe(const CreepTotals& totals, FieldSink& out);
 void describe(const Pose& pose, FieldSink& out);  // pose = {y, z, roll, yaw}
