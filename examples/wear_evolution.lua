@@ -96,7 +96,8 @@ local function cases_of(st)
   local Q = opt.Q_kN * 1e3
   return loop.generated_cases{
     Q = Q, V = opt.V_kmh / 3.6, mu = opt.mu, tangent = opt.tangent, sigma = opt.sigma_mm * 1e-3, curves = curves,
-    forces = forces, y_for_force = function(sign, Y, yaw, from) return loop.y_for_force(ws, sign, Y, yaw, Q, from) end}
+    forces = forces, y_for_force = function(sign, Y, yaw, from, hint) return loop.y_for_force(ws, sign, Y, yaw, Q, from, hint) end,
+    previous = st.previous_cases}
 end
 
 -- The states of the loop: state k after k steps, with its measures. Kept from one compute call to the next; a run
