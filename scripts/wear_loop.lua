@@ -437,6 +437,17 @@ local function advance(st, rate, distance, o, km)
   return new, depth_max
 end
 
+-- The largest difference between two wheel rates (m/m) over the points of both wheels.
+local function largest_difference(a, b)
+  local big = 0
+  for _, name in ipairs{"left_wheel", "right_wheel"} do
+    local x, y = a[name], b[name]
+    for i = 1, x and #x or y and #y or 0 do big = math.max(big, math.abs((x and x[i] or 0) - (y and y[i] or 0))) end
+  end
+  return big
+end
+local MAX_RETRIES = 8
+
 local function mean_rate(a, b)
   local m = {}
   for _, name in ipairs(M.BODIES) do
@@ -455,11 +466,18 @@ end
 -- (the wear model's keys), method =, threads =, chain =, rail_passes = (passages of the wheelset over a rail
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =
 -- "heun" (default: the rates at the start and at the profiles an Euler step gives, averaged -- second order in the
--- step, the cases solved twice) | "euler" (the rates at the start)}. The distance of the step is the one at which the
--- start's rates wear `step` off the wheel's deepest point, shorter when Heun's mean rates reach deeper. Returns the new state and what the step did: the distance
--- (m), the largest depth per body (m), the wheels' Archard volumes over the step (m^3), the cases and failed cases.
+-- step, the cases solved twice) | "euler" (the rates at the start), tolerance = m (Heun: the largest difference
+-- between the Heun and the Euler depth of a wheel point allowed in a step; a step over it is shortened by
+-- 0.9 sqrt(tolerance / difference), at most 8 times, its second rates computed again: it resolves the KTH map's jumps
+-- of k; nil: no control)}. The distance of the step is the one at which the start's rates wear `step` off the
+-- wheel's deepest point, shorter when Heun's mean rates reach deeper or the control shortens it. Returns the new state
+-- and what the step did: the distance (m), the largest depth per body (m), the wheels' Archard volumes over the step
+-- (m^3), the cases and failed cases, the times the control shortened it (retries).
 function M.step(st, cases, o)
   local function cases_at(state) return type(cases) == "function" and cases(state) or cases end
+  if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
+    error("wear step: tolerance = " .. tostring(o.tolerance) .. " must be a depth > 0 (m) or nil", 0)
+  end
   local cases0 = cases_at(st)
   local r0 = rates(st, cases0, o)
   local largest = 0
@@ -475,11 +493,21 @@ function M.step(st, cases, o)
   local rate, archard = r0.rate, {left = r0.archard.left, right = r0.archard.right}
   local cases1 = nil
   local failed, errors = r0.failed, r0.errors
+  local retries = 0
   if (o.scheme or "heun") == "heun" then
-    local predicted = advance(st, r0.rate, distance, o, km)
-    predicted.previous_cases = cases0
-    cases1 = cases_at(predicted)
-    local r1 = rates(predicted, cases1, o)
+    local r1
+    while true do
+      local predicted = advance(st, r0.rate, distance, o, km)
+      predicted.previous_cases = cases0
+      cases1 = cases_at(predicted)
+      r1 = rates(predicted, cases1, o)
+      -- Heun's depth minus Euler's: the local error of the Euler step, an upper bound of Heun's.
+      local err = distance * largest_difference(r0.rate, r1.rate) / 2
+      if not o.tolerance or err <= o.tolerance or retries >= MAX_RETRIES then break end
+      distance = distance * math.max(0.1, 0.9 * math.sqrt(o.tolerance / err))
+      km = st.km + distance / 1000
+      retries = retries + 1
+    end
     rate = mean_rate(r0.rate, r1.rate)
     archard.left, archard.right = (r0.archard.left + r1.archard.left) / 2, (r0.archard.right + r1.archard.right) / 2
     failed = failed + r1.failed
@@ -500,7 +528,7 @@ function M.step(st, cases, o)
   local new, depth = advance(st, rate, distance, o, km)
   new.previous_cases = cases1 or cases0
   return new, {folds = new.folds or 0, distance = distance, depth = depth, archard = {left = archard.left * distance,
-               right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors}
+               right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors, retries = retries}
 end
 
 ----------------------------------------------------------------------------------------------------------------
