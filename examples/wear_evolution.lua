@@ -37,8 +37,8 @@ local s = study.new{
     {"km_end", "number", 0, "stop at this distance (km; the last step shortened; 0: after `steps`)", min = 0},
     {"scheme", "string", "heun", "time stepping: the start's rates averaged with those after an Euler step, or the " ..
      "start's alone", choices = {"heun", "euler"}},
-    {"tolerance", "number", 0.1, "Heun's step control: the largest difference between a step's Heun and Euler " ..
-     "depths, as a fraction of step_mm (0: none)", min = 0, max = 1},
+    {"tolerance", "number", 0, "Heun's step control: the largest difference between a step's Heun and Euler " ..
+     "depths, as a fraction of step_mm (0: none; 0.1 resolves the KTH map's running-in)", min = 0, max = 1},
     {"smooth_mm", "number", 1, "standard deviation of the area-preserving smoothing (mm; 0: none)", min = 0,
      max = 20},
     {"grid_mm", "number", 0.2, "element size of the contact areas (mm)", min = 0.01, max = 5},
