@@ -75,6 +75,16 @@ do  -- volume per step against the Archard volumes, Euler's and Heun's (wheels),
   end
   for k = 1, 2 do
     local list = cases(mixed, st)
+    -- The curving cases, placed from the roots of the step before in step 2 (the state's previous_cases): each one's
+    -- equilibrium, solved here from a cold start, needs its lateral force within 1e-3.
+    check.ok((k == 1) == (st.previous_cases == nil), "step 2 places its cases from the step before's")
+    local ws = loop.wheelset(st)
+    for _, c in ipairs(list) do
+      if c.kind == "curve" then
+        local e = ws:equilibrium{y = c.y, yaw = c.yaw, Q = Q}
+        check.rel(e.Y, c.Y, 1e-3, ("step %d: the curving case placed for %.0f kN"):format(k, c.Y / 1e3))
+      end
+    end
     local euler_o, heun_o = {}, {}
     for key, v in pairs(options) do euler_o[key], heun_o[key] = v, v end
     euler_o.scheme, heun_o.scheme = "euler", "heun"
