@@ -27,6 +27,12 @@ local s = study.new{
                             "(0: whole chains, as the paper; more pieces spread over more shards)", min = 0},
     {"surface", "string", "planar", "contact areas on one plane each (as the paper) or along the rail's profile",
      choices = {"planar", "conformal"}},
+    {"V_kmh", "number", 0, "rolling speed (km/h): with it the creep forces, T gamma and the damage indices at each " ..
+     "equilibrium's pose are columns of sweep.csv (0: the normal problem alone, as the paper)", min = 0, max = 500},
+    {"mu", "number", 0.3, "friction coefficient of the rolling contact (with V_kmh)", min = 0.01, max = 2},
+    {"method", "string", "exact", "rolling contact solver (with V_kmh)", choices = {"exact", "fastsim"}},
+    {"wear", "string", "none", "wear model of the rolling contact (with V_kmh): its volume per metre rolled a column",
+     choices = {"none", "archard", "usfd"}},
     {"threads", "integer", 0, "worker threads (0: all cores of this process)", min = 0, max = 256, hash = false},
     {"plots", "boolean", true, "make the figures", hash = false},
   },
@@ -74,5 +80,14 @@ local function finish(ctx)
   print("results in " .. ctx.dir)
 end
 
+-- Rolling at the equilibria's poses (V_kmh > 0): the creep forces and the damage indices as columns of sweep.csv.
+local rolling = nil
+if opt.V_kmh > 0 then
+  rolling = {V = opt.V_kmh / 3.6, mu = opt.mu, method = opt.method,
+             wear = opt.wear ~= "none" and {model = opt.wear} or nil}
+elseif opt.wear ~= "none" then
+  error("wear=" .. opt.wear .. " needs a rolling speed: give V_kmh (km/h, > 0)", 0)
+end
+
 sweep.run_sweep(s, ws, {y = ys, yaw = yaws, Q = Q, rigid = true, threads = opt.threads, chain = opt.chain,
-                        inputs = {wheel = wheel, rail = rail}, finish = finish})
+                        inputs = {wheel = wheel, rail = rail}, rolling = rolling, finish = finish})

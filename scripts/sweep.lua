@@ -298,14 +298,23 @@ end
 -- A sweep of equilibria as a study (s from wrc.study.new): the cases yaw x y (y ascending), cut into the engine's
 -- continuation chunks (ws:sweep_plan), each computed on its own, so that any split into shards, batches or threads
 -- gives the same rows. Writes sweep.csv (and rigid.csv with rigid = true) and calls o.finish(ctx) after the merge.
---   o = {y = {...} (ascending), yaw = {...} (rad), Q =, rigid =, threads =, chain =, inputs =, finish =}
+--   o = {y = {...} (ascending), yaw = {...} (rad), Q =, rigid =, threads =, chain =, inputs =, finish =,
+--        rolling = {V =, mu =, method =, wear =, ...} (the rolling keys of ws:sweep: the creep forces and the damage
+--        indices at each equilibrium's pose, their columns in sweep.csv; nil: the normal problem alone)}
 function M.run_sweep(s, ws, o)
   for i = 2, #o.y do assert(o.y[i] > o.y[i - 1], "sweep.run_sweep: y must be ascending") end
   local plan = ws:sweep_plan{y = o.y, yaw = o.yaw, chain = o.chain}
   local chunks = {}
   for k, c in ipairs(plan.chunks) do chunks[k] = {first = c.first, last = c.last} end
   local threads = (o.threads and o.threads > 0) and o.threads or wrc.cores
-  local tables = {{key = "sweep", file = "sweep.csv", columns = M.sweep_columns}}
+  local columns = M.sweep_columns
+  if o.rolling then
+    columns = {table.unpack(M.sweep_columns)}
+    for _, list in ipairs{M.creep_columns, M.damage_columns, o.rolling.wear and M.wear_columns or {}} do
+      for _, name in ipairs(list) do columns[#columns + 1] = name end
+    end
+  end
+  local tables = {{key = "sweep", file = "sweep.csv", columns = columns}}
   if o.rigid then tables[2] = {key = "rigid", file = "rigid.csv", columns = M.rigid_columns} end
   local ny = #o.y
   return s:run{
@@ -315,8 +324,10 @@ function M.run_sweep(s, ws, o)
     compute = function(batch)
       local ids = {}
       for _, c in ipairs(batch.chunks) do ids[#ids + 1] = c.index end
-      local sweep = ws:sweep{y = o.y, yaw = o.yaw, Q = o.Q, rigid = o.rigid, threads = o.threads, chain = o.chain,
-                             chunks = ids, progress = false}
+      local keys = {y = o.y, yaw = o.yaw, Q = o.Q, rigid = o.rigid, threads = o.threads, chain = o.chain,
+                    chunks = ids, progress = false}
+      for k, v in pairs(o.rolling or {}) do keys[k] = v end
+      local sweep = ws:sweep(keys)
       local results = {}
       for _, r in ipairs(sweep) do
         results[r.case] = {sweep = M.sweep_row(r), rigid = o.rigid and M.rigid_row(r) or nil,

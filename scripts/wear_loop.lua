@@ -69,8 +69,16 @@ function M.read_cases(path)
   return cases
 end
 
+-- The equilibrium a curving case of `previous` (cases generated on profiles worn a little less) was placed at.
+local function previous_hint(previous, radius, Y)
+  for _, c in ipairs(previous or {}) do
+    if c.hint and c.radius == radius and c.Y == Y then return c.hint end
+  end
+end
+
 -- Generated cases (o: Q, V, mu, tangent = n, sigma (m), curves = {{radius =, yaw =, share =}, ...}, forces = {N, ...},
--- y_for_force = function(sign, Y, yaw, from) -> y): n cases on tangent track at lateral shifts over +-3 sigma weighted by a
+-- y_for_force = function(sign, Y, yaw, from, hint) -> y, root (M.y_for_force), previous = the cases generated on the
+-- profiles before (their equilibria start the search; a state's `previous_cases`, set by M.step)): n cases on tangent track at lateral shifts over +-3 sigma weighted by a
 -- normal distribution (together the share 1 - the curves'), and per curve one case for each lateral force in
 -- `forces`, the wheelset pressed with it against the curve's outer rail (y_for_force: the shift at which the
 -- frictionless equilibrium needs that lateral force, M.y_for_force), with the curve's attack angle and yaw rate.
@@ -93,13 +101,13 @@ function M.generated_cases(o)
     local sign = cv.radius > 0 and -1 or 1  -- a curve toward +y has its outer rail at -y: flange on the right
     local forces = {table.unpack(o.forces)}
     table.sort(forces)
-    local from = nil  -- |y| of the last force: the next one's lower bound
+    local from, last = nil, nil  -- |y| of the last force: the next one's lower bound; its equilibrium
     for _, force in ipairs(forces) do
       local yaw = sign * math.abs(cv.yaw)
-      local y = o.y_for_force(sign, sign * force, yaw, from)
-      from = math.abs(y)
+      local y, root = o.y_for_force(sign, sign * force, yaw, from, previous_hint(o.previous, cv.radius, sign * force) or last)
+      from, last = math.abs(y), root
       cases[#cases + 1] = {y = y, yaw = yaw, Q = o.Q, V = o.V, mu = o.mu, radius = cv.radius,
-                           share = cv.share / #forces, kind = "curve", Y = sign * force}
+                           share = cv.share / #forces, kind = "curve", Y = sign * force, hint = root}
     end
   end
   for i, c in ipairs(cases) do check_case(c, "generated case " .. i) end
@@ -107,19 +115,53 @@ function M.generated_cases(o)
 end
 
 -- The lateral shift y (m) at which the frictionless equilibrium of the wheelset under Q (N) at yaw (rad) needs the
--- lateral force Y (N; > 0 toward the left rail: the left flange, sign 1; < 0 the right, sign -1): regula falsi
--- (Illinois) on |y| between `from` (m, default 0) and where the wheel's flange touches its rail rigidly
--- (M.flange_contact) plus 0.5 mm, to |Y error| <= 1e-3 |Y| or 1e-8 m of y.
-function M.y_for_force(ws, sign, Y, yaw, Q, from)
+-- lateral force Y (N; > 0 toward the left rail: the left flange, sign 1; < 0 the right, sign -1), to |Y error| <=
+-- 1e-3 |Y| or 1e-8 m of y: regula falsi (Illinois) on |y| between `from` (m, default 0) and where the wheel's flange
+-- touches its rail rigidly (M.flange_contact) plus 0.5 mm. `hint` (optional, {y = |y|, z =, roll =}: the equilibrium
+-- this returned for the same force on profiles worn a little less) starts the search: the bracket is grown from it in
+-- steps of 2 um x 4^k. Every equilibrium starts from the nearest one evaluated before (a cold one costs 20 times more).
+-- Returns y and the hint of the root ({y = |y|, z =, roll =}).
+local HINT_STEP = 2e-6
+function M.y_for_force(ws, sign, Y, yaw, Q, from, hint)
+  local seen = {hint}
   local function excess(y)
-    local e = ws:equilibrium{y = sign * y, yaw = yaw, Q = Q, on_failure = "return"}
+    local near
+    for _, p in ipairs(seen) do
+      if not near or math.abs(p.y - y) < math.abs(near.y - y) then near = p end
+    end
+    local e = ws:equilibrium{y = sign * y, yaw = yaw, Q = Q, on_failure = "return",
+                             start = near and {z = near.z, roll = near.roll} or nil}
     if not e.converged then error(("no equilibrium at y = %.4f mm: %s"):format(sign * y * 1e3, tostring(e.error)), 0) end
+    seen[#seen + 1] = {y = y, z = e.z, roll = e.roll}
     return sign * (e.Y - Y)
   end
+  local function done(y, fy) return math.abs(fy) <= 1e-3 * math.abs(Y), sign * y, seen[#seen] end
   local flange = M.flange_contact(ws, sign)
   if not flange then error("y_for_force: no flange contact within 15 mm", 0) end
-  local a, b = from or 0, flange + 0.5e-3
-  local fa, fb = excess(a), excess(b)
+  local lo, hi = from or 0, flange + 0.5e-3
+  local a, b, fa, fb
+  if hint and hint.y >= lo and hint.y < hi then  -- grow a bracket from the hint
+    local y, fy = hint.y, excess(hint.y)
+    local ok, ys, root = done(y, fy)
+    if ok then return ys, root end
+    local dir, h = fy < 0 and 1 or -1, HINT_STEP
+    while true do
+      local y2 = dir > 0 and math.min(hi, y + h) or math.max(lo, y - h)
+      local f2 = excess(y2)
+      ok, ys, root = done(y2, f2)
+      if ok then return ys, root end
+      if (f2 < 0) ~= (fy < 0) then
+        if dir > 0 then a, fa, b, fb = y, fy, y2, f2 else a, fa, b, fb = y2, f2, y, fy end
+        break
+      end
+      if y2 == lo or y2 == hi then a, b = nil, nil break end  -- no sign change up to the end: the whole range
+      y, fy, h = y2, f2, 4 * h
+    end
+  end
+  if not a then
+    a, b = lo, hi
+    fa, fb = excess(a), excess(b)
+  end
   if fa > 0 or fb < 0 then
     error(("no lateral shift between %.3f and %.3f mm needs Y = %.1f kN (it runs from %.1f to %.1f kN)"):format(
           sign * a * 1e3, sign * b * 1e3, Y / 1e3, (sign * fa + Y) / 1e3, (sign * fb + Y) / 1e3), 0)
@@ -128,7 +170,8 @@ function M.y_for_force(ws, sign, Y, yaw, Q, from)
   for _ = 1, 100 do
     local y = (a * fb - b * fa) / (fb - fa)
     local fy = excess(y)
-    if math.abs(fy) <= 1e-3 * math.abs(Y) or b - a < 1e-8 then return sign * y end
+    local ok, ys, root = done(y, fy)
+    if ok or b - a < 1e-8 then return ys, root end
     if fy < 0 then
       a, fa = y, fy
       if side == -1 then fb = fb / 2 end
@@ -394,6 +437,17 @@ local function advance(st, rate, distance, o, km)
   return new, depth_max
 end
 
+-- The largest difference between two wheel rates (m/m) over the points of both wheels.
+local function largest_difference(a, b)
+  local big = 0
+  for _, name in ipairs{"left_wheel", "right_wheel"} do
+    local x, y = a[name], b[name]
+    for i = 1, x and #x or y and #y or 0 do big = math.max(big, math.abs((x and x[i] or 0) - (y and y[i] or 0))) end
+  end
+  return big
+end
+local MAX_RETRIES = 8
+
 local function mean_rate(a, b)
   local m = {}
   for _, name in ipairs(M.BODIES) do
@@ -406,17 +460,26 @@ local function mean_rate(a, b)
   return m
 end
 
--- `cases`: a list, or a function(state) -> list (cases placed on the state's profiles, e.g. from its flanges).
+-- `cases`: a list, or a function(state) -> list (cases placed on the state's profiles, e.g. from its flanges; the
+-- state's `previous_cases` are the list placed on the profiles before, to start from).
 -- o = {step = m (the largest wheel depth of the step), smooth = m (the smoothing's standard deviation), wear = {...}
 -- (the wear model's keys), method =, threads =, chain =, rail_passes = (passages of the wheelset over a rail
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =
 -- "heun" (default: the rates at the start and at the profiles an Euler step gives, averaged -- second order in the
--- step, the cases solved twice) | "euler" (the rates at the start)}. The distance of the step is the one at which the
--- start's rates wear `step` off the wheel's deepest point, shorter when Heun's mean rates reach deeper. Returns the new state and what the step did: the distance
--- (m), the largest depth per body (m), the wheels' Archard volumes over the step (m^3), the cases and failed cases.
+-- step, the cases solved twice) | "euler" (the rates at the start), tolerance = m (Heun: the largest difference
+-- between the Heun and the Euler depth of a wheel point allowed in a step; a step over it is shortened by
+-- 0.9 sqrt(tolerance / difference), at most 8 times, its second rates computed again: it resolves the KTH map's jumps
+-- of k; nil: no control)}. The distance of the step is the one at which the start's rates wear `step` off the
+-- wheel's deepest point, shorter when Heun's mean rates reach deeper or the control shortens it. Returns the new state
+-- and what the step did: the distance (m), the largest depth per body (m), the wheels' Archard volumes over the step
+-- (m^3), the cases and failed cases, the times the control shortened it (retries).
 function M.step(st, cases, o)
   local function cases_at(state) return type(cases) == "function" and cases(state) or cases end
-  local r0 = rates(st, cases_at(st), o)
+  if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
+    error("wear step: tolerance = " .. tostring(o.tolerance) .. " must be a depth > 0 (m) or nil", 0)
+  end
+  local cases0 = cases_at(st)
+  local r0 = rates(st, cases0, o)
   local largest = 0
   for _, name in ipairs{"left_wheel", "right_wheel"} do
     for _, v in ipairs(r0.rate[name] or {}) do largest = math.max(largest, v) end
@@ -428,10 +491,23 @@ function M.step(st, cases, o)
   end
   km = km or st.km + distance / 1000
   local rate, archard = r0.rate, {left = r0.archard.left, right = r0.archard.right}
+  local cases1 = nil
   local failed, errors = r0.failed, r0.errors
+  local retries = 0
   if (o.scheme or "heun") == "heun" then
-    local predicted = advance(st, r0.rate, distance, o, km)
-    local r1 = rates(predicted, cases_at(predicted), o)
+    local r1
+    while true do
+      local predicted = advance(st, r0.rate, distance, o, km)
+      predicted.previous_cases = cases0
+      cases1 = cases_at(predicted)
+      r1 = rates(predicted, cases1, o)
+      -- Heun's depth minus Euler's: the local error of the Euler step, an upper bound of Heun's.
+      local err = distance * largest_difference(r0.rate, r1.rate) / 2
+      if not o.tolerance or err <= o.tolerance or retries >= MAX_RETRIES then break end
+      distance = distance * math.max(0.1, 0.9 * math.sqrt(o.tolerance / err))
+      km = st.km + distance / 1000
+      retries = retries + 1
+    end
     rate = mean_rate(r0.rate, r1.rate)
     archard.left, archard.right = (r0.archard.left + r1.archard.left) / 2, (r0.archard.right + r1.archard.right) / 2
     failed = failed + r1.failed
@@ -450,8 +526,9 @@ function M.step(st, cases, o)
     km = st.km + distance / 1000
   end
   local new, depth = advance(st, rate, distance, o, km)
+  new.previous_cases = cases1 or cases0
   return new, {folds = new.folds or 0, distance = distance, depth = depth, archard = {left = archard.left * distance,
-               right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors}
+               right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors, retries = retries}
 end
 
 ----------------------------------------------------------------------------------------------------------------
