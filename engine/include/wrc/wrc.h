@@ -116,7 +116,7 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * deeper than max_penetration (m, default 1e-3; an option), or |y|, |z| beyond the wheel radius, |roll|, |yaw| beyond
  * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity, max_penetration; with
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
- * vy (m/s), yaw_rate (rad/s), slip_reference (deformed or undeformed: where the rigid slip is taken,
+ * vy (m/s), yaw_rate (rad/s), slip_reference (undeformed, the default, or deformed: where the rigid slip is taken,
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic, or a law falling with the slip velocity: friction.law=polach friction.mu0=
  * friction.A= friction.B=, friction.law=linear|rational|exponential with friction.mu_inf, m1, s1, m2, s2, or
