@@ -61,8 +61,11 @@ end
 
 -- The rigid slip of every element of the wide, curved patch of the centred wheelset (zero yaw, roll ~ 0): the wheel's
 -- point at lateral position Y and track x moves at V - omega d along the track, d its height below the axle:
--- sqrt(R(Y)^2 - x^2) with R the wheel radius there (the placed profile, interpolated), less half the overlap h
--- along the normal's vertical part (the contact point lies midway between the surfaces). Across the track the spin
+-- sqrt(R(Y)^2 - x^2) with R the wheel radius there (the placed profile, interpolated here): the wheel's undeformed
+-- surface (the default slip reference; tests/scripts/rolling_slip_reference.lua checks the other). The slip is taken
+-- along the contact surface, t1 tilted toward n by half the slope x n_z / R of the wheel's circumference (the rail is
+-- straight): the normal velocity -omega x n_z adds -omega x^2 n_z^2 / 2R, which on the tread takes back the wheel's
+-- curvature term x^2 / 2R of V - omega d (a slip the rolling wheel does not have). Across the track the spin
 -- gives V phi x, with phi = omega (n . axle) / V of the element's own normal: the plane's n, or the row's on a
 -- conformal area, where it varies across the patch. Not the linear field of the creepages: R varies quadratically
 -- over the 20 mm wide patch.
@@ -84,7 +87,9 @@ for surface, w in pairs{conformal = ws, planar = wp} do
           n = {x = 0, y = p.rows.normal_y[j], z = p.rows.normal_z[j]}
           x, Y = o.x + u, p.rows.y[j] - p.h[j][k] * n.y - e0.y
         end
-        local expected = 1 - (math.sqrt(C.wheel_radius(w, Y) ^ 2 - x * x) - 0.5 * p.h[j][k] * n.z) / r0
+        local R = C.wheel_radius(w, Y)
+        local tilt = 0.5 * x * n.z / R
+        local expected = (1 - (math.sqrt(R * R - x * x) + 0.5 * x * x * n.z * n.z / R) / r0) / math.sqrt(1 + tilt * tilt)
         worst = math.max(worst, math.abs(p.rigid_slip_x[j][k] / V - expected))
         lo, hi = math.min(lo, expected), math.max(hi, expected)
         local phi = (n.y * axle.y + n.z * axle.z) / r0

@@ -119,7 +119,7 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
  * moments about the wheelset centre; N per unit creepage, N m per 1/m of spin, N/m, N m/m, N/rad, N m/rad;
  * docs/guide/sensitivity.md; and sensitivity.z, sensitivity.roll of both wheels), max_penetration; with
  * friction (rolling contact, docs/guide/rolling.md): the kinematics V (m/s, != 0), omega (rad/s; default V / r0),
- * vy (m/s), yaw_rate (rad/s), slip_reference (deformed or undeformed: where the rigid slip is taken,
+ * vy (m/s), yaw_rate (rad/s), slip_reference (undeformed, the default, or deformed: where the rigid slip is taken,
  * docs/guide/rolling.md), or the creepages creepage.xi, creepage.eta, creepage.phi (1/m) with V optional; and
  * mu (or mu_static and mu_kinetic, or a law falling with the slip velocity: friction.law=polach friction.mu0=
  * friction.A= friction.B=, friction.law=linear|rational|exponential with friction.mu_inf, m1, s1, m2, s2, or

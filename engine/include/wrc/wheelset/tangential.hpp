@@ -41,12 +41,13 @@
 
 namespace wrc {
 
-// Where the rigid slip of an element is taken along its normal: `deformed` (default) midway between the undeformed
-// surfaces, where the wheel's material point is in the deformed contact; `undeformed` on the wheel's undeformed
-// surface, h (the element's overlap) deeper, CONTACT's convention (its rigid slip on the actual wheel and rail
-// surfaces): the rolling radius is then larger by h / 2 cos(contact angle), xi smaller by about h / (2 r) (1.2e-4 on
-// S1002/60E1 under 100 kN).
-enum class SlipReference { deformed, undeformed };
+// Where the rigid slip of an element is taken along its normal: `undeformed` (default) on the wheel's undeformed
+// surface (CONTACT's convention), `deformed` midway between the undeformed surfaces (h / 2 nearer the axle, h the
+// element's overlap: xi larger by about h / (2 r), 1.2e-4 on S1002/60E1 under 100 kN). A rolling body's surface moves
+// at omega R (1 + e), R its undeformed radius and e the tangential (hoop) strain there, and the half-space's surface
+// strain already is e, compression included (exact for a disc: docs/validation.md, "The rolling radius"); the
+// deformed point counts the compression twice.
+enum class SlipReference { undeformed, deformed };
 
 struct Kinematics {
   double V = 0;                  // forward speed of the wheelset centre along track x (m/s), != 0
@@ -54,7 +55,7 @@ struct Kinematics {
                                  // rolling at the nominal radius
   double vy = 0;                 // lateral velocity of the centre (m/s)
   double yaw_rate = 0;           // rad/s, about track z
-  SlipReference slip_reference = SlipReference::deformed;
+  SlipReference slip_reference = SlipReference::undeformed;
 };
 
 enum class RollingMethod { exact, fastsim };
