@@ -121,6 +121,20 @@ double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X, const 
   return (v.dot(f.t1) + tilt * v.dot(f.n)) / std::sqrt(1 + tilt * tilt);
 }
 
+// rolling_slip's change (the frame held) for changes dv of v, dr of X - c and d_axle of the axle.
+double rolling_slip_change(const VelocityField& field, const Eigen::Vector3d& X, const Eigen::Vector3d& v,
+                           const ElementFrame& f, const Eigen::Vector3d& dv, const Eigen::Vector3d& dr,
+                           const Eigen::Vector3d& d_axle) {
+  Eigen::Vector3d tw = field.axle.cross(X - field.c), dtw = d_axle.cross(X - field.c) + field.axle.cross(dr);
+  if (tw.dot(f.t1) < 0) tw = -tw, dtw = -dtw;
+  const double norm = tw.norm();
+  if (!(norm > 0)) return dv.dot(f.t1);
+  const double tilt = 0.5 * tw.dot(f.n) / norm;
+  const double dtilt = 0.5 * (dtw.dot(f.n) / norm - tw.dot(f.n) * tw.dot(dtw) / (norm * norm * norm));
+  const double root = std::sqrt(1 + tilt * tilt), s = (v.dot(f.t1) + tilt * v.dot(f.n)) / root;
+  return (dv.dot(f.t1) + tilt * dv.dot(f.n) + dtilt * v.dot(f.n)) / root - s * tilt * dtilt / (root * root);
+}
+
 AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq) {
   AreaSlip a;
   if (rq.creepage) {
@@ -258,8 +272,9 @@ void kinematic_change(const ContactModel& model, const Pose& pose, const PatchCo
       if (!(pc.solution.pressure[q] > 0)) continue;
       const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), dX = -below * normal.dh[q] * f.n;
       const Eigen::Vector3d dv = d_omega.cross(X - field.c) - field.omega.cross(m.translation) + field.omega.cross(dX);
-      // the element's rigid slip changes by (dv . t1, dv . t2) / |V|; the creepages' field takes its part
-      ch.extra_x[q] = dv.dot(f.t1) / speed - (d.xi - d.phi * g.y(j) + creepages.phi * ch.ref_y);
+      // the element's rigid slip changes by (rolling_slip's change, dv . t2) / |V|; the creepages' field takes its part
+      const double ds = rolling_slip_change(field, X, field.at(X), f, dv, dX - m.translation, m.rotation.cross(axle));
+      ch.extra_x[q] = ds / speed - (d.xi - d.phi * g.y(j) + creepages.phi * ch.ref_y);
       ch.extra_y[q] = dv.dot(f.t2) / speed - (d.eta + d.phi * g.x(i) - creepages.phi * ch.ref_x);
     }
   }
