@@ -220,7 +220,7 @@ NormalColumn respond(const ContactModel& model, const Pose& pose, const PatchCon
 NormalColumn column_of(const ContactModel& model, const Pose& pose, const PatchContact& pc,
                        const halfspace::NormalSolution& sol, int coordinate, ContactWorkspace& ws, double tolerance) {
   std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()), 0.0);
-  if (!(sol.force > 0)) return {.dp = dh, .dh = dh};
+  if (!(sol.force > 0)) return {.dp = dh, .dh = dh, .dn = {}};
   if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
   const RigidMotion m = pose_motion(pose, coordinate);
   surface_of(pc).motion(pc, pose, m, dh);
@@ -232,7 +232,7 @@ NormalColumn normal_column(const ContactModel& model, const Pose& pose, const Pa
                            ContactWorkspace& ws, double tolerance) {
   const halfspace::NormalSolution& sol = pc.solution;
   std::vector<double> dh(static_cast<std::size_t>(sol.grid.size()), 0.0);
-  if (!(sol.force > 0)) return {.dp = dh, .dh = dh};
+  if (!(sol.force > 0)) return {.dp = dh, .dh = dh, .dn = {}};
   if (sol.pressure.empty()) fail("contact sensitivity: the area's pressure grid was not kept");
   const RigidMotion m = pose_motion(pose, coordinate);
   wheel_motion(model, pose, pc, m, dh);
