@@ -13,13 +13,47 @@ class Result(Mapping):
     ``keys()`` lists the fields in the order the engine describes them, ``units`` gives each field's SI unit
     ("-" for pure numbers), ``to_dict()`` the plain nested dicts."""
 
-    __slots__ = ("_fields", "_units")
+    __slots__ = ("_data", "_unit_data", "_node")
 
     def __init__(self, fields, units=None):
         # The module hands over dicts of its own: kept, not copied (a batch makes hundreds of Results per element).
-        object.__setattr__(self, "_fields", fields if type(fields) is dict else dict(fields))
-        object.__setattr__(self, "_units", units if type(units) is dict else dict(units or {}))
-        grid = self._fields.get("grid")
+        object.__setattr__(self, "_node", None)
+        object.__setattr__(self, "_data", fields if type(fields) is dict else dict(fields))
+        object.__setattr__(self, "_unit_data", units if type(units) is dict else dict(units or {}))
+        self._add_grid_coordinates()
+
+    @classmethod
+    def _deferred(cls, node):
+        """A Result whose fields the compiled module makes when first read, from `node` (the engine's recorded result
+        table, kept by the node): a call's result then costs only the fields the caller reads (a wheel solve
+        describes ~200 tables and ~190 arrays)."""
+        r = object.__new__(cls)
+        object.__setattr__(r, "_node", node)
+        object.__setattr__(r, "_data", None)
+        object.__setattr__(r, "_unit_data", None)
+        return r
+
+    def _expand(self):
+        fields, units = self._node.expand()
+        object.__setattr__(self, "_data", fields)
+        object.__setattr__(self, "_unit_data", units)
+        object.__setattr__(self, "_node", None)
+        self._add_grid_coordinates()
+
+    @property
+    def _fields(self):
+        if self._data is None:
+            self._expand()
+        return self._data
+
+    @property
+    def _units(self):
+        if self._unit_data is None:
+            self._expand()
+        return self._unit_data
+
+    def _add_grid_coordinates(self):
+        grid = self._data.get("grid")
         if type(grid) is Result and {"nx", "ny", "dx", "dy", "x0", "y0"} <= grid._fields.keys():
             # The coordinates of the element centres: u along t1 (x, rolling), v along t2 (y, lateral), as
             # frame.origin + u t1 + v t2 (the result's own grid description; grids are (ny, nx): row j is v[j]).

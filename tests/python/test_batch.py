@@ -256,3 +256,43 @@ def test_items_are_made_when_first_read_and_fields_do_not_depend_on_it(ws):
         same(items[i], ws.wheel(side="left", y=float(kw["y"][i]), Fz=100e3), f"items[{i}]")
         assert fy[i] == items[i].force.y
         assert np.array_equal(pmax[i, :count[i]], [p.pmax for p in items[i].patches])
+
+
+def count_results(r):
+    """The Results of a result made whole: itself and every table and list item under it (reading them all)."""
+    n = 1
+    for v in r.values():
+        for x in (v if isinstance(v, list) else [v]):
+            if isinstance(x, wrc.Result):
+                n += count_results(x)
+    return n
+
+
+def test_a_calls_results_are_made_as_they_are_read(ws):
+    # One call (not a batch): its tables become Results when first read, from the engine's recorded result; what is
+    # read equals what the batch's eagerly made items hold (test above: same(items[i], ws.wheel(...))).
+    gc.collect()
+    before = results_alive()
+    w = ws.wheel(side="left", y=3e-3, Fz=100e3)
+    assert results_alive() - before == 1  # the result itself, its fields not yet made
+    fy = w.force.y
+    partly = results_alive() - before
+    whole = count_results(w)
+    assert whole > 50 and partly < whole / 4, (partly, whole)
+    # made whole, it is the batch's item of the same call; its units and repr read the same way
+    b = ws.wheel(side="left", y=np.array([3e-3]), Fz=100e3)
+    same(w, b.items[0])
+    assert fy == b.force.y[0] and w.force.units["y"] == "N"
+    assert repr(w).startswith("Result(")
+
+
+def test_a_calls_result_outlives_its_wheelset():
+    ws2 = wrc.wheelset(wheel=wrc.profile.load(os.path.join(ROOT, "profiles/s1002.lua")),
+                       rail=wrc.profile.load(os.path.join(ROOT, "profiles/60e1.lua")), grid=0.5e-3)
+    w = ws2.wheel(side="left", y=0.0, Fz=100e3)
+    ws2.close()
+    del ws2
+    gc.collect()
+    assert w.patches[0].pressure.shape == (w.patches[0].grid.ny, w.patches[0].grid.nx)
+    assert w.patches[0].grid.x.shape == (w.patches[0].grid.nx,)
+    assert abs(w.force.z) > 0

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <memory>
+
 namespace wrc::python {
 
 namespace {
@@ -97,7 +99,46 @@ py::object result_class() {
   return cls;
 }
 
+// A result table kept in C++ until a Result made from it is first read (Result._deferred): the tree is shared by
+// every Result made from it, each of which holds the table it stands for.
+struct DeferredNode {
+  std::shared_ptr<const FieldNode> root;
+  const FieldNode* node;
+};
+
+// A table becomes a deferred Result, a list a list of its items made so; any other field its value.
+py::object shallow(const std::shared_ptr<const FieldNode>& root, const FieldNode& n) {
+  if (n.kind == FieldNode::Kind::table)
+    return result_class().attr("_deferred")(DeferredNode{root, &n});
+  if (n.kind == FieldNode::Kind::list) {
+    py::list l(n.children.size());
+    for (std::size_t i = 0; i < n.children.size(); ++i) l[i] = shallow(root, n.children[i]);
+    return l;
+  }
+  return to_python(n);
+}
+
+// A deferred table's (fields, units), its tables and lists of tables deferred in turn.
+py::tuple expand(const DeferredNode& d) {
+  py::dict fields, units;
+  for (const FieldNode& c : d.node->children) {
+    fields[py::str(c.key)] = shallow(d.root, c);
+    if (!c.unit.empty()) units[py::str(c.key)] = py::str(c.unit);
+  }
+  return py::make_tuple(fields, units);
+}
+
 }  // namespace
+
+void register_deferred(py::module_& m) {
+  py::class_<DeferredNode>(m, "_DeferredNode", "A recorded result table, made into Python values when first read")
+      .def("expand", &expand, "(fields, units) of the table");
+}
+
+py::object to_python(FieldNode&& root) {
+  const auto kept = std::make_shared<const FieldNode>(std::move(root));
+  return shallow(kept, *kept);
+}
 
 py::object to_python(const FieldNode& n) {
   using K = FieldNode::Kind;

@@ -39,5 +39,10 @@ X read_call(const py::kwargs& kwargs, const char* context) {
 // The result: a table becomes a wrc.Result, a list a Python list, numbers a 1-D float64 (integers int64) numpy array,
 // a grid a 2-D float64 array of shape (ny, nx).
 py::object to_python(const FieldNode& node);
+// The same, deferred: the tree is kept and each table's fields are made when its Result is first read (what a caller
+// does not read costs nothing; the values are those to_python(const FieldNode&) makes).
+py::object to_python(FieldNode&& root);
+// The class of the deferred tables (_wrc._DeferredNode).
+void register_deferred(py::module_& m);
 
 }  // namespace wrc::python

@@ -1,5 +1,6 @@
 // The compiled part of the Python package wrc (python/wrc/__init__.py imports it as wrc._wrc).
 #include "python/bindings.hpp"
+#include "python/convert.hpp"
 #include "python/docs.hpp"
 #include "wrc/core/config.hpp"
 
@@ -48,6 +49,7 @@ PYBIND11_MODULE(_wrc, m) {
   using namespace wrc::python;
   m.doc() = "wrc: wheel-rail contact (the compiled module; import wrc)";
   register_errors(m);
+  register_deferred(m);
   register_profile(m);
   register_wheelset(m);
   register_batch(m);

@@ -104,7 +104,7 @@ py::object contact(PyWheelset& self, const py::kwargs& kw) {
     Lease ws(self, model);
     tree = describe_tree(call.run(*model, *ws), call.request.sensitivity);
   }
-  return to_python(tree);
+  return to_python(std::move(tree));
 }
 
 py::object wheel(PyWheelset& self, const py::kwargs& kw) {
@@ -121,7 +121,7 @@ py::object wheel(PyWheelset& self, const py::kwargs& kw) {
     if (!r.converged) failure = failure_message(r);
     tree = describe_tree(r);
   }
-  py::object result = to_python(tree);
+  py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
     raise_not_converged(fmt::format("{}: {} (on_failure = \"return\" gives the result)", ctx, failure), result);
   return result;
@@ -141,7 +141,7 @@ py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
     if (!e.converged) failure = failure_message(e);
     tree = describe_tree(e);
   }
-  py::object result = to_python(tree);
+  py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
     raise_not_converged(fmt::format("{}: {} (on_failure = \"return\" gives the result)", ctx, failure), result);
   return result;
@@ -157,7 +157,7 @@ py::object rigid(PyWheelset& self, const py::kwargs& kw) {
     py::gil_scoped_release release;
     tree = describe_tree(call.run(*model));
   }
-  return to_python(tree);
+  return to_python(std::move(tree));
 }
 
 // The sweep's entries as `rows` (each what Wheelset.equilibrium returns, with `case` and `rigid`), the run's
@@ -188,7 +188,7 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
     t.integer("failed", failed, {"-", "cases that did not converge"});
     tree = std::move(t.root);
   }
-  return results("with_table")(to_python(tree), "rows");
+  return results("with_table")(to_python(std::move(tree)), "rows");
 }
 
 py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
@@ -202,7 +202,7 @@ py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
     py::gil_scoped_release release;
     tree = describe_tree(call.run(*model));
   }
-  return results("rows_frame")(to_python(tree), "rows");
+  return results("rows_frame")(to_python(std::move(tree)), "rows");
 }
 
 py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
@@ -214,7 +214,7 @@ py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
     py::gil_scoped_release release;
     tree = describe_tree(call.run(*model));
   }
-  return to_python(tree);
+  return to_python(std::move(tree));
 }
 
 // wrc.conicity(table, **options): the Δr table's keys (y, dr, flange) from `table`, the options from the keywords;
@@ -242,7 +242,7 @@ py::object conicity(py::object table, const py::kwargs& kw) {
     py::gil_scoped_release release;
     tree = describe_tree(call.run());
   }
-  return to_python(tree);
+  return to_python(std::move(tree));
 }
 
 PyTrajectory* trajectory(PyWheelset& self, const py::kwargs& kw) {
@@ -264,7 +264,7 @@ py::object trajectory_contact(PyTrajectory& self, const py::kwargs& kw) {
     std::lock_guard lock(self.mutex);
     tree = describe_tree(call.run(self.get(ctx)));
   }
-  return to_python(tree);
+  return to_python(std::move(tree));
 }
 
 // A step that fails is an error (Lua's tr:wheel has no on_failure): wrc.NotConverged with the result.
@@ -281,7 +281,7 @@ py::object trajectory_wheel(PyTrajectory& self, const py::kwargs& kw) {
     if (!r.converged) failure = failure_message(r);
     tree = describe_tree(r);
   }
-  py::object result = to_python(tree);
+  py::object result = to_python(std::move(tree));
   if (!failure.empty()) raise_not_converged(fmt::format("{}: {}", ctx, failure), result);
   return result;
 }
