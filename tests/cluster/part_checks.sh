@@ -101,8 +101,9 @@ for i in 1 2 3; do
   status=0
   wait "${pids[$((i - 1))]}" || status=$?
   if [ $status = 0 ]; then merged=$((merged + 1))
-  elif [ $status = 1 ] && grep -q "three: the folder (a merge, .*) is being written by another wrc run (pid " \
-                            "merge$i.err"; then
+  # a merge that checks the lock before its holder has written its note (two starting at once) is told so instead
+  elif [ $status = 1 ] && grep -qE "three: the folder \(a merge, .*\) is being written by another wrc run \((pid |a \
+process that has not written its note yet\))" "merge$i.err"; then
     stopped=$((stopped + 1))
   else
     cat "merge$i.err" >&2
