@@ -34,7 +34,10 @@ class Result(Mapping):
         return r
 
     def _expand(self):
-        fields, units = self._node.expand()
+        node = self._node
+        if node is None:  # made meanwhile by another thread
+            return
+        fields, units = node.expand()
         object.__setattr__(self, "_data", fields)
         object.__setattr__(self, "_unit_data", units)
         object.__setattr__(self, "_node", None)
