@@ -302,6 +302,16 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, const Tange
 
 namespace {
 
+// The problem's own grid as a level: its pressure, rigid slip and friction scale (solve and linearise alike).
+Level top_level(const TangentialProblem& pb) {
+  Field top;
+  top.grid = pb.grid;
+  top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
+  rigid_slip(pb, top.wx, top.wy);
+  top.scale.assign(pb.friction_scale.begin(), pb.friction_scale.end());
+  return detail::make_level(top, pb.friction, pb.direction, pb.speed);
+}
+
 // The element of the problem's grid that contact element k of the level is.
 std::size_t grid_index(const Level& L, const Grid& grid, int k) {
   const int c = L.cell[static_cast<std::size_t>(k)];
@@ -350,12 +360,7 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   if (!opt.initial_state.empty() && opt.initial_state.size() != opt.initial_x.size())
     fail("RollingSolver::solve: the warm start's split has {} values for {} elements (and needs its tractions)",
          opt.initial_state.size(), pb.pressure.size());
-  Field top;
-  top.grid = pb.grid;
-  top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
-  rigid_slip(pb, top.wx, top.wy);
-  top.scale.assign(pb.friction_scale.begin(), pb.friction_scale.end());
-  const Level L = detail::make_level(top, pb.friction, pb.direction, pb.speed);
+  const Level L = top_level(pb);
   const bool slipping = L.size() > 0 && L.scale > 0;  // without rigid slip: no traction, all in adhesion
   LevelState st;
   if (slipping) st = solve_top(L, pb.grid, material(), cache_, ws, opt);
@@ -425,12 +430,7 @@ std::vector<TangentialDerivative> RollingSolver::linearise(const TangentialProbl
                                                            std::span<const TangentialChange> changes,
                                                            RollingWorkspace& ws, double tolerance) const {
   detail::check_linearisation(pb, sol, changes, "RollingSolver::linearise");
-  Field top;
-  top.grid = pb.grid;
-  top.pressure.assign(pb.pressure.begin(), pb.pressure.end());
-  rigid_slip(pb, top.wx, top.wy);
-  top.scale.assign(pb.friction_scale.begin(), pb.friction_scale.end());
-  const Level L = detail::make_level(top, pb.friction, pb.direction, pb.speed);
+  const Level L = top_level(pb);
   LevelState st;
   for (int k = 0; k < L.size(); ++k) {
     const std::size_t f = grid_index(L, pb.grid, k);
