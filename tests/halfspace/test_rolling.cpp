@@ -314,6 +314,127 @@ TEST_CASE("no rigid slip gives no traction, a warm start the same solution, thre
   CHECK(t2.fy == cold.fy);
 }
 
+namespace {
+
+// Step k of a short trajectory: the Hertzian patch fixed in space on a grid that moves back by one element per step
+// (the patch at columns k..k+nx-1 of a grid k_max columns wider), creepages changing a little per step.
+struct MovingPatch {
+  wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 900e6, 8);
+  static constexpr int kSteps = 6;
+  Grid grid(int k) const {
+    Grid g = h.grid;
+    g.nx += kSteps;
+    g.x0 -= k * g.dx;  // element (i, j) of step k - 1 is element (i + 1, j) of step k
+    return g;
+  }
+  std::vector<double> pressure(int k) const {
+    const Grid g = grid(k);
+    std::vector<double> p(static_cast<std::size_t>(g.size()), 0.0);
+    for (int j = 0; j < h.grid.ny; ++j)
+      for (int i = 0; i < h.grid.nx; ++i) p[g.index(i + k, j)] = h.pressure[h.grid.index(i, j)];
+    return p;
+  }
+  static Creepages creepages(int k) { return {0.8e-3 + 2e-6 * k, 0.3e-3 - 1e-6 * k, 0.4 + 0.002 * k}; }
+};
+
+// A solution of step k - 1 on the grid of step k, its element (i, j) moved to (i + shift, j); 0 and exterior off it.
+void shifted(const TangentialSolution& s, int shift, std::vector<double>& px, std::vector<double>& py,
+             std::vector<unsigned char>& state) {
+  const Grid& g = s.grid;
+  px.assign(s.px.size(), 0.0);
+  py.assign(s.px.size(), 0.0);
+  state.assign(s.px.size(), kExterior);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      if (i + shift >= 0 && i + shift < g.nx) {
+        const int to = g.index(i + shift, j), from = g.index(i, j);
+        px[to] = s.px[from], py[to] = s.py[from], state[to] = s.state[from];
+      }
+}
+
+}  // namespace
+
+TEST_CASE("warm starts along a trajectory: each equals a cold solve, at a fraction of its products") {
+  const MovingPatch m;
+  const RollingSolver solver(kSteel);
+  RollingWorkspace ws;
+  constexpr double kMu = 0.3;
+  const double bound = kMu * 900e6;
+  // shift +1: the elements' own coordinates (right); 0: the old indices kept; -1: shifted the wrong way.
+  for (int shift : {1, 0, -1}) {
+    CAPTURE(shift);
+    TangentialSolution last;
+    int warm_products = 0, cold_products = 0;
+    double worst = 0;
+    for (int k = 0; k < MovingPatch::kSteps; ++k) {
+      CAPTURE(k);
+      const std::vector<double> pressure = m.pressure(k);
+      TangentialProblem pb = rolling_problem(m.h, MovingPatch::creepages(k), kMu);
+      pb.grid = m.grid(k);
+      pb.pressure = pressure;
+      const TangentialSolution cold = solver.solve(pb);
+      if (k == 0) {
+        last = cold;
+        continue;
+      }
+      std::vector<double> px, py;
+      std::vector<unsigned char> state;
+      shifted(last, shift, px, py, state);
+      TangentialOptions opt;
+      opt.initial_x = px;
+      opt.initial_y = py;
+      opt.initial_state = state;
+      const TangentialSolution warm = solver.solve(pb, ws, opt);
+      // The same solution: tractions within what the slip tolerance (1e-6 of the rigid slip) allows.
+      for (std::size_t q = 0; q < warm.px.size(); ++q)
+        worst = std::max(worst, std::hypot(warm.px[q] - cold.px[q], warm.py[q] - cold.py[q]) / bound);
+      CHECK(warm.state == cold.state);
+      CHECK(warm.fx == within_rel(cold.fx, 1e-5));
+      CHECK(warm.fy == within_rel(cold.fy, 1e-5));
+      warm_products += warm.products;
+      cold_products += cold.products;
+      last = warm;
+    }
+    MESSAGE("shift ", shift, ": tractions within ", worst, " mu p0 of the cold solves; products warm ",
+            warm_products, ", cold ", cold_products);
+    CHECK(worst < 1e-4);
+    // A start on the right elements is nearly the solution (measured: 99 products warm, 170 cold); one element off in
+    // x, the rolling direction, costs as much as a cold solve (180 and 187).
+    if (shift == 1) CHECK(warm_products < 0.7 * cold_products);
+    else CHECK(warm_products > 0.9 * cold_products);
+  }
+}
+
+TEST_CASE("a settled warm start costs one product more than its GMRES iterations, whatever its Newton steps") {
+  const wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 900e6, 8);
+  const RollingSolver solver(kSteel);
+  const TangentialSolution near = solver.solve(rolling_problem(h, {0.8e-3, 0.3e-3, 0.4}, 0.3));
+  const TangentialProblem pb = rolling_problem(h, {0.8e-3 * (1 + 1e-4), 0.3e-3, 0.4}, 0.3);
+  TangentialOptions opt;
+  opt.initial_x = near.px;
+  opt.initial_y = near.py;
+  opt.initial_state = near.state;
+  const TangentialSolution w = solver.solve(pb, opt), cold = solver.solve(pb);
+  REQUIRE(w.iterations >= 1);
+  CHECK(w.state == near.state);  // the start's split throughout
+  CHECK(w.state == cold.state);
+  // The start's slip is the one product outside GMRES: each step's slip is M dp from GMRES's own products (before,
+  // one product more per Newton step).
+  CHECK(w.products == w.linear_iterations + 1);
+  // Still the solution: Coulomb's law with the slip recomputed by direct sums.
+  std::vector<double> sx, sy;
+  direct_slip(kSteel, pb, w, sx, sy);
+  const double wscale = 0.4 * 5e-3;
+  for (int k = 0; k < h.grid.size(); ++k) {
+    if (w.state[k] == kAdhesion) CHECK(std::hypot(sx[k], sy[k]) < 2e-6 * wscale);
+    if (w.state[k] != kSlip) continue;
+    const double p = std::hypot(w.px[k], w.py[k]);
+    CHECK(p == within_rel(0.3 * h.pressure[k], 1e-12));
+    CHECK(std::hypot(sx[k] - w.sx[k], sy[k] - w.sy[k]) < 2e-6 * wscale);
+  }
+  CHECK(w.fx == within_rel(cold.fx, 1e-5));
+}
+
 TEST_CASE("bad input is refused with a message") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 4e-3, 1e9, 4);
   const RollingSolver solver(kSteel);

@@ -120,6 +120,7 @@ class RollingWorkspace {
   ShearWorkspace fft, fft_periodic;
   std::vector<double> qx, qy, ux, uy;  // grid vectors of the cropped grid
   std::vector<double> basis, precond;  // GMRES: Krylov vectors and their preconditioned images
+  std::vector<double> images;          // GMRES: M times each preconditioned vector (the slip's change, no product)
 };
 
 // The exact steady-rolling solver: semi-smooth Newton on the adhesion / slip split (an active-set method: adhesion
