@@ -58,6 +58,9 @@ WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingReq
   // Likewise the creep forces' vertical part, which the normal problem's load leaves out.
   std::optional<WheelHint> hint = rolling ? last_hint_[side] : std::nullopt;
   if (hint && before_hint_[side] && options_.extrapolate) hint->creep = 2 * hint->creep - before_hint_[side]->creep;
+  // And the tangential tractions: the step's first exact solve starts from those of the last two steps.
+  std::vector<ContactWorkspace::Previous> last_tangential = workspace_->tangential[side];
+  if (options_.extrapolate) workspace_->tangential_before[side] = before_tangential_[side];
   WheelResult r;
   try {
     r = solve_wheel(wheelset_->contact_model(), c, *workspace_, opt, start, rolling, hint);
@@ -72,12 +75,15 @@ WheelResult Trajectory::wheel(const WheelCase& c, const std::optional<RollingReq
   last_approach_[side] = r.converged ? std::optional<double>(r.approach) : std::nullopt;
   const bool creep_solved = r.converged && rolling;
   before_hint_[side] = creep_solved ? last_hint_[side] : std::nullopt;
+  if (creep_solved) before_tangential_[side] = std::move(last_tangential);
+  else before_tangential_[side].clear();
   last_hint_[side] = creep_solved ? std::optional<WheelHint>(r.hint) : std::nullopt;
   return r;
 }
 
 void Trajectory::reset() {
   workspace_->forget();
+  for (auto& b : before_tangential_) b.clear();
   for (int s : {kLeft, kRight}) {
     last_approach_[s].reset(), before_approach_[s].reset();
     last_hint_[s].reset(), before_hint_[s].reset();

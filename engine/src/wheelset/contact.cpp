@@ -189,7 +189,11 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
     if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);
     add_area(wc, std::move(pc));
   }
-  if (request.rolling) ws.tangential[side] = std::move(next_tangential);
+  if (request.rolling) {  // as the normal problem's areas: the one before kept for the next step's extrapolation
+    ws.tangential_before[side].clear();
+    if (ws.extrapolate) ws.tangential_before[side] = std::move(ws.tangential[side]);
+    ws.tangential[side] = std::move(next_tangential);
+  }
   ws.before[side] = ws.extrapolate ? std::move(ws.previous[side]) : std::vector<ContactWorkspace::Previous>{};
   ws.previous[side] = std::move(next_previous);
   double rr = 0, N = 0;
@@ -247,6 +251,7 @@ void ContactWorkspace::forget() {
   for (auto& p : previous) p.clear();
   for (auto& p : before) p.clear();
   for (auto& p : tangential) p.clear();
+  for (auto& p : tangential_before) p.clear();
 }
 
 double read_max_penetration(OptionReader& r, double fallback) {
@@ -317,7 +322,7 @@ void add_rolling(const ContactModel& model, ContactResult& result, const Rolling
       wc.moment += pc.moment;
     }
     const int side = &wc == &result.wheel[kLeft] ? kLeft : kRight;
-    if (!wc.patches.empty()) ws.tangential[side] = std::move(next);
+    if (!wc.patches.empty()) ws.tangential[side] = std::move(next), ws.tangential_before[side].clear();
     wc.angle = wc.patches.empty() ? 0.0 : contact_angle(side, wc.force);
     result.force += wc.force;
     result.moment += wc.moment;

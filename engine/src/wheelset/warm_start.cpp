@@ -120,7 +120,9 @@ bool tangential_start(const ContactWorkspace& ws, int side, const Plane& pl, con
                       std::vector<double>& px, std::vector<double>& py, std::vector<unsigned char>& state) {
   const auto* last = ws.warm_start ? previous_area(ws.tangential[side], pl) : nullptr;
   if (!last || last->state.size() != last->pressure.size()) return false;
-  const OldGridMap map(*last, pl);
+  const auto* before = previous_area(ws.tangential_before[side], pl);
+  if (before && before->state.size() != before->pressure.size()) before = nullptr;
+  const OldGridMap map(*last, pl), then(before ? *before : *last, pl);
   const halfspace::Grid& g = last->grid;
   const auto n = static_cast<std::size_t>(grid.size());
   px.assign(n, 0.0);
@@ -133,6 +135,13 @@ bool tangential_start(const ContactWorkspace& ws, int side, const Plane& pl, con
       const auto o = static_cast<std::size_t>(g.index(iu, iv)), k = static_cast<std::size_t>(grid.index(i, j));
       if (last->state[o] == halfspace::kExterior) continue;
       px[k] = last->px[o], py[k] = last->py[o], state[k] = last->state[o];
+      if (!before) continue;
+      const auto [bu, bv] = then.nearest(grid.x(i), grid.y(j));
+      const halfspace::Grid& bg = before->grid;
+      if (bu < 0 || bv < 0 || bu >= bg.nx || bv >= bg.ny) continue;
+      const auto b = static_cast<std::size_t>(bg.index(bu, bv));
+      if (before->state[b] != halfspace::kExterior)  // in contact both times: linear in time
+        px[k] = 2 * px[k] - before->px[b], py[k] = 2 * py[k] - before->py[b];
     }
   return true;
 }

@@ -24,8 +24,10 @@ Plane area_frame(const PatchContact& area);
 
 // Start tractions (Pa) and split (halfspace::ElementState) of the exact tangential solver for an area in the frame pl
 // from the workspace's last tangential solution of that side (ContactWorkspace::tangential): per new element the
-// nearest old element's where that was in contact (on the conformal lattice a copy), none elsewhere (exterior, 0).
-// False when there is none (or warm starts are off).
+// nearest old element's where that was in contact (on the conformal lattice a copy), none elsewhere (exterior, 0);
+// with the solution of the step before (ContactWorkspace::tangential_before) the tractions extrapolated linearly in
+// time where both were in contact (the split the last's: the solver clips the tractions to it). False when there is
+// none (or warm starts are off).
 bool tangential_start(const ContactWorkspace& ws, int side, const Plane& pl, const halfspace::Grid& grid,
                       std::vector<double>& px, std::vector<double>& py, std::vector<unsigned char>& state);
 

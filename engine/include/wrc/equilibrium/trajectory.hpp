@@ -56,6 +56,8 @@ class Trajectory {
   // Per side, what the last two wheel solves with rolling contact tell the next (creep forces' vertical part,
   // stiffness).
   std::optional<WheelHint> last_hint_[2], before_hint_[2];
+  // Per side, the exact tangential solutions that ended the step before the last (ContactWorkspace::tangential_before).
+  std::vector<ContactWorkspace::Previous> before_tangential_[2];
 };
 
 }  // namespace wrc

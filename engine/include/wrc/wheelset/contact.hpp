@@ -226,6 +226,11 @@ class ContactWorkspace {
   // Per side, the areas of the last exact tangential solve, which start the next (with warm_start): along a
   // trajectory, and when a wheel solve's creep forces are solved again on a slightly different normal solution.
   std::array<std::vector<Previous>, 2> tangential;
+  // Per side, the areas of the exact tangential solve that ended the time step before the one `tangential` ended
+  // (with `extrapolate`: kept by each evaluation as `before`; Trajectory::wheel gives it for its step's first solve),
+  // from which the next solve starts at 2 p_last - p_before; dropped when `tangential` changes otherwise, so that a
+  // wheel step's later solves start from the last alone.
+  std::array<std::vector<Previous>, 2> tangential_before;
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();
