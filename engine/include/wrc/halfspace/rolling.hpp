@@ -52,8 +52,9 @@ struct TangentialProblem {
 };
 
 struct TangentialOptions {
-  // Convergence: max |slip| of the adhesion elements and max slip across the traction of the slip elements
-  // <= tolerance * max |w| over the contact (the rigid slip scale), with the adhesion / slip split unchanged.
+  // Convergence: max |slip| of the adhesion elements, max slip across the traction of the slip elements and their
+  // traction's distance to the bound times M's diagonal (a slip) <= tolerance * max |w| over the contact (the rigid
+  // slip scale), with the adhesion / slip split unchanged.
   double tolerance = 1e-6;
   int max_iterations = 100;  // Newton (active-set) iterations on the finest grid
   // Start from the solution on a grid twice as coarse (recursively, above coarse_limit contact elements).
