@@ -25,12 +25,72 @@ double line_spacing(const RailLines& rail, int r) {
 
 // Radius of the wheel's section along a rail line at a wheelset-frame lateral position: the paper's radius /
 // cos(conicity) of the rolling direction, divided by cos^2(yaw) because a yawed wheel meets the line at the yaw
-// angle (normal curvature cos^2 of the rolling one; the lateral profile curvature's sin^2 share is left out,
-// as the paper leaves the yaw out). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of force
+// angle (normal curvature cos^2 of the rolling one; the profile's own bend along a yawed line is added by
+// section_correction where a segment has one). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of force
 // at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
 double arc_radius(const WheelSurfacePoint& s, double yaw) {
   const double c = std::cos(yaw);
   return s.radius / (std::max(s.normal_r, 0.05) * c * c);
+}
+
+namespace {
+
+// Under yaw a rail line runs across the wheel's profile: its wheelset-frame lateral position moves by x sin(yaw)
+// along it (0.7 mm over a 40 mm segment at 1 deg). The arc models the rim's circle through the segment's exact ends
+// with one normal, but not the profile's bend between the ends' radii nor the turning of the wheel's normal along the
+// line; on a steep curved face both are large, because the radius's curvature in Y is the profile's divided by cos^3
+// of the conicity: at the S1002 flange root (67-70 deg) at yaw 1 deg the arc alone is up to 20 % too deep. h's
+// definition there, n_r (r(Y) - distance to the axle), is the arc's n_ref (r_lin - distance) (r_lin: the radius
+// linear between the ends', n_ref: the normal's radial part the arc's radius holds) plus
+//   n_r (r - r_lin) + (n_r / n_ref - 1) arc,
+// the correction, exact at the profile points the segment passes under (the cones' kinks): knots there, linear in
+// between, zero at the ends. On a cylinder or within one cone it is zero; at yaw 0 the line stays at one Y: no knot.
+void section_correction(const WheelCones& w, const Segment& s, const WheelSurfacePoint& t, const WheelSurfacePoint& l,
+                        double Yt, double Yl, SegmentInfo& info) {
+  const double lo = std::min(Yt, Yl), hi = std::max(Yt, Yl);
+  const double n_ref = 2 / (1 / std::max(t.normal_r, 0.05) + 1 / std::max(l.normal_r, 0.05));  // as arc_radius
+  const int n = w.cone_count();
+  for (int v = std::max(1, w.first_cone_reaching(lo)); v < n; ++v) {
+    if (w.y[v] <= lo) continue;
+    if (w.y[v] >= hi) break;
+    const double u = (w.y[v] - Yt) / (Yl - Yt), x = s.x_t + u * (s.x_l - s.x_t);
+    if (!(x > s.x_t && x < s.x_l)) continue;
+    const auto k = static_cast<std::size_t>(v);
+    const double nr = std::max(w.vertex_nr.size() == w.y.size() ? w.vertex_nr[k] : wheel_vertex_normal(w, v).y(), 0.05);
+    info.knot_x.push_back(x);
+    info.knot_h.push_back(nr * (-w.z[k] - (t.radius + u * (l.radius - t.radius))) + (nr / n_ref - 1) * info.arc(x));
+  }
+  if (Yl < Yt) {  // Y falls along the line: knots were found by descending x
+    std::reverse(info.knot_x.begin(), info.knot_x.end());
+    std::reverse(info.knot_h.begin(), info.knot_h.end());
+  }
+}
+
+}  // namespace
+
+double SegmentInfo::knot_lerp(std::size_t k, double x) const {
+  const std::size_t m = knot_x.size();
+  const double xa = k == 0 ? xm - 0.5 * L : knot_x[k - 1], ha = k == 0 ? 0.0 : knot_h[k - 1];
+  const double xb = k == m ? xm + 0.5 * L : knot_x[k], hb = k == m ? 0.0 : knot_h[k];
+  return ha + (hb - ha) * (x - xa) / (xb - xa);
+}
+
+double SegmentInfo::correction(double x) const {
+  if (knot_x.empty() || !(x > xm - 0.5 * L && x < xm + 0.5 * L)) return 0;
+  return knot_lerp(static_cast<std::size_t>(std::upper_bound(knot_x.begin(), knot_x.end(), x) - knot_x.begin()), x);
+}
+
+void LineProfile::corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out) {
+  const double xt = s.xm - 0.5 * s.L, xl = s.xm + 0.5 * s.L;
+  std::size_t k = 0;  // the first knot beyond x (x ascends)
+  for (std::size_t i = 0; i < n; ++i) {
+    double h = s.arc(x[i]);
+    if (x[i] > xt && x[i] < xl) {
+      while (k < s.knot_x.size() && s.knot_x[k] <= x[i]) ++k;
+      h += s.knot_lerp(k, x[i]);
+    }
+    out[i] = std::max(out[i], h);
+  }
 }
 
 void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
@@ -49,9 +109,12 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     info.mid = {info.xm, s.y, s.z};
     const double Yt = f.to_wheelset({s.x_t, s.y, s.z}).y(), Yl = f.to_wheelset({s.x_l, s.y, s.z}).y();
     const double yaw = st.pose().yaw;
-    const double Rt = arc_radius(wheel_surface_at(w, Yt), yaw);
-    info.R = 0.5 * (Rt + (Yl == Yt ? Rt : arc_radius(wheel_surface_at(w, Yl), yaw)));  // equal at yaw 0
-    info.sagitta = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
+    const WheelSurfacePoint t = wheel_surface_at(w, Yt), l = Yl == Yt ? t : wheel_surface_at(w, Yl);
+    const double Rt = arc_radius(t, yaw);
+    info.R = 0.5 * (Rt + (Yl == Yt ? Rt : arc_radius(l, yaw)));  // equal at yaw 0
+    info.rim = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
+    if (Yl != Yt) section_correction(w, s, t, l, Yt, Yl, info);
+    info.sagitta = std::max(0.0, info.rim + info.correction(info.xm));
     info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
     info.normal = wheel_inward_normal(w, f, info.mid);
     out.push_back(info);
