@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace wrc::areas {
 namespace {
@@ -49,48 +50,52 @@ void section_correction(const WheelCones& w, const Segment& s, const WheelSurfac
                         double Yt, double Yl, SegmentInfo& info) {
   const double lo = std::min(Yt, Yl), hi = std::max(Yt, Yl);
   const double n_ref = 2 / (1 / std::max(t.normal_r, 0.05) + 1 / std::max(l.normal_r, 0.05));  // as arc_radius
-  const int n = w.cone_count();
-  for (int v = std::max(1, w.first_cone_reaching(lo)); v < n; ++v) {
-    if (w.y[v] <= lo) continue;
-    if (w.y[v] >= hi) break;
+  // The profile points strictly between the ends' lateral positions (the points 1 .. n - 1 ascend in y).
+  const auto first = w.y.begin() + 1, last = w.y.begin() + w.cone_count();
+  const auto v0 = std::upper_bound(first, last, lo), v1 = std::lower_bound(v0, last, hi);
+  info.knots.reserve(static_cast<std::size_t>(v1 - v0));
+  for (int v = static_cast<int>(v0 - w.y.begin()); v < static_cast<int>(v1 - w.y.begin()); ++v) {
     const double u = (w.y[v] - Yt) / (Yl - Yt), x = s.x_t + u * (s.x_l - s.x_t);
     if (!(x > s.x_t && x < s.x_l)) continue;
     const auto k = static_cast<std::size_t>(v);
     const double nr = std::max(w.vertex_nr.size() == w.y.size() ? w.vertex_nr[k] : wheel_vertex_normal(w, v).y(), 0.05);
-    info.knot_x.push_back(x);
-    info.knot_h.push_back(nr * (-w.z[k] - (t.radius + u * (l.radius - t.radius))) + (nr / n_ref - 1) * info.arc(x));
+    info.knots.push_back({x, nr * (-w.z[k] - (t.radius + u * (l.radius - t.radius))) + (nr / n_ref - 1) * info.arc(x)});
   }
-  if (Yl < Yt) {  // Y falls along the line: knots were found by descending x
-    std::reverse(info.knot_x.begin(), info.knot_x.end());
-    std::reverse(info.knot_h.begin(), info.knot_h.end());
-  }
+  if (Yl < Yt) std::reverse(info.knots.begin(), info.knots.end());  // Y falls along the line: found by descending x
 }
 
 }  // namespace
 
 double SegmentInfo::knot_lerp(std::size_t k, double x) const {
-  const std::size_t m = knot_x.size();
-  const double xa = k == 0 ? xm - 0.5 * L : knot_x[k - 1], ha = k == 0 ? 0.0 : knot_h[k - 1];
-  const double xb = k == m ? xm + 0.5 * L : knot_x[k], hb = k == m ? 0.0 : knot_h[k];
+  const std::size_t m = knots.size();
+  const double xa = k == 0 ? xm - 0.5 * L : knots[k - 1].x, ha = k == 0 ? 0.0 : knots[k - 1].h;
+  const double xb = k == m ? xm + 0.5 * L : knots[k].x, hb = k == m ? 0.0 : knots[k].h;
   return ha + (hb - ha) * (x - xa) / (xb - xa);
 }
 
 double SegmentInfo::correction(double x) const {
-  if (knot_x.empty() || !(x > xm - 0.5 * L && x < xm + 0.5 * L)) return 0;
-  return knot_lerp(static_cast<std::size_t>(std::upper_bound(knot_x.begin(), knot_x.end(), x) - knot_x.begin()), x);
+  if (knots.empty() || !(x > xm - 0.5 * L && x < xm + 0.5 * L)) return 0;
+  const auto after = std::upper_bound(knots.begin(), knots.end(), x, [](double v, const Knot& k) { return v < k.x; });
+  return knot_lerp(static_cast<std::size_t>(after - knots.begin()), x);
 }
 
+// Interval by interval between the knots (x ascends), so that each inner loop is the arc plus a straight line.
 void LineProfile::corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out) {
+  const double drop = s.R - s.rim;
+  std::size_t i = 0;
+  const auto run = [&](double end, double xa, double ha, double slope) {
+    for (; i < n && x[i] < end; ++i)
+      out[i] = std::max(out[i], arc_height(s.R, x[i] - s.xm) - drop + (ha + slope * (x[i] - xa)));
+  };
   const double xt = s.xm - 0.5 * s.L, xl = s.xm + 0.5 * s.L;
-  std::size_t k = 0;  // the first knot beyond x (x ascends)
-  for (std::size_t i = 0; i < n; ++i) {
-    double h = s.arc(x[i]);
-    if (x[i] > xt && x[i] < xl) {
-      while (k < s.knot_x.size() && s.knot_x[k] <= x[i]) ++k;
-      h += s.knot_lerp(k, x[i]);
-    }
-    out[i] = std::max(out[i], h);
+  const std::size_t m = s.knots.size();
+  for (; i < n && !(x[i] > xt); ++i) out[i] = std::max(out[i], arc_height(s.R, x[i] - s.xm) - drop);
+  for (std::size_t k = 0; k <= m; ++k) {
+    const double xa = k == 0 ? xt : s.knots[k - 1].x, ha = k == 0 ? 0.0 : s.knots[k - 1].h;
+    const double xb = k == m ? xl : s.knots[k].x, hb = k == m ? 0.0 : s.knots[k].h;
+    run(xb, xa, ha, (hb - ha) / (xb - xa));
   }
+  for (; i < n; ++i) out[i] = std::max(out[i], arc_height(s.R, x[i] - s.xm) - drop);
 }
 
 void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
@@ -117,7 +122,7 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     info.sagitta = std::max(0.0, info.rim + info.correction(info.xm));
     info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
     info.normal = wheel_inward_normal(w, f, info.mid);
-    out.push_back(info);
+    out.push_back(std::move(info));
   }
 }
 

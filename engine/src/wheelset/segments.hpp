@@ -33,9 +33,12 @@ struct SegmentInfo {
   Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
   double rim = 0;              // the arc's height at the mid-point (m)
   double sagitta = 0;          // h at the mid-point (m): rim plus the correction there
-  // Under yaw: the correction's knots, ascending track x strictly between the segment's ends, and its values (m);
-  // zero at the ends and beyond them. Empty at yaw 0.
-  std::vector<double> knot_x, knot_h;
+  // Under yaw: the correction's knots (x, value; m), ascending track x strictly between the segment's ends; the
+  // correction is zero at the ends and beyond them. Empty at yaw 0.
+  struct Knot {
+    double x, h;
+  };
+  std::vector<Knot> knots;
   double arc(double x) const { return arc_height(R, x - xm) - (R - rim); }
   double correction(double x) const;
   double knot_lerp(std::size_t k, double x) const;  // the correction between knots k - 1 and k (the ends: 0)
@@ -83,7 +86,7 @@ struct LineProfile {
     std::fill_n(out, n, -INFINITY);
     for (const SegmentInfo* s : arcs) {
       const double drop = s->R - s->rim;
-      if (s->knot_x.empty()) {
+      if (s->knots.empty()) {
         for (std::size_t i = 0; i < n; ++i) out[i] = std::max(out[i], arc_height(s->R, x[i] - s->xm) - drop);
         continue;
       }
