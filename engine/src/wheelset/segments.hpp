@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -38,7 +39,37 @@ struct SegmentInfo {
   struct Knot {
     double x, h;
   };
-  std::vector<Knot> knots;
+  // A few knots in place (a segment at a small yaw passes under a few profile points), more on the heap: no allocation
+  // per segment in the common case.
+  class Knots {
+   public:
+    void reserve(std::size_t n) {
+      if (n > kInPlace) heap_.reserve(n);
+    }
+    void push_back(const Knot& k) {
+      if (heap_.empty() && n_ < kInPlace) {
+        local_[n_++] = k;
+        return;
+      }
+      if (heap_.empty()) heap_.assign(local_.begin(), local_.end());
+      heap_.push_back(k);
+      ++n_;
+    }
+    std::size_t size() const { return n_; }
+    bool empty() const { return n_ == 0; }
+    const Knot* begin() const { return heap_.empty() ? local_.data() : heap_.data(); }
+    const Knot* end() const { return begin() + n_; }
+    Knot* begin() { return heap_.empty() ? local_.data() : heap_.data(); }
+    Knot* end() { return begin() + n_; }
+    const Knot& operator[](std::size_t k) const { return begin()[k]; }
+
+   private:
+    static constexpr std::size_t kInPlace = 6;
+    std::array<Knot, kInPlace> local_{};
+    std::vector<Knot> heap_;
+    std::size_t n_ = 0;
+  };
+  Knots knots;
   double arc(double x) const { return arc_height(R, x - xm) - (R - rim); }
   double correction(double x) const;
   double knot_lerp(std::size_t k, double x) const;  // the correction between knots k - 1 and k (the ends: 0)
