@@ -14,8 +14,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>

@@ -27,8 +27,8 @@ double line_spacing(const RailLines& rail, int r) {
 // Radius of the wheel's section along a rail line at a wheelset-frame lateral position: the paper's radius /
 // cos(conicity) of the rolling direction, divided by cos^2(yaw) because a yawed wheel meets the line at the yaw
 // angle (normal curvature cos^2 of the rolling one; the profile's own bend along a yawed line is added by
-// section_correction where a segment has one). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of force
-// at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
+// section_correction where a segment has one). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of
+// force at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
 double arc_radius(const WheelSurfacePoint& s, double yaw) {
   const double c = std::cos(yaw);
   return s.radius / (std::max(s.normal_r, 0.05) * c * c);
