@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -173,7 +174,7 @@ void add_area(WheelContact& wc, PatchContact&& pc) {
 // the areas for the next evaluation.
 WheelContact wheel_contact(const ContactModel& model, const LocationState& st, int side, ContactWorkspace& ws,
                            const ContactRequest& request, const VerticalLoad* load) {
-  const WheelAreas located = group_areas(model, st, side, request.max_penetration, ws);
+  WheelAreas located = group_areas(model, st, side, request.max_penetration, ws);
   AreaSolve how;
   how.tolerance = request.tolerance;
   how.sensitivity = request.sensitivity;
@@ -183,7 +184,9 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
   std::vector<ContactWorkspace::Previous> next_previous, next_tangential;
   for (const std::vector<int>& group : located.groups) {
     std::vector<SegmentInfo> all;
-    for (int p : group) all.insert(all.end(), located.segments[p].begin(), located.segments[p].end());
+    for (int p : group)  // each patch is in one group: its segments (and their knots) are moved, not copied
+      all.insert(all.end(), std::make_move_iterator(located.segments[p].begin()),
+                 std::make_move_iterator(located.segments[p].end()));
     const AreaInput in{model, st, side, group, all, st.patches(side)[static_cast<std::size_t>(group.front())]};
     PatchContact pc = solve_area(in, how, ws, next_previous);
     if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);

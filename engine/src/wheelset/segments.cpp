@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace wrc::areas {
 namespace {
@@ -25,12 +26,76 @@ double line_spacing(const RailLines& rail, int r) {
 
 // Radius of the wheel's section along a rail line at a wheelset-frame lateral position: the paper's radius /
 // cos(conicity) of the rolling direction, divided by cos^2(yaw) because a yawed wheel meets the line at the yaw
-// angle (normal curvature cos^2 of the rolling one; the lateral profile curvature's sin^2 share is left out,
-// as the paper leaves the yaw out). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of force
-// at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
+// angle (normal curvature cos^2 of the rolling one; the profile's own bend along a yawed line is added by
+// section_correction where a segment has one). Without it a yawed cylinder's h is too deep by 1/cos^2(yaw): 1 % of
+// force at 0.1 rad. The floor on cos keeps it finite on the steepest flange faces.
 double arc_radius(const WheelSurfacePoint& s, double yaw) {
   const double c = std::cos(yaw);
   return s.radius / (std::max(s.normal_r, 0.05) * c * c);
+}
+
+namespace {
+
+// Under yaw a rail line runs across the wheel's profile: its wheelset-frame lateral position moves by x sin(yaw)
+// along it (0.7 mm over a 40 mm segment at 1 deg). The arc models the rim's circle through the segment's exact ends
+// with one normal, but not the profile's bend between the ends' radii nor the turning of the wheel's normal along the
+// line; on a steep curved face both are large, because the radius's curvature in Y is the profile's divided by cos^3
+// of the conicity: at the S1002 flange root (67-70 deg) at yaw 1 deg the arc alone is up to 20 % too deep. h's
+// definition there, n_r (r(Y) - distance to the axle), is the arc's n_ref (r_lin - distance) (r_lin: the radius
+// linear between the ends', n_ref: the normal's radial part the arc's radius holds) plus
+//   n_r (r - r_lin) + (n_r / n_ref - 1) arc,
+// the correction, exact at the profile points the segment passes under (the cones' kinks): knots there, linear in
+// between, zero at the ends. On a cylinder or within one cone it is zero; at yaw 0 the line stays at one Y: no knot.
+void section_correction(const WheelCones& w, const Segment& s, const WheelSurfacePoint& t, const WheelSurfacePoint& l,
+                        double Yt, double Yl, SegmentInfo& info) {
+  const double lo = std::min(Yt, Yl), hi = std::max(Yt, Yl);
+  const double n_ref = 2 / (1 / std::max(t.normal_r, 0.05) + 1 / std::max(l.normal_r, 0.05));  // as arc_radius
+  // The profile points strictly between the ends' lateral positions (the points 1 .. n - 1 ascend in y).
+  const auto first = w.y.begin() + 1, last = w.y.begin() + w.cone_count();
+  const auto v0 = std::upper_bound(first, last, lo), v1 = std::lower_bound(v0, last, hi);
+  info.knots.reserve(static_cast<std::size_t>(v1 - v0));
+  for (int v = static_cast<int>(v0 - w.y.begin()); v < static_cast<int>(v1 - w.y.begin()); ++v) {
+    const double u = (w.y[v] - Yt) / (Yl - Yt), x = s.x_t + u * (s.x_l - s.x_t);
+    if (!(x > s.x_t && x < s.x_l)) continue;
+    const auto k = static_cast<std::size_t>(v);
+    const double nr = std::max(w.vertex_nr.size() == w.y.size() ? w.vertex_nr[k] : wheel_vertex_normal(w, v).y(), 0.05);
+    info.knots.push_back({x, nr * (-w.z[k] - (t.radius + u * (l.radius - t.radius))) + (nr / n_ref - 1) * info.arc(x)});
+  }
+  if (Yl < Yt) std::reverse(info.knots.begin(), info.knots.end());  // Y falls along the line: found by descending x
+}
+
+}  // namespace
+
+double SegmentInfo::knot_lerp(std::size_t k, double x) const {
+  const std::size_t m = knots.size();
+  const double xa = k == 0 ? xm - 0.5 * L : knots[k - 1].x, ha = k == 0 ? 0.0 : knots[k - 1].h;
+  const double xb = k == m ? xm + 0.5 * L : knots[k].x, hb = k == m ? 0.0 : knots[k].h;
+  return ha + (hb - ha) * (x - xa) / (xb - xa);
+}
+
+double SegmentInfo::correction(double x) const {
+  if (knots.empty() || !(x > xm - 0.5 * L && x < xm + 0.5 * L)) return 0;
+  const auto after = std::upper_bound(knots.begin(), knots.end(), x, [](double v, const Knot& k) { return v < k.x; });
+  return knot_lerp(static_cast<std::size_t>(after - knots.begin()), x);
+}
+
+// Interval by interval between the knots (x ascends), so that each inner loop is the arc plus a straight line.
+void LineProfile::corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out) {
+  const double drop = s.R - s.rim;
+  std::size_t i = 0;
+  const auto run = [&](double end, double xa, double ha, double slope) {
+    for (; i < n && x[i] < end; ++i)
+      out[i] = std::max(out[i], arc_height(s.R, x[i] - s.xm) - drop + (ha + slope * (x[i] - xa)));
+  };
+  const double xt = s.xm - 0.5 * s.L, xl = s.xm + 0.5 * s.L;
+  const std::size_t m = s.knots.size();
+  for (; i < n && !(x[i] > xt); ++i) out[i] = std::max(out[i], arc_height(s.R, x[i] - s.xm) - drop);
+  for (std::size_t k = 0; k <= m; ++k) {
+    const double xa = k == 0 ? xt : s.knots[k - 1].x, ha = k == 0 ? 0.0 : s.knots[k - 1].h;
+    const double xb = k == m ? xl : s.knots[k].x, hb = k == m ? 0.0 : s.knots[k].h;
+    run(xb, xa, ha, (hb - ha) / (xb - xa));
+  }
+  for (; i < n; ++i) out[i] = std::max(out[i], arc_height(s.R, x[i] - s.xm) - drop);
 }
 
 void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
@@ -49,12 +114,15 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     info.mid = {info.xm, s.y, s.z};
     const double Yt = f.to_wheelset({s.x_t, s.y, s.z}).y(), Yl = f.to_wheelset({s.x_l, s.y, s.z}).y();
     const double yaw = st.pose().yaw;
-    const double Rt = arc_radius(wheel_surface_at(w, Yt), yaw);
-    info.R = 0.5 * (Rt + (Yl == Yt ? Rt : arc_radius(wheel_surface_at(w, Yl), yaw)));  // equal at yaw 0
-    info.sagitta = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
+    const WheelSurfacePoint t = wheel_surface_at(w, Yt), l = Yl == Yt ? t : wheel_surface_at(w, Yl);
+    const double Rt = arc_radius(t, yaw);
+    info.R = 0.5 * (Rt + (Yl == Yt ? Rt : arc_radius(l, yaw)));  // equal at yaw 0
+    info.rim = info.R - std::sqrt(std::max(0.0, info.R * info.R - 0.25 * info.L * info.L));
+    if (Yl != Yt) section_correction(w, s, t, l, Yt, Yl, info);
+    info.sagitta = std::max(0.0, info.rim + info.correction(info.xm));
     info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
     info.normal = wheel_inward_normal(w, f, info.mid);
-    out.push_back(info);
+    out.push_back(std::move(info));
   }
 }
 

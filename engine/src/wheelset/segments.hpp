@@ -12,30 +12,73 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 // The internals of the contact areas of a wheelset pose: from the located patches of a wheel to solved areas.
 namespace wrc::areas {
 
-// What the plane and h need of one segment.
+inline double arc_height(double R, double dx) {
+  const double q = R * R - dx * dx;
+  return q > 0 ? std::sqrt(q) : -R;  // beyond the arc's reach: far below (any negative h means "no contact")
+}
+
+// What the plane and h need of one segment. h along it is the circular arc through its ends plus, under yaw, a
+// correction that is linear between knots (segments.cpp, section_correction, says why).
 struct SegmentInfo {
   int line = 0;
   double y = 0, z = 0;         // rail line (track frame)
   double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
   double weight = 0;           // share of the inter-penetration volume (m^3)
   Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
-  double sagitta = 0;          // arc height at the mid-point (m)
+  double rim = 0;              // the arc's height at the mid-point (m)
+  double sagitta = 0;          // h at the mid-point (m): rim plus the correction there
+  // Under yaw: the correction's knots (x, value; m), ascending track x strictly between the segment's ends; the
+  // correction is zero at the ends and beyond them. Empty at yaw 0.
+  struct Knot {
+    double x, h;
+  };
+  // A few knots in place (a segment at a small yaw passes under a few profile points), more on the heap: no allocation
+  // per segment in the common case.
+  class Knots {
+   public:
+    void reserve(std::size_t n) {
+      if (n > kInPlace) heap_.reserve(n);
+    }
+    void push_back(const Knot& k) {
+      if (heap_.empty() && n_ < kInPlace) {
+        local_[n_++] = k;
+        return;
+      }
+      if (heap_.empty()) heap_.assign(local_.begin(), local_.end());
+      heap_.push_back(k);
+      ++n_;
+    }
+    std::size_t size() const { return n_; }
+    bool empty() const { return n_ == 0; }
+    const Knot* begin() const { return heap_.empty() ? local_.data() : heap_.data(); }
+    const Knot* end() const { return begin() + n_; }
+    Knot* begin() { return heap_.empty() ? local_.data() : heap_.data(); }
+    Knot* end() { return begin() + n_; }
+    const Knot& operator[](std::size_t k) const { return begin()[k]; }
+
+   private:
+    static constexpr std::size_t kInPlace = 6;
+    std::array<Knot, kInPlace> local_{};
+    std::vector<Knot> heap_;
+    std::size_t n_ = 0;
+  };
+  Knots knots;
+  double arc(double x) const { return arc_height(R, x - xm) - (R - rim); }
+  double correction(double x) const;
+  double knot_lerp(std::size_t k, double x) const;  // the correction between knots k - 1 and k (the ends: 0)
+  double height(double x) const { return arc(x) + correction(x); }
 };
 
 // The segments of a located patch, appended to `out`.
 void collect_segments(const GeometryModel& g, const LocationState& st, int side, const Patch& p,
                       std::vector<SegmentInfo>& out);
-
-inline double arc_height(double R, double dx) {
-  const double q = R * R - dx * dx;
-  return q > 0 ? std::sqrt(q) : -R;  // beyond the arc's reach: far below (any negative h means "no contact")
-}
 
 // Radius of the wheel's section along a rail line at a wheelset-frame lateral position (segments.cpp says why).
 double arc_radius(const WheelSurfacePoint& s, double yaw);
@@ -62,7 +105,7 @@ struct LineProfile {
   double height(double x) const {
     if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
     double h = -INFINITY;
-    for (const SegmentInfo* s : arcs) h = std::max(h, arc_height(s->R, x - s->xm) - (s->R - s->sagitta));
+    for (const SegmentInfo* s : arcs) h = std::max(h, s->height(x));
     return h;
   }
   // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises).
@@ -73,10 +116,16 @@ struct LineProfile {
     }
     std::fill_n(out, n, -INFINITY);
     for (const SegmentInfo* s : arcs) {
-      const double drop = s->R - s->sagitta;
-      for (std::size_t i = 0; i < n; ++i) out[i] = std::max(out[i], arc_height(s->R, x[i] - s->xm) - drop);
+      const double drop = s->R - s->rim;
+      if (s->knots.empty()) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = std::max(out[i], arc_height(s->R, x[i] - s->xm) - drop);
+        continue;
+      }
+      corrected_heights(*s, x, n, out);
     }
   }
+  // One arc with its correction at ascending x[0 .. n), maximised into out.
+  static void corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out);
 };
 
 // h along the rail line (y, z) that has no segment: the arc through the line's deepest point, whose (negative) height
