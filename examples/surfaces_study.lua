@@ -82,7 +82,7 @@ for _, surface in ipairs{"planar", "conformal"} do
     lines[#lines + 1] = string.format("  yaw %g deg: Y/Q first exceeds 0.8 at y = %s mm", yaw * deg,
                                       y08 and string.format("%.2f", y08) or "(never)")
     lines[#lines + 1] = "    left contact angle > 60 deg, the resultant:          y = " ..
-                            paper.ranges(s, function(r) return r.left_angle_deg > 60 end) .. " mm"
+                            paper.ranges(s, function(r) return (r.left_angle_deg or 0) > 60 end) .. " mm"  -- nil: lifted
     lines[#lines + 1] = "    left contact angle > 60 deg, the steepest loaded row: y = " ..
                             paper.ranges(s, function(r) return (r.left_max_row_angle_deg or 0) > 60 end) .. " mm"
     lines[#lines + 1] = "    right wheel lifted:                                   y = " ..
