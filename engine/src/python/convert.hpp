@@ -4,8 +4,8 @@
 #pragma once
 
 #include "python/bindings.hpp"
-#include "python/field_tree.hpp"
 #include "wrc/api/calls.hpp"
+#include "wrc/core/field_record.hpp"
 #include "wrc/core/options.hpp"
 
 #include <pybind11/pybind11.h>

@@ -90,7 +90,7 @@ PyWheelset* make_wheelset(const py::kwargs& given) {
 
 template <class Result>
 py::object converted(const Result& r) {
-  return to_python(describe_tree(r));
+  return to_python(record_fields(r));
 }
 
 py::object contact(PyWheelset& self, const py::kwargs& kw) {
@@ -102,7 +102,7 @@ py::object contact(PyWheelset& self, const py::kwargs& kw) {
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
-    tree = describe_tree(call.run(*model, *ws), call.request.sensitivity);
+    tree = record_fields(call.run(*model, *ws), call.request.sensitivity);
   }
   return to_python(std::move(tree));
 }
@@ -119,7 +119,7 @@ py::object wheel(PyWheelset& self, const py::kwargs& kw) {
     Lease ws(self, model);
     const WheelResult r = call.run(*model, *ws);
     if (!r.converged) failure = failure_message(r);
-    tree = describe_tree(r);
+    tree = record_fields(r);
   }
   py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
@@ -139,7 +139,7 @@ py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
     Lease ws(self, model);
     const EquilibriumResult e = call.run(*model, *ws);
     if (!e.converged) failure = failure_message(e);
-    tree = describe_tree(e);
+    tree = record_fields(e);
   }
   py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
@@ -155,7 +155,7 @@ py::object rigid(PyWheelset& self, const py::kwargs& kw) {
   FieldNode tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run(*model));
+    tree = record_fields(call.run(*model));
   }
   return to_python(std::move(tree));
 }
@@ -172,7 +172,7 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
   {
     py::gil_scoped_release release;
     const SweepResult r = call.run(*model, [&] { return model->make_workspace(); });
-    FieldTree t;
+    FieldRecorder t;
     long long failed = 0;
     t.begin_list("rows", r.cases.size(), {"", "one entry per case, in the order of the plan"});
     for (std::size_t i = 0; i < r.cases.size(); ++i) {
@@ -200,7 +200,7 @@ py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
   FieldNode tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run(*model));
+    tree = record_fields(call.run(*model));
   }
   return results("rows_frame")(to_python(std::move(tree)), "rows");
 }
@@ -212,7 +212,7 @@ py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
   FieldNode tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run(*model));
+    tree = record_fields(call.run(*model));
   }
   return to_python(std::move(tree));
 }
@@ -240,7 +240,7 @@ py::object conicity(py::object table, const py::kwargs& kw) {
   FieldNode tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run());
+    tree = record_fields(call.run());
   }
   return to_python(std::move(tree));
 }
@@ -262,7 +262,7 @@ py::object trajectory_contact(PyTrajectory& self, const py::kwargs& kw) {
   {
     py::gil_scoped_release release;
     std::lock_guard lock(self.mutex);
-    tree = describe_tree(call.run(self.get(ctx)));
+    tree = record_fields(call.run(self.get(ctx)));
   }
   return to_python(std::move(tree));
 }
@@ -279,7 +279,7 @@ py::object trajectory_wheel(PyTrajectory& self, const py::kwargs& kw) {
     std::lock_guard lock(self.mutex);
     const WheelResult r = call.run(self.get(ctx));
     if (!r.converged) failure = failure_message(r);
-    tree = describe_tree(r);
+    tree = record_fields(r);
   }
   py::object result = to_python(std::move(tree));
   if (!failure.empty()) raise_not_converged(fmt::format("{}: {}", ctx, failure), result);
