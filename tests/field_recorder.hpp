@@ -28,18 +28,18 @@ struct FieldPaths {
   void add(const FieldNode& parent, const std::string& prefix) {
     using K = FieldNode::Kind;
     int items = 0;
-    for (const FieldNode& c : parent.children) {
+    for (const FieldNode& c : parent.children()) {
       const bool item = parent.kind == K::list && c.kind == K::table && c.key.empty();
-      const std::string p = prefix + (item ? std::to_string(++items) : c.key);
+      const std::string p = prefix + (item ? std::to_string(++items) : std::string(c.key));
       if (c.documented) {
-        docs[p] = {c.unit, c.meaning};
+        docs[p] = {std::string(c.unit), std::string(c.meaning)};
         ++emitted[p];
       }
       switch (c.kind) {
         case K::number: nums[p] = c.number, finite = finite && std::isfinite(c.number); break;
         case K::integer:
         case K::boolean: nums[p] = static_cast<double>(c.integer); break;
-        case K::string: strs[p] = c.text; break;
+        case K::string: strs[p] = std::string(c.text); break;
         case K::numbers:
         case K::grid:
           arrays[p] = c.values.size();
@@ -59,7 +59,7 @@ FieldPaths field_paths(const Result& r, Extra&&... extra) {
   FieldRecorder rec(true);
   describe(r, rec, std::forward<Extra>(extra)...);
   FieldPaths out;
-  out.add(rec.root, "");
+  out.add(rec.take().root(), "");
   return out;
 }
 

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
 #include <vector>
 
 using namespace wrc;
@@ -63,8 +65,8 @@ struct Scaled {
 void describe(const Scaled& s, FieldSink& out, double factor) { out.number("v", s.v * factor, {"m", "v scaled"}); }
 
 const FieldNode& at(const FieldNode& n, std::size_t i, K kind, const char* key) {
-  REQUIRE(i < n.children.size());
-  const FieldNode& c = n.children[i];
+  REQUIRE(i < n.children().size());
+  const FieldNode& c = *n.child(i);
   CHECK(c.kind == kind);
   CHECK(c.key == key);
   return c;
@@ -73,15 +75,19 @@ const FieldNode& at(const FieldNode& n, std::size_t i, K kind, const char* key) 
 }  // namespace
 
 TEST_CASE("field record: the tree is the description, in its order, with units, NaN and empty arrays") {
-  Sample s;
+  auto s = std::make_unique<Sample>();
   FieldRecorder rec;
-  describe(s, rec);
-  s.forces.assign(3, 0.0);  // the tree owns copies: changing the source afterwards changes nothing
-  s.grid.assign(6, 0.0);
-  const FieldNode& r = rec.root;
+  describe(*s, rec);
+  FieldRecord taken = rec.take();
+  s.reset();  // the record owns copies: the source gone, its values stay
+  const FieldNode* before = &taken.root();
+  const FieldRecord record = std::move(taken);
+  const FieldNode& r = record.root();
+  CHECK(&r == before);  // moving a record moves no node
   CHECK(r.kind == K::table);
   CHECK(r.object_type == "wrc.Sample");
-  REQUIRE(r.children.size() == 12);
+  REQUIRE(r.children().size() == 12);
+  REQUIRE(r.fields == 12);
 
   const FieldNode& pmax = at(r, 0, K::number, "pmax");
   CHECK(pmax.number == 1e9);
@@ -105,39 +111,41 @@ TEST_CASE("field record: the tree is the description, in its order, with units, 
   const FieldNode& empty = at(r, 6, K::numbers, "empty");
   CHECK(empty.values.empty());
   CHECK(empty.unit == "m");
-  CHECK(at(r, 7, K::integers, "ids").integers == std::vector<long long>{7, -3});
+  const FieldNode& ids = at(r, 7, K::integers, "ids");
+  CHECK(std::vector<long long>(ids.integers.begin(), ids.integers.end()) == std::vector<long long>{7, -3});
 
   const FieldNode& moment = at(r, 8, K::table, "moment");
   CHECK(moment.unit == "N m");
-  REQUIRE(moment.children.size() == 3);
+  REQUIRE(moment.children().size() == 3);
   CHECK(at(moment, 2, K::number, "z").number == 3);
-  CHECK(moment.children[2].unit == "N m");
+  CHECK(moment.child(2)->unit == "N m");
+  CHECK(moment.child(3) == nullptr);
   CHECK(r.find("moment") == &moment);
   CHECK(r.find("absent") == nullptr);
 
   const FieldNode& left = at(r, 9, K::table, "left");
-  REQUIRE(left.children.size() == 3);
+  REQUIRE(left.children().size() == 3);
   const FieldNode& inner = at(left, 0, K::table, "inner");
-  REQUIRE(inner.children.size() == 2);
+  REQUIRE(inner.children().size() == 2);
   const FieldNode& grid = at(inner, 0, K::grid, "pressure");
   CHECK(grid.nx == 3);
   CHECK(grid.ny == 2);
-  CHECK(grid.values == std::vector<double>{1, 2, 3, 4, 5, 6});
+  CHECK(std::vector<double>(grid.values.begin(), grid.values.end()) == std::vector<double>{1, 2, 3, 4, 5, 6});
   CHECK(at(inner, 1, K::integers, "none").integers.empty());
 
   const FieldNode& patches = at(left, 1, K::list, "patches");
   CHECK(patches.count == 1);  // as announced; the items are what came
-  REQUIRE(patches.children.size() == 3);
+  REQUIRE(patches.children().size() == 3);
   for (int i = 0; i < 3; ++i) {
     const FieldNode& item = at(patches, i, K::table, "");
     CHECK(!item.documented);
     CHECK(item.object_type == (i == 0 ? "wrc.Patch" : ""));
-    REQUIRE(item.children.size() == 1);
+    REQUIRE(item.children().size() == 1);
     CHECK(at(item, 0, K::number, "fz").number == 10.0 * i);
   }
   const FieldNode& nothing = at(left, 2, K::list, "nothing");
   CHECK(nothing.count == 0);
-  CHECK(nothing.children.empty());
+  CHECK(nothing.children().empty());
 
   CHECK(at(r, 10, K::number, "pmax").number == 2e9);
   CHECK(r.find("pmax") == &pmax);  // find gives the first
@@ -147,13 +155,52 @@ TEST_CASE("field record: the tree is the description, in its order, with units, 
 TEST_CASE("field record: meanings when asked for, and record_fields passes the describe's extra arguments") {
   FieldRecorder rec(true);
   describe(Sample{}, rec);
-  CHECK(rec.root.children[0].meaning == "peak pressure");
-  CHECK(rec.root.find("left")->meaning == "the left side");
-  CHECK(rec.root.find("moment")->children[0].meaning == "x component");
-  CHECK(rec.root.find("gap")->meaning.empty());
+  const FieldRecord record = rec.take();
+  const FieldNode& r = record.root();
+  CHECK(r.child(0)->meaning == "peak pressure");
+  CHECK(r.find("left")->meaning == "the left side");
+  CHECK(r.find("moment")->child(0)->meaning == "x component");
+  CHECK(r.find("gap")->meaning.empty());
+  CHECK(rec.take().root().children().empty());  // take() leaves an empty record
 
-  const FieldNode scaled = record_fields(Scaled{2.0}, 3.0);
-  REQUIRE(scaled.children.size() == 1);
-  CHECK(scaled.children[0].number == 6.0);
-  CHECK(scaled.children[0].unit == "m");
+  const FieldRecord scaled = record_fields(Scaled{2.0}, 3.0);
+  REQUIRE(scaled.root().children().size() == 1);
+  CHECK(scaled.root().child(0)->number == 6.0);
+  CHECK(scaled.root().child(0)->unit == "m");
+}
+
+TEST_CASE("field record: take() closes the tables left open") {
+  FieldRecorder rec;
+  rec.begin("outer");
+  rec.begin("inner");
+  rec.number("a", 1);
+  rec.end();
+  rec.number("b", 2);  // outer never closed
+  const FieldRecord record = rec.take();
+  const FieldNode& r = record.root();
+  REQUIRE(r.fields == 1);
+  const FieldNode& outer = *r.child(0);
+  REQUIRE(outer.fields == 2);
+  CHECK(outer.child(0)->child(0)->number == 1);
+  CHECK(outer.child(1)->number == 2);
+  CHECK(r.below == 4);
+}
+
+TEST_CASE("field record: arrays of every size keep their values (small, block-sized, larger than a block)") {
+  FieldRecorder rec;
+  std::vector<std::vector<double>> arrays;
+  for (std::size_t n : {1, 3, 100, 127, 128, 129, 1000, 2047, 2048, 2049, 5000, 20000, 2, 7})
+    arrays.emplace_back(n, 0.0);
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    for (std::size_t i = 0; i < arrays[a].size(); ++i) arrays[a][i] = 1e6 * double(a) + double(i);
+    rec.numbers("a" + std::to_string(a), arrays[a].data(), arrays[a].size());
+    rec.string("s" + std::to_string(a), std::string(arrays[a].size() % 3000, 'x'));
+  }
+  const FieldRecord record = rec.take();
+  REQUIRE(record.root().fields == 2 * arrays.size());
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    const FieldNode& n = *record.root().find("a" + std::to_string(a));
+    CHECK(std::vector<double>(n.values.begin(), n.values.end()) == arrays[a]);
+    CHECK(record.root().find("s" + std::to_string(a))->text == std::string(arrays[a].size() % 3000, 'x'));
+  }
 }

@@ -229,15 +229,16 @@ wrc_result::Field& add_field(wrc_result& r, const std::string& path) {
 // A recorded result flattened into paths ("left.patches.1.force.z"), in the order recorded: a table's fields under
 // "key.", a list (itself a field: its length) with its items under "key.1.", "key.2.", ...; integers and booleans
 // as numbers; arrays and grids as values. A repeated path is listed again and its field updated.
-void flatten(wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
+void flatten(const wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
   using K = wrc::FieldNode::Kind;
   int items = 0;
-  for (wrc::FieldNode& c : parent.children) {
+  for (const wrc::FieldNode& c : parent.children()) {
     if (parent.kind == K::list && c.kind == K::table && c.key.empty()) {
       flatten(c, prefix + std::to_string(++items) + ".", r);
       continue;
     }
-    std::string path = prefix + c.key;
+    std::string path = prefix;
+    path += c.key;
     if (c.kind == K::table) {
       flatten(c, path + ".", r);
       continue;
@@ -249,10 +250,10 @@ void flatten(wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
       case K::boolean: f.number = c.integer != 0 ? 1 : 0; break;
       case K::string:
         f.is_string = true;
-        f.text = std::move(c.text);
+        f.text = c.text;
         break;
       case K::numbers:
-      case K::grid: f.values = std::move(c.values); break;
+      case K::grid: f.values.assign(c.values.begin(), c.values.end()); break;
       case K::integers:
         for (long long v : c.integers) f.values.push_back(static_cast<double>(v));
         break;
@@ -269,8 +270,7 @@ void flatten(wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
 template <class Result, class... Extra>
 wrc_status make_result(wrc_result** out, bool converged, const std::string& failure, const Result& r, Extra&&... extra) {
   auto res = std::make_shared<wrc_result>();
-  wrc::FieldNode fields = wrc::record_fields(r, std::forward<Extra>(extra)...);
-  flatten(fields, "", *res);
+  flatten(wrc::record_fields(r, std::forward<Extra>(extra)...).root(), "", *res);
   *out = registry().add(std::move(res));
   if (converged) return WRC_OK;
   last_error = failure;

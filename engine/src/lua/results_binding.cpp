@@ -1,6 +1,7 @@
 #include "lua/results_binding.hpp"
 
 #include <new>
+#include <string>
 
 namespace wrc::lua {
 
@@ -48,10 +49,10 @@ int grid_gc(lua_State* L) {
   return 0;
 }
 
-// A grid as a wrc.Grid userdata on the top of the stack, its values taken from the node.
-void push_grid(lua_State* L, FieldNode& n) {
+// A grid as a wrc.Grid userdata on the top of the stack.
+void push_grid(lua_State* L, const FieldNode& n) {
   auto* g = static_cast<LuaGrid*>(lua_newuserdatauv(L, sizeof(LuaGrid), 1));
-  new (g) LuaGrid{std::move(n.values), n.nx, n.ny};
+  new (g) LuaGrid{std::vector<double>(n.values.begin(), n.values.end()), n.nx, n.ny};
   if (luaL_newmetatable(L, kGridType)) {
     const luaL_Reg meta[] = {{"__index", grid_index}, {"__len", grid_len}, {"__gc", grid_gc}, {nullptr, nullptr}};
     luaL_setfuncs(L, meta, 0);
@@ -64,17 +65,17 @@ void push_grid(lua_State* L, FieldNode& n) {
 // The metatable registered under the table's object type on the table on the top of the stack, when there is one.
 void set_object_type(lua_State* L, const FieldNode& n) {
   if (n.object_type.empty()) return;
-  if (luaL_getmetatable(L, n.object_type.c_str()) == LUA_TTABLE) lua_setmetatable(L, -2);
+  if (luaL_getmetatable(L, std::string(n.object_type).c_str()) == LUA_TTABLE) lua_setmetatable(L, -2);
   else lua_pop(L, 1);
 }
 
-void push_node(lua_State* L, FieldNode& n, int hash_size);
+void push_node(lua_State* L, const FieldNode& n, int hash_size);
 
 // The children of a table or list into the table on the top of the stack: a list's items by index, fields by key.
-void fill(lua_State* L, FieldNode& parent) {
+void fill(lua_State* L, const FieldNode& parent) {
   const bool list = parent.kind == FieldNode::Kind::list;
   lua_Integer items = 0;
-  for (FieldNode& c : parent.children) {
+  for (const FieldNode& c : parent.children()) {
     const bool item = list && c.kind == FieldNode::Kind::table && c.key.empty();
     push_node(L, c, item ? 8 : 4);
     if (item) {
@@ -88,7 +89,7 @@ void fill(lua_State* L, FieldNode& parent) {
 }
 
 // The node's value on the top of the stack (a table pre-sized for hash_size fields).
-void push_node(lua_State* L, FieldNode& n, int hash_size) {
+void push_node(lua_State* L, const FieldNode& n, int hash_size) {
   using K = FieldNode::Kind;
   switch (n.kind) {
     case K::number: lua_pushnumber(L, n.number); return;
@@ -124,7 +125,7 @@ void push_node(lua_State* L, FieldNode& n, int hash_size) {
 
 }  // namespace
 
-void push_fields(lua_State* L, FieldNode&& root) { push_node(L, root, 8); }
+void push_fields(lua_State* L, const FieldRecord& record) { push_node(L, record.root(), 8); }
 
 const std::vector<double>* grid_values(lua_State* L, int idx, int& nx, int& ny) {
   auto* g = static_cast<LuaGrid*>(luaL_testudata(L, idx, kGridType));

@@ -162,7 +162,7 @@ int wheelset_sweep(lua_State* L) {
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     FieldRecorder row;
     describe_case(r, i, row);
-    push_fields(L, std::move(row.root));
+    push_fields(L, row.take());
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
     if (!r.elastic[i].converged) ++failed;
   }

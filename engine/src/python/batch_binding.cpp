@@ -137,17 +137,17 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
 
   // The results stay in the engine's form (batch_fields.hpp): fields are stacked and items made when first read.
   auto kept = std::make_shared<BatchTrees>();
-  kept->roots.reserve(el.size());
-  for (FieldRecorder& t : trees) kept->roots.push_back(std::move(t.root));
+  kept->records.reserve(el.size());
+  for (FieldRecorder& t : trees) kept->records.push_back(t.take());
   std::vector<bool> present(el.size());
   py::list errors;
   const py::object unravel = py::module_::import("numpy").attr("unravel_index");
   for (std::size_t i = 0; i < el.size(); ++i) {
     present[i] = el[i].status == api::BatchStatus::done;
     if (present[i]) continue;
-    FieldNode& root = kept->roots[i];
-    py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(root) : py::none();
-    root = FieldNode();  // not in the batch's fields: its memory back now
+    FieldRecord& record = kept->records[i];
+    py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(record.root()) : py::none();
+    record = FieldRecord();  // not in the batch's fields: its memory back now
     py::tuple index = py::tuple(unravel(i, shape));
     py::list plain;
     for (auto n : index) plain.append(n.cast<long long>());

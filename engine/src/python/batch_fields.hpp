@@ -13,9 +13,9 @@
 
 namespace wrc::python {
 
-// The elements' described results: roots[i] is element i's table (empty when it has none).
+// The elements' described results: records[i] is element i's (an empty table when it has none).
 struct BatchTrees {
-  std::vector<FieldNode> roots;
+  std::vector<FieldRecord> records;
 };
 
 // The wrc._wrc._BatchNodes of the elements' roots: present[i] says element i has a result in the arrays (the others

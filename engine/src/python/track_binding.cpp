@@ -22,7 +22,7 @@ py::object placed(const std::vector<double>& y, const std::vector<double>& z, co
   t.string("frame", frame, {"", "the frame of the points: wheelset (wheels) or track (rails)"});
   t.string("order", "increasing y", {"", "the order of the points"});
   t.boolean("reversed", side == kRight, {"", "the profile's own order reversed (the right side)"});
-  return to_python(std::move(t.root));
+  return to_python(t.take());
 }
 
 py::object side_points(const std::array<Eigen::Vector2d, 2>& pts, const char* frame) {
@@ -33,7 +33,7 @@ py::object side_points(const std::array<Eigen::Vector2d, 2>& pts, const char* fr
     t.number("z", pts[s].y(), {"m", "vertical coordinate"});
     t.end();
   }
-  return to_python(std::move(t.root));
+  return to_python(t.take());
 }
 
 const Track& track_of(const PyWheelset& w, const char* context) { return w.get(context)->track(); }
@@ -79,7 +79,7 @@ void register_track(py::module_& m) {
         FieldRecorder tree;
         tree.number("left", t.rail_top[kLeft], {"m", "z of the left rail's highest point (track frame)"});
         tree.number("right", t.rail_top[kRight], {"m", "z of the right rail's highest point (track frame)"});
-        return to_python(std::move(tree.root));
+        return to_python(tree.take());
       },
       "z of each placed rail's highest point: left, right (m, track frame)");
 }

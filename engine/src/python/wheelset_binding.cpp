@@ -98,7 +98,7 @@ py::object contact(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "contact", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::ContactCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
@@ -112,7 +112,7 @@ py::object wheel(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "wheel", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::WheelCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   std::string failure;
   {
     py::gil_scoped_release release;
@@ -132,7 +132,7 @@ py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "equilibrium", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::EquilibriumCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   std::string failure;
   {
     py::gil_scoped_release release;
@@ -152,7 +152,7 @@ py::object rigid(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "rigid", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::RigidCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     tree = record_fields(call.run(*model));
@@ -168,7 +168,7 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
   auto call = read_call<api::SweepCall>(kw, ctx);
   if (call.progress.on(false)) call.options.progress = host::progress_line("sweep", "cases");
   call.options.notice = host::note_printer("sweep");
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     const SweepResult r = call.run(*model, [&] { return model->make_workspace(); });
@@ -186,7 +186,7 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
     t.integer("threads", r.threads, {"-", "worker threads used"});
     if (!r.threads_note.empty()) t.string("threads_note", r.threads_note, {"", "why fewer threads ran than asked for"});
     t.integer("failed", failed, {"-", "cases that did not converge"});
-    tree = std::move(t.root);
+    tree = t.take();
   }
   return results("with_table")(to_python(std::move(tree)), "rows");
 }
@@ -197,7 +197,7 @@ py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
   auto call = read_call<api::GeometryTableCall>(kw, ctx);
   if (call.progress.on(false)) call.options.progress = host::progress_line("geometry table", "rows");
   call.options.notice = host::note_printer("geometry table");
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     tree = record_fields(call.run(*model));
@@ -209,7 +209,7 @@ py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.conicity";
   const auto model = self.get(ctx);
   const auto call = read_call<api::WheelsetConicityCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     tree = record_fields(call.run(*model));
@@ -237,7 +237,7 @@ py::object conicity(py::object table, const py::kwargs& kw) {
     o.finish();
     return c;
   });
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     tree = record_fields(call.run());
@@ -258,7 +258,7 @@ py::object trajectory_contact(PyTrajectory& self, const py::kwargs& kw) {
   const char* ctx = "Trajectory.contact";
   self.get(ctx);
   const auto call = read_call<api::TrajectoryContactCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     std::lock_guard lock(self.mutex);
@@ -272,7 +272,7 @@ py::object trajectory_wheel(PyTrajectory& self, const py::kwargs& kw) {
   const char* ctx = "Trajectory.wheel";
   self.get(ctx);
   const auto call = read_call<api::TrajectoryWheelCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   std::string failure;
   {
     py::gil_scoped_release release;

@@ -3,51 +3,125 @@
 // wrc.Result objects (python/convert, python/batch_fields), the C API into its flat "left.patches.1.force.z" paths --
 // so the bookkeeping of begin / item / end is written once.
 //
-// Ownership and lifetime: the tree owns copies of everything it was given (keys, units, text, values); nothing in it
-// points into the described result or the sink's caller, so it outlives both, may be moved to another thread and
-// converted there (a batch records on its workers without the GIL and converts later). A recorder is used by one
-// thread at a time; its root is complete when describe() returns, and moving the root out ends the recorder's use.
+// Ownership and lifetime: a FieldRecord owns copies of everything it was given (keys, units, text, arrays); nothing
+// in it points into the described result or the sink's caller, so it outlives both and may be moved to another
+// thread and converted there (a batch records on its workers without the GIL and converts later). Its nodes and
+// their views (key, text, values, ...) stay valid, at the same addresses, while the record lives, moves included. A
+// recorder is used by one thread at a time.
 #pragma once
 
 #include "wrc/core/fields.hpp"
 
 #include <cstddef>
-#include <string>
+#include <cstdint>
+#include <memory>
+#include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 namespace wrc {
 
-// One field: a value, or a table / list of fields. Fields keep the order they were described in, repeats included
-// (a front end decides what a repeated key means, as it did when it received the calls itself).
+// One field: a value, or a table / list of fields. A table's fields keep the order they were described in, repeats
+// included (a front end decides what a repeated key means, as it did when it received the calls itself). The nodes
+// of a record lie in one array, each followed by its fields' subtrees; a node's views point into its record.
 struct FieldNode {
-  enum class Kind { number, integer, boolean, string, numbers, integers, grid, table, list };
+  enum class Kind : std::uint8_t { number, integer, boolean, string, numbers, integers, grid, table, list };
+  class Fields;
+
   Kind kind = Kind::table;
-  std::string key;   // "" for an item of a list
-  std::string unit;  // the FieldDoc's unit ("" when the field has none)
-  std::string meaning;  // the FieldDoc's meaning, recorded only when the recorder was asked to (a test's check)
-  bool documented = false;  // the field came with a FieldDoc
+  bool documented = false;   // the field came with a FieldDoc
+  std::uint32_t fields = 0;  // a table's fields, a list's items
+  std::size_t below = 0;     // the nodes after this one that are its fields and theirs
+  std::string_view key;      // "" for an item of a list
+  std::string_view unit;     // the FieldDoc's unit ("" when the field has none)
+  std::string_view meaning;  // the FieldDoc's meaning, recorded only when the recorder was asked to (tests check it)
+  std::string_view text;     // a string's value
+  std::string_view object_type;  // a table: FieldSink::object_type's name ("wrc.Patch"), "" when none
   double number = 0;
   long long integer = 0;  // also a boolean (0 or 1)
-  std::string text;
-  std::vector<double> values;  // numbers; a grid's nx x ny values v[i + nx j]
-  std::vector<long long> integers;
+  std::span<const double> values;  // numbers; a grid's nx x ny values v[i + nx j]
+  std::span<const long long> integers;
   int nx = 0, ny = 0;
-  std::size_t count = 0;            // a list: the length begin_list announced
-  std::string object_type;          // a table: FieldSink::object_type's name ("wrc.Patch"), "" when none
-  std::vector<FieldNode> children;  // a table's fields in the order described; a list's items (tables, key "")
+  std::size_t count = 0;  // a list: the length begin_list announced
+
+  Fields children() const;  // a table's fields in the order described; a list's items (tables, key "")
   const FieldNode* find(std::string_view name) const;  // a table's first field of that name, or nullptr
+  const FieldNode* child(std::size_t k) const;         // the k-th field or item (from 0), or nullptr
 };
 
-// The sink: describe(result, recorder) fills root (a table).
+// The fields of a node, in order (a forward range).
+class FieldNode::Fields {
+ public:
+  class iterator {
+   public:
+    using value_type = FieldNode;
+    using difference_type = std::ptrdiff_t;
+    iterator() = default;
+    explicit iterator(const FieldNode* p) : p_(p) {}
+    const FieldNode& operator*() const { return *p_; }
+    const FieldNode* operator->() const { return p_; }
+    iterator& operator++() {
+      p_ += 1 + p_->below;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    bool operator==(const iterator&) const = default;
+
+   private:
+    const FieldNode* p_ = nullptr;
+  };
+  Fields(const FieldNode* first, const FieldNode* last, std::size_t n) : first_(first), last_(last), n_(n) {}
+  iterator begin() const { return iterator(first_); }
+  iterator end() const { return iterator(last_); }
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+
+ private:
+  const FieldNode *first_, *last_;
+  std::size_t n_;
+};
+
+inline FieldNode::Fields FieldNode::children() const { return {this + 1, this + 1 + below, fields}; }
+
+// A recorded result: its root table and the storage of every node and value.
+class FieldRecord {
+ public:
+  FieldRecord();  // an empty table
+  FieldRecord(FieldRecord&& other) noexcept;
+  FieldRecord& operator=(FieldRecord&& other) noexcept;
+  FieldRecord(const FieldRecord&) = delete;
+  FieldRecord& operator=(const FieldRecord&) = delete;
+  ~FieldRecord() = default;
+
+  const FieldNode& root() const { return nodes_.front(); }
+
+ private:
+  friend class FieldRecorder;
+  std::string_view copy(std::string_view s);
+  template <class T>
+  std::span<const T> copy(const T* v, std::size_t n);
+  void* allocate(std::size_t bytes);
+
+  std::vector<FieldNode> nodes_;  // the root first; each node followed by its fields' subtrees
+  // The copies of keys, units, text and arrays, in blocks that never move (the nodes' views point into them).
+  std::vector<std::unique_ptr<std::byte[]>> blocks_;
+  std::byte* free_ = nullptr;  // the rest of the last block
+  std::size_t left_ = 0;
+};
+
+// The sink: describe(result, recorder), then take() the record.
 class FieldRecorder final : public FieldSink {
  public:
   // with_meanings: keep each FieldDoc's meaning too (the front ends need only units; tests check the meanings).
   explicit FieldRecorder(bool with_meanings = false);
-  FieldRecorder(const FieldRecorder&) = delete;
-  FieldRecorder& operator=(const FieldRecorder&) = delete;
-  FieldNode root;
+
+  // The record so far (tables left open are closed); the recorder then starts an empty one.
+  FieldRecord take();
 
   // The documented forms of FieldSink (number(key, v, doc), ...) too.
   using FieldSink::begin, FieldSink::begin_list, FieldSink::boolean, FieldSink::grid, FieldSink::integer,
@@ -66,24 +140,25 @@ class FieldRecorder final : public FieldSink {
   void object_type(std::string_view name) override;
 
  protected:
+  // Kept until the next field (FieldSink calls it just before, with the same key, within the same call).
   void document(std::string_view key, FieldDoc doc) override;
 
  private:
   FieldNode& add(std::string_view key, FieldNode::Kind kind);
-  // The open tables and lists, innermost last. A node's children grow only while it is innermost, so the
-  // pointers to its ancestors stay valid.
-  std::vector<FieldNode*> open_;
+  FieldRecord record_;
+  std::vector<std::size_t> open_;  // the open tables and lists (indices of nodes), innermost last
   bool with_meanings_;
   bool pending_ = false;  // document() named pending_key_ last
-  std::string pending_key_, pending_unit_, pending_meaning_;
+  std::string_view pending_key_;
+  FieldDoc pending_doc_;
 };
 
-// The tree of a described result (describe(r, sink, extra...)).
+// The record of a described result (describe(r, sink, extra...)).
 template <class Result, class... Extra>
-FieldNode record_fields(const Result& r, Extra&&... extra) {
+FieldRecord record_fields(const Result& r, Extra&&... extra) {
   FieldRecorder t;
   describe(r, t, std::forward<Extra>(extra)...);
-  return std::move(t.root);
+  return t.take();
 }
 
 }  // namespace wrc
