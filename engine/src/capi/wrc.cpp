@@ -220,9 +220,9 @@ class Lease {
   std::unique_ptr<wrc::ContactWorkspace> ws_;
 };
 
-wrc_result::Field& add_field(wrc_result& r, const std::string& path) {
+wrc_result::Field& add_field(wrc_result& r, std::string path) {
   wrc_result::Field& f = r.fields[path];
-  r.order.push_back(path);
+  r.order.push_back(std::move(path));
   return f;
 }
 
@@ -240,10 +240,10 @@ void flatten(const wrc::FieldNode& parent, const std::string& prefix, wrc_result
     std::string path = prefix;
     path += c.key;
     if (c.kind == K::table) {
-      flatten(c, path + ".", r);
+      flatten(c, path += '.', r);
       continue;
     }
-    wrc_result::Field& f = add_field(r, path);
+    wrc_result::Field& f = add_field(r, std::move(path));
     switch (c.kind) {
       case K::number: f.number = c.number; break;
       case K::integer: f.number = static_cast<double>(c.integer); break;
@@ -260,7 +260,7 @@ void flatten(const wrc::FieldNode& parent, const std::string& prefix, wrc_result
       case K::list:
         f.is_list = true;
         f.count = c.count;
-        flatten(c, path + ".", r);
+        flatten(c, r.order.back() + ".", r);  // the list's path
         break;
       case K::table: break;
     }

@@ -76,13 +76,12 @@ void fill(lua_State* L, const FieldNode& parent) {
   const bool list = parent.kind == FieldNode::Kind::list;
   lua_Integer items = 0;
   for (const FieldNode& c : parent.children()) {
-    const bool item = list && c.kind == FieldNode::Kind::table && c.key.empty();
-    push_node(L, c, item ? 8 : 4);
-    if (item) {
+    if (list && c.kind == FieldNode::Kind::table && c.key.empty()) {
+      push_node(L, c, 8);
       lua_rawseti(L, -2, ++items);
     } else {
       lua_pushlstring(L, c.key.data(), c.key.size());
-      lua_insert(L, -2);
+      push_node(L, c, 4);
       lua_rawset(L, -3);
     }
   }
