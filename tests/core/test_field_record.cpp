@@ -196,11 +196,47 @@ TEST_CASE("field record: arrays of every size keep their values (small, block-si
     rec.numbers("a" + std::to_string(a), arrays[a].data(), arrays[a].size());
     rec.string("s" + std::to_string(a), std::string(arrays[a].size() % 3000, 'x'));
   }
-  const FieldRecord record = rec.take();
+  FieldRecord record = rec.take();
   REQUIRE(record.root().fields == 2 * arrays.size());
   for (std::size_t a = 0; a < arrays.size(); ++a) {
     const FieldNode& n = *record.root().find("a" + std::to_string(a));
     CHECK(std::vector<double>(n.values.begin(), n.values.end()) == arrays[a]);
     CHECK(record.root().find("s" + std::to_string(a))->text == std::string(arrays[a].size() % 3000, 'x'));
+  }
+  FieldRecord owned = std::move(record);
+  for (std::size_t a : {std::size_t{2}, std::size_t{11}})  // 100 values (copied), 20000 (its storage taken)
+    CHECK(owned.take_values(*owned.root().find("a" + std::to_string(a))) == arrays[a]);
+}
+
+TEST_CASE("field record: storage reused for the next record holds only the next record's fields") {
+  FieldRecorder first;
+  Sample s;
+  describe(s, first);
+  FieldRecord used = first.take();
+  const FieldNode* root_before = &used.root();
+  FieldRecorder second(std::move(used));
+  second.number("only", 4.5, {"m", "the one field"});
+  FieldRecord record = second.take();
+  REQUIRE(record.root().fields == 1);
+  CHECK(record.root().child(0)->number == 4.5);
+  CHECK(record.root().child(0)->unit == "m");
+  CHECK(record.root().object_type.empty());
+  CHECK(&record.root() == root_before);  // the same nodes' array
+
+  const FieldRecord elsewhere = std::move(record);
+  CHECK(elsewhere.root().fields == 1);
+  FieldRecorder third(std::move(record));  // a moved-from record is storage too
+  CHECK(third.take().root().fields == 0);
+  for (int round = 0; round < 3; ++round) {  // the thread's storage, converted at once, round after round
+    double got = 0;
+    std::size_t fields = 0;
+    record_and_convert(
+        [&](const FieldRecord& r) {
+          got = r.root().find("pmax")->number;
+          fields = r.root().fields;
+        },
+        s);
+    CHECK(got == 1e9);
+    CHECK(fields == 12);
   }
 }

@@ -229,18 +229,18 @@ wrc_result::Field& add_field(wrc_result& r, std::string path) {
 // A recorded result flattened into paths ("left.patches.1.force.z"), in the order recorded: a table's fields under
 // "key.", a list (itself a field: its length) with its items under "key.1.", "key.2.", ...; integers and booleans
 // as numbers; arrays and grids as values. A repeated path is listed again and its field updated.
-void flatten(const wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
+void flatten(wrc::FieldRecord& record, const wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
   using K = wrc::FieldNode::Kind;
   int items = 0;
   for (const wrc::FieldNode& c : parent.children()) {
     if (parent.kind == K::list && c.kind == K::table && c.key.empty()) {
-      flatten(c, prefix + std::to_string(++items) + ".", r);
+      flatten(record, c, prefix + std::to_string(++items) + ".", r);
       continue;
     }
     std::string path = prefix;
     path += c.key;
     if (c.kind == K::table) {
-      flatten(c, path += '.', r);
+      flatten(record, c, path += '.', r);
       continue;
     }
     wrc_result::Field& f = add_field(r, std::move(path));
@@ -253,14 +253,14 @@ void flatten(const wrc::FieldNode& parent, const std::string& prefix, wrc_result
         f.text = c.text;
         break;
       case K::numbers:
-      case K::grid: f.values.assign(c.values.begin(), c.values.end()); break;
+      case K::grid: f.values = record.take_values(c); break;
       case K::integers:
         for (long long v : c.integers) f.values.push_back(static_cast<double>(v));
         break;
       case K::list:
         f.is_list = true;
         f.count = c.count;
-        flatten(c, r.order.back() + ".", r);  // the list's path
+        flatten(record, c, r.order.back() + ".", r);  // the list's path
         break;
       case K::table: break;
     }
@@ -270,7 +270,8 @@ void flatten(const wrc::FieldNode& parent, const std::string& prefix, wrc_result
 template <class Result, class... Extra>
 wrc_status make_result(wrc_result** out, bool converged, const std::string& failure, const Result& r, Extra&&... extra) {
   auto res = std::make_shared<wrc_result>();
-  flatten(wrc::record_fields(r, std::forward<Extra>(extra)...).root(), "", *res);
+  wrc::record_and_convert([&](wrc::FieldRecord& record) { flatten(record, record.root(), "", *res); }, r,
+                          std::forward<Extra>(extra)...);
   *out = registry().add(std::move(res));
   if (converged) return WRC_OK;
   last_error = failure;

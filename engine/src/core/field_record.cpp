@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <type_traits>
 
 namespace wrc {
 
@@ -23,30 +24,56 @@ FieldRecord::FieldRecord() { nodes_.emplace_back(); }
 FieldRecord::FieldRecord(FieldRecord&& other) noexcept
     : nodes_(std::move(other.nodes_)),
       blocks_(std::move(other.blocks_)),
+      large_(std::move(other.large_)),
       free_(std::exchange(other.free_, nullptr)),
-      left_(std::exchange(other.left_, 0)) {}
+      left_(std::exchange(other.left_, 0)),
+      size_(std::exchange(other.size_, 0)),
+      used_(std::exchange(other.used_, 0)) {}
 
 FieldRecord& FieldRecord::operator=(FieldRecord&& other) noexcept {
   nodes_ = std::move(other.nodes_);
   blocks_ = std::move(other.blocks_);
+  large_ = std::move(other.large_);
   free_ = std::exchange(other.free_, nullptr);
   left_ = std::exchange(other.left_, 0);
+  size_ = std::exchange(other.size_, 0);
+  used_ = std::exchange(other.used_, 0);
   return *this;
 }
 
+void FieldRecord::clear() {
+  if (nodes_.empty()) nodes_.emplace_back();  // a moved-from record
+  nodes_.resize(1);
+  nodes_.front() = FieldNode();
+  large_.clear();
+  constexpr std::size_t kKept = std::size_t{64} << 20;
+  const bool one_fits = blocks_.size() == 1 && size_ >= used_;
+  if (!one_fits) {
+    blocks_.clear();
+    size_ = used_ <= kKept ? used_ : 0;
+    if (size_ > 0) blocks_.push_back(std::make_unique_for_overwrite<std::byte[]>(size_));
+  }
+  free_ = blocks_.empty() ? nullptr : blocks_.front().get();
+  left_ = blocks_.empty() ? 0 : size_;
+  used_ = 0;
+}
+
 // Blocks grow from 1 KiB to 64 KiB (a result of a few fields stays small, a wheel's ~4000 fields take few blocks); an
-// array larger than a quarter of that gets a block of its own, leaving the current one to the small copies.
+// array larger than a quarter of that that does not fit the current block gets a block of its own, the current one
+// kept for the small copies.
 void* FieldRecord::allocate(std::size_t bytes) {
   constexpr std::size_t kLargest = std::size_t{64} << 10;
   bytes = (bytes + 7) & ~std::size_t{7};
-  if (bytes > kLargest / 4) {  // free_ stays in the current block
+  used_ += bytes;
+  if (bytes > left_ && bytes > kLargest / 4) {
     blocks_.push_back(std::make_unique_for_overwrite<std::byte[]>(bytes));
     return blocks_.back().get();
   }
   if (bytes > left_) {
-    left_ = std::max(bytes, std::min(kLargest, std::size_t{1024} << std::min<std::size_t>(blocks_.size(), 6)));
-    blocks_.push_back(std::make_unique_for_overwrite<std::byte[]>(left_));
+    size_ = std::max(bytes, std::min(kLargest, std::size_t{1024} << std::min<std::size_t>(blocks_.size(), 6)));
+    blocks_.push_back(std::make_unique_for_overwrite<std::byte[]>(size_));
     free_ = blocks_.back().get();
+    left_ = size_;
   }
   void* p = free_;
   free_ += bytes;
@@ -61,15 +88,37 @@ std::string_view FieldRecord::copy(std::string_view s) {
   return {p, s.size()};
 }
 
+std::vector<double> FieldRecord::take_values(const FieldNode& node) {
+  for (std::vector<double>& v : large_)
+    if (!v.empty() && v.data() == node.values.data()) return std::move(v);
+  return {node.values.begin(), node.values.end()};
+}
+
 template <class T>
 std::span<const T> FieldRecord::copy(const T* v, std::size_t n) {
   if (n == 0) return {};
+  constexpr std::size_t kLarge = std::size_t{16} << 10;  // bytes: an array this large has a vector of its own
+  if constexpr (std::is_same_v<T, double>) {
+    if (n * sizeof(T) > kLarge) {
+      const std::vector<double>& own = large_.emplace_back(v, v + n);
+      return {own.data(), n};
+    }
+  }
   T* p = static_cast<T*>(allocate(n * sizeof(T)));
   std::memcpy(p, v, n * sizeof(T));
   return {p, n};
 }
 
+FieldRecord& thread_record_storage() {
+  thread_local FieldRecord storage;
+  return storage;
+}
+
 FieldRecorder::FieldRecorder(bool with_meanings) : open_{0}, with_meanings_(with_meanings) {}
+
+FieldRecorder::FieldRecorder(FieldRecord&& storage) : record_(std::move(storage)), open_{0}, with_meanings_(false) {
+  record_.clear();
+}
 
 FieldRecord FieldRecorder::take() {
   std::vector<FieldNode>& nodes = record_.nodes_;

@@ -50,9 +50,9 @@ int grid_gc(lua_State* L) {
 }
 
 // A grid as a wrc.Grid userdata on the top of the stack.
-void push_grid(lua_State* L, const FieldNode& n) {
+void push_grid(lua_State* L, FieldRecord& record, const FieldNode& n) {
   auto* g = static_cast<LuaGrid*>(lua_newuserdatauv(L, sizeof(LuaGrid), 1));
-  new (g) LuaGrid{std::vector<double>(n.values.begin(), n.values.end()), n.nx, n.ny};
+  new (g) LuaGrid{record.take_values(n), n.nx, n.ny};
   if (luaL_newmetatable(L, kGridType)) {
     const luaL_Reg meta[] = {{"__index", grid_index}, {"__len", grid_len}, {"__gc", grid_gc}, {nullptr, nullptr}};
     luaL_setfuncs(L, meta, 0);
@@ -69,26 +69,26 @@ void set_object_type(lua_State* L, const FieldNode& n) {
   else lua_pop(L, 1);
 }
 
-void push_node(lua_State* L, const FieldNode& n, int hash_size);
+void push_node(lua_State* L, FieldRecord& record, const FieldNode& n, int hash_size);
 
 // The children of a table or list into the table on the top of the stack: a list's items by index, fields by key.
-void fill(lua_State* L, const FieldNode& parent) {
+void fill(lua_State* L, FieldRecord& record, const FieldNode& parent) {
   const bool list = parent.kind == FieldNode::Kind::list;
   lua_Integer items = 0;
   for (const FieldNode& c : parent.children()) {
     if (list && c.kind == FieldNode::Kind::table && c.key.empty()) {
-      push_node(L, c, 8);
+      push_node(L, record, c, 8);
       lua_rawseti(L, -2, ++items);
     } else {
       lua_pushlstring(L, c.key.data(), c.key.size());
-      push_node(L, c, 4);
+      push_node(L, record, c, 4);
       lua_rawset(L, -3);
     }
   }
 }
 
 // The node's value on the top of the stack (a table pre-sized for hash_size fields).
-void push_node(lua_State* L, const FieldNode& n, int hash_size) {
+void push_node(lua_State* L, FieldRecord& record, const FieldNode& n, int hash_size) {
   using K = FieldNode::Kind;
   switch (n.kind) {
     case K::number: lua_pushnumber(L, n.number); return;
@@ -109,22 +109,22 @@ void push_node(lua_State* L, const FieldNode& n, int hash_size) {
         lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
       }
       return;
-    case K::grid: push_grid(L, n); return;
+    case K::grid: push_grid(L, record, n); return;
     case K::list:
       lua_createtable(L, static_cast<int>(n.count), 0);
-      fill(L, n);
+      fill(L, record, n);
       return;
     case K::table:
       lua_createtable(L, 0, hash_size);
       set_object_type(L, n);
-      fill(L, n);
+      fill(L, record, n);
       return;
   }
 }
 
 }  // namespace
 
-void push_fields(lua_State* L, const FieldRecord& record) { push_node(L, record.root(), 8); }
+void push_fields(lua_State* L, FieldRecord& record) { push_node(L, record, record.root(), 8); }
 
 const std::vector<double>* grid_values(lua_State* L, int idx, int& nx, int& ny) {
   auto* g = static_cast<LuaGrid*>(luaL_testudata(L, idx, kGridType));

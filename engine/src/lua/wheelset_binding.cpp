@@ -162,7 +162,8 @@ int wheelset_sweep(lua_State* L) {
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     FieldRecorder row;
     describe_case(r, i, row);
-    push_fields(L, row.take());
+    FieldRecord record = row.take();
+    push_fields(L, record);
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
     if (!r.elastic[i].converged) ++failed;
   }

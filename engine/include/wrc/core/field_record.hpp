@@ -100,6 +100,16 @@ class FieldRecord {
 
   const FieldNode& root() const { return nodes_.front(); }
 
+  // A node's numbers or grid values as a vector: a large array's own storage moved out (the node's values are then
+  // empty views' worth: read nothing of them afterwards), a small one copied. For a converter that keeps the values
+  // (Lua's grids) without a second copy.
+  std::vector<double> take_values(const FieldNode& node);
+
+  // Drops the content and keeps the memory for the next recording (the nodes' array, and one block the size of all
+  // the copies made, unless that is over 64 MiB): a front end that converts a result at once and records the next
+  // into the same storage then allocates nothing in the steady state (no fresh pages for every result).
+  void clear();
+
  private:
   friend class FieldRecorder;
   std::string_view copy(std::string_view s);
@@ -108,10 +118,14 @@ class FieldRecord {
   void* allocate(std::size_t bytes);
 
   std::vector<FieldNode> nodes_;  // the root first; each node followed by its fields' subtrees
-  // The copies of keys, units, text and arrays, in blocks that never move (the nodes' views point into them).
+  // The copies of keys, units, text and arrays, in blocks that never move (the nodes' views point into them); arrays
+  // of numbers too large for a block in vectors of their own (take_values).
   std::vector<std::unique_ptr<std::byte[]>> blocks_;
-  std::byte* free_ = nullptr;  // the rest of the last block
+  std::vector<std::vector<double>> large_;
+  std::byte* free_ = nullptr;  // the rest of the current block
   std::size_t left_ = 0;
+  std::size_t size_ = 0;  // the current block's size
+  std::size_t used_ = 0;  // the bytes copied, in all blocks
 };
 
 // The sink: describe(result, recorder), then take() the record.
@@ -119,6 +133,8 @@ class FieldRecorder final : public FieldSink {
  public:
   // with_meanings: keep each FieldDoc's meaning too (the front ends need only units; tests check the meanings).
   explicit FieldRecorder(bool with_meanings = false);
+  // Records into the memory of `storage` (cleared first: FieldRecord::clear).
+  explicit FieldRecorder(FieldRecord&& storage);
 
   // The record so far (tables left open are closed); the recorder then starts an empty one.
   FieldRecord take();
@@ -152,6 +168,22 @@ class FieldRecorder final : public FieldSink {
   std::string_view pending_key_;
   FieldDoc pending_doc_;
 };
+
+// The calling thread's storage for records converted at once (record_and_convert): its memory stays with the thread
+// (at most the nodes' array and 64 MiB of copies, FieldRecord::clear).
+FieldRecord& thread_record_storage();
+
+// describe(r, sink, extra...) recorded into the calling thread's storage, then convert(FieldRecord&) -- for a
+// front end that converts the record at once (Lua tables, C paths) and keeps nothing of it: in the steady state no
+// memory is allocated for recording.
+template <class Convert, class Result, class... Extra>
+void record_and_convert(Convert&& convert, const Result& r, Extra&&... extra) {
+  FieldRecorder t(std::move(thread_record_storage()));
+  describe(r, t, std::forward<Extra>(extra)...);
+  FieldRecord record = t.take();
+  convert(record);  // FieldRecord&: it may take_values
+  thread_record_storage() = std::move(record);
+}
 
 // The record of a described result (describe(r, sink, extra...)).
 template <class Result, class... Extra>
