@@ -1,58 +1,66 @@
-// A FieldSink that records what a describe() emits, by path ("depths.1.von_mises"): the values of numbers and strings,
-// the sizes of arrays and grids, the documentation of each path and how often it came, and whether every number was
-// finite. Used by the tests of the results' fields.
+// What a describe() emits, by path ("depths.1.von_mises"), read from the engine's one recorder
+// (wrc/core/field_record.hpp): the values of numbers and strings, the sizes of arrays and grids, the documentation of
+// each path and how often it came, and whether every number was finite. Used by the tests of the results' fields.
 #pragma once
 
-#include "wrc/core/fields.hpp"
+#include "wrc/core/field_record.hpp"
 
 #include <cmath>
 #include <cstddef>
 #include <map>
 #include <string>
-#include <string_view>
-#include <vector>
+#include <utility>
 
 namespace wrc::test {
 
-class FieldRecorder final : public FieldSink {
- public:
-  std::map<std::string, double> nums;
+struct FieldPaths {
+  struct Doc {
+    std::string unit, meaning;
+  };
+  std::map<std::string, double> nums;  // numbers, integers, booleans (0 / 1)
   std::map<std::string, std::string> strs;
   std::map<std::string, std::size_t> arrays;  // arrays and grids: their number of values
-  std::map<std::string, FieldDoc> docs;
-  std::map<std::string, int> emitted;  // how often each path was described
-  bool finite = true;
-  void number(std::string_view k, double v) override {
-    nums[path(k)] = v;
-    finite = finite && std::isfinite(v);
-  }
-  void integer(std::string_view k, long long v) override { nums[path(k)] = static_cast<double>(v); }
-  void boolean(std::string_view k, bool v) override { nums[path(k)] = v; }
-  void string(std::string_view k, std::string_view v) override { strs[path(k)] = std::string(v); }
-  void numbers(std::string_view k, const double* v, std::size_t n) override {
-    arrays[path(k)] = n;
-    for (std::size_t i = 0; i < n; ++i) finite = finite && std::isfinite(v[i]);
-  }
-  void integers(std::string_view k, const long long*, std::size_t n) override { arrays[path(k)] = n; }
-  void grid(std::string_view k, const double* v, int nx, int ny) override { numbers(k, v, std::size_t(nx) * ny); }
-  void begin(std::string_view k) override { prefix.push_back(path(k) + "."); }
-  void begin_list(std::string_view k, std::size_t) override {
-    begin(k);
-    items.push_back(0);
-  }
-  void item() override { prefix.push_back(prefix.back() + std::to_string(++items.back()) + "."); }
-  void end() override { prefix.pop_back(); }
+  std::map<std::string, Doc> docs;
+  std::map<std::string, int> emitted;  // how often each documented path was described
+  bool finite = true;                  // every number, array of numbers and grid
 
- protected:
-  void document(std::string_view k, FieldDoc doc) override {
-    docs[path(k)] = doc;
-    ++emitted[path(k)];
+  // The fields of `parent`, a table or a list (whose items are "prefix1.", "prefix2.", ...).
+  void add(const FieldNode& parent, const std::string& prefix) {
+    using K = FieldNode::Kind;
+    int items = 0;
+    for (const FieldNode& c : parent.children()) {
+      const bool item = parent.kind == K::list && c.kind == K::table && c.key.empty();
+      const std::string p = prefix + (item ? std::to_string(++items) : std::string(c.key));
+      if (c.documented) {
+        docs[p] = {std::string(c.unit), std::string(c.meaning)};
+        ++emitted[p];
+      }
+      switch (c.kind) {
+        case K::number: nums[p] = c.number, finite = finite && std::isfinite(c.number); break;
+        case K::integer:
+        case K::boolean: nums[p] = static_cast<double>(c.integer); break;
+        case K::string: strs[p] = std::string(c.text); break;
+        case K::numbers:
+        case K::grid:
+          arrays[p] = c.values.size();
+          for (double v : c.values) finite = finite && std::isfinite(v);
+          break;
+        case K::integers: arrays[p] = c.integers.size(); break;
+        case K::table:
+        case K::list: add(c, p + "."); break;
+      }
+    }
   }
-
- private:
-  std::string path(std::string_view k) const { return (prefix.empty() ? "" : prefix.back()) + std::string(k); }
-  std::vector<std::string> prefix;
-  std::vector<int> items;
 };
+
+// The fields of describe(r, sink, extra...) by path.
+template <class Result, class... Extra>
+FieldPaths field_paths(const Result& r, Extra&&... extra) {
+  FieldRecorder rec(true);
+  describe(r, rec, std::forward<Extra>(extra)...);
+  FieldPaths out;
+  out.add(rec.take().root(), "");
+  return out;
+}
 
 }  // namespace wrc::test

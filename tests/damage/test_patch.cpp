@@ -204,8 +204,7 @@ TEST_CASE("describe(PatchDamage): every field documented, values as computed") {
     DamageOptions o;
     o.wear.model = model;
     const PatchDamage d = compute_damage(s.fields(10), o);
-    test::FieldRecorder rec;
-    describe(d, rec);
+    const auto rec = test::field_paths(d);
     CHECK(rec.finite);
     std::size_t fields = rec.nums.size() + rec.strs.size() + rec.arrays.size();
     CHECK(rec.docs.size() == fields);
@@ -263,10 +262,9 @@ TEST_CASE("T gamma on S1002 / 60E1 in rolling: |Fx xi| + |Fy eta| (+ |Mz phi|) o
         // solve filled them): each once, no name in common with the area's own.
         DamageOptions no_wear;
         no_wear.with_wear = false;
-        test::FieldRecorder area_rec, damage_rec, wear_rec;
-        describe(pc, area_rec);
-        describe(compute_damage(area_fields(pc), no_wear), damage_rec);
-        describe(d, wear_rec);
+        auto area_rec = test::field_paths(pc);
+        auto damage_rec = test::field_paths(compute_damage(area_fields(pc), no_wear));
+        const auto wear_rec = test::field_paths(d);
         for (const auto& [key, doc] : damage_rec.docs) {
           CAPTURE(key);
           CHECK(area_rec.emitted[key] == 1);

@@ -493,8 +493,7 @@ TEST_CASE("describe: the maxima, the shakedown point and the grids of every dept
   rq.z = {0.5 * a, 0.2 * a};
   rq.shear_yield = 400e6;  // p0 / k = 2.25, below first yield at 2.79
   const SubsurfaceResult r = compute_subsurface(steel, {g, p}, rq);
-  wrc::test::FieldRecorder rec;
-  describe(r, rec);
+  const auto rec = wrc::test::field_paths(r);
   CHECK(rec.finite);
   CHECK(rec.nums.at("von_mises_max") == r.von_mises_max.value);
   CHECK(rec.nums.at("von_mises_max_z") == r.von_mises_max.z);
@@ -510,8 +509,7 @@ TEST_CASE("describe: the maxima, the shakedown point and the grids of every dept
     CHECK(rec.arrays.at(fmt::format("depths.1.{}", name)) == static_cast<std::size_t>(g.size()));
   // Without load: zeros everywhere, no NaN, limits absent.
   const std::vector<double> zero(g.size(), 0.0);
-  wrc::test::FieldRecorder empty;
-  describe(compute_subsurface(steel, {g, zero}, rq), empty);
+  const auto empty = wrc::test::field_paths(compute_subsurface(steel, {g, zero}, rq));
   CHECK(empty.finite);
   CHECK(empty.nums.at("von_mises_max") == 0);
   CHECK(empty.nums.count("shakedown.elastic_limit") == 0);

@@ -5,6 +5,7 @@
 #include "wrc/api/calls.hpp"
 #include "wrc/core/config.hpp"
 #include "wrc/core/error.hpp"
+#include "wrc/core/field_record.hpp"
 #include "wrc/core/options.hpp"
 #include "wrc/host/terminal.hpp"
 #include "wrc/lua/definitions.hpp"
@@ -219,59 +220,58 @@ class Lease {
   std::unique_ptr<wrc::ContactWorkspace> ws_;
 };
 
-// Flattens a described result into paths ("left.patches.1.force.z").
-class FlatSink final : public wrc::FieldSink {
- public:
-  explicit FlatSink(wrc_result& r) : r_(r) {}
-  void number(std::string_view key, double v) override { add(key).number = v; }
-  void integer(std::string_view key, long long v) override { add(key).number = static_cast<double>(v); }
-  void boolean(std::string_view key, bool v) override { add(key).number = v ? 1 : 0; }
-  void string(std::string_view key, std::string_view v) override {
-    auto& f = add(key);
-    f.is_string = true;
-    f.text = v;
-  }
-  void numbers(std::string_view key, const double* v, std::size_t n) override { add(key).values.assign(v, v + n); }
-  void integers(std::string_view key, const long long* v, std::size_t n) override {
-    auto& f = add(key);
-    for (std::size_t i = 0; i < n; ++i) f.values.push_back(static_cast<double>(v[i]));
-  }
-  void grid(std::string_view key, const double* v, int nx, int ny) override {
-    add(key).values.assign(v, v + static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-  }
-  void begin(std::string_view key) override { frames_.push_back({path(key) + ".", 0}); }
-  void begin_list(std::string_view key, std::size_t n) override {
-    auto& f = add(key);
-    f.is_list = true;
-    f.count = n;
-    frames_.push_back({path(key) + ".", 0});
-  }
-  void item() override {
-    Frame& list = frames_.back();
-    frames_.push_back({list.prefix + std::to_string(++list.items) + ".", 0});
-  }
-  void end() override { frames_.pop_back(); }
+wrc_result::Field& add_field(wrc_result& r, std::string path) {
+  wrc_result::Field& f = r.fields[path];
+  r.order.push_back(std::move(path));
+  return f;
+}
 
- private:
-  struct Frame {
-    std::string prefix;  // "left.patches."
-    int items;           // items so far, for a list
-  };
-  std::string path(std::string_view key) const { return (frames_.empty() ? "" : frames_.back().prefix) + std::string(key); }
-  wrc_result::Field& add(std::string_view key) {
-    const std::string p = path(key);
-    r_.order.push_back(p);
-    return r_.fields[p];
+// A recorded result flattened into paths ("left.patches.1.force.z"), in the order recorded: a table's fields under
+// "key.", a list (itself a field: its length) with its items under "key.1.", "key.2.", ...; integers and booleans
+// as numbers; arrays and grids as values. A repeated path is listed again and its field updated.
+void flatten(wrc::FieldRecord& record, const wrc::FieldNode& parent, const std::string& prefix, wrc_result& r) {
+  using K = wrc::FieldNode::Kind;
+  int items = 0;
+  for (const wrc::FieldNode& c : parent.children()) {
+    if (parent.kind == K::list && c.kind == K::table && c.key.empty()) {
+      flatten(record, c, prefix + std::to_string(++items) + ".", r);
+      continue;
+    }
+    std::string path = prefix;
+    path += c.key;
+    if (c.kind == K::table) {
+      flatten(record, c, path += '.', r);
+      continue;
+    }
+    wrc_result::Field& f = add_field(r, std::move(path));
+    switch (c.kind) {
+      case K::number: f.number = c.number; break;
+      case K::integer: f.number = static_cast<double>(c.integer); break;
+      case K::boolean: f.number = c.integer != 0 ? 1 : 0; break;
+      case K::string:
+        f.is_string = true;
+        f.text = c.text;
+        break;
+      case K::numbers:
+      case K::grid: f.values = record.take_values(c); break;
+      case K::integers:
+        for (long long v : c.integers) f.values.push_back(static_cast<double>(v));
+        break;
+      case K::list:
+        f.is_list = true;
+        f.count = c.count;
+        flatten(record, c, r.order.back() + ".", r);  // the list's path
+        break;
+      case K::table: break;
+    }
   }
-  wrc_result& r_;
-  std::vector<Frame> frames_;
-};
+}
 
 template <class Result, class... Extra>
 wrc_status make_result(wrc_result** out, bool converged, const std::string& failure, const Result& r, Extra&&... extra) {
   auto res = std::make_shared<wrc_result>();
-  FlatSink sink(*res);
-  describe(r, sink, std::forward<Extra>(extra)...);
+  wrc::record_and_convert([&](wrc::FieldRecord& record) { flatten(record, record.root(), "", *res); }, r,
+                          std::forward<Extra>(extra)...);
   *out = registry().add(std::move(res));
   if (converged) return WRC_OK;
   last_error = failure;

@@ -1,57 +1,9 @@
 #include "lua/results_binding.hpp"
 
 #include <new>
+#include <string>
 
 namespace wrc::lua {
-
-LuaSink::LuaSink(lua_State* L) : L_(L) {
-  lua_createtable(L, 0, 8);
-  frames_.push_back({});
-}
-
-void LuaSink::set(std::string_view key) {
-  lua_pushlstring(L_, key.data(), key.size());
-  lua_insert(L_, -2);
-  lua_rawset(L_, -3);
-}
-
-void LuaSink::number(std::string_view key, double v) {
-  lua_pushnumber(L_, v);
-  set(key);
-}
-
-void LuaSink::integer(std::string_view key, long long v) {
-  lua_pushinteger(L_, static_cast<lua_Integer>(v));
-  set(key);
-}
-
-void LuaSink::boolean(std::string_view key, bool v) {
-  lua_pushboolean(L_, v);
-  set(key);
-}
-
-void LuaSink::string(std::string_view key, std::string_view v) {
-  lua_pushlstring(L_, v.data(), v.size());
-  set(key);
-}
-
-void LuaSink::numbers(std::string_view key, const double* v, std::size_t n) {
-  lua_createtable(L_, static_cast<int>(n), 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    lua_pushnumber(L_, v[i]);
-    lua_rawseti(L_, -2, static_cast<lua_Integer>(i + 1));
-  }
-  set(key);
-}
-
-void LuaSink::integers(std::string_view key, const long long* v, std::size_t n) {
-  lua_createtable(L_, static_cast<int>(n), 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    lua_pushinteger(L_, static_cast<lua_Integer>(v[i]));
-    lua_rawseti(L_, -2, static_cast<lua_Integer>(i + 1));
-  }
-  set(key);
-}
 
 namespace {
 
@@ -97,54 +49,88 @@ int grid_gc(lua_State* L) {
   return 0;
 }
 
+// A grid as a wrc.Grid userdata on the top of the stack.
+void push_grid(lua_State* L, FieldRecord& record, const FieldNode& n) {
+  auto* g = static_cast<LuaGrid*>(lua_newuserdatauv(L, sizeof(LuaGrid), 1));
+  new (g) LuaGrid{record.take_values(n), n.nx, n.ny};
+  if (luaL_newmetatable(L, kGridType)) {
+    const luaL_Reg meta[] = {{"__index", grid_index}, {"__len", grid_len}, {"__gc", grid_gc}, {nullptr, nullptr}};
+    luaL_setfuncs(L, meta, 0);
+  }
+  lua_setmetatable(L, -2);
+  lua_createtable(L, n.ny, 0);
+  lua_setiuservalue(L, -2, 1);
+}
+
+// The metatable registered under the table's object type on the table on the top of the stack, when there is one.
+void set_object_type(lua_State* L, const FieldNode& n) {
+  if (n.object_type.empty()) return;
+  if (luaL_getmetatable(L, std::string(n.object_type).c_str()) == LUA_TTABLE) lua_setmetatable(L, -2);
+  else lua_pop(L, 1);
+}
+
+void push_node(lua_State* L, FieldRecord& record, const FieldNode& n, int hash_size);
+
+// The children of a table or list into the table on the top of the stack: a list's items by index, fields by key.
+void fill(lua_State* L, FieldRecord& record, const FieldNode& parent) {
+  const bool list = parent.kind == FieldNode::Kind::list;
+  lua_Integer items = 0;
+  for (const FieldNode& c : parent.children()) {
+    if (list && c.kind == FieldNode::Kind::table && c.key.empty()) {
+      push_node(L, record, c, 8);
+      lua_rawseti(L, -2, ++items);
+    } else {
+      lua_pushlstring(L, c.key.data(), c.key.size());
+      push_node(L, record, c, 4);
+      lua_rawset(L, -3);
+    }
+  }
+}
+
+// The node's value on the top of the stack (a table pre-sized for hash_size fields).
+void push_node(lua_State* L, FieldRecord& record, const FieldNode& n, int hash_size) {
+  using K = FieldNode::Kind;
+  switch (n.kind) {
+    case K::number: lua_pushnumber(L, n.number); return;
+    case K::integer: lua_pushinteger(L, static_cast<lua_Integer>(n.integer)); return;
+    case K::boolean: lua_pushboolean(L, n.integer != 0); return;
+    case K::string: lua_pushlstring(L, n.text.data(), n.text.size()); return;
+    case K::numbers:
+      lua_createtable(L, static_cast<int>(n.values.size()), 0);
+      for (std::size_t i = 0; i < n.values.size(); ++i) {
+        lua_pushnumber(L, n.values[i]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+      }
+      return;
+    case K::integers:
+      lua_createtable(L, static_cast<int>(n.integers.size()), 0);
+      for (std::size_t i = 0; i < n.integers.size(); ++i) {
+        lua_pushinteger(L, static_cast<lua_Integer>(n.integers[i]));
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+      }
+      return;
+    case K::grid: push_grid(L, record, n); return;
+    case K::list:
+      lua_createtable(L, static_cast<int>(n.count), 0);
+      fill(L, record, n);
+      return;
+    case K::table:
+      lua_createtable(L, 0, hash_size);
+      set_object_type(L, n);
+      fill(L, record, n);
+      return;
+  }
+}
+
 }  // namespace
 
-void LuaSink::grid(std::string_view key, const double* v, int nx, int ny) {
-  auto* g = static_cast<LuaGrid*>(lua_newuserdatauv(L_, sizeof(LuaGrid), 1));
-  new (g) LuaGrid{std::vector<double>(v, v + static_cast<std::size_t>(nx) * ny), nx, ny};
-  if (luaL_newmetatable(L_, kGridType)) {
-    const luaL_Reg meta[] = {{"__index", grid_index}, {"__len", grid_len}, {"__gc", grid_gc}, {nullptr, nullptr}};
-    luaL_setfuncs(L_, meta, 0);
-  }
-  lua_setmetatable(L_, -2);
-  lua_createtable(L_, ny, 0);
-  lua_setiuservalue(L_, -2, 1);
-  set(key);
-}
+void push_fields(lua_State* L, FieldRecord& record) { push_node(L, record, record.root(), 8); }
 
 const std::vector<double>* grid_values(lua_State* L, int idx, int& nx, int& ny) {
   auto* g = static_cast<LuaGrid*>(luaL_testudata(L, idx, kGridType));
   if (!g) return nullptr;
   nx = g->nx, ny = g->ny;
   return &g->values;
-}
-
-void LuaSink::object_type(std::string_view name) {
-  const std::string n(name);
-  if (luaL_getmetatable(L_, n.c_str()) == LUA_TTABLE) lua_setmetatable(L_, -2);
-  else lua_pop(L_, 1);
-}
-
-void LuaSink::begin(std::string_view key) {
-  lua_createtable(L_, 0, 4);
-  frames_.push_back({std::string(key)});
-}
-
-void LuaSink::begin_list(std::string_view key, std::size_t n) {
-  lua_createtable(L_, static_cast<int>(n), 0);
-  frames_.push_back({std::string(key)});
-}
-
-void LuaSink::item() {
-  lua_createtable(L_, 0, 8);
-  frames_.push_back({{}, true});
-}
-
-void LuaSink::end() {
-  const Frame f = frames_.back();
-  frames_.pop_back();
-  if (f.item) lua_rawseti(L_, -2, ++frames_.back().count);
-  else set(f.key);
 }
 
 }  // namespace wrc::lua

@@ -160,8 +160,10 @@ int wheelset_sweep(lua_State* L) {
   int failed = 0;
   lua_createtable(L, static_cast<int>(r.cases.size()), 3);
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
-    LuaSink row(L);
+    FieldRecorder row;
     describe_case(r, i, row);
+    FieldRecord record = row.take();
+    push_fields(L, record);
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
     if (!r.elastic[i].converged) ++failed;
   }

@@ -1,6 +1,6 @@
 // Batch calls of Wheelset.contact, .wheel, .equilibrium and .rigid (python/wrc/batch.py, docs/python.md): when an
 // argument that batches holds an array, the elements run through the call layer's batch runner (wrc/api/batch.hpp)
-// on worker threads with the GIL released, each into its own FieldTree, and become a wrc.Batch that reads its
+// on worker threads with the GIL released, each into its own FieldRecorder, and become a wrc.Batch that reads its
 // fields and items from the trees when asked (batch_fields.hpp).
 #include "python/batch_fields.hpp"
 #include "python/bindings.hpp"
@@ -45,7 +45,7 @@ int threads_argument(py::handle v, const char* context) {
 
 // Runs the batch on a thread of its own while this one, without the GIL, wakes every 50 ms to let Python handle
 // signals: on KeyboardInterrupt the elements not begun are skipped, the run ends and the exception propagates.
-api::BatchRun run_interruptible(const Wheelset& model, const api::BatchInput& input, std::deque<FieldTree>& trees,
+api::BatchRun run_interruptible(const Wheelset& model, const api::BatchInput& input, std::deque<FieldRecorder>& trees,
                                 int threads) {
   std::atomic<bool> stop{false};
   api::BatchRun run;
@@ -125,7 +125,7 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
     input.columns.push_back({keys[k], std::vector<double>(a.data(), a.data() + a.size())});
   }
 
-  std::deque<FieldTree> trees(input.count);
+  std::deque<FieldRecorder> trees(input.count);
   const api::BatchRun run = run_interruptible(*model, input, trees, threads);
 
   // The same error for every element is the call's (a misspelt key, a value of the wrong kind): raised.
@@ -137,17 +137,17 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
 
   // The results stay in the engine's form (batch_fields.hpp): fields are stacked and items made when first read.
   auto kept = std::make_shared<BatchTrees>();
-  kept->roots.reserve(el.size());
-  for (FieldTree& t : trees) kept->roots.push_back(std::move(t.root));
+  kept->records.reserve(el.size());
+  for (FieldRecorder& t : trees) kept->records.push_back(t.take());
   std::vector<bool> present(el.size());
   py::list errors;
   const py::object unravel = py::module_::import("numpy").attr("unravel_index");
   for (std::size_t i = 0; i < el.size(); ++i) {
     present[i] = el[i].status == api::BatchStatus::done;
     if (present[i]) continue;
-    FieldNode& root = kept->roots[i];
-    py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(root) : py::none();
-    root = FieldNode();  // not in the batch's fields: its memory back now
+    FieldRecord& record = kept->records[i];
+    py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(record.root()) : py::none();
+    record = FieldRecord();  // not in the batch's fields: its memory back now
     py::tuple index = py::tuple(unravel(i, shape));
     py::list plain;
     for (auto n : index) plain.append(n.cast<long long>());

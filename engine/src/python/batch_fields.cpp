@@ -54,7 +54,7 @@ std::vector<std::string> keys(const BatchNodes& s) {
   };
   for (const FieldNode* t : s.nodes) {
     if (!t) continue;
-    for (const FieldNode& c : t->children) add(c.key);
+    for (const FieldNode& c : t->children()) add(c.key);
     if (is_grid(*t)) {
       add("x");
       add("y");
@@ -113,12 +113,12 @@ py::object field(const BatchNodes& s, const std::string& name) {
 // Each list's length (0 where absent).
 py::array_t<std::int64_t> counts(const BatchNodes& s) {
   return filled<std::int64_t>(s.nodes, [](const FieldNode* l) {
-    return l ? static_cast<std::int64_t>(l->children.size()) : std::int64_t{0};
+    return l ? static_cast<std::int64_t>(l->fields) : std::int64_t{0};
   });
 }
 
 const FieldNode* item_of(const FieldNode* list, std::size_t k) {
-  return list && k < list->children.size() ? &list->children[k] : nullptr;
+  return list ? list->child(k) : nullptr;
 }
 
 // The k-th item of each list.
@@ -154,7 +154,7 @@ py::array_t<bool> present(const BatchNodes& s) {
 py::object batch_nodes(std::shared_ptr<const BatchTrees> trees, const std::vector<bool>& present) {
   BatchNodes s{trees, {}, false};
   s.nodes.reserve(present.size());
-  for (std::size_t i = 0; i < present.size(); ++i) s.nodes.push_back(present[i] ? &trees->roots[i] : nullptr);
+  for (std::size_t i = 0; i < present.size(); ++i) s.nodes.push_back(present[i] ? &trees->records[i].root() : nullptr);
   return py::cast(std::move(s));
 }
 

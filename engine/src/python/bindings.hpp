@@ -1,6 +1,7 @@
 // The Python module wrc._wrc (docs/python.md): a front end beside the Lua binding and the C API. Each binding file
 // converts keyword arguments into an OptionTable (convert.hpp), reads the request of the call layer
-// (wrc/api/calls.hpp) from it, runs it with the GIL released and converts the described result (field_tree.hpp).
+// (wrc/api/calls.hpp) from it, runs it with the GIL released and converts the result it recorded
+// (wrc/core/field_record.hpp).
 // No default, check or option list of its own: the engine's readers and api::operations() are the one source.
 #pragma once
 

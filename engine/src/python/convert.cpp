@@ -102,17 +102,18 @@ py::object result_class() {
 // A result table kept in C++ until a Result made from it is first read (Result._deferred): the tree is shared by
 // every Result made from it, each of which holds the table it stands for.
 struct DeferredNode {
-  std::shared_ptr<const FieldNode> root;
+  std::shared_ptr<const FieldRecord> record;
   const FieldNode* node;
 };
 
 // A table becomes a deferred Result, a list a list of its items made so; any other field its value.
-py::object shallow(const std::shared_ptr<const FieldNode>& root, const FieldNode& n) {
+py::object shallow(const std::shared_ptr<const FieldRecord>& record, const FieldNode& n) {
   if (n.kind == FieldNode::Kind::table)
-    return result_class().attr("_deferred")(DeferredNode{root, &n});
+    return result_class().attr("_deferred")(DeferredNode{record, &n});
   if (n.kind == FieldNode::Kind::list) {
-    py::list l(n.children.size());
-    for (std::size_t i = 0; i < n.children.size(); ++i) l[i] = shallow(root, n.children[i]);
+    py::list l(n.fields);
+    std::size_t i = 0;
+    for (const FieldNode& c : n.children()) l[i++] = shallow(record, c);
     return l;
   }
   return to_python(n);
@@ -121,8 +122,8 @@ py::object shallow(const std::shared_ptr<const FieldNode>& root, const FieldNode
 // A deferred table's (fields, units), its tables and lists of tables deferred in turn.
 py::tuple expand(const DeferredNode& d) {
   py::dict fields, units;
-  for (const FieldNode& c : d.node->children) {
-    fields[py::str(c.key)] = shallow(d.root, c);
+  for (const FieldNode& c : d.node->children()) {
+    fields[py::str(c.key)] = shallow(d.record, c);
     if (!c.unit.empty()) units[py::str(c.key)] = py::str(c.unit);
   }
   return py::make_tuple(fields, units);
@@ -135,9 +136,9 @@ void register_deferred(py::module_& m) {
       .def("expand", &expand, "(fields, units) of the table");
 }
 
-py::object to_python(FieldNode&& root) {
-  const auto kept = std::make_shared<const FieldNode>(std::move(root));
-  return shallow(kept, *kept);
+py::object to_python(FieldRecord&& record) {
+  const auto kept = std::make_shared<const FieldRecord>(std::move(record));
+  return shallow(kept, kept->root());
 }
 
 py::object to_python(const FieldNode& n) {
@@ -163,13 +164,14 @@ py::object to_python(const FieldNode& n) {
       return a;
     }
     case K::list: {
-      py::list l(n.children.size());
-      for (std::size_t i = 0; i < n.children.size(); ++i) l[i] = to_python(n.children[i]);
+      py::list l(n.fields);
+      std::size_t i = 0;
+      for (const FieldNode& c : n.children()) l[i++] = to_python(c);
       return l;
     }
     case K::table: {
       py::dict fields, units;
-      for (const FieldNode& c : n.children) {
+      for (const FieldNode& c : n.children()) {
         fields[py::str(c.key)] = to_python(c);
         if (!c.unit.empty()) units[py::str(c.key)] = py::str(c.unit);
       }

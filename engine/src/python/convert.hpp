@@ -4,8 +4,8 @@
 #pragma once
 
 #include "python/bindings.hpp"
-#include "python/field_tree.hpp"
 #include "wrc/api/calls.hpp"
+#include "wrc/core/field_record.hpp"
 #include "wrc/core/options.hpp"
 
 #include <pybind11/pybind11.h>
@@ -41,7 +41,7 @@ X read_call(const py::kwargs& kwargs, const char* context) {
 py::object to_python(const FieldNode& node);
 // The same, deferred: the tree is kept and each table's fields are made when its Result is first read (what a caller
 // does not read costs nothing; the values are those to_python(const FieldNode&) makes).
-py::object to_python(FieldNode&& root);
+py::object to_python(FieldRecord&& record);
 // The class of the deferred tables (_wrc._DeferredNode).
 void register_deferred(py::module_& m);
 

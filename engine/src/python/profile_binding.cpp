@@ -116,7 +116,7 @@ void register_profile(py::module_& m) {
              const char* ctx = "Profile.flange_measures";
              const Profile& p = s.get(ctx);
              const auto call = reading([&] { return api::read<api::FlangeMeasuresCall>(to_options(kw, ctx), ctx); });
-             return to_python(describe_tree(call.run(p)));
+             return to_python(record_fields(call.run(p)));
            },
            docstring(python_entry("Profile.flange_measures")).c_str())
       .def("write",

@@ -90,7 +90,7 @@ PyWheelset* make_wheelset(const py::kwargs& given) {
 
 template <class Result>
 py::object converted(const Result& r) {
-  return to_python(describe_tree(r));
+  return to_python(record_fields(r));
 }
 
 py::object contact(PyWheelset& self, const py::kwargs& kw) {
@@ -98,11 +98,11 @@ py::object contact(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "contact", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::ContactCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
-    tree = describe_tree(call.run(*model, *ws), call.request.sensitivity);
+    tree = record_fields(call.run(*model, *ws), call.request.sensitivity);
   }
   return to_python(std::move(tree));
 }
@@ -112,14 +112,14 @@ py::object wheel(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "wheel", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::WheelCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   std::string failure;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
     const WheelResult r = call.run(*model, *ws);
     if (!r.converged) failure = failure_message(r);
-    tree = describe_tree(r);
+    tree = record_fields(r);
   }
   py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
@@ -132,14 +132,14 @@ py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "equilibrium", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::EquilibriumCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   std::string failure;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
     const EquilibriumResult e = call.run(*model, *ws);
     if (!e.converged) failure = failure_message(e);
-    tree = describe_tree(e);
+    tree = record_fields(e);
   }
   py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
@@ -152,10 +152,10 @@ py::object rigid(PyWheelset& self, const py::kwargs& kw) {
   if (py::object batch = batch_call(self, "rigid", ctx, kw); !batch.is_none()) return batch;
   const auto model = self.get(ctx);
   const auto call = read_call<api::RigidCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run(*model));
+    tree = record_fields(call.run(*model));
   }
   return to_python(std::move(tree));
 }
@@ -168,11 +168,11 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
   auto call = read_call<api::SweepCall>(kw, ctx);
   if (call.progress.on(false)) call.options.progress = host::progress_line("sweep", "cases");
   call.options.notice = host::note_printer("sweep");
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     const SweepResult r = call.run(*model, [&] { return model->make_workspace(); });
-    FieldTree t;
+    FieldRecorder t;
     long long failed = 0;
     t.begin_list("rows", r.cases.size(), {"", "one entry per case, in the order of the plan"});
     for (std::size_t i = 0; i < r.cases.size(); ++i) {
@@ -186,7 +186,7 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
     t.integer("threads", r.threads, {"-", "worker threads used"});
     if (!r.threads_note.empty()) t.string("threads_note", r.threads_note, {"", "why fewer threads ran than asked for"});
     t.integer("failed", failed, {"-", "cases that did not converge"});
-    tree = std::move(t.root);
+    tree = t.take();
   }
   return results("with_table")(to_python(std::move(tree)), "rows");
 }
@@ -197,10 +197,10 @@ py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
   auto call = read_call<api::GeometryTableCall>(kw, ctx);
   if (call.progress.on(false)) call.options.progress = host::progress_line("geometry table", "rows");
   call.options.notice = host::note_printer("geometry table");
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run(*model));
+    tree = record_fields(call.run(*model));
   }
   return results("rows_frame")(to_python(std::move(tree)), "rows");
 }
@@ -209,10 +209,10 @@ py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.conicity";
   const auto model = self.get(ctx);
   const auto call = read_call<api::WheelsetConicityCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run(*model));
+    tree = record_fields(call.run(*model));
   }
   return to_python(std::move(tree));
 }
@@ -237,10 +237,10 @@ py::object conicity(py::object table, const py::kwargs& kw) {
     o.finish();
     return c;
   });
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
-    tree = describe_tree(call.run());
+    tree = record_fields(call.run());
   }
   return to_python(std::move(tree));
 }
@@ -258,11 +258,11 @@ py::object trajectory_contact(PyTrajectory& self, const py::kwargs& kw) {
   const char* ctx = "Trajectory.contact";
   self.get(ctx);
   const auto call = read_call<api::TrajectoryContactCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   {
     py::gil_scoped_release release;
     std::lock_guard lock(self.mutex);
-    tree = describe_tree(call.run(self.get(ctx)));
+    tree = record_fields(call.run(self.get(ctx)));
   }
   return to_python(std::move(tree));
 }
@@ -272,14 +272,14 @@ py::object trajectory_wheel(PyTrajectory& self, const py::kwargs& kw) {
   const char* ctx = "Trajectory.wheel";
   self.get(ctx);
   const auto call = read_call<api::TrajectoryWheelCall>(kw, ctx);
-  FieldNode tree;
+  FieldRecord tree;
   std::string failure;
   {
     py::gil_scoped_release release;
     std::lock_guard lock(self.mutex);
     const WheelResult r = call.run(self.get(ctx));
     if (!r.converged) failure = failure_message(r);
-    tree = describe_tree(r);
+    tree = record_fields(r);
   }
   py::object result = to_python(std::move(tree));
   if (!failure.empty()) raise_not_converged(fmt::format("{}: {}", ctx, failure), result);

@@ -14,9 +14,6 @@
 namespace wrc {
 namespace {
 
-// The linear solves (normal response, tangential linearisation) to 1e-6: the Jacobian to ~1e-5 of its scale, well
-// within the 1 % it is checked to, for a third of the cost at 1e-8 / 1e-9.
-constexpr double kResponseTolerance = 1e-6;
 Jacobian area_jacobian(const ContactModel& model, const Pose& pose, const PatchContact& pc,
                        const std::optional<RollingRequest>& rolling, ContactWorkspace& ws) {
   Jacobian J = Jacobian::Zero();
@@ -24,7 +21,7 @@ Jacobian area_jacobian(const ContactModel& model, const Pose& pose, const PatchC
   std::array<areas::NormalColumn, 4> normal;
   std::array<Eigen::Vector2d, 4> dref;
   for (int c = 0; c < 4; ++c) {
-    normal[static_cast<std::size_t>(c)] = areas::normal_column(model, pose, pc, c, ws, kResponseTolerance);
+    normal[static_cast<std::size_t>(c)] = areas::normal_column(model, pose, pc, c, ws, kJacobianSolveTolerance);
     J.block<3, 1>(0, kJacobianPose + c) = normal[static_cast<std::size_t>(c)].dF;
     J.block<3, 1>(3, kJacobianPose + c) = normal[static_cast<std::size_t>(c)].dM;
     dref[static_cast<std::size_t>(c)] = normal[static_cast<std::size_t>(c)].dref;

@@ -1,5 +1,5 @@
-// Results described field by field, once, for every consumer: the Lua binding builds tables from them, the C API
-// a flat map of "left.patches.1.force.z" paths, a CSV writer a row. A result type provides
+// Results described field by field, once, for every consumer: the front ends record it (core/field_record.hpp) and
+// convert it (Lua tables, C paths "left.patches.1.force.z", Python Results; a CSV writer a row). A result type provides
 //   void describe(const Result&, FieldSink&)
 // calling the sink's methods in a fixed order. Names carry no units: each call gives the field's FieldDoc (unit and
 // meaning) beside its value, so that a field reference is made by the same calls that
