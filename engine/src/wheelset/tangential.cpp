@@ -306,8 +306,9 @@ Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const Pat
     if (rq.kinematics) kinematic_change(model, pose, pc, *rq.kinematics, slip.creepages, normal[cs], c, ch);
   }
   const std::vector<halfspace::TangentialDerivative> d =
-      r.method == RollingMethod::fastsim ? halfspace::linearise_fastsim(model.material(), pb, r.solution, changes)
-                                         : model.rolling_solver().linearise(pb, r.solution, changes, ws.rolling, 1e-6);
+      r.method == RollingMethod::fastsim
+          ? halfspace::linearise_fastsim(model.material(), pb, r.solution, changes)
+          : model.rolling_solver().linearise(pb, r.solution, changes, ws.rolling, kJacobianSolveTolerance);
   const Eigen::Vector3d c(0, pose.y, pose.z);
   for (int col = 0; col < 7; ++col) {
     Eigen::Vector3d dF, dM;
