@@ -89,7 +89,9 @@ TEST_CASE("parallel_for: worker indices name one thread each, worker 0 the calle
       --busy[static_cast<std::size_t>(w)];
     });
     CHECK(overlaps == 0);
-    CHECK(thread_of.at(0) == caller);
+    // Worker 0 is the caller's thread when it ran a task; under load the others may take all tasks before it starts.
+    if (const auto it = thread_of.find(0); it != thread_of.end()) CHECK(it->second == caller);
+    if (workers == 1) REQUIRE(thread_of.count(0) == 1);
     std::vector<std::thread::id> threads;
     for (const auto& [w, id] : thread_of) threads.push_back(id);
     std::sort(threads.begin(), threads.end());
