@@ -1,0 +1,79 @@
+// Wheel solves with friction on a coarse grid (S1002 on 60E1 at 0.8 mm, gauge 1428 mm, r0 = 460 mm, Fz = 75 kN),
+// along a trajectory from the tread to the flange root (y = 3 .. 7 mm): every step converges. On such a grid
+// FASTSIM's creep forces jump where an element enters the contact region (its ellipse is the region's extent, and an
+// edge element's pressure may be anywhere from 0 up): by up to ~4e-4 of Fz. Where Fz falls inside such a jump no
+// approach carries it within the force tolerance, and the solve concludes at the jump, within half of it (at most
+// 1e-3 Fz). Every step is checked independently: its pose evaluated cold (evaluate_contact with the rolling request,
+// a fresh workspace) carries Fz, within two normal tolerances for the exact solver and within 1e-3 Fz for FASTSIM
+// (whose cold evaluation may count an edge element of near-zero pressure that the warm one does not, or the reverse).
+#include "wheelset/paper_profiles.hpp"
+#include "wrc/equilibrium/trajectory.hpp"
+#include "wrc/equilibrium/wheel.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace wrc;
+
+namespace {
+
+constexpr double kFz = 75e3;
+
+std::shared_ptr<const Wheelset> coarse_wheelset() {
+  WheelsetParams params;
+  params.contact.element = 0.8e-3;
+  params.track.gauge = 1.428;
+  params.track.radius = 0.46;
+  return build_wheelset(test::paper_profiles(), params);
+}
+
+RollingRequest rolling(RollingMethod method) {
+  RollingRequest r;
+  r.kinematics = Kinematics{30, std::nullopt, 0.0, 0.0};
+  r.friction = halfspace::Friction::coulomb(0.3);
+  r.method = method;
+  return r;
+}
+
+// The wheel's vertical force, creep forces included, of the pose evaluated cold at the model's tolerance.
+double vertical_force(const Wheelset& ws, const WheelCase& c, double z, const RollingRequest& rq) {
+  ContactRequest req;
+  req.only_side = c.side;
+  req.rolling = rq;
+  auto fresh = ws.make_workspace();
+  return evaluate_contact(ws.contact_model(), {c.y, z, c.roll, c.yaw}, *fresh, req).wheel[c.side].force.z();
+}
+
+}  // namespace
+
+TEST_CASE("trajectory with rolling contact on a 0.8 mm grid: every step from the tread to the flange root converges") {
+  const auto ws = coarse_wheelset();
+  for (RollingMethod method : {RollingMethod::fastsim, RollingMethod::exact}) {
+    CAPTURE(method_name(method));
+    const bool fastsim = method == RollingMethod::fastsim;
+    Trajectory tr(ws);
+    const RollingRequest rq = rolling(method);
+    int jumps = 0, evaluations = 0;
+    double largest = 0, worst_cold = 0;
+    constexpr int kSteps = 161;
+    for (int k = 0; k < kSteps; ++k) {
+      const WheelCase c{kLeft, 3e-3 + 0.025e-3 * k, 0.0, 0.0, kFz};
+      CAPTURE(c.y);
+      const WheelResult r = tr.wheel(c, rq);
+      REQUIRE_MESSAGE(r.converged, r.message);
+      evaluations += r.iterations;
+      CHECK(r.wheel.force.z() - kFz == doctest::Approx(r.residual).epsilon(1e-12));
+      CHECK(std::abs(r.residual) <= (fastsim ? 1e-3 : 1e-6) * kFz);
+      if (std::abs(r.residual) > 1e-6 * kFz) ++jumps;
+      largest = std::max(largest, std::abs(r.residual));
+      const double cold = std::abs(vertical_force(*ws, c, r.z, rq) - kFz);
+      worst_cold = std::max(worst_cold, cold);
+      CHECK(cold <= (fastsim ? 1e-3 : 3e-6) * kFz);
+    }
+    MESSAGE(std::string(method_name(method)), ": ", jumps, " steps concluded at a jump of the creep forces (largest "
+            "residual ", largest, " N); the poses evaluated cold within ", worst_cold, " N of Fz; ",
+            double(evaluations) / kSteps, " evaluations per step");
+  }
+}
