@@ -23,9 +23,10 @@ using pose_solve::UnreachableLoad;
 
 // The tangential solver's tolerance for a wheel solve's first solution with friction (with_friction).
 constexpr double kFirstRollingTolerance = 1e-4;
-// Half the largest jump of the creep forces' vertical part across the approach (relative to Fz) that a wheel solve
-// with friction concludes at (WheelResult::converged: within half of it); larger ones are no grid element's.
-constexpr double kMaxJump = 1e-3;
+// The largest jump of the creep forces' vertical part C across the approach that a wheel solve with friction
+// concludes at (WheelResult::converged: within it): 2e-3 Fz, or 10 % of C (an element more in a region of ten
+// along the rolling direction lengthens FASTSIM's ellipse by 10 %); larger ones are no grid element's.
+constexpr double kMaxJump = 2e-3, kMaxCreepJump = 0.1;
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
 //
@@ -134,6 +135,7 @@ class WheelSolver {
     double last_load = NAN, last_creep = NAN;
     const double tol = opt_.limits.force_tolerance * c_.Fz;
     Bracket below{-INFINITY, NAN}, above{INFINITY, NAN};  // loads whose total fell short of Fz / passed it
+    bool crossed = false;  // the far side of a jump tried
     for (int it = 0;; ++it) {
       add_rolling(model_, cur_, loose ? first : rolling, ws_);
       creep = cur_.wheel[c_.side].creep.force.z();
@@ -146,16 +148,25 @@ class WheelSolver {
       }
       if (!loose) (e < 0 ? below : above) = {load, e};
       loose = false;
-      // Loads closer than the tolerance on either side of Fz, neither within it: C jumps between them (the normal
-      // force is continuous), and no approach carries Fz closer than half the jump. Such a point is the solution when
-      // the jump is one of a coarse grid's (FASTSIM's ellipse is the contact region's extent, which grows by an element
-      // at a time: ~1e-5 .. 4e-4 of Fz at 0.7 .. 1 mm); the residual says how near it is.
-      if (above.load - below.load <= tol && above.e - below.e <= 2 * kMaxJump * c_.Fz) {
-        const double half = 0.5 * (above.e - below.e);
-        if (std::abs(e) <= half + tol) {
-          jump_ = half;
+      // Loads closer than the tolerance on either side of Fz (or the same load on both, its edge elements' near-zero
+      // pressures differing with the start), neither within it: C jumps between them (the normal force is continuous),
+      // and no approach carries Fz closer than half the jump. Such a point is the solution when the jump is one of a
+      // coarse grid's (FASTSIM's ellipse is the contact region's extent, which grows by an element at a time: ~1e-5 ..
+      // 4e-4 of Fz at 0.7 .. 1 mm, 2 % of C in saturation); the residual says how near it is.
+      if (above.load - below.load <= tol) {
+        const double jump = above.e - below.e;
+        if (jump > std::max(kMaxJump * c_.Fz, kMaxCreepJump * std::abs(creep))) {
+          res_.message = fmt::format("the creep forces' vertical part jumps by {:.4g} N at z = {:.6f} mm (more than "
+                                     "a grid element's): no approach carries Fz", jump, res_.z * 1e3);
+          return false;
+        }
+        // The nearer side of the jump; its far side when this is not it (once: the same load may stay on this side,
+        // the warm start deciding which edge elements carry pressure).
+        if (std::abs(e) <= 0.5 * jump + tol || crossed) {
+          jump_ = jump;
           return true;
         }
+        crossed = true;
       }
       if (it >= opt_.limits.max_iterations) {
         res_.message = fmt::format("no convergence in {} iterations with the creep forces", opt_.limits.max_iterations);
@@ -342,7 +353,7 @@ class WheelSolver {
   double tight_ = 0, loose_ = 0, final_ = 0;  // the normal solves' tolerances (tolerance_for)
   double ftol_ = 0;        // the normal solves' force tolerance in phi's units
   int evaluations_ = 0;
-  double jump_ = 0;        // with friction: half the creep forces' jump at the load where they jump (N), else 0
+  double jump_ = 0;        // with friction: the creep forces' jump where the solve concluded at one (N), else 0
   double stiffness_ = 0;   // dFz/da of the normal solutions (N/m), measured by shift; 0: not known
   double tolerance_ = 0;   // of the last frictionless evaluation
   ContactResult cur_;      // the last evaluation

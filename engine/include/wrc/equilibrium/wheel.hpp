@@ -53,7 +53,8 @@ struct WheelResult {
   // |residual| <= force_tolerance Fz; with friction also where the creep forces' vertical part jumps across the
   // approach by more than twice that (a coarse grid's FASTSIM: its ellipse is the contact region's extent, which grows
   // an element at a time) and Fz falls inside the jump: then no approach carries Fz closer, and the solve concludes at
-  // the jump, |residual| within half of it plus the tolerance (jumps of at most 2e-3 Fz).
+  // the jump, on its side nearer Fz where it can, |residual| within the jump plus the tolerance (jumps of at most 2e-3
+  // Fz or 10 % of the creep forces' vertical part; a larger one fails with its size).
   bool converged = false;
   std::string message;
   int side = kLeft;
