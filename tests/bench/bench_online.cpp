@@ -393,34 +393,6 @@ int main(int argc, char** argv) {
                double(evaluations) / (2.0 * steps), failed);
   }
 
-  if (only == 7) {
-    const double grid = rolling_grid > 0 ? rolling_grid : 0.8e-3;
-    wrc::WheelsetProfiles pp;
-    const auto w_ = wrc::lua::load_profile("profiles/s1002.lua", {});
-    const auto r_ = wrc::lua::load_profile("profiles/60e1.lua", {});
-    pp.wheel = {*w_, *w_};
-    pp.rail = {*r_, *r_};
-    wrc::WheelsetParams params;
-    params.contact.element = grid;
-    params.track.gauge = std::getenv("G7") ? std::atof(std::getenv("G7")) : 1.428;
-    params.track.radius = 0.46;
-    const auto w7 = wrc::build_wheelset(pp, params);
-    for (int v = 1; v < 3; ++v) {
-      wrc::Trajectory tr(w7);
-      int failed = 0;
-      for (int k = 0; k <= 160; ++k) {
-        const double y = 3e-3 + k * (std::getenv("DY7") ? std::atof(std::getenv("DY7")) : 0.025e-3);
-        wrc::RollingRequest rq;
-        rq.kinematics = wrc::Kinematics{30, std::nullopt, std::getenv("VY7") ? std::atof(std::getenv("VY7")) : 0.0, 0.0};
-        rq.friction = wrc::halfspace::Friction::coulomb(0.3);
-        rq.method = v == 1 ? wrc::RollingMethod::fastsim : wrc::RollingMethod::exact;
-        wrc::WheelResult r;
-        try { r = tr.wheel({wrc::kLeft, y, std::getenv("YAW7") ? std::atof(std::getenv("YAW7")) : 0.0, 0.0, 75e3}, rq); } catch (const std::exception& e) { fmt::print("y {:.3f} threw {}\n", y*1e3, e.what()); ++failed; continue; }
-        if (!r.converged) { ++failed; fmt::print("v {} y {:.3f} mm: {} (residual {:.3g})\n", v, y * 1e3, r.message, r.residual); }
-      }
-      fmt::print("method {} failed {}\n", v, failed);
-    }
-  }
   if (run(6)) {
     fmt::print("\n== 6. rolling contact at time steps: the left wheel, Fz = 100 kN (tr:wheel), y = 5 mm sin(2 pi 1.5 Hz t) "
                "at 1 kHz, yaw following, V = 30 m/s, mu = 0.3; {} steps ==\n", rolling_steps);
