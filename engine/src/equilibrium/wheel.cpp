@@ -99,11 +99,14 @@ class WheelSolver {
   // (solve) for Fz - C, C from the hint (e.g. the last time step's; 0 cold), within half the force tolerance. When
   // solve predicts the approach (one area), the tangential problems are solved first, loosely, on the prediction's
   // normal solution (within ~1e-6 of the one it predicts): their C moves the load, and the approach by the normal
-  // problem's stiffness (the hint's, else its linearised response), before the pose is evaluated; along a trajectory
-  // that evaluation then concludes with one more tangential solve from the first's tractions. While the total misses
-  // Fz by more than the tolerance, the load moves by a Newton step on it (dC/dload: C / load at first, as for creep
-  // forces proportional to the load, then the secant of the last two), the approach with it (shift), and the
-  // tangential problems are solved again from their last tractions. True when converged.
+  // problem's stiffness (the hint's, measured by the last step; else its linearised response), before the pose is
+  // evaluated; along a trajectory that evaluation then concludes with one more tangential solve from the first's
+  // tractions. (One solve per step would need C known to ~0.05 N before it; from step to step C moves by ~0.5 N more
+  // than its trend, the contact's edge crossing elements.) While the total misses Fz by more than the tolerance, the
+  // load moves by a Newton step on it (dC/dload: C / load at first, as for creep forces proportional to the load,
+  // then the secant of the last two), kept inside the bracket of the loads tried (inside), the approach with it
+  // (shift), and the tangential problems are solved again from their last tractions. True when converged, or at a
+  // jump of C that Fz falls in (jump_).
   bool with_friction(const RollingRequest& rolling, std::optional<double> start, const WheelHint& hint) {
     double creep = hint.creep;
     stiffness_ = hint.stiffness;
