@@ -23,6 +23,10 @@ using pose_solve::UnreachableLoad;
 
 // The tangential solver's tolerance for a wheel solve's first solution with friction (with_friction).
 constexpr double kFirstRollingTolerance = 1e-4;
+// The largest jump of the creep forces' vertical part C across the approach that a wheel solve with friction
+// concludes at (WheelResult::converged: within it): 2e-3 Fz, or 10 % of C (an element more in a region of ten
+// along the rolling direction lengthens FASTSIM's ellipse by 10 %); larger ones are no grid element's.
+constexpr double kMaxJump = 2e-3, kMaxCreepJump = 0.1;
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
 //
@@ -63,19 +67,31 @@ class WheelSolver {
   // solve's ~1e-6: the evaluation at the model's tolerance that follows concludes (3 evaluations in all) but where the
   // step is large (deep in the flange), and then the secant steps go on from it, as they do for a wheel with several
   // areas or steep normals (no prediction). From a close start (a trajectory's last approach) the first step is within
-  // 1e-3 of the approach and the second is skipped. `predicted`: called with the last prediction's evaluation and
-  // approach when it was solved at normal_tolerance (it may set another load and move the approach). True when
-  // converged frictionless.
-  bool solve(std::optional<double> start, const std::function<void(double&)>& predicted_at = {}) {
+  // 1e-3 of the approach and the second is skipped. `predicted_at`: called with the last prediction's evaluation and
+  // approach when it was solved at normal_tolerance; it may set another load and move the approach (then true). The
+  // evaluation there no longer starts from the solution it needs (its pressures carry the old load): it is solved
+  // 10x tighter, or its force would miss by its solve's noise (~1e-6 of the load at 1e-6) and cost an evaluation
+  // more; its force measures the stiffness on the way. True when converged frictionless.
+  bool solve(std::optional<double> start, const std::function<bool(double&)>& predicted_at = {}) {
     const double cold = opt_.wheel_approach * std::cbrt((load_ / 100e3) * (load_ / 100e3));  // Hertz: a ~ F^(2/3)
     double a1 = std::min(start && *start > 0 ? *start : cold, opt_.limits.max_penetration);
     const double from = a1;
     bool predicted = opt_.limits.max_evaluations >= 4 && predict(a1, start ? tight_ : loose_, !start);
     bool tight = predicted && start;
     if (predicted && std::abs(a1 - from) > 1e-3 * a1) tight = predicted = predict(a1, tight_);
-    if (tight && predicted_at) predicted_at(a1);
-    const double f1 = phi(a1, predicted ? final_ : start ? tight_ : loose_);
+    const double a0 = a1, f0 = wheel_force();  // the prediction carries the load (to round-off)
+    const bool moved = tight && predicted_at && predicted_at(a1);
+    const double f1 = phi(a1, moved ? std::min(final_, 0.1 * tight_) : predicted ? final_ : start ? tight_ : loose_);
+    if (moved) measure_stiffness(a0, f0);
     return secant(a1, f1);
+  }
+
+  // From the evaluation just made, of the normal problem alone, and one at approach a carrying N: their secant, when
+  // their forces differ by enough (> 1 N: ~1e-8 of the load, a 1e-7 solve's noise, is then < 1e-3 of it) and it is
+  // positive. Within a step the approach moves by nanometres, over which the normal force is linear.
+  void measure_stiffness(double a, double N) {
+    const double dN = wheel_force() - N, da = res_.approach - a;
+    if (std::abs(dN) > 1.0 && dN / da > 0) stiffness_ = dN / da;
   }
 
   // With friction the creep forces' vertical part C joins Fz (a tilted contact plane turns lateral creep forces partly
@@ -83,11 +99,14 @@ class WheelSolver {
   // (solve) for Fz - C, C from the hint (e.g. the last time step's; 0 cold), within half the force tolerance. When
   // solve predicts the approach (one area), the tangential problems are solved first, loosely, on the prediction's
   // normal solution (within ~1e-6 of the one it predicts): their C moves the load, and the approach by the normal
-  // problem's stiffness (the hint's, else its linearised response), before the pose is evaluated; along a trajectory
-  // that evaluation then concludes with one more tangential solve from the first's tractions. While the total misses
-  // Fz by more than the tolerance, the load moves by a Newton step on it (dC/dload: C / load at first, as for creep
-  // forces proportional to the load, then the secant of the last two), the approach with it (shift), and the
-  // tangential problems are solved again from their last tractions. True when converged.
+  // problem's stiffness (the hint's, measured by the last step; else its linearised response), before the pose is
+  // evaluated; along a trajectory that evaluation then concludes with one more tangential solve from the first's
+  // tractions. (One solve per step would need C known to ~0.05 N before it; from step to step C moves by ~0.5 N more
+  // than its trend, the contact's edge crossing elements.) While the total misses Fz by more than the tolerance, the
+  // load moves by a Newton step on it (dC/dload: C / load at first, as for creep forces proportional to the load,
+  // then the secant of the last two), kept inside the bracket of the loads tried (inside), the approach with it
+  // (shift), and the tangential problems are solved again from their last tractions. True when converged, or at a
+  // jump of C that Fz falls in (jump_).
   bool with_friction(const RollingRequest& rolling, std::optional<double> start, const WheelHint& hint) {
     double creep = hint.creep;
     stiffness_ = hint.stiffness;
@@ -102,7 +121,6 @@ class WheelSolver {
     // On the prediction's normal solution (the load's pressure on the grid of a nearby approach, within ~1e-6 of the
     // solution it predicts), the creep forces already move the load and the approach before the pose is evaluated.
     bool early = false;
-    int moved_at = 0;  // the evaluations before the approach was moved so
     const auto on_prediction = [&](double& a) {
       add_rolling(model_, cur_, first, ws_);
       const double c = cur_.wheel[c_.side].creep.force.z(), e = wheel_force() - c_.Fz;
@@ -113,24 +131,46 @@ class WheelSolver {
                      std::min(2 * a, opt_.limits.max_penetration));
       set_load(load, kShare);
       early = true;
-      moved_at = evaluations_;
+      return true;
     };
     if (!solve(start, on_prediction)) return false;
-    // A stiffness that missed (more than the one evaluation at the approach it gave) is measured again next time.
-    if (early && evaluations_ - moved_at > 1) stiffness_ = 0;
     loose = loose && !early;
     double last_load = NAN, last_creep = NAN;
+    const double tol = opt_.limits.force_tolerance * c_.Fz;
+    Bracket below{-INFINITY, NAN}, above{INFINITY, NAN};  // loads whose total fell short of Fz / passed it
+    bool crossed = false;  // the far side of a jump tried
     for (int it = 0;; ++it) {
       add_rolling(model_, cur_, loose ? first : rolling, ws_);
       creep = cur_.wheel[c_.side].creep.force.z();
       const double a = res_.approach, N = wheel_force() - creep;  // the normal solution's
       const double e = wheel_force() - c_.Fz;
-      if (std::abs(e) <= opt_.limits.force_tolerance * c_.Fz) {
+      if (std::abs(e) <= tol) {
         if (!loose) return true;
         loose = false;  // the same normal solution again, the tangential problems at their tolerance
         continue;
       }
+      if (!loose) (e < 0 ? below : above) = {load, e};
       loose = false;
+      // Loads closer than the tolerance on either side of Fz (or the same load on both, its edge elements' near-zero
+      // pressures differing with the start), neither within it: C jumps between them (the normal force is continuous),
+      // and no approach carries Fz closer than half the jump. Such a point is the solution when the jump is one of a
+      // coarse grid's (FASTSIM's ellipse is the contact region's extent, which grows by an element at a time: ~1e-5 ..
+      // 4e-4 of Fz at 0.7 .. 1 mm, 2 % of C in saturation); the residual says how near it is.
+      if (above.load - below.load <= tol) {
+        const double jump = above.e - below.e;
+        if (jump > std::max(kMaxJump * c_.Fz, kMaxCreepJump * std::abs(creep))) {
+          res_.message = fmt::format("the creep forces' vertical part jumps by {:.4g} N at z = {:.6f} mm (more than "
+                                     "a grid element's): no approach carries Fz", jump, res_.z * 1e3);
+          return false;
+        }
+        // The nearer side of the jump; its far side when this is not it (once: the same load may stay on this side,
+        // the warm start deciding which edge elements carry pressure).
+        if (std::abs(e) <= 0.5 * jump + tol || crossed) {
+          jump_ = jump;
+          return true;
+        }
+        crossed = true;
+      }
       if (it >= opt_.limits.max_iterations) {
         res_.message = fmt::format("no convergence in {} iterations with the creep forces", opt_.limits.max_iterations);
         return false;
@@ -138,10 +178,29 @@ class WheelSolver {
       const double slope = std::isfinite(last_load) && load != last_load ? (creep - last_creep) / (load - last_load)
                                                                         : creep / load;
       last_load = load, last_creep = creep;
-      load = std::max(load - e / std::max(1 + slope, 0.5), 0.1 * c_.Fz);
+      if (above.load - below.load <= tol)
+        load = e < 0 ? above.load : below.load;  // the jump's far side, which then concludes
+      else
+        load = inside(std::max(load - e / std::max(1 + slope, 0.5), 0.1 * c_.Fz), below, above);
       set_load(load, kShare);
       if (!shift(a, N)) return false;
     }
+  }
+
+  // A load whose total fell short of Fz (e < 0) or passed it (e > 0), e the total's miss (N).
+  struct Bracket {
+    double load, e;
+  };
+
+  // The next load, kept well inside the bracket of the loads tried. On a coarse grid the creep forces (FASTSIM's
+  // ellipse: the region's extent) jump where an element enters the contact; a Newton step across such a jump
+  // overshoots to and fro (the secant's slope is the jump's), so where it lands outside the bracket's middle 80 %
+  // the bracket is halved.
+  static double inside(double load, const Bracket& below, const Bracket& above) {
+    if (!std::isfinite(below.load) || !std::isfinite(above.load)) return load;
+    const double w = above.load - below.load;
+    if (load > below.load + 0.1 * w && load < above.load - 0.1 * w) return load;
+    return 0.5 * (below.load + above.load);
   }
 
   // After set_load: from the normal solution at approach a carrying N, a step with the stiffness (the last measured,
@@ -170,7 +229,7 @@ class WheelSolver {
     const SolveLimits& l = opt_.limits;
     res_.iterations = evaluations_;
     res_.residual = wheel_force() - c_.Fz;
-    res_.converged = res_.converged && std::abs(res_.residual) <= l.force_tolerance * c_.Fz;
+    res_.converged = res_.converged && std::abs(res_.residual) <= l.force_tolerance * c_.Fz + jump_;
     if (res_.converged && deepest(cur_, c_.side) > l.max_penetration) {  // the creep forces' steps are not held within
       res_.converged = false;
       res_.message = pose_solve::too_deep(deepest(cur_, c_.side), l.max_penetration);
@@ -262,17 +321,25 @@ class WheelSolver {
       advance(s);
       // A settled evaluation within 10x its own tolerance of the load is within the noise of its normal solve (a
       // trajectory's 1e-6 solves against the 1e-6 force tolerance): the next is solved 10x tighter, or the secant
-      // would wander in that noise.
-      const double next = settled && error < 10 * tolerance_ ? std::min(tolerance_for(error), 0.1 * tolerance_)
-                                                             : tolerance_for(error);
+      // would wander in that noise. After a settled one never looser: a looser solve from its pressures a step of
+      // ~1e-6 away meets its tolerance at once and repeats the force, and a secant of equal forces jumps far. A loose
+      // one that did not bracket and was not moved (the step lands on it again) is tightened for the same reason.
+      double next = settled && error < 10 * tolerance_ ? std::min(tolerance_for(error), 0.1 * tolerance_)
+                                                       : tolerance_for(error);
+      if (settled) next = std::min(next, tolerance_);
+      if (!settled && s.a1 == s.a0) next = std::min(next, tight_);
       s.f1 = phi(s.a1, next);
     }
     return tolerance_ <= final_ && std::abs(s.f1) <= ftol_;
   }
 
   // The secant's next approach: inside the bracket once there is one, at most 4x the last before.
+  // F grows with the approach: a secant that falls (two points nanometres apart, their forces within their solves'
+  // noise) is replaced by the one through the touching point (0, -target), phi being close to linear.
   void advance(Secant& s) const {
-    double a = s.f1 != s.f0 ? s.a1 - s.f1 * (s.a1 - s.a0) / (s.f1 - s.f0) : 2 * s.a1;
+    double slope = (s.f1 - s.f0) / (s.a1 - s.a0);
+    if (!(slope > 0)) slope = (s.f1 + target_) / s.a1;
+    double a = slope > 0 ? s.a1 - s.f1 / slope : 2 * s.a1;
     if (!std::isfinite(s.hi)) a = std::clamp(a, s.lo, 4 * s.a1);
     if (std::isfinite(s.hi) && !(a > s.lo && a < s.hi)) a = 0.5 * (s.lo + s.hi);
     s.a0 = s.a1, s.f0 = s.f1, s.a1 = std::min(a, opt_.limits.max_penetration);
@@ -289,6 +356,7 @@ class WheelSolver {
   double tight_ = 0, loose_ = 0, final_ = 0;  // the normal solves' tolerances (tolerance_for)
   double ftol_ = 0;        // the normal solves' force tolerance in phi's units
   int evaluations_ = 0;
+  double jump_ = 0;        // with friction: the creep forces' jump where the solve concluded at one (N), else 0
   double stiffness_ = 0;   // dFz/da of the normal solutions (N/m), measured by shift; 0: not known
   double tolerance_ = 0;   // of the last frictionless evaluation
   ContactResult cur_;      // the last evaluation

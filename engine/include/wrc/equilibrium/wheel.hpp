@@ -50,6 +50,11 @@ struct WheelHint {
 };
 
 struct WheelResult {
+  // |residual| <= force_tolerance Fz; with friction also where the creep forces' vertical part jumps across the
+  // approach by more than twice that (a coarse grid's FASTSIM: its ellipse is the contact region's extent, which grows
+  // an element at a time) and Fz falls inside the jump: then no approach carries Fz closer, and the solve concludes at
+  // the jump, on its side nearer Fz where it can, |residual| within the jump plus the tolerance (jumps of at most 2e-3
+  // Fz or 10 % of the creep forces' vertical part; a larger one fails with its size).
   bool converged = false;
   std::string message;
   int side = kLeft;
@@ -66,7 +71,8 @@ struct WheelResult {
 // forces' vertical part: the normal problem is solved for Fz less that part (hint.creep, e.g. the previous time
 // step's; 0 when not given), the tangential problems on normal solutions only (first on the prediction's, whose creep
 // forces move the load and, by hint.stiffness or the normal problem's linearised response, the approach), and both
-// again, each from the last solution, while the total misses Fz. `start`: an approach to start from (m below
+// again, each from the last solution, while the total misses Fz (Newton steps on the normal load, kept inside the
+// bracket of the loads tried once Fz is passed, down to a jump of the creep forces: WheelResult::converged). `start`: an approach to start from (m below
 // the touching height; e.g. the previous time step's, which follows the load where the height does not); otherwise
 // options.wheel_approach scaled to Fz. The approach is predicted by the wheel's normal problem solved for Fz itself
 // (an internal entry point of the contact pipeline), twice from afar (the first only estimated on the coarse grid) and
