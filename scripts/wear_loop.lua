@@ -254,15 +254,15 @@ end
 ----------------------------------------------------------------------------------------------------------------
 -- Solving the cases
 
-local function sweep_keys(ws, g, o)
+local function sweep_keys(ws, g, o, warm)
   local c = g.case
   local k = {y = g.ys, yaw = {c.yaw}, Q = c.Q, V = c.V, mu = c.mu, wear = o.wear or {}, method = o.method,
-             grids = true, chain = o.chain or (#g.ys <= 8 and 2 or 8), progress = false}
+             grids = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
   if c.creepage then k.creepage = c.creepage
   elseif c.radius then k.yaw_rate = c.V / c.radius end
   -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group
-  -- (the curving cases: 5 on one side of y = 0, one chain of 4 after the centre) in pieces of 2, so that two threads
-  -- share it. No more threads than chunks (a small group would say that it used fewer).
+  -- (the curving cases: 5 on one side of y = 0, one chain of 4 after the centre) with those starts (`warm`) in
+  -- pieces of 2, so that two threads share it (cold, each piece would cost 10 times more). No more threads than chunks (a small group would say that it used fewer).
   local chunks = #ws:sweep_plan{y = k.y, yaw = k.yaw, chain = k.chain}.chunks
   k.threads = math.max(1, math.min((o.threads or 0) > 0 and o.threads or wrc.cores, chunks))
   return k
@@ -278,7 +278,7 @@ local function start_key(c) return case_key(c) .. "|" .. (c.Y and ("Y%.17g"):for
 function M.solve(ws, cases, o, starts)
   local results, next_starts = {}, {}
   for _, g in ipairs(groups_of(cases)) do
-    local keys = sweep_keys(ws, g, o)
+    local keys = sweep_keys(ws, g, o, starts ~= nil)
     if starts then
       local z, roll = {}, {}
       for k, y in ipairs(g.ys) do
