@@ -262,7 +262,8 @@ local function sweep_keys(ws, g, o, warm)
   elseif c.radius then k.yaw_rate = c.V / c.radius end
   -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group
   -- (the curving cases: 5 on one side of y = 0, one chain of 4 after the centre) with those starts (`warm`) in
-  -- pieces of 2, so that two threads share it (cold, each piece would cost 10 times more). No more threads than chunks (a small group would say that it used fewer).
+  -- pieces of 2, so that two threads share it (cold, each piece would cost 10 times more). No more threads than
+  -- chunks (a small group would say that it used fewer).
   local chunks = #ws:sweep_plan{y = k.y, yaw = k.yaw, chain = k.chain}.chunks
   k.threads = math.max(1, math.min((o.threads or 0) > 0 and o.threads or wrc.cores, chunks))
   return k
@@ -492,8 +493,9 @@ end
 -- between the Heun and the Euler depth of a wheel point allowed in a step; a step over it is shortened by
 -- 0.9 sqrt(tolerance / difference), at most 8 times, its second rates computed again: it resolves the KTH map's jumps
 -- of k; nil: no control), warm = false (every case's equilibrium from the sweep's own chains alone; default: each
--- case starts from its equilibrium on the profiles before, the state's `starts`, which the step hands on)}. The distance of the step is the one at which the start's rates wear `step` off the
--- wheel's deepest point, shorter when Heun's mean rates reach deeper or the control shortens it. Returns the new state
+-- case starts from its equilibrium on the profiles before, the state's `starts`, which the step hands on)}. The
+-- distance of the step is the one at which the start's rates wear `step` off the wheel's deepest point, shorter when
+-- Heun's mean rates reach deeper or the control shortens it. Returns the new state
 -- and what the step did: the distance (m), the largest depth per body (m), the wheels' Archard volumes over the step
 -- (m^3), the cases and failed cases, the times the control shortened it (retries), the contact evaluations of the
 -- cases' equilibria (evaluations).
