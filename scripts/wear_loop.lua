@@ -254,28 +254,49 @@ end
 ----------------------------------------------------------------------------------------------------------------
 -- Solving the cases
 
-local function sweep_keys(ws, g, o)
+local function sweep_keys(ws, g, o, warm)
   local c = g.case
   local k = {y = g.ys, yaw = {c.yaw}, Q = c.Q, V = c.V, mu = c.mu, wear = o.wear or {}, method = o.method,
-             grids = true, chain = o.chain or 8, progress = false}
+             grids = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
   if c.creepage then k.creepage = c.creepage
   elseif c.radius then k.yaw_rate = c.V / c.radius end
-  -- No more threads than chunks (a small group would say that it used fewer).
+  -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group
+  -- (the curving cases: 5 on one side of y = 0, one chain of 4 after the centre) with those starts (`warm`) in
+  -- pieces of 2, so that two threads share it (cold, each piece would cost 10 times more). No more threads than
+  -- chunks (a small group would say that it used fewer).
   local chunks = #ws:sweep_plan{y = k.y, yaw = k.yaw, chain = k.chain}.chunks
   k.threads = math.max(1, math.min((o.threads or 0) > 0 and o.threads or wrc.cores, chunks))
   return k
 end
 
--- Every case solved: results[i] = the equilibrium with its rolling contact (e.converged false: failed).
-function M.solve(ws, cases, o)
-  local results = {}
+-- Which case of the profiles before a case continues: its kinematics and its lateral force (a curving case, whose y
+-- moves as the flange wears) or its y.
+local function start_key(c) return case_key(c) .. "|" .. (c.Y and ("Y%.17g"):format(c.Y) or ("%.17g"):format(c.y)) end
+
+-- Every case solved: results[i] = the equilibrium with its rolling contact (e.converged false: failed). `starts`
+-- (optional): the equilibria {z =, roll =} by start_key of the cases solved on profiles worn a little less, which
+-- start each case's (ws:sweep's starts). Returns the results and the starts they give the next profiles.
+function M.solve(ws, cases, o, starts)
+  local results, next_starts = {}, {}
   for _, g in ipairs(groups_of(cases)) do
-    local s = ws:sweep(sweep_keys(ws, g, o))
+    local keys = sweep_keys(ws, g, o, starts ~= nil)
+    if starts then
+      local z, roll = {}, {}
+      for k, y in ipairs(g.ys) do
+        local s = starts[start_key(cases[g.members[("%.17g"):format(y)][1]])]
+        z[k], roll[k] = s and s.z or 0 / 0, s and s.roll or 0 / 0
+      end
+      keys.starts = {z = z, roll = roll}
+    end
+    local s = ws:sweep(keys)
     for k, y in ipairs(g.ys) do
-      for _, i in ipairs(g.members[("%.17g"):format(y)]) do results[i] = s[k] end
+      for _, i in ipairs(g.members[("%.17g"):format(y)]) do
+        results[i] = s[k]
+        if s[k].converged then next_starts[start_key(cases[i])] = {z = s[k].z, roll = s[k].roll} end
+      end
     end
   end
-  return results
+  return results, next_starts
 end
 
 ----------------------------------------------------------------------------------------------------------------
@@ -366,13 +387,15 @@ local function rates(st, cases, o)
   local ws = M.wheelset(st)
   local geo = {bodies = st.bodies, y_tape = ws.params.back_to_back / 2 + ws.params.tape_offset,
                r0 = ws.params.radius, placed = placed_rails(st, ws)}
-  local results = M.solve(ws, cases, o)
+  local results, starts = M.solve(ws, cases, o, o.warm ~= false and st.starts or nil)
   local strips = {dy = {}}
   for _, name in ipairs(M.BODIES) do strips[name] = {centre = {}, width = {}, area = {}} end
   local total_share = 0
   for _, c in ipairs(cases) do total_share = total_share + c.share end
-  local r = {cases = #cases, failed = 0, archard = {left = 0, right = 0}, errors = {}, rate = {}}
+  local r = {cases = #cases, failed = 0, archard = {left = 0, right = 0}, errors = {}, rate = {}, starts = starts,
+             evaluations = 0}
   for i, e in ipairs(results) do
+    r.evaluations = r.evaluations + (e.evaluations or 0)
     if e.converged then
       strips.weight = cases[i].share / total_share
       for _, side in ipairs{"left", "right"} do
@@ -469,10 +492,13 @@ end
 -- step, the cases solved twice) | "euler" (the rates at the start), tolerance = m (Heun: the largest difference
 -- between the Heun and the Euler depth of a wheel point allowed in a step; a step over it is shortened by
 -- 0.9 sqrt(tolerance / difference), at most 8 times, its second rates computed again: it resolves the KTH map's jumps
--- of k; nil: no control)}. The distance of the step is the one at which the start's rates wear `step` off the
--- wheel's deepest point, shorter when Heun's mean rates reach deeper or the control shortens it. Returns the new state
+-- of k; nil: no control), warm = false (every case's equilibrium from the sweep's own chains alone; default: each
+-- case starts from its equilibrium on the profiles before, the state's `starts`, which the step hands on)}. The
+-- distance of the step is the one at which the start's rates wear `step` off the wheel's deepest point, shorter when
+-- Heun's mean rates reach deeper or the control shortens it. Returns the new state
 -- and what the step did: the distance (m), the largest depth per body (m), the wheels' Archard volumes over the step
--- (m^3), the cases and failed cases, the times the control shortened it (retries).
+-- (m^3), the cases and failed cases, the times the control shortened it (retries), the contact evaluations of the
+-- cases' equilibria (evaluations).
 function M.step(st, cases, o)
   local function cases_at(state) return type(cases) == "function" and cases(state) or cases end
   if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
@@ -491,16 +517,16 @@ function M.step(st, cases, o)
   end
   km = km or st.km + distance / 1000
   local rate, archard = r0.rate, {left = r0.archard.left, right = r0.archard.right}
-  local cases1 = nil
-  local failed, errors = r0.failed, r0.errors
+  local cases1, r1 = nil, nil
+  local failed, errors, evaluations = r0.failed, r0.errors, r0.evaluations
   local retries = 0
   if (o.scheme or "heun") == "heun" then
-    local r1
     while true do
       local predicted = advance(st, r0.rate, distance, o, km)
-      predicted.previous_cases = cases0
+      predicted.previous_cases, predicted.starts = cases0, r0.starts
       cases1 = cases_at(predicted)
       r1 = rates(predicted, cases1, o)
+      evaluations = evaluations + r1.evaluations
       -- Heun's depth minus Euler's: the local error of the Euler step, an upper bound of Heun's.
       local err = distance * largest_difference(r0.rate, r1.rate) / 2
       if not o.tolerance or err <= o.tolerance or retries >= MAX_RETRIES then break end
@@ -526,9 +552,10 @@ function M.step(st, cases, o)
     km = st.km + distance / 1000
   end
   local new, depth = advance(st, rate, distance, o, km)
-  new.previous_cases = cases1 or cases0
+  new.previous_cases, new.starts = cases1 or cases0, r1 and r1.starts or r0.starts
   return new, {folds = new.folds or 0, distance = distance, depth = depth, archard = {left = archard.left * distance,
-               right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors, retries = retries}
+               right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors, retries = retries,
+               evaluations = evaluations}
 end
 
 ----------------------------------------------------------------------------------------------------------------

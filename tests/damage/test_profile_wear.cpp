@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -147,6 +148,46 @@ TEST_CASE("wear kernels: points offset along the normals project back to their a
     CHECK(q.distance[k] == within_rel(2e-5, 1e-9));
     ++k;
   }
+}
+
+TEST_CASE("wear kernels: the projection is the nearest point of all segments, as a scan of every one finds it") {
+  // A polyline that folds back (a hook: a flange face leaning over), with a repeated point, 170 segments; points
+  // scattered around it in no order, on it (its vertices: distance 0) and equidistant from two segments (ties go to
+  // the first, as a scan in order keeps it).
+  Polyline p;
+  for (int i = 0; i <= 120; ++i) p.y.push_back(-0.03 + 0.04 * i / 120.0), p.z.push_back(1e-3 * std::sin(i * 0.1));
+  for (int i = 1; i <= 50; ++i) {
+    const double t = std::numbers::pi * i / 50.0;
+    p.y.push_back(0.01 + 0.01 * std::sin(t)), p.z.push_back(-0.01 + 0.01 * std::cos(t));
+  }
+  p.y.push_back(p.y.back()), p.z.push_back(p.z.back());
+  const std::vector<double> arc = arc_length(p.y, p.z);
+  std::vector<double> py, pz;
+  unsigned state = 12345;
+  auto uniform = [&]() { return (state = state * 1103515245u + 12345u) / 4294967296.0; };
+  for (int k = 0; k < 400; ++k) py.push_back(-0.035 + 0.06 * uniform()), pz.push_back(-0.03 + 0.035 * uniform());
+  for (std::size_t i = 0; i < p.y.size(); i += 7) py.push_back(p.y[i]), pz.push_back(p.z[i]);
+  py.push_back(0.01), pz.push_back(-0.01);  // the centre of the half circle: every one of its segments as near
+  const Projection q = project_onto(p.y, p.z, py, pz);
+  for (std::size_t k = 0; k < py.size(); ++k) {
+    double best = INFINITY, best_arc = 0;
+    for (std::size_t i = 0; i + 1 < p.y.size(); ++i) {
+      const double dy = p.y[i + 1] - p.y[i], dz = p.z[i + 1] - p.z[i], l2 = dy * dy + dz * dz;
+      const double t = l2 == 0 ? 0 : std::clamp(((py[k] - p.y[i]) * dy + (pz[k] - p.z[i]) * dz) / l2, 0.0, 1.0);
+      const double d = std::hypot(py[k] - (p.y[i] + t * dy), pz[k] - (p.z[i] + t * dz));
+      if (d < best) best = d, best_arc = arc[i] + t * (arc[i + 1] - arc[i]);
+    }
+    CHECK(q.distance[k] == best);
+    CHECK(q.arc[k] == best_arc);
+  }
+  // An exact tie (binary fractions): the first and the last segment lie on one line; (-1, 0.5) is nearest to the last
+  // alone, then (2, 1) is 1 from both: the first one's arc (2), whichever the point before found.
+  const double u = 1.0 / 256;
+  const std::vector<double> ty = {0, 4 * u, 8 * u, 4 * u, -4 * u}, tz = {0, 0, 2 * u, 0, 0};
+  const Projection tie = project_onto(ty, tz, std::vector<double>{-1 * u, 2 * u}, std::vector<double>{0.5 * u, 1 * u});
+  CHECK(tie.distance[0] == 0.5 * u);
+  CHECK(tie.distance[1] == 1 * u);
+  CHECK(tie.arc[1] == 2 * u);
 }
 
 TEST_CASE("wear kernels: worn area deposited, smoothed and removed along the normals of a curved profile") {

@@ -123,3 +123,33 @@ print(("%d cases in %.2f s on %d threads; largest residuals: force %.2e Q, momen
        "moment %.2e Q m; pressure integral vs normal force %.1e Q; %d cases with a lifted wheel")
           :format(#sweep, sweep.seconds, sweep.threads, worst.force, worst.moment, worst.reeval_force, worst.reeval_moment,
                   worst.pressure, lifted))
+
+-- Per-case starts (the key starts, as a wear loop gives each case its equilibrium on profiles worn a little less):
+-- the cases under a 10 % larger load started from the equilibria under Q, in chunks of one case (each would start
+-- cold without them). Each case is checked against the sweep under that load without starts (same tolerances), and
+-- costs fewer contact evaluations.
+do
+  local ys = {-3e-3, -1e-3, 0, 2e-3, 4e-3}
+  local before = ws:sweep{y = ys, Q = Q, threads = 2, chain = 1, progress = false}
+  local z, roll = {}, {}
+  for i, e in ipairs(before) do z[i], roll[i] = e.z, e.roll end
+  roll[2], z[2] = 0 / 0, 0 / 0  -- none for this case: it starts cold
+  local cold = ws:sweep{y = ys, Q = 1.1 * Q, threads = 2, chain = 1, progress = false}
+  local warm = ws:sweep{y = ys, Q = 1.1 * Q, threads = 2, chain = 1, progress = false, starts = {z = z, roll = roll}}
+  local ev_cold, ev_warm = 0, 0
+  for i = 1, #ys do
+    local a, b = cold[i], warm[i]
+    check.ok(a.converged and b.converged, ("starts: case %d converged"):format(i))
+    check.ok(math.abs(b.z - before[i].z) > 2e-6, ("starts: case %d moved (the check is not trivial)"):format(i))
+    check.near(b.z, a.z, 1e-8, ("starts: case %d's z as without starts"):format(i))
+    check.near(b.Y, a.Y, 2 * ftol, ("starts: case %d's Y as without starts"):format(i))
+    if i ~= 2 then ev_cold, ev_warm = ev_cold + a.evaluations, ev_warm + b.evaluations
+    else check.ok(b.evaluations == a.evaluations, "starts: a case without one starts cold as before") end
+  end
+  print(("starts: %d contact evaluations from the starts, %d cold"):format(ev_warm, ev_cold))
+  check.ok(ev_warm < ev_cold / 2, "starts: the cases started from their equilibria cost less than half of cold ones")
+  for _, bad in ipairs{{z = {0}, roll = {0}}, {z = z}, {z = {0 / 0, 0, 0, 0, 0}, roll = {0, 0, 0, 0, 0}}} do
+    local ok, err = pcall(ws.sweep, ws, {y = ys, Q = Q, progress = false, starts = bad})
+    check.ok(not ok and tostring(err):match("starts"), "starts: bad starts refused naming the key: " .. tostring(err))
+  end
+end

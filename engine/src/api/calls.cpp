@@ -200,10 +200,37 @@ SweepPlan read_sweep_plan(OptionReader& r) {
   return plan_sweep(ys.value_or(std::vector<double>{0.0}), yaws, chain);
 }
 
+namespace {
+
+// starts = {z = {...}, roll = {...}}: per case of the plan, NaN in both for none (SweepOptions::starts).
+std::vector<std::optional<Start>> read_sweep_starts(OptionReader& r) {
+  std::vector<std::optional<Start>> starts;
+  auto s = r.table("starts", {"-", "per case of the plan (yaw major, then y): {z = {m, ...}, roll = {rad, ...}} "
+                                   "tried first; NaN in both: none"});
+  if (!s) return starts;
+  const auto z = s->numbers("z", {"m", "heights of the wheelset centre to start from"}, false);
+  const auto roll = s->numbers("roll", {"rad", "rolls to start from"}, false);
+  s->finish();
+  if (s->documenting()) return starts;
+  if (!z || !roll || z->size() != roll->size())
+    fail("{}: starts needs z and roll, arrays of the same length", r.context());
+  for (std::size_t k = 0; k < z->size(); ++k) {
+    const double zk = (*z)[k], rk = (*roll)[k];
+    if (std::isnan(zk) != std::isnan(rk))
+      fail("{}: starts of case {}: z = {} m and roll = {} rad must both be NaN (none) or numbers", r.context(), k + 1,
+           zk, rk);
+    starts.push_back(std::isnan(zk) ? std::nullopt : std::optional<Start>(Start{zk, rk, std::nullopt, false}));
+  }
+  return starts;
+}
+
+}  // namespace
+
 SweepCall SweepCall::read(OptionReader& r) {
   SweepCall c;
   c.plan = read_sweep_plan(r);
   c.options = read_sweep_options(r);
+  c.options.starts = read_sweep_starts(r);
   c.progress.read(r);
   if (const auto listed = r.numbers("chunks", {"-", "run these chunks alone (1-based, as ws:sweep_plan lists them)"})) {
     for (double k : *listed) {

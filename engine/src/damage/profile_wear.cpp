@@ -61,21 +61,53 @@ std::vector<double> cell_lengths(std::span<const double> arc) {
   return c;
 }
 
+// The segments in blocks of kBlock with their bounding boxes: a block whose box is farther from a point than the
+// nearest segment found so far holds no nearer one, and is skipped. The rows of a contact area come in order along
+// the profile, so the previous point's nearest segment makes a close first guess.
+constexpr std::size_t kBlock = 16;
+struct Box {
+  double y0, y1, z0, z1;
+};
+
+// The distance of (py, pz) to the box (0 inside).
+double box_distance(const Box& b, double py, double pz) {
+  const double dy = std::max({b.y0 - py, 0.0, py - b.y1}), dz = std::max({b.z0 - pz, 0.0, pz - b.z1});
+  return std::sqrt(dy * dy + dz * dz);
+}
+
 Projection project_onto(std::span<const double> y, std::span<const double> z, std::span<const double> py,
                         std::span<const double> pz) {
   const std::vector<double> arc = arc_length(y, z);
   check_sizes(py.size(), pz.size(), "project_onto", "the points' z");
   check_finite(py, "project_onto", "points y");
   check_finite(pz, "project_onto", "points z");
+  const std::size_t segments = y.size() - 1;
+  std::vector<Box> boxes;
+  for (std::size_t b = 0; b < segments; b += kBlock) {
+    Box box{y[b], y[b], z[b], z[b]};
+    for (std::size_t i = b + 1; i <= std::min(b + kBlock, segments); ++i)
+      box = {std::min(box.y0, y[i]), std::max(box.y1, y[i]), std::min(box.z0, z[i]), std::max(box.z1, z[i])};
+    boxes.push_back(box);
+  }
   Projection out{std::vector<double>(py.size()), std::vector<double>(py.size())};
+  std::size_t guess = 0;
   for (std::size_t k = 0; k < py.size(); ++k) {
     double best = INFINITY, best_arc = 0;
-    for (std::size_t i = 0; i + 1 < y.size(); ++i) {  // every segment: profiles fold back (flanges), no shortcut
+    std::size_t best_i = segments;
+    // Every segment could be the nearest (profiles fold back at flanges): the first of the nearest, as a scan of all
+    // in order finds it (ties go to the lower index).
+    auto visit = [&](std::size_t i) {
       const double t = nearest_fraction(y[i], z[i], y[i + 1], z[i + 1], py[k], pz[k]);
       const double qy = y[i] + t * (y[i + 1] - y[i]), qz = z[i] + t * (z[i + 1] - z[i]);
       const double d = std::hypot(py[k] - qy, pz[k] - qz);
-      if (d < best) best = d, best_arc = arc[i] + t * (arc[i + 1] - arc[i]);
+      if (d < best || (d == best && i < best_i)) best = d, best_i = i, best_arc = arc[i] + t * (arc[i + 1] - arc[i]);
+    };
+    visit(guess);
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+      if (box_distance(boxes[b], py[k], pz[k]) > best * (1 + 1e-9) + 1e-15) continue;  // margins: rounding
+      for (std::size_t i = b * kBlock; i < std::min((b + 1) * kBlock, segments); ++i) visit(i);
     }
+    guess = best_i;
     out.arc[k] = best_arc;
     out.distance[k] = best;
   }

@@ -80,6 +80,11 @@ class SweepRun {
       const int c = chunk.solve[k];
       const double yc = plan_.cases[static_cast<std::size_t>(c)].y;
       std::vector<Start> starts;
+      if (const std::optional<Start>& given = opt_.starts.empty() ? std::nullopt : opt_.starts[static_cast<std::size_t>(c)]) {
+        Start g = *given;
+        if (!path.empty()) g.jacobian = path.back().jacobian, g.jacobian_lifted = path.back().lifted;
+        starts.push_back(g);
+      }
       if (auto st = predicted_start(path, yc)) starts.push_back(*st);
       if (!path.empty()) starts.push_back(Start{path.back().z, path.back().roll, std::nullopt, false});
       if (k <= 1) ws.forget();
@@ -161,6 +166,11 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
   if (!(opt.Q > 0) || !std::isfinite(opt.Q)) fail("sweep: Q = {} N must be a positive number", opt.Q);
   if (model.options().check_magnitudes) check_plausible("sweep", "Q", opt.Q, kWheelsetLoad);
   opt.equilibrium.validate("sweep");  // once here rather than as every case's error
+  if (!opt.starts.empty() && opt.starts.size() != plan.cases.size())
+    fail("sweep: starts has {} entries; the plan has {} cases (one per y and yaw)", opt.starts.size(), plan.cases.size());
+  for (std::size_t k = 0; k < opt.starts.size(); ++k)
+    if (opt.starts[k] && (!std::isfinite(opt.starts[k]->z) || !std::isfinite(opt.starts[k]->roll)))
+      fail("sweep: starts of case {}: z = {} m, roll = {} rad must be finite", k + 1, opt.starts[k]->z, opt.starts[k]->roll);
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult out;
   std::vector<bool> taken(plan.chunks.size(), false);

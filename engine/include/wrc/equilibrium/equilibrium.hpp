@@ -57,6 +57,10 @@ struct SweepOptions {
   std::optional<RollingRequest> rolling;
   // Called from the workers (serialised) after each reported case: cases done, cases in all, failed so far.
   Progress progress;
+  // Per case of the plan (yaw major, then y as given; empty: none), a start tried before the chain's: e.g. the case's
+  // own equilibrium on profiles worn a little less (a wear loop). A chunk's first case then needs no cold start.
+  // The chain's last Jacobian goes with it. Results depend on the plan and these starts, never on the threads.
+  std::vector<std::optional<Start>> starts;
   // Why the sweep must run on the calling thread alone ("": it need not), e.g. a strategy bound to one Lua state.
   std::string single_thread;
   // Called once (on the calling thread) when fewer threads run than `threads` asked for, with the reason.
