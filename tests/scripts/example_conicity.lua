@@ -4,6 +4,7 @@ local check = require "wrc.check"
 local out = require "wrc.output"
 
 local dir = (arg.tmp or os.getenv("WRC_TEST_TMP") or "/tmp") .. "/example_conicity"
+wrc.fs.remove_tree(dir)  -- this build's results, none resumed from an earlier build
 arg = {[0] = arg[0], out = dir, plots = false}  -- the example's declared options (a test's tmp= is not one)
 dofile(wrc.paths.root .. "/examples/conicity.lua")
 for _, key in ipairs{"s1002_60e1_1in40", "s1002_60e1_1in20", "worn_60e1_1in40"} do

@@ -5,6 +5,7 @@ local check = require "wrc.check"
 local out = require "wrc.output"
 
 local dir = (arg.tmp or os.getenv("WRC_TEST_TMP") or "/tmp") .. "/example_paper_rolling"
+wrc.fs.remove_tree(dir)  -- this build's numbers: a study resumes the cases an earlier build of the same version wrote
 local function run(extra, sub)
   arg = {[0] = arg[0], out = dir .. "/" .. sub, plots = false, step_mm = 2, ymax_mm = 4, grid_mm = 0.5, threads = 1}
   for k, v in pairs(extra) do arg[k] = v end

@@ -5,7 +5,7 @@ local check = require "wrc.check"
 local out = require "wrc.output"
 
 local dir = (arg.tmp or os.getenv("WRC_TEST_TMP") or "/tmp") .. "/example_surfaces"
-os.remove(dir .. "/summary.txt")
+wrc.fs.remove_tree(dir)  -- this build's results, none resumed from an earlier build
 arg = {[0] = arg[0], out = dir, step_mm = 2, grid_mm = 0.5}  -- the example's declared options (a test's tmp= is not one)
 dofile(wrc.paths.root .. "/examples/surfaces_study.lua")
 local f = assert(io.open(dir .. "/summary.txt"))
