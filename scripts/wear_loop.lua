@@ -117,9 +117,10 @@ end
 -- The lateral shift y (m) at which the frictionless equilibrium of the wheelset under Q (N) at yaw (rad) needs the
 -- lateral force Y (N; > 0 toward the left rail: the left flange, sign 1; < 0 the right, sign -1), to |Y error| <=
 -- 1e-3 |Y| or 1e-8 m of y: regula falsi (Illinois) on |y| between `from` (m, default 0) and where the wheel's flange
--- touches its rail rigidly (M.flange_contact) plus 0.5 mm. `hint` (optional, {y = |y|, z =, roll =}: the equilibrium
--- this returned for the same force on profiles worn a little less) starts the search: the bracket is grown from it in
--- steps of 2 um x 4^k. Every equilibrium starts from the nearest one evaluated before (a cold one costs 20 times more).
+-- touches its rail rigidly (M.flange_contact) plus 0.5 mm, grown by 0.5 mm up to 2.5 mm while Y is not reached (a worn
+-- flange). `hint` (optional, {y = |y|, z =, roll =}: the equilibrium this returned for the same force on profiles worn
+-- a little less) starts the search: the bracket is grown from it in steps of 2 um x 4^k. Every equilibrium starts
+-- from the nearest one evaluated before (a cold one costs 20 times more).
 -- Returns y and the hint of the root ({y = |y|, z =, roll =}).
 local HINT_STEP = 2e-6
 function M.y_for_force(ws, sign, Y, yaw, Q, from, hint)
@@ -161,6 +162,11 @@ function M.y_for_force(ws, sign, Y, yaw, Q, from, hint)
   if not a then
     a, b = lo, hi
     fa, fb = excess(a), excess(b)
+  end
+  for _ = 1, 4 do  -- a worn flange may carry Y only deeper than 0.5 mm past its rigid touch: look up to 2.5 mm past
+    if fa > 0 or fb >= 0 then break end
+    a, fa, b = b, fb, b + 0.5e-3
+    fb = excess(b)
   end
   if fa > 0 or fb < 0 then
     error(("no lateral shift between %.3f and %.3f mm needs Y = %.1f kN (it runs from %.1f to %.1f kN)"):format(
