@@ -15,7 +15,8 @@ for _ = 1, reps do
   local t0 = os.clock()
   sum = 0
   for i = 0, n - 1 do
-    local y = n > 1 and 7e-3 * i / (n - 1) or 0
+    -- numpy.linspace's values, bit for bit: i times the step, the last one the end itself
+    local y = n == 1 and 0 or i == n - 1 and 7e-3 or i * (7e-3 / (n - 1))
     local w = ws:wheel{side = "left", y = y, Fz = 100e3}
     sum = sum + w.force.y
   end
