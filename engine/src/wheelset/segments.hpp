@@ -136,10 +136,15 @@ struct LineProfile {
   // normal_depth_slope there too.
   void heights(const double* x, std::size_t n, double* out, double* slope = nullptr) const {
     radials(x, n, out);
-    if (slope)
-      for (std::size_t i = 0; i < n; ++i) slope[i] = normal_depth_slope(out[i], bend);
-    if (bend != 0)
-      for (std::size_t i = 0; i < n; ++i) out[i] = normal_depth(out[i], bend);
+    if (bend == 0) {
+      if (slope) std::fill_n(slope, n, 1.0);
+      return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const double u = std::clamp(bend * out[i], -0.25, 0.25);  // normal_depth and its slope in one pass
+      if (slope) slope[i] = u == bend * out[i] ? 1 - 2 * u : 1 - u;
+      out[i] *= 1 - u;
+    }
   }
   void radials(const double* x, std::size_t n, double* out) const {
     if (arcs.empty()) {
