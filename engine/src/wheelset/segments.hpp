@@ -97,21 +97,58 @@ struct Bounds {
 };
 Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl);
 
-// h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point.
+// The depth along the wheel's normal from the radial one turned onto it, d = n_r (r(Y) - distance to the axle): the
+// radial foot of a point lies d tan(delta) along the profile from its normal foot, and over that distance the profile
+// bends, so d exceeds the closest-point distance by the relative kappa d tan^2(delta) / 2 (kappa the profile's
+// curvature, delta its slope; 4 % at the S1002 flange root's 67-70 deg at 0.2 mm). `bend` is that
+// kappa tan^2(delta) / 2 (1/m, depth_bend: fitted to the exact depth at the line's deepest point); the product is bounded so that h keeps its sign and stays monotone far
+// from contact, where the expansion does not hold and only the sign counts.
+inline double normal_depth(double d, double bend) {
+  return d * (1 - std::clamp(bend * d, -0.25, 0.25));
+}
+// Its derivative in d: how much of a change of the radial depth reaches h (the sensitivities' and the vertical load's
+// factor per element).
+inline double normal_depth_slope(double d, double bend) {
+  const double u = bend * d;
+  return u > 0.25 ? 0.75 : u < -0.25 ? 1.25 : 1 - 2 * u;
+}
+
+// `bend` of normal_depth (1/m) for a line with the radial depth `radial` (m, turned onto the normal) at the
+// wheelset-frame point q (segments.cpp says how).
+double depth_bend(const WheelCones& wheel, const Eigen::Vector3d& q, double radial);
+
+// h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point, as depths
+// along the wheel's normal (normal_depth with the line's `bend`, the wheel's at the line's deepest point).
 struct LineProfile {
   double v = 0, u0 = 0;          // plane coordinates: v of the line, u of its point at x = 0
   std::vector<const SegmentInfo*> arcs;
   double apex = 0, x_apex = 0, R = 1;  // no segment: arc with height `apex` (< 0) at x_apex
-  double height(double x) const {
+  double bend = 0;                     // normal_depth's (1/m)
+  // The radial depth turned onto the normal (before normal_depth).
+  double radial(double x) const {
     if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
     double h = -INFINITY;
     for (const SegmentInfo* s : arcs) h = std::max(h, s->height(x));
     return h;
   }
-  // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises).
-  void heights(const double* x, std::size_t n, double* out) const {
+  double height(double x) const { return normal_depth(radial(x), bend); }
+  // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises); with `slope`,
+  // normal_depth_slope there too.
+  void heights(const double* x, std::size_t n, double* out, double* slope = nullptr) const {
+    radials(x, n, out);
+    if (bend == 0) {
+      if (slope) std::fill_n(slope, n, 1.0);
+      return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const double u = std::clamp(bend * out[i], -0.25, 0.25);  // normal_depth and its slope in one pass
+      if (slope) slope[i] = u == bend * out[i] ? 1 - 2 * u : 1 - u;
+      out[i] *= 1 - u;
+    }
+  }
+  void radials(const double* x, std::size_t n, double* out) const {
     if (arcs.empty()) {
-      for (std::size_t i = 0; i < n; ++i) out[i] = height(x[i]);
+      for (std::size_t i = 0; i < n; ++i) out[i] = radial(x[i]);
       return;
     }
     std::fill_n(out, n, -INFINITY);

@@ -28,6 +28,15 @@ struct WheelSurfacePoint {
 WheelSurfacePoint wheel_surface_at(const WheelCones& wheel, double Y);
 // Its radius alone (m), without the normal: cheaper.
 double wheel_radius_at(const WheelCones& wheel, double Y);
+// The signed distance of the meridian point (Y, rho) (wheelset-frame lateral position, distance to the axle; m) from
+// the running surface's generatrix, > 0 inside the wheel (rho below the radius at Y): for a surface of revolution the
+// exact 3-D depth of the point, its closest wheel point lying in its meridian plane. Searches the cones outward from
+// the one holding Y only as far as one can be nearer.
+double wheel_normal_depth(const WheelCones& wheel, double Y, double rho);
+// How fast the smooth normal of wheel_surface_at turns with Y there: d(atan2(n_y, n_r)) / dY (rad/m), constant on a
+// cone (the normal is linear between the vertex normals). > 0 where the profile is convex (the radius falls ever
+// faster away from a crown), < 0 in a throat.
+double wheel_normal_turning(const WheelCones& wheel, double Y);
 
 // The running surface's unit normal (y, radial) at generatrix point i: the mean of the normals of the non-degenerate
 // cones meeting there.

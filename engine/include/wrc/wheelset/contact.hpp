@@ -109,6 +109,8 @@ struct PatchContact {
   double nominal_angle = 0;            // contact angle of the wheel's normal there (rad): the paper's plane
   halfspace::NormalSolution solution;    // grid (m, plane frame), pressure (Pa), area, ... (see normal.hpp)
   std::vector<double> h;               // undeformed distance per element (m, > 0 inter-penetration)
+  std::vector<double> h_gain;          // per element, dh per unit of the wheel's approach along its normal: 1 but on a
+                                       // curved steep face, where h is the normal depth (design.md section 3)
   std::optional<ConformalSurface> conformal;  // the curved surface of a conformal area (rows, normals); none: planar
   double normal_force = 0;             // N
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the wheel (N, track frame): normal + creep force
