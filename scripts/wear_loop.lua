@@ -280,25 +280,30 @@ end
 local function start_key(c) return case_key(c) .. "|" .. (c.Y and ("Y%.17g"):format(c.Y) or ("%.17g"):format(c.y)) end
 
 -- Every case solved: results[i] = the equilibrium with its rolling contact (e.converged false: failed). `starts`
--- (optional): the equilibria {z =, roll =} by start_key of the cases solved on profiles worn a little less, which
--- start each case's (ws:sweep's starts). Returns the results and the starts they give the next profiles.
+-- (optional): by start_key, the equilibria {z =, roll =} and the pressures and tractions they ended with (contact:
+-- ws:sweep's contact_start) of the cases solved on profiles worn a little less, which start each case's (ws:sweep's
+-- starts). Returns the results and the starts they give the next profiles.
 function M.solve(ws, cases, o, starts)
   local results, next_starts = {}, {}
   for _, g in ipairs(groups_of(cases)) do
     local keys = sweep_keys(ws, g, o, starts ~= nil)
+    keys.contact_starts = o.warm ~= false and o.warm ~= "equilibrium"
     if starts then
-      local z, roll = {}, {}
+      local z, roll, contact = {}, {}, {}
       for k, y in ipairs(g.ys) do
         local s = starts[start_key(cases[g.members[("%.17g"):format(y)][1]])]
         z[k], roll[k] = s and s.z or 0 / 0, s and s.roll or 0 / 0
+        contact[k] = keys.contact_starts and s and s.contact or false
       end
-      keys.starts = {z = z, roll = roll}
+      keys.starts = {z = z, roll = roll, contact = contact}
     end
     local s = ws:sweep(keys)
     for k, y in ipairs(g.ys) do
       for _, i in ipairs(g.members[("%.17g"):format(y)]) do
         results[i] = s[k]
-        if s[k].converged then next_starts[start_key(cases[i])] = {z = s[k].z, roll = s[k].roll} end
+        if s[k].converged then
+          next_starts[start_key(cases[i])] = {z = s[k].z, roll = s[k].roll, contact = s[k].contact_start}
+        end
       end
     end
   end
@@ -399,9 +404,12 @@ local function rates(st, cases, o)
   local total_share = 0
   for _, c in ipairs(cases) do total_share = total_share + c.share end
   local r = {cases = #cases, failed = 0, archard = {left = 0, right = 0}, errors = {}, rate = {}, starts = starts,
-             evaluations = 0}
+             evaluations = 0, products = 0}
   for i, e in ipairs(results) do
     r.evaluations = r.evaluations + (e.evaluations or 0)
+    for _, side in ipairs{"left", "right"} do
+      for _, p in ipairs(e[side] and e[side].patches or {}) do r.products = r.products + (p.creep_products or 0) end
+    end
     if e.converged then
       strips.weight = cases[i].share / total_share
       for _, side in ipairs{"left", "right"} do
@@ -498,13 +506,15 @@ end
 -- step, the cases solved twice) | "euler" (the rates at the start), tolerance = m (Heun: the largest difference
 -- between the Heun and the Euler depth of a wheel point allowed in a step; a step over it is shortened by
 -- 0.9 sqrt(tolerance / difference), at most 8 times, its second rates computed again: it resolves the KTH map's jumps
--- of k; nil: no control), warm = false (every case's equilibrium from the sweep's own chains alone; default: each
--- case starts from its equilibrium on the profiles before, the state's `starts`, which the step hands on)}. The
+-- of k; nil: no control), warm = false (every case's equilibrium and rolling contact from the sweep's own chains
+-- alone; default true: each case starts from its equilibrium and the pressures and exact tangential tractions it
+-- ended with on the profiles before, the state's `starts`, which the step hands on; "equilibrium": from its
+-- equilibrium alone)}. The
 -- distance of the step is the one at which the start's rates wear `step` off the wheel's deepest point, shorter when
 -- Heun's mean rates reach deeper or the control shortens it. Returns the new state
 -- and what the step did: the distance (m), the largest depth per body (m), the wheels' Archard volumes over the step
 -- (m^3), the cases and failed cases, the times the control shortened it (retries), the contact evaluations of the
--- cases' equilibria (evaluations).
+-- cases' equilibria (evaluations) and the exact tangential solver's products on the areas' grids (products).
 function M.step(st, cases, o)
   local function cases_at(state) return type(cases) == "function" and cases(state) or cases end
   if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
@@ -524,7 +534,7 @@ function M.step(st, cases, o)
   km = km or st.km + distance / 1000
   local rate, archard = r0.rate, {left = r0.archard.left, right = r0.archard.right}
   local cases1, r1 = nil, nil
-  local failed, errors, evaluations = r0.failed, r0.errors, r0.evaluations
+  local failed, errors, evaluations, products = r0.failed, r0.errors, r0.evaluations, r0.products
   local retries = 0
   if (o.scheme or "heun") == "heun" then
     while true do
@@ -532,7 +542,7 @@ function M.step(st, cases, o)
       predicted.previous_cases, predicted.starts = cases0, r0.starts
       cases1 = cases_at(predicted)
       r1 = rates(predicted, cases1, o)
-      evaluations = evaluations + r1.evaluations
+      evaluations, products = evaluations + r1.evaluations, products + r1.products
       -- Heun's depth minus Euler's: the local error of the Euler step, an upper bound of Heun's.
       local err = distance * largest_difference(r0.rate, r1.rate) / 2
       if not o.tolerance or err <= o.tolerance or retries >= MAX_RETRIES then break end
@@ -561,7 +571,7 @@ function M.step(st, cases, o)
   new.previous_cases, new.starts = cases1 or cases0, r1 and r1.starts or r0.starts
   return new, {folds = new.folds or 0, distance = distance, depth = depth, archard = {left = archard.left * distance,
                right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors, retries = retries,
-               evaluations = evaluations}
+               evaluations = evaluations, products = products}
 end
 
 ----------------------------------------------------------------------------------------------------------------

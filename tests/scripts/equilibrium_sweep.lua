@@ -153,3 +153,53 @@ do
     check.ok(not ok and tostring(err):match("starts"), "starts: bad starts refused naming the key: " .. tostring(err))
   end
 end
+
+-- Contact starts (starts.contact: each case's last pressures and exact tangential tractions, as a wear loop hands them
+-- from one step to the next): the rolling cases under a 10 % larger load started from the sweep under Q (chunks of one
+-- case: without them each area's first solves start cold). The creep forces equal the cold sweep's within the
+-- tangential solver's tolerance, with fewer products of the exact solver.
+do
+  local ys = {-3e-3, 0, 2e-3, 4e-3}
+  local roll_keys = {V = 100 / 3.6, mu = 0.3, method = "exact"}
+  local function sweep(load, starts, keep)
+    local k = {y = ys, Q = load, threads = 2, chain = 1, progress = false, starts = starts, contact_starts = keep}
+    for key, v in pairs(roll_keys) do k[key] = v end
+    return ws:sweep(k)
+  end
+  local before = sweep(Q, nil, true)
+  local z, roll, contact = {}, {}, {}
+  for i, e in ipairs(before) do
+    check.ok(getmetatable(e.contact_start) ~= nil, ("contact starts: case %d has its contact_start"):format(i))
+    z[i], roll[i], contact[i] = e.z, e.roll, e.contact_start
+  end
+  contact[2] = false  -- none for this case: its rolling contact starts as without
+  local cold = sweep(1.1 * Q, {z = z, roll = roll})
+  local warm = sweep(1.1 * Q, {z = z, roll = roll, contact = contact})
+  check.ok(cold[1].contact_start == nil, "contact starts: none unless asked for")
+  local function products(e)
+    local n = 0
+    for _, side in ipairs{"left", "right"} do
+      for _, p in ipairs(e[side].patches) do n = n + p.creep_products end
+    end
+    return n
+  end
+  local pc, pw = 0, 0
+  for i = 1, #ys do
+    local a, b = cold[i], warm[i]
+    check.ok(a.converged and b.converged, ("contact starts: case %d converged"):format(i))
+    local F = math.sqrt(a.creep_force.x ^ 2 + a.creep_force.y ^ 2)
+    check.ok(F > 1e3, ("contact starts: case %d has creep forces (%.0f N)"):format(i, F))
+    for _, c in ipairs{"x", "y"} do
+      check.near(b.creep_force[c], a.creep_force[c], 1e-4 * F, ("contact starts: case %d's creep force %s"):format(i, c))
+    end
+    check.near(b.z, a.z, 1e-8, ("contact starts: case %d's z as without"):format(i))
+    if i ~= 2 then pc, pw = pc + products(a), pw + products(b)
+    else check.ok(products(b) == products(a), "contact starts: a case without one solves as before") end
+  end
+  print(("contact starts: %d products of the exact tangential solver from the starts, %d without"):format(pw, pc))
+  check.ok(pw < 0.8 * pc, "contact starts: fewer tangential products")
+  for _, bad in ipairs{{false}, {1, 2, 3, 4}} do
+    local ok, err = pcall(sweep, Q, {z = z, roll = roll, contact = bad})
+    check.ok(not ok and tostring(err):match("starts.contact"), "contact starts: bad ones refused: " .. tostring(err))
+  end
+end

@@ -4,7 +4,8 @@
 --     the Archard volumes of the step's contact areas (p.wear_volume, weighted by share and distance) within 1 %,
 --     with the area-preserving smoothing on;
 --   - cases started from their equilibria on the profiles before wear the same profiles as cases started cold, with
---     fewer contact evaluations;
+--     fewer contact evaluations, and with the pressures and tractions they ended with there also with fewer products
+--     of the exact tangential solver;
 --   - halving the step size changes the worn area at the final km by < 2 % (a constant k over 600 km; the KTH map over
 --     its running-in with the step control);
 --   - the rails (rail_passes): the area each step removes from a rail, computed here with the shoelace formula, equals
@@ -126,34 +127,41 @@ do  -- volume per step against the Archard volumes, Euler's and Heun's (wheels),
   end
 end
 
-do  -- every case started from its equilibrium on the profiles before (the default) against the sweeps' own chains
-    -- alone (warm = false): two Heun steps wear the same profiles (every point within 1e-3 of the step's depth, the
-    -- distance within 1e-6) with fewer contact evaluations
+do  -- every case started from its equilibrium and the pressures and tractions it ended with on the profiles before
+    -- (the default), from its equilibrium alone (warm = "equilibrium") and from the sweeps' own chains alone (warm =
+    -- false): two Heun steps wear the same profiles (every point within 1e-3 of the step's depth, the distance within
+    -- 1e-6), the equilibrium starts with fewer contact evaluations, the carried tractions with fewer products of the
+    -- exact tangential solver
   local runs = {}
-  for _, warm in ipairs{false, true} do
-    local st, evaluations = initial(), 0
+  for _, warm in ipairs{false, "equilibrium", true} do
+    local st, evaluations, products = initial(), 0, 0
     local o = {warm = warm}
     for key, v in pairs(options) do o[key] = v end
     for _ = 1, 2 do
       local info
       st, info = step(st, mixed, o)
-      evaluations = evaluations + info.evaluations
+      evaluations, products = evaluations + info.evaluations, products + info.products
     end
-    runs[#runs + 1] = {st = st, evaluations = evaluations}
+    runs[#runs + 1] = {st = st, evaluations = evaluations, products = products, warm = tostring(warm)}
   end
-  local a, b = runs[1], runs[2]
-  local worst, deepest = 0, 0
-  for _, name in ipairs(loop.BODIES) do
-    for i, v in ipairs(a.st.bodies[name].worn) do
-      worst, deepest = math.max(worst, math.abs(v - b.st.bodies[name].worn[i])), math.max(deepest, v)
+  local a = runs[1]
+  for k = 2, 3 do
+    local b = runs[k]
+    local worst, deepest = 0, 0
+    for _, name in ipairs(loop.BODIES) do
+      for i, v in ipairs(a.st.bodies[name].worn) do
+        worst, deepest = math.max(worst, math.abs(v - b.st.bodies[name].worn[i])), math.max(deepest, v)
+      end
     end
+    print(("warm = %s: %d contact evaluations and %d tangential products in two steps, %d and %d without; worn " ..
+           "depths differ by %.3g um at most (deepest %.3f mm)"):format(b.warm, b.evaluations, b.products,
+           a.evaluations, a.products, worst * 1e6, deepest * 1e3))
+    check.ok(deepest > options.step, "warm starts: the two steps wore the wheels")
+    check.ok(worst <= 1e-3 * options.step, "warm = " .. b.warm .. ": the same worn profiles as without starts")
+    check.rel(b.st.km, a.st.km, 1e-6, "warm = " .. b.warm .. ": the same distance as without starts")
+    check.ok(b.evaluations < 0.8 * a.evaluations, "warm = " .. b.warm .. ": fewer contact evaluations")
   end
-  print(("warm starts: %d contact evaluations in two steps, %d without; worn depths differ by %.3g um at most " ..
-         "(deepest %.3f mm)"):format(b.evaluations, a.evaluations, worst * 1e6, deepest * 1e3))
-  check.ok(deepest > options.step, "warm starts: the two steps wore the wheels")
-  check.ok(worst <= 1e-3 * options.step, "warm starts: the same worn profiles as without")
-  check.rel(b.st.km, a.st.km, 1e-6, "warm starts: the same distance as without")
-  check.ok(b.evaluations < 0.8 * a.evaluations, "warm starts: fewer contact evaluations")
+  check.ok(runs[3].products < 0.92 * runs[2].products, "carried tractions: fewer tangential products")
 end
 
 do  -- halving the step: the worn area at the same km (Archard with a constant k: the KTH map's jumps of k, 60-fold

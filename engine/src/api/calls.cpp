@@ -202,16 +202,40 @@ SweepPlan read_sweep_plan(OptionReader& r) {
 
 namespace {
 
-// starts = {z = {...}, roll = {...}}: per case of the plan, NaN in both for none (SweepOptions::starts).
-std::vector<std::optional<Start>> read_sweep_starts(OptionReader& r) {
-  std::vector<std::optional<Start>> starts;
-  auto s = r.table("starts", {"-", "per case of the plan (yaw major, then y): {z = {m, ...}, roll = {rad, ...}} "
-                                   "tried first; NaN in both: none"});
-  if (!s) return starts;
+// starts.contact = {start or false, ...}: per case, a wrc.ContactStart (a sweep result's contact_start) or none.
+std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReader& s, std::size_t cases) {
+  std::vector<std::shared_ptr<const ContactStart>> out;
+  const OptionValue* v = s.value("contact", "array", {"-", "per case: the contact_start of a sweep (contact_starts = "
+                                 "true) whose pressures and tractions start its solves, or false: none"});
+  if (!v || s.documenting()) return out;
+  if (v->type != OptionValue::Type::array || v->array.size() != cases)
+    fail("{}: starts.contact must be an array of {} entries (one per start), got a {} of {}", s.context(), cases,
+         v->type_name(), v->array.size());
+  for (std::size_t k = 0; k < cases; ++k) {
+    const OptionValue& e = v->array[k];
+    if (e.type == OptionValue::Type::boolean && !e.boolean) {
+      out.emplace_back();
+    } else if (e.type == OptionValue::Type::object && e.string == ContactStart::kTypeName) {
+      out.push_back(std::static_pointer_cast<const ContactStart>(e.object));
+    } else {
+      fail("{}: starts.contact[{}] must be a {} or false, got a {}", s.context(), k + 1, ContactStart::kTypeName,
+           e.type_name());
+    }
+  }
+  return out;
+}
+
+// starts = {z = {...}, roll = {...}, contact = {...}}: per case of the plan, NaN in both z and roll for none
+// (SweepOptions::starts, contact_starts).
+void read_sweep_starts(OptionReader& r, SweepOptions& o) {
+  auto s = r.table("starts", {"-", "per case of the plan (yaw major, then y): {z = {m, ...}, roll = {rad, ...}, "
+                                   "contact = {...}} tried first; NaN in both z and roll: none"});
+  if (!s) return;
   const auto z = s->numbers("z", {"m", "heights of the wheelset centre to start from"}, false);
   const auto roll = s->numbers("roll", {"rad", "rolls to start from"}, false);
+  auto contact = read_contact_starts(*s, z ? z->size() : 0);
   s->finish();
-  if (s->documenting()) return starts;
+  if (s->documenting()) return;
   if (!z || !roll || z->size() != roll->size())
     fail("{}: starts needs z and roll, arrays of the same length", r.context());
   for (std::size_t k = 0; k < z->size(); ++k) {
@@ -219,9 +243,9 @@ std::vector<std::optional<Start>> read_sweep_starts(OptionReader& r) {
     if (std::isnan(zk) != std::isnan(rk))
       fail("{}: starts of case {}: z = {} m and roll = {} rad must both be NaN (none) or numbers", r.context(), k + 1,
            zk, rk);
-    starts.push_back(std::isnan(zk) ? std::nullopt : std::optional<Start>(Start{zk, rk, std::nullopt, false}));
+    o.starts.push_back(std::isnan(zk) ? std::nullopt : std::optional<Start>(Start{zk, rk, std::nullopt, false}));
   }
-  return starts;
+  o.contact_starts = std::move(contact);
 }
 
 }  // namespace
@@ -230,7 +254,10 @@ SweepCall SweepCall::read(OptionReader& r) {
   SweepCall c;
   c.plan = read_sweep_plan(r);
   c.options = read_sweep_options(r);
-  c.options.starts = read_sweep_starts(r);
+  read_sweep_starts(r, c.options);
+  c.options.keep_starts = r.boolean("contact_starts", {"-", "give each converged case its contact_start (its last "
+                                    "pressures and tractions, to start it again: starts.contact)"},
+                                    c.options.keep_starts);
   c.progress.read(r);
   if (const auto listed = r.numbers("chunks", {"-", "run these chunks alone (1-based, as ws:sweep_plan lists them)"})) {
     for (double k : *listed) {

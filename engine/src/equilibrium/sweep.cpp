@@ -106,12 +106,17 @@ class SweepRun {
       ContactRequest req;
       const bool rolling = opt_.rolling.has_value() && reported;
       req.keep_grids = (opt_.keep_grids || rolling) && reported;  // the tangential step needs the pressure
+      const ContactStart* given = opt_.contact_starts.empty() ? nullptr : opt_.contact_starts[static_cast<std::size_t>(c)].get();
+      if (given) given->adopt_normal(ws);
       e = solve_equilibrium(model_, {sc.y, sc.yaw, opt_.Q}, ws, opt_.equilibrium, starts, req);
       ok = e.converged;
       if (ok && rolling) {  // creep forces at the (frictionless) equilibrium's pose
+        if (given) given->adopt_tangential(ws);
         add_rolling(model_, e.contact, *opt_.rolling, ws);
         if (!opt_.keep_grids) drop_grids(e.contact);
       }
+      if (ok && reported && opt_.keep_starts)
+        out_.contact_starts[static_cast<std::size_t>(slot)] = std::make_shared<const ContactStart>(ContactStart{ws.previous, ws.tangential});
       if (opt_.rigid && reported)
         out_.rigid[static_cast<std::size_t>(slot)] = solve_rigid(model_.geometry(), sc.y, sc.yaw, opt_.Q);
     } catch (const std::exception& ex) {
@@ -168,6 +173,9 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
   opt.equilibrium.validate("sweep");  // once here rather than as every case's error
   if (!opt.starts.empty() && opt.starts.size() != plan.cases.size())
     fail("sweep: starts has {} entries; the plan has {} cases (one per y and yaw)", opt.starts.size(), plan.cases.size());
+  if (!opt.contact_starts.empty() && opt.contact_starts.size() != plan.cases.size())
+    fail("sweep: starts has {} contact entries; the plan has {} cases (one per y and yaw)", opt.contact_starts.size(),
+         plan.cases.size());
   for (std::size_t k = 0; k < opt.starts.size(); ++k)
     if (opt.starts[k] && (!std::isfinite(opt.starts[k]->z) || !std::isfinite(opt.starts[k]->roll)))
       fail("sweep: starts of case {}: z = {} m, roll = {} rad must be finite", k + 1, opt.starts[k]->z, opt.starts[k]->roll);
@@ -187,6 +195,7 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
   out.elastic.resize(out.index.size());
   out.rigid.resize(out.index.size());
   out.errors.resize(out.index.size());
+  if (opt.keep_starts) out.contact_starts.resize(out.index.size());
 
   // One chunk per task: a chunk's cases follow each other by continuation, and chunks do not depend on each other.
   const int count = static_cast<int>(chunks.size());

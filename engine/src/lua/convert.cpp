@@ -1,6 +1,7 @@
 #include "lua/convert.hpp"
 
 #include "wrc/profile/profile.hpp"
+#include "wrc/wheelset/contact.hpp"
 #include "wrc/wheelset/tangential.hpp"
 
 #include <cmath>
@@ -102,6 +103,8 @@ OptionValue to_option_at(lua_State* L, int idx, std::string_view context, int de
     case LUA_TUSERDATA:
       if (auto* p = static_cast<std::shared_ptr<const Profile>*>(luaL_testudata(L, idx, "wrc.Profile")))
         return OptionValue::of_object(*p, "wrc.Profile");
+      if (auto* c = static_cast<std::shared_ptr<const ContactStart>*>(luaL_testudata(L, idx, ContactStart::kTypeName)))
+        if (*c) return OptionValue::of_object(*c, ContactStart::kTypeName);
       [[fallthrough]];
     default: fail("{}: a {} cannot be an option value", context, type_name(L, idx));
   }

@@ -142,7 +142,8 @@ int wheelset_conicity(lua_State* L) {
 }
 
 // ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, chain=, chunks=, progress=,
-// tolerances}: chunks = {k, ...} (1-based, as ws:sweep_plan lists them) runs those chunks alone.
+// starts=, contact_starts=, tolerances}: chunks = {k, ...} (1-based, as ws:sweep_plan lists them) runs those chunks
+// alone; contact_starts = true gives each converged case its contact_start (a wrc.ContactStart, for starts.contact).
 int wheelset_sweep(lua_State* L) {
   const char* ctx = "wheelset:sweep";
   LuaWheelset& w = self(L, ctx);
@@ -164,6 +165,10 @@ int wheelset_sweep(lua_State* L) {
     describe_case(r, i, row);
     FieldRecord record = row.take();
     push_fields(L, record);
+    if (i < r.contact_starts.size() && r.contact_starts[i]) {  // with contact_starts = true
+      push_shared(L, r.contact_starts[i], ContactStart::kTypeName);
+      lua_setfield(L, -2, "contact_start");
+    }
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
     if (!r.elastic[i].converged) ++failed;
   }
@@ -513,6 +518,11 @@ void open_wheelset(lua_State* L) {
   lua_setfield(L, -2, "wheelset");
   push_defaults(L);
   lua_setfield(L, -2, "defaults");
+  if (luaL_newmetatable(L, ContactStart::kTypeName)) {  // a sweep's contact_start: opaque
+    lua_pushcfunction(L, gc_shared<const ContactStart>);
+    lua_setfield(L, -2, "__gc");
+  }
+  lua_pop(L, 1);
   open_trajectory(L);
   open_patch(L);
   open_geometry(L);  // wrc.geometry: the strategies' helpers

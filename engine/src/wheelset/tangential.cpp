@@ -434,6 +434,8 @@ void describe(const PatchRolling& r, FieldSink& out) {
   out.number("adhesion", r.adhesion, {"-", "fraction of the contact area in adhesion"});
   out.number("power", r.power, {"W", "frictional power of the area, >= 0"});
   out.integer("creep_iterations", r.solution.iterations, {"-", "iterations of the tangential solver"});
+  out.integer("creep_products", r.solution.products, {"-", "products with the influence matrix on the area's grid "
+                                                            "(exact solver; a nested start's coarser grids not counted)"});
   damage::describe(r.damage, out);
   const halfspace::TangentialSolution& s = r.solution;
   if (s.px.empty()) return;

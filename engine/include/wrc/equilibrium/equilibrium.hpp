@@ -61,6 +61,12 @@ struct SweepOptions {
   // own equilibrium on profiles worn a little less (a wear loop). A chunk's first case then needs no cold start.
   // The chain's last Jacobian goes with it. Results depend on the plan and these starts, never on the threads.
   std::vector<std::optional<Start>> starts;
+  // Per case of the plan (empty, or null entries: none): the normal pressures and (with `rolling`) exact tangential
+  // solutions the case's solves start from (e.g. its own on profiles worn a little less) instead of the chain's
+  // previous case's. A start changes a result only within the solvers' tolerances.
+  std::vector<std::shared_ptr<const ContactStart>> contact_starts;
+  // Keep each converged case's ContactStart (SweepResult::contact_starts), to start a later sweep's.
+  bool keep_starts = false;
   // Why the sweep must run on the calling thread alone ("": it need not), e.g. a strategy bound to one Lua state.
   std::string single_thread;
   // Called once (on the calling thread) when fewer threads run than `threads` asked for, with the reason.
@@ -72,6 +78,8 @@ struct SweepResult {
   std::vector<EquilibriumResult> elastic;   // one per case
   std::vector<std::optional<RigidResult>> rigid;
   std::vector<std::string> errors;          // per case: exception text if the case threw, else empty
+  // Per case with SweepOptions::keep_starts (else empty): what its solves leave to start a later one (null: failed).
+  std::vector<std::shared_ptr<const ContactStart>> contact_starts;
   double seconds = 0;
   int threads = 1;            // worker threads used
   std::string threads_note;   // why fewer than SweepOptions::threads (when given) ran; "" otherwise

@@ -250,6 +250,24 @@ class ContactWorkspace {
   Times times;
 };
 
+// What a case's solve leaves in a workspace (per side, the areas of its last normal evaluation and of its exact
+// tangential solve), kept to start the same case's solve on slightly changed profiles (a wear loop's next step: the
+// pose moves little, the areas with it): `adopt` puts them into a workspace as its last evaluation, from which
+// warm_start and tangential_start (warm_start.hpp) map them onto the new areas' grids where an area of the same side
+// lies within 5 mm in nearly the same plane. A start changes a result only within the solvers' tolerances.
+struct ContactStart {
+  static constexpr const char* kTypeName = "wrc.ContactStart";  // its name as an option value (OptionValue::object)
+  std::array<std::vector<ContactWorkspace::Previous>, 2> normal, tangential;
+  void adopt_normal(ContactWorkspace& ws) const {
+    ws.previous = normal;
+    for (auto& b : ws.before) b.clear();
+  }
+  void adopt_tangential(ContactWorkspace& ws) const {
+    ws.tangential = tangential;
+    for (auto& b : ws.tangential_before) b.clear();
+  }
+};
+
 struct ContactRequest {
   bool sensitivity = false;  // fill d(force, moment)/d(z, roll) (linearised normal problems)
   bool jacobian = false;     // fill every wheel's Jacobian (WheelContact::jacobian); the calls' key `sensitivity` sets
