@@ -1,10 +1,12 @@
--- wrc.study.identity: what makes two runs the same study. Owns the identity lines (engine version, the script's
--- hash, the options that change results, the inputs' fingerprints, cases, chunk layout, tables) and their hash,
--- which the parts and the manifest record, and the reading of them back.
+-- wrc.study.identity: what makes two runs the same study. Owns the identity lines (engine version and build, the
+-- script's hash, the options that change results, the inputs' fingerprints, cases, chunk layout, tables) and their
+-- hash, which the parts and the manifest record, and the reading of them back.
 --   of(script, declared, values, r, layout) -> hash, lines   script: absolute path; declared, values: the options
 --                                                            (wrc.study.options); r: Study:run's table
 --   differences(old_lines, new_lines) -> text                what changed, options first ("option ymax_mm: 8 -> 4")
 --   script_hash(lines) -> hex or "?"                         the script's hash recorded among the lines
+--   this_build() -> text, build_of(state) -> text            the build running, the one that wrote a shard's state
+--   other_build(old_lines, new_lines) -> bool                whether the two differ only in the build
 local common = require "wrc.study.common"
 local fs = wrc.fs
 local M = {}
@@ -37,7 +39,7 @@ local function fingerprint(v, where)
 end
 
 function M.of(script, declared, values, r, layout)
-  local lines = {"engine " .. wrc.version, "script " .. fs.hash_file(script)}
+  local lines = {"engine " .. wrc.version, "build " .. wrc.build_id, "script " .. fs.hash_file(script)}
   for _, d in ipairs(declared) do
     if d.hash ~= false then lines[#lines + 1] = "option " .. d.name .. "=" .. canonical(values[d.name]) end
   end
@@ -62,9 +64,9 @@ local function by_key(lines)
   return m
 end
 
--- Options first, then inputs, script, engine, tables, the rest.
+-- Options first, then inputs, script, engine, build, tables, the rest.
 local function rank(d)
-  for r, p in ipairs{"option", "input", "script", "engine", "table"} do
+  for r, p in ipairs{"option", "input", "script", "engine", "build", "table"} do
     if d:sub(1, #p) == p then return r end
   end
   return 9
@@ -80,6 +82,30 @@ function M.differences(old, new)
   end
   table.sort(diffs, function(x, y) return rank(x) < rank(y) or (rank(x) == rank(y) and x < y) end)
   return #diffs > 0 and table.concat(diffs, "; ") or "their inputs"
+end
+
+-- For people: "wrc 0.1.0, build 0123456789ab (git 76986d3, modified)".
+function M.this_build() return ("wrc %s, build %s (%s)"):format(wrc.version, wrc.build_id, wrc.build_origin) end
+
+-- The build that wrote a shard's state.txt: its own words (its "built" line), else its identity lines' (an earlier
+-- wrc recorded no build).
+function M.build_of(st)
+  if st.built then return st.built end
+  local m = by_key(st.lines)
+  return ("wrc %s, build not recorded (an earlier wrc)"):format(m.engine or "?")
+end
+
+function M.other_build(old, new)
+  local a, b, differs = by_key(old), by_key(new), false
+  for _, pair in ipairs{{a, b}, {b, a}} do
+    for k, v in pairs(pair[1]) do
+      if pair[2][k] ~= v then
+        if k ~= "engine" and k ~= "build" then return false end
+        differs = true
+      end
+    end
+  end
+  return differs
 end
 
 function M.script_hash(lines)

@@ -10,6 +10,7 @@
 --   recorder(run, m_old) -> rec      rec:incomplete(why), rec:wrote(path) (wrc.output's on_write), rec:complete(extra)
 -- run = {dir =, script =, hash =, cases =, args = {"key=value", ...}} (the options given, `out` aside).
 local common = require "wrc.study.common"
+local identity = require "wrc.study.identity"
 local parts = require "wrc.study.parts"
 local fs = wrc.fs
 local M = {}
@@ -74,7 +75,7 @@ end
 -- previous = {{name =, rec = {size =, hash =} or nil}, ...}: files that are or may be in the folder.
 function M.write(run, status, files, previous, extra)
   local t = {"# wrc study manifest: the files this run wrote into this folder (read by the next run into it)",
-             "status " .. status, "study " .. run.script, "hash " .. run.hash, "engine wrc " .. wrc.version,
+             "status " .. status, "study " .. run.script, "hash " .. run.hash, "engine " .. identity.this_build(),
              "cases " .. run.cases}
   for _, l in ipairs(extra or {}) do t[#t + 1] = l end
   for _, a in ipairs(run.args) do t[#t + 1] = "option " .. a end

@@ -6,6 +6,7 @@
 --                                    naming what is missing or damaged and the command that computes it
 -- run: the fields wrc.study's Study:run documents.
 local common = require "wrc.study.common"
+local identity = require "wrc.study.identity"
 local layout = require "wrc.study.layout"
 local manifest = require "wrc.study.manifest"
 local parts = require "wrc.study.parts"
@@ -30,19 +31,34 @@ end
 ----------------------------------------------------------------------------------------------------------------
 -- The parts to merge
 
--- The shard folders of this run by N and K: sets[n][k] = {folder =, state =}, and the names of the others.
+-- The shard folders of this run by N and K: sets[n][k] = {folder =, state =}; the names of the others; and those
+-- of this study computed by another build, builds[name] = that build.
 local function sets_of(run)
-  local sets, others = {}, {}
+  local sets, others, builds = {}, {}, {}
   for _, s in ipairs(parts.shard_folders(run.dir)) do
     local st = parts.read_state(s.path)
     if st and st.hash == run.hash and s.k >= 1 and s.k <= s.n then
       sets[s.n] = sets[s.n] or {}
       sets[s.n][s.k] = {folder = s.path, state = st}
+    elseif st and identity.other_build(st.lines, run.lines) then
+      builds[#builds + 1] = {name = s.name, k = s.k, n = s.n, build = common.printable(identity.build_of(st))}
     else
       others[#others + 1] = s.name
     end
   end
-  return sets, others
+  return sets, others, builds
+end
+
+-- Why the shards computed by another build are not merged, and the commands that compute them with this one.
+local function other_builds(run, builds)
+  local names, commands = {}, {}
+  for _, b in ipairs(builds) do
+    names[#names + 1] = ("%s (%s)"):format(b.name, b.build)
+    commands[#commands + 1] = shard_command(run, b.k, b.n) .. " --fresh"
+  end
+  return ("shards computed by another build of wrc, which this one (%s) does not mix with its own: %s; compute " ..
+          "them again with this build (%s), or merge with the wrc that computed them"):format(identity.this_build(),
+          table.concat(names, ", "), table.concat(commands, "; "))
 end
 
 -- Whether shard p (K of N) is done: p.blocks set to the chain of blocks that covers its chunks; or why not.
@@ -63,9 +79,12 @@ end
 -- The complete set of shard folders with the smallest N: {n = N, shards = {[k] = {folder =, blocks =}}}, or nil
 -- and why not.
 local function find_parts(run)
-  local sets, others = sets_of(run)
-  if next(sets) == nil and #others == 0 then return nil, "there are no parts in " .. run.dir .. "/" .. parts.FOLDER end
-  local why, ns = {}, {}
+  local sets, others, builds = sets_of(run)
+  if next(sets) == nil and #others == 0 and #builds == 0 then
+    return nil, "there are no parts in " .. run.dir .. "/" .. parts.FOLDER
+  end
+  local why, ns, stale = {}, {}, {}
+  for _, b in ipairs(builds) do stale[b.name] = true end
   for n in pairs(sets) do ns[#ns + 1] = n end
   table.sort(ns)
   local best = nil
@@ -73,12 +92,14 @@ local function find_parts(run)
     local complete = true
     for k = 1, n do
       local p, ok, because = sets[n][k], false, ("shard %d of %d has not started"):format(k, n)
+      if stale[parts.shard_name(k, n)] then because = ("shard %d of %d was computed by another build"):format(k, n) end
       if p then ok, because = chain_blocks(run, p, k, n) end
       if not ok then complete, why[#why + 1] = false, because end
     end
     if complete and not best then best = {n = n, shards = sets[n]} end
   end
   if best then return best end
+  if #builds > 0 then why[#why + 1] = other_builds(run, builds) end
   if #others > 0 then why[#why + 1] = "parts of other studies or options: " .. table.concat(others, ", ") end
   return nil, table.concat(why, "; ")
 end

@@ -34,6 +34,18 @@ local function agreeing(match)
   return #agree >= 1 and agree or match
 end
 
+-- Of several runs, those computed by this build (their identity lines name it), if any: a shard of another build
+-- is then named by the merge.
+local function this_build(runs)
+  local mine = {}
+  for _, st in ipairs(runs) do
+    for _, l in ipairs(st.lines) do
+      if l == "build " .. wrc.build_id then mine[#mine + 1] = st end
+    end
+  end
+  return #mine >= 1 and mine or runs
+end
+
 -- The one run of `script` whose parts DIR holds, or the run stops saying why there is none.
 local function the_run(dir, script)
   local runs, order = parts.runs_in(dir)
@@ -50,6 +62,7 @@ local function the_run(dir, script)
            "study they came from", printable(dir), printable(script), mine, table.concat(others, "; "))
   end
   if #match > 1 then match = agreeing(match) end
+  if #match > 1 then match = this_build(match) end
   if #match > 1 then
     local list = {}
     for _, st in ipairs(match) do list[#list + 1] = describe(st) end

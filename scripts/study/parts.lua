@@ -1,6 +1,6 @@
 -- wrc.study.parts: the files of OUT/parts, where shards leave their work, and the names they have there.
--- Each shard folder parts/shard-K-of-N/ holds state.txt (which run: hash, script, shard, chunks, options, identity
--- lines) and checkpoint blocks chunks-A-B.txt, one per compute call: lines "@k" (chunk k begins), "<t> <csv>" (a row
+-- Each shard folder parts/shard-K-of-N/ holds state.txt (which run: hash, script, shard, chunks, options, the build
+-- that computed it, identity lines) and checkpoint blocks chunks-A-B.txt, one per compute call: lines "@k" (chunk k begins), "<t> <csv>" (a row
 -- of table t), "! <csv>" (a failed case), "# ..." (times), then an end line with the block's line count, size and
 -- hash, by which a later run or a merge tells a whole block from one cut short or changed. What a folder holds is
 -- data from whoever made it: read and checked here, never run.
@@ -9,7 +9,8 @@
 --   block_line(tag, text), unescape(text)           one line of a block ("~" marks an escaped line break)
 --   blocks_of(folder), disjoint(blocks)             the blocks of a shard folder {a, b, name}; those that overlap
 --   write_state(folder, st), read_state(folder)     state.txt (st: hash, script, shard, shards, lo, hi, nchunks,
---                                                   args = {"key=value"}, lines = identity lines)
+--                                                   args = {"key=value"}, built = the build, for people (may be
+--                                                   nil), lines = identity lines)
 --   shard_folders(dir), runs_in(dir)                the shard folders of OUT/parts; the runs their states name
 --   remove_temporaries(dir, rel)                    a killed run's temporary files in DIR/rel ("" for DIR)
 local common = require "wrc.study.common"
@@ -79,6 +80,7 @@ function M.write_state(folder, st)
   local t = {"wrc study parts", "hash " .. st.hash, "script " .. st.script,
              ("shard %d %d"):format(st.shard, st.shards), ("chunks %d %d %d"):format(st.lo, st.hi, st.nchunks)}
   for _, a in ipairs(st.args) do t[#t + 1] = "arg " .. a end
+  if st.built then t[#t + 1] = "built " .. st.built end
   for _, l in ipairs(st.lines) do t[#t + 1] = "line " .. l end
   fs.write_file(folder .. "/state.txt", table.concat(t, "\n") .. "\n")
 end
@@ -90,7 +92,7 @@ function M.read_state(folder)
   local st = {args = {}, lines = {}}
   for _, l in ipairs(lines) do
     local k, v = l:match("^(%S+) (.*)$")
-    if k == "hash" or k == "script" then st[k] = v
+    if k == "hash" or k == "script" or k == "built" then st[k] = v
     elseif k == "shard" then st.shard, st.shards = v:match("^(%d+) (%d+)$")
     elseif k == "chunks" then st.lo, st.hi, st.nchunks = v:match("^(%d+) (%d+) (%d+)$")
     elseif k == "arg" then st.args[#st.args + 1] = v

@@ -87,6 +87,12 @@ local function clear_other_runs(run, rel, folder)
   local m_old = run.m_old
   local done_run = m_old and m_old.status == "complete" and m_old.hash or nil  -- parts of a finished run
   if st and st.hash ~= run.hash and not run.fresh then
+    if st.hash ~= done_run and identity.other_build(st.lines, run.lines) then
+      common.refuse(1, "%s holds the parts of an unfinished run computed by another build of wrc (%s; this is %s): " ..
+                    "resuming would mix the two builds' results. Finish that run with the wrc that began it, or run " ..
+                    "with --fresh to discard its parts and compute them again with this build, or choose another " ..
+                    "folder (out=...)", folder, common.printable(identity.build_of(st)), identity.this_build())
+    end
     if st.hash ~= done_run then
       common.refuse(1, "%s holds the parts of an unfinished run with other inputs (%s): run with --fresh to discard " ..
                     "them and start over, or choose another folder (out=...)", folder,
@@ -145,7 +151,8 @@ local function prepare(run, rel, folder, before)
   fs.mkdir_inside(run.dir, rel)
   parts.remove_temporaries(run.dir, rel)
   parts.write_state(folder, {hash = run.hash, script = run.script, shard = run.shard, shards = run.shards,
-                             lo = run.lo, hi = run.hi, nchunks = run.nchunks, args = run.args, lines = run.lines})
+                             lo = run.lo, hi = run.hi, nchunks = run.nchunks, args = run.args,
+                             built = identity.this_build(), lines = run.lines})
   return usable_blocks(run, rel)
 end
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The study runner (wrc.study) on real runs of `wrc`: results that do not depend on threads or shards, a run killed
 # with SIGKILL and resumed, failed cases recorded while the others complete, declared options, the output folder's
-# checks (writable, unknown files refused, stale files of an earlier run removed, an interrupted run marked).
+# checks (writable, unknown files refused, stale files of an earlier run removed, an interrupted run marked), and
+# the parts of another build of wrc neither resumed nor merged.
 source "$(dirname "$0")/common.sh"
 # Coarser still than the other tests (it runs the study ten times): y every 2 mm, 18 cases from tread to flange.
 COARSE=(step_mm=2 grid_mm=0.4 plots=false)
@@ -67,6 +68,44 @@ grep -q "^failed 2" failing/manifest.txt || fail "the manifest does not count th
 for k in 1 2 3; do expect_status "$([ $k = 3 ] && echo 0 || echo 3)" "$WRC" run "$CASES" cases=40 fail=3,17 out=failing3 --shard $k/3; done
 expect_status 3 "$WRC" run "$CASES" cases=40 fail=3,17 out=failing3 --merge
 same_outputs failing failing3 rigid.csv failures.csv summary.txt
+
+echo "== parts computed by another build of wrc (the same version): neither resumed nor merged, both builds named"
+# Shard 1 of 2 computed here, then its state.txt made what another build would have written: another build id (its
+# identity lines' hash recomputed as wrc.study.identity computes it) and another description.
+cat > other_build.lua <<'LUA'
+local lines, out = {}, {}
+for l in io.lines(arg.state) do
+  if l:match("^line build ") then l = "line build 0123456789ab" end
+  if l:match("^built ") then l = "built wrc " .. wrc.version .. ", build 0123456789ab (git 0000000)" end
+  if l:match("^line ") then lines[#lines + 1] = l:sub(6) end
+  out[#out + 1] = l
+end
+for i, l in ipairs(out) do
+  if l:match("^hash ") then out[i] = "hash " .. wrc.fs.hash(table.concat(lines, "\n")) end
+end
+local f = assert(io.open(arg.state, "w"))
+f:write(table.concat(out, "\n"), "\n")
+f:close()
+LUA
+this=$("$WRC" --version | sed -n 's/^wrc \([^ ]*\) (build \([0-9a-f]*\), \(.*\))$/wrc \1, build \2 (\3)/p')
+[ -n "$this" ] || fail "wrc --version does not name its build: $("$WRC" --version)"
+"$WRC" run "$CASES" cases=6 plots=false out=builds >/dev/null 2>&1
+"$WRC" run "$CASES" cases=6 plots=false out=rebuilt --shard 1/2 >/dev/null 2>&1
+grep -qxF "built $this" rebuilt/parts/shard-1-of-2/state.txt || fail "state.txt does not record the build ($this)"
+grep -qxF "engine $this" builds/manifest.txt || fail "the manifest does not record the build ($this)"
+"$WRC" run other_build.lua state=rebuilt/parts/shard-1-of-2/state.txt
+expect_status 1 "$WRC" run "$CASES" cases=6 plots=false out=rebuilt --shard 1/2
+expect_err "holds the parts of an unfinished run computed by another build of wrc (wrc"
+expect_err ", build 0123456789ab (git 0000000); this is $this): resuming would mix the two builds' results"
+expect_err "run with --fresh"
+expect_status 0 "$WRC" run "$CASES" cases=6 plots=false out=rebuilt --shard 2/2
+expect_status 1 "$WRC" merge "$CASES" out=rebuilt
+expect_err "shard 1 of 2 was computed by another build"
+expect_err "shard-1-of-2 (wrc"
+expect_err "--shard 1/2 --fresh"
+expect_status 0 "$WRC" run "$CASES" cases=6 plots=false out=rebuilt --shard 1/2 --fresh
+expect_status 0 "$WRC" merge "$CASES" out=rebuilt
+same_outputs builds rebuilt rigid.csv summary.txt
 
 echo "== declared options: a misspelt key names the declared one, --help lists them"
 expect_status 2 "$WRC" run "$PAPER" stepmm=0.5

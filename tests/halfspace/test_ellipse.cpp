@@ -130,6 +130,40 @@ TEST_CASE("equivalent_ellipses: two separate regions, each its own ellipse and f
   CHECK(largest->force == within_rel(e[1].force, 1e-15));
 }
 
+// An element entering a region with pressure q grows its ellipse continuously and monotonically: as q -> 0 the
+// ellipse tends to the region's without it, and from 5 % of the region's peak pressure on the element counts whole
+// (FASTSIM's creep forces jumped when an element entered with any pressure at all).
+TEST_CASE("equivalent_ellipses: an element entering a region grows its ellipse continuously from zero pressure") {
+  const Grid g = Grid::square(20, 10, 1e-3);
+  std::vector<double> p(static_cast<std::size_t>(g.size()), 0.0);
+  for (int j = 2; j <= 5; ++j)
+    for (int i = 1; i <= 8; ++i) p[g.index(i, j)] = 1e6;  // 8 x 4 elements
+  const auto ellipse = [&](double q) {
+    std::vector<double> with = p;
+    with[g.index(9, 3)] = q;  // one element past the rectangle's end, in its third row
+    std::vector<int> label;
+    const std::vector<EquivalentEllipse> e = equivalent_ellipses(g, with, label);
+    REQUIRE(e.size() == 1);
+    return e[0];
+  };
+  // Rectangles of n elements along x (1 mm each) by 4 across: a/b = n / 4, pi a b = its area.
+  const auto a_of = [](double n, double area) { return std::sqrt(area * 1e-6 * (n / 4) / std::numbers::pi); };
+  const auto b_of = [](double n, double area) { return std::sqrt(area * 1e-6 / (n / 4) / std::numbers::pi); };
+  const EquivalentEllipse tiny = ellipse(1e-3);  // 1e-9 of the peak
+  CHECK(tiny.a == within_rel(a_of(8, 32), 1e-8));
+  CHECK(tiny.b == within_rel(b_of(8, 32), 1e-8));
+  const EquivalentEllipse whole = ellipse(0.05e6);  // counted whole: a ninth column of one element
+  CHECK(whole.a == within_rel(a_of(9, 33), 1e-12));
+  CHECK(whole.b == within_rel(b_of(9, 33), 1e-12));
+  double last = tiny.a;
+  for (double q = 1e3; q <= 0.05e6; q += 1e3) {  // steps of 1/50 of the way: a grows by at most 1.5/50 of its rise
+    const double a = ellipse(q).a;
+    CHECK(a >= last);
+    CHECK(a - last <= 1.5 * (whole.a - tiny.a) / 50);  // the weight s^2 (3 - 2 s) rises at most 1.5 x as fast as s
+    last = a;
+  }
+}
+
 TEST_CASE("hertz_ellipses: Kalker's coefficients for the Hertz ellipse equal Kalker's published table") {
   // Kalker (1990), Table E.3 = Johnson, Contact Mechanics (1985), Table 8.1, nu = 0.25, typed in again here:
   // g = a/b = 1:   C11 4.12, C22 3.67, C23 1.47, C33 1.19;

@@ -202,6 +202,20 @@ do  -- halving the step with the KTH map over its running-in (the first 2 km, wh
   check.rel(a, b, 0.02, "KTH map: worn area at 2 km with the step halved")
 end
 
+-- Body `left` of run a is body `right` of run b and the other way round (the points of their profiles, each in its
+-- own frame), within 1e-4 of the deepest wear; `unit` ("mm" or "um") is the one the deepest wear is printed in.
+local function mirror_pair(a, b, left, right, deepest, unit)
+  local scale = ({mm = 1e3, um = 1e6})[unit]
+  for _, pair in ipairs{{left, right}, {right, left}} do
+    local p, q = a.bodies[pair[1]], b.bodies[pair[2]]
+    local worst = 0
+    for i = 1, #p.y do worst = math.max(worst, math.abs(p.y[i] - q.y[i]), math.abs(p.z[i] - q.z[i])) end
+    print(("mirror: %s against %s: largest difference %.3g um (deepest %.3g %s)"):format(pair[1], pair[2],
+          worst * 1e6, deepest * scale, unit))
+    check.ok(worst < 1e-4 * deepest, ("mirror: %s of one run is %s of the other"):format(pair[1], pair[2]))
+  end
+end
+
 do  -- mirrored cases wear mirrored profiles
   local skew = {}
   for _, c in ipairs(cases(mixed, initial())) do  -- drop the symmetry: cases on one side only, and one curve
@@ -225,14 +239,7 @@ do  -- mirrored cases wear mirrored profiles
     for _, v in ipairs(a.bodies[name].worn) do deepest = math.max(deepest, v) end
   end
   check.ok(deepest > 0.1e-3, "the mirrored runs wore the wheels")
-  for _, pair in ipairs{{"left_wheel", "right_wheel"}, {"right_wheel", "left_wheel"}} do
-    local p, q = a.bodies[pair[1]], b.bodies[pair[2]]
-    local worst = 0
-    for i = 1, #p.y do worst = math.max(worst, math.abs(p.y[i] - q.y[i]), math.abs(p.z[i] - q.z[i])) end
-    print(("mirror: %s against %s: largest difference %.3g um (deepest %.3g mm)"):format(pair[1], pair[2],
-          worst * 1e6, deepest * 1e3))
-    check.ok(worst < 1e-4 * deepest, ("mirror: %s of one run is %s of the other"):format(pair[1], pair[2]))
-  end
+  mirror_pair(a, b, "left_wheel", "right_wheel", deepest, "mm")
   local la, ra = a.bodies.left_wheel, a.bodies.right_wheel
   local diff = 0
   for i = 1, #la.y do diff = math.max(diff, math.abs(la.z[i] - ra.z[i])) end
@@ -242,14 +249,7 @@ do  -- mirrored cases wear mirrored profiles
   local rail_deepest = 0
   for _, v in ipairs(a.bodies.left_rail.worn) do rail_deepest = math.max(rail_deepest, v) end
   check.ok(rail_deepest > 1e-6, "the mirrored runs wore the rails")
-  for _, pair in ipairs{{"left_rail", "right_rail"}, {"right_rail", "left_rail"}} do
-    local p, q = a.bodies[pair[1]], b.bodies[pair[2]]
-    local worst = 0
-    for i = 1, #p.y do worst = math.max(worst, math.abs(p.y[i] - q.y[i]), math.abs(p.z[i] - q.z[i])) end
-    print(("mirror: %s against %s: largest difference %.3g um (deepest %.3g um)"):format(pair[1], pair[2],
-          worst * 1e6, rail_deepest * 1e6))
-    check.ok(worst < 1e-4 * rail_deepest, ("mirror: %s of one run is %s of the other"):format(pair[1], pair[2]))
-  end
+  mirror_pair(a, b, "left_rail", "right_rail", rail_deepest, "um")
   local lr, rr = a.bodies.left_rail, a.bodies.right_rail
   diff = 0
   for i = 1, #lr.y do diff = math.max(diff, math.abs(lr.z[i] - rr.z[i]), math.abs(lr.y[i] - rr.y[i])) end

@@ -25,7 +25,7 @@ using pose_solve::UnreachableLoad;
 constexpr double kFirstRollingTolerance = 1e-4;
 // The largest jump of the creep forces' vertical part C across the approach that a wheel solve with friction
 // concludes at (WheelResult::converged: within it): 2e-3 Fz, or 10 % of C (an element more in a region of ten
-// along the rolling direction lengthens FASTSIM's ellipse by 10 %); larger ones are no grid element's.
+// along the rolling direction lengthens FASTSIM's rows by 10 %); larger ones are no grid element's.
 constexpr double kMaxJump = 2e-3, kMaxCreepJump = 0.1;
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
@@ -154,8 +154,8 @@ class WheelSolver {
       // Loads closer than the tolerance on either side of Fz (or the same load on both, its edge elements' near-zero
       // pressures differing with the start), neither within it: C jumps between them (the normal force is continuous),
       // and no approach carries Fz closer than half the jump. Such a point is the solution when the jump is one of a
-      // coarse grid's (FASTSIM's ellipse is the contact region's extent, which grows by an element at a time: ~1e-5 ..
-      // 4e-4 of Fz at 0.7 .. 1 mm, 2 % of C in saturation); the residual says how near it is.
+      // coarse grid's (FASTSIM's rows grow by an element at a time; its ellipse did too, by ~1e-5 .. 4e-4 of Fz at
+      // 0.7 .. 1 mm, 2 % of C in saturation, before it weighed entering elements); the residual says how near it is.
       if (above.load - below.load <= tol) {
         const double jump = above.e - below.e;
         if (jump > std::max(kMaxJump * c_.Fz, kMaxCreepJump * std::abs(creep))) {
@@ -193,7 +193,7 @@ class WheelSolver {
   };
 
   // The next load, kept well inside the bracket of the loads tried. On a coarse grid the creep forces (FASTSIM's
-  // ellipse: the region's extent) jump where an element enters the contact; a Newton step across such a jump
+  // rows) may jump where an element enters the contact; a Newton step across such a jump
   // overshoots to and fro (the secant's slope is the jump's), so where it lands outside the bracket's middle 80 %
   // the bracket is halved.
   static double inside(double load, const Bracket& below, const Bracket& above) {

@@ -199,16 +199,28 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
 namespace {
 
 // The derivative of project()'s traction p (on |p| = g, nearest to q in the layer's norm: p_i (l_i + lambda) = l_i q_i)
-// for dq and dg: dp_i = (l_i dq_i - p_i dlambda) / (l_i + lambda), dlambda from p . dp = g dg. lambda is recovered from
-// p and q (least squares over the two components).
+// for dq, dg and the flexibilities' dl: dp_i = (l_i dq_i + dl_i (q_i - p_i) - p_i dlambda) / (l_i + lambda), dlambda
+// from p . dp = g dg. lambda is recovered from p and q (least squares over the two components).
 void project_derivative(double lx, double ly, double qx, double qy, double px, double py, double g, double dqx,
-                        double dqy, double dg, double& dpx, double& dpy) {
+                        double dqy, double dg, double dlx, double dly, double& dpx, double& dpy) {
   const double lam = std::max(0.0, (lx * (qx - px) * px + ly * (qy - py) * py) / (px * px + py * py));
   const double ax = 1 / (lx + lam), ay = 1 / (ly + lam);
-  const double num = px * lx * dqx * ax + py * ly * dqy * ay - g * dg, den = px * px * ax + py * py * ay;
+  const double rx = lx * dqx + dlx * (qx - px), ry = ly * dqy + dly * (qy - py);
+  const double num = px * rx * ax + py * ry * ay - g * dg, den = px * px * ax + py * py * ay;
   const double dlam = num / den;
-  dpx = (lx * dqx - px * dlam) * ax;
-  dpy = (ly * dqy - py * dlam) * ay;
+  dpx = (rx - px * dlam) * ax;
+  dpy = (ry - py * dlam) * ay;
+}
+
+// The change of Kalker's flexibilities for a change (da, db) of the ellipse (a, b): a central difference over a
+// relative change of 1e-6 of the semi-axes (they are smooth in a and b).
+Flexibilities flexibility_change(const EquivalentEllipse& e, const EllipseChange& d, const Material& m) {
+  const double scale = std::max(std::abs(d.da) / e.a, std::abs(d.db) / e.b);
+  if (!(scale > 0)) return {0, 0, 0};
+  const double h = 1e-6 / scale;
+  const Flexibilities up = kalker_flexibilities(e.a + h * d.da, e.b + h * d.db, m);
+  const Flexibilities down = kalker_flexibilities(e.a - h * d.da, e.b - h * d.db, m);
+  return {(up.x - down.x) / (2 * h), (up.y - down.y) / (2 * h), (up.spin - down.spin) / (2 * h)};
 }
 
 }  // namespace
@@ -220,7 +232,9 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
   validate(material, "linearise_fastsim");
   const Grid& g = pb.grid;
   std::vector<int> label;
-  const std::vector<Flexibilities> flex = region_flexibilities(material, g, pb.pressure, label);
+  const std::vector<EquivalentEllipse> regions = equivalent_ellipses(g, pb.pressure, label);
+  std::vector<Flexibilities> flex;
+  for (const EquivalentEllipse& e : regions) flex.push_back(kalker_flexibilities(e.a, e.b, material));
   const Creepages& c = pb.creepages;
   const double half = 0.5 * g.dx, muk = pb.friction.kinetic_coefficient;
   std::vector<TangentialDerivative> out;
@@ -230,6 +244,12 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
     d.px.assign(pb.pressure.size(), 0.0);
     d.py.assign(pb.pressure.size(), 0.0);
     const Creepages& dc = ch.creepages;
+    // The flexibilities change with the pressure through the ellipses (their edge elements' weights).
+    std::vector<Flexibilities> dflex(flex.size(), Flexibilities{0, 0, 0});
+    if (!ch.pressure.empty()) {
+      const std::vector<EllipseChange> de = ellipse_changes(g, pb.pressure, ch.pressure);
+      for (std::size_t r = 0; r < flex.size(); ++r) dflex[r] = flexibility_change(regions[r], de[r], material);
+    }
     for (int j = 0; j < g.ny; ++j) {
       const double y = g.y(j) - pb.ref_y;
       // upstream element's layer displacement, rigid slip and their derivatives (0 outside the contact)
@@ -241,25 +261,31 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
           ux = uy = wxu = wyu = dux = duy = dwxu = dwyu = 0;
           continue;
         }
-        const Flexibilities& L = flex[static_cast<std::size_t>(label[k])];
+        const auto r = static_cast<std::size_t>(label[k]);
+        const Flexibilities &L = flex[r], &dL = dflex[r];
         const double x = g.x(i) - pb.ref_x, sx = L.x / L.spin, sy = L.y / L.spin;
+        const double dsx = (dL.x - sx * dL.spin) / L.spin, dsy = (dL.y - sy * dL.spin) / L.spin;
         // the march's rigid slip (the spin scaled per axis) and its change (the reference point moving too)
         const double wx = c.xi - c.phi * sx * y + (pb.extra_x.empty() ? 0.0 : pb.extra_x[k]);
         const double wy = c.eta + c.phi * sy * x + (pb.extra_y.empty() ? 0.0 : pb.extra_y[k]);
-        const double dwx = dc.xi - dc.phi * sx * y + c.phi * sx * ch.ref_y + (ch.extra_x.empty() ? 0.0 : ch.extra_x[k]);
-        const double dwy = dc.eta + dc.phi * sy * x - c.phi * sy * ch.ref_x + (ch.extra_y.empty() ? 0.0 : ch.extra_y[k]);
+        const double dwx = dc.xi - (dc.phi * sx + c.phi * dsx) * y + c.phi * sx * ch.ref_y +
+                           (ch.extra_x.empty() ? 0.0 : ch.extra_x[k]);
+        const double dwy = dc.eta + (dc.phi * sy + c.phi * dsy) * x - c.phi * sy * ch.ref_x +
+                           (ch.extra_y.empty() ? 0.0 : ch.extra_y[k]);
         const double qx = (ux - half * (wx + wxu)) / L.x, qy = (uy - half * (wy + wyu)) / L.y;
-        const double dqx = (dux - half * (dwx + dwxu)) / L.x, dqy = (duy - half * (dwy + dwyu)) / L.y;
+        const double dqx = (dux - half * (dwx + dwxu) - qx * dL.x) / L.x;
+        const double dqy = (duy - half * (dwy + dwyu) - qy * dL.y) / L.y;
         double dpx = dqx, dpy = dqy;
         if (sol.state[k] == kSlip) {
           const double gp = pb.friction_scale.empty() ? 1.0 : pb.friction_scale[k];
           const double dg = ch.pressure.empty() ? 0.0 : muk * gp * ch.pressure[k];
-          project_derivative(L.x, L.y, qx, qy, sol.px[k], sol.py[k], muk * gp * pb.pressure[k], dqx, dqy, dg, dpx, dpy);
+          project_derivative(L.x, L.y, qx, qy, sol.px[k], sol.py[k], muk * gp * pb.pressure[k], dqx, dqy, dg, dL.x,
+                             dL.y, dpx, dpy);
         }
         d.px[k] = dpx;
         d.py[k] = dpy;
         ux = L.x * sol.px[k], uy = L.y * sol.py[k], wxu = wx, wyu = wy;
-        dux = L.x * dpx, duy = L.y * dpy, dwxu = dwx, dwyu = dwy;
+        dux = L.x * dpx + dL.x * sol.px[k], duy = L.y * dpy + dL.y * sol.py[k], dwxu = dwx, dwyu = dwy;
       }
     }
     detail::summarise(d, pb, sol, ch);

@@ -1,4 +1,5 @@
 // wrc: the command-line host. Parses the command line (command_line.hpp) and hands the script to the Lua host.
+#include "wrc/core/build.hpp"
 #include "wrc/core/config.hpp"
 #include "wrc/host/command_line.hpp"
 #include "wrc/lua/host.hpp"
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (cmd == "--version") {
-    std::printf("wrc %s\n", WRC_VERSION);
+    std::printf("wrc %s (build %s, %s)\n", WRC_VERSION, wrc::build_id(), wrc::build_origin());
     return 0;
   }
   if (cmd == "run" || cmd == "merge") {

@@ -8,7 +8,7 @@ namespace wrc::lua {
 
 int luaopen_wrc(lua_State* L);  // the `wrc` module (package.preload.wrc)
 
-void open_core(lua_State* L);      // wrc.version, wrc.paths
+void open_core(lua_State* L);      // wrc.version, wrc.build_id, wrc.build_origin, wrc.paths
 void open_fs(lua_State* L);        // wrc.fs (folders, atomic files, listings, hashes), wrc.closest_name, wrc.cores
 void open_wheelset(lua_State* L);  // wrc.wheelset and the wrc.Wheelset metatable
 void open_kinematics(lua_State* L);  // wrc.conicity, p:flange_measures, p:curvature

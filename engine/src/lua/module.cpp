@@ -1,6 +1,7 @@
 #include "lua/bindings.hpp"
 #include "lua/convert.hpp"
 #include "lua/profile_binding.hpp"
+#include "wrc/core/build.hpp"
 #include "wrc/core/config.hpp"
 #include "wrc/core/paths.hpp"
 #include "lua/guard.hpp"
@@ -9,6 +10,8 @@ namespace wrc::lua {
 
 void open_core(lua_State* L) {
   set_string(L, "version", WRC_VERSION);
+  set_string(L, "build_id", build_id());          // wrc/core/build.hpp: what a study records of the build
+  set_string(L, "build_origin", build_origin());
   const Paths& p = paths();
   lua_createtable(L, 0, 4);
   set_string(L, "root", p.root);

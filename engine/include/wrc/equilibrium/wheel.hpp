@@ -51,8 +51,8 @@ struct WheelHint {
 
 struct WheelResult {
   // |residual| <= force_tolerance Fz; with friction also where the creep forces' vertical part jumps across the
-  // approach by more than twice that (a coarse grid's FASTSIM: its ellipse is the contact region's extent, which grows
-  // an element at a time) and Fz falls inside the jump: then no approach carries Fz closer, and the solve concludes at
+  // approach by more than twice that (a coarse grid's FASTSIM, whose rows grow an element at a time; its ellipse grows
+  // continuously, halfspace/ellipse.hpp) and Fz falls inside the jump: then no approach carries Fz closer, and the solve concludes at
   // the jump, on its side nearer Fz where it can, |residual| within the jump plus the tolerance (jumps of at most 2e-3
   // Fz or 10 % of the creep forces' vertical part; a larger one fails with its size).
   bool converged = false;

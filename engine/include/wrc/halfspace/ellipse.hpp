@@ -42,7 +42,9 @@ RelativeCurvature wheel_rail_curvature(double rolling_radius, double angle, doub
                                        double rail_curvature);
 
 // The equivalent ellipse of one contact region of a pressure grid, as FASTSIM uses it (fastsim.cpp): the region's
-// extent along x and y (element edges included) gives a/b, its area pi a b.
+// extent along x and y (element edges included) gives a/b, its area pi a b. An element with less than 5 % of the
+// region's largest pressure counts with a weight rising smoothly from 0 to 1 with its pressure (to the area, and to
+// the extent of its row and column), so that the ellipse grows continuously as the contact does.
 struct EquivalentEllipse {
   double a = 0, b = 0;  // semi-axes along grid x and y (m)
   double force = 0;     // sum p dA of the region (N)
@@ -52,6 +54,15 @@ struct EquivalentEllipse {
 // (x fastest); `label` gets each element's region (-1 outside).
 std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& grid, std::span<const double> pressure,
                                                    std::vector<int>& label);
+
+// The first-order change of each region's semi-axes (m per unit of the parameter, in equivalent_ellipses' order) for
+// a change dp of the pressure (Pa per unit) that keeps the contact (the elements with p > 0): through the weights of
+// the elements below 5 % of the region's largest pressure, which change with their pressure and with that largest.
+struct EllipseChange {
+  double da = 0, db = 0;
+};
+std::vector<EllipseChange> ellipse_changes(const Grid& grid, std::span<const double> pressure,
+                                           std::span<const double> dp);
 
 // The fields of a contact that multibody tables carry. `ellipse`: of the region carrying the largest normal force
 // (elastic results); `hertz`: when the relative curvatures are convex; `kalker` (Kalker's coefficients for hertz's

@@ -165,7 +165,8 @@ TangentialSolution solve_fastsim(const Material& material, const TangentialProbl
 void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
 
 // FASTSIM's derivative for each change: the strip march differentiated with each element's state (adhesion, slip)
-// held, the slip elements' projection onto the bound differentiated exactly, the regions' flexibilities fixed.
+// held, the slip elements' projection onto the bound differentiated exactly, the regions' flexibilities changing with
+// the pressure change (through their ellipses' edge elements, ellipse_changes).
 // Throws wrc::Error as RollingSolver::linearise does.
 std::vector<TangentialDerivative> linearise_fastsim(const Material& material, const TangentialProblem& problem,
                                                     const TangentialSolution& solution,
