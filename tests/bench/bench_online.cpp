@@ -15,7 +15,8 @@
 //   6. rolling contact at time steps: the left wheel's Fz = 100 kN given (tr:wheel) along y = 5 mm sin(2 pi 1.5 Hz t)
 //      at 1 kHz (yaw following, V = 30 m/s, mu = 0.3), frictionless, with FASTSIM and with the exact solver, at 0.5
 //      and 0.2 mm: the three trajectories stepped in turn (so that the machine's load falls on all three alike), the
-//      median per step and its ratio to the frictionless step.
+//      median per step and its ratio to the frictionless step; the exact solver's Newton and GMRES iterations and
+//      products, of the step's last solve and of all its solves.
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
 //   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N] [poses] [passes=K] [steps=N] [grid=G]
@@ -177,6 +178,10 @@ void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double 
                 traj[static_cast<std::size_t>(v)].workspace().times.evaluations);
   fmt::print("  exact, the step's last tangential solve: {:.2f} Newton iterations, {:.1f} GMRES iterations, {:.1f} products "
              "with the influence matrix\n", creep_iterations / steps, creep_linear / steps, creep_products / steps);
+  const auto& all = traj[2].workspace().rolling.totals;
+  fmt::print("  exact, all tangential solves per step: {:.2f} solves, {:.2f} Newton iterations, {:.1f} GMRES iterations, "
+             "{:.1f} products\n", double(all.solves) / steps, double(all.iterations) / steps,
+             double(all.linear_iterations) / steps, double(all.products) / steps);
 }
 
 int main(int argc, char** argv) {

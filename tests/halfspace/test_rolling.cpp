@@ -405,6 +405,28 @@ TEST_CASE("warm starts along a trajectory: each equals a cold solve, at a fracti
   }
 }
 
+TEST_CASE("a workspace sums the iterations and products of every solve made with it") {
+  const wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 900e6, 8);
+  const RollingSolver solver(kSteel);
+  RollingWorkspace ws, other;
+  const TangentialSolution a = solver.solve(rolling_problem(h, {0.8e-3, 0.3e-3, 0.4}, 0.3), ws);
+  const TangentialSolution none = solver.solve(rolling_problem(h, {0, 0, 0}, 0.3), ws);  // no rigid slip: no work
+  TangentialOptions opt;
+  opt.initial_x = a.px;
+  opt.initial_y = a.py;
+  opt.initial_state = a.state;
+  const TangentialSolution b = solver.solve(rolling_problem(h, {0.8e-3 * (1 + 1e-3), 0.3e-3, 0.4}, 0.3), ws, opt);
+  solver.solve(rolling_problem(h, {0.5e-3, 0, 0}, 0.3), other);  // another workspace's solve counts there only
+  REQUIRE(a.products > 0);
+  REQUIRE(b.products > 0);
+  CHECK(none.products == 0);
+  CHECK(ws.totals.solves == 3);
+  CHECK(ws.totals.iterations == a.iterations + b.iterations);
+  CHECK(ws.totals.linear_iterations == a.linear_iterations + b.linear_iterations);
+  CHECK(ws.totals.products == a.products + b.products);
+  CHECK(other.totals.solves == 1);
+}
+
 TEST_CASE("a settled warm start costs one product more than its GMRES iterations, whatever its Newton steps") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 900e6, 8);
   const RollingSolver solver(kSteel);

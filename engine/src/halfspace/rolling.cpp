@@ -384,6 +384,10 @@ TangentialSolution RollingSolver::solve(const TangentialProblem& pb, RollingWork
   out.linear_iterations = st.linear;
   out.coarse_iterations = st.coarse_linear;
   out.products = st.products;
+  ++ws.totals.solves;
+  ws.totals.iterations += out.iterations;
+  ws.totals.linear_iterations += out.linear_iterations;
+  ws.totals.products += out.products;
   detail::summarise(out, pb.ref_x, pb.ref_y);
   return out;
 }

@@ -122,6 +122,11 @@ class RollingWorkspace {
   std::vector<double> qx, qy, ux, uy;  // grid vectors of the cropped grid
   std::vector<double> basis, precond;  // GMRES: Krylov vectors and their preconditioned images
   std::vector<double> images;          // GMRES: M times each preconditioned vector (the slip's change, no product)
+  // Sums over every exact solve made with this workspace, as each TangentialSolution counts them (a benchmark's
+  // view of all the solves of a multibody step, where a step's result keeps only its last).
+  struct Totals {
+    long solves = 0, iterations = 0, linear_iterations = 0, products = 0;
+  } totals;
 };
 
 // The exact steady-rolling solver: semi-smooth Newton on the adhesion / slip split (an active-set method: adhesion
