@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace wrc {
 
@@ -157,15 +158,18 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid
   gain.resize(h.size());
   // Each line's h (and normal_depth's slope) at the grid's columns, computed once (neighbouring rows share their lines).
   const auto nx = static_cast<std::size_t>(grid.nx);
-  std::vector<double> line_h(lines.size() * nx), line_gain(lines.size() * nx);
+  // (uninitialised: a line's row is written before it is read; zeroing both cost 1.6 % of the instructions of a
+  // trajectory's rolling steps, bench_online section 6 at 0.5 mm)
+  const auto line_h = std::make_unique_for_overwrite<double[]>(lines.size() * nx);
+  const auto line_gain = std::make_unique_for_overwrite<double[]>(lines.size() * nx);
   std::vector<char> done(lines.size(), 0);
   std::vector<double> xs(nx);
   for (std::size_t i = 0; i < nx; ++i) xs[i] = o.x() + grid.x(static_cast<int>(i));
   auto heights = [&](std::size_t l) {
-    double* row = line_h.data() + l * nx;
+    double* row = line_h.get() + l * nx;
     if (done[l]) return row;
     done[l] = 1;
-    lines[l].h.heights(xs.data(), nx, row, line_gain.data() + l * nx);
+    lines[l].h.heights(xs.data(), nx, row, line_gain.get() + l * nx);
     return row;
   };
   std::size_t b = 0;
@@ -187,8 +191,8 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid
     const double* hc = t > 0 ? heights(c) : ha;
     double* out = h.data() + static_cast<std::size_t>(grid.index(0, j));
     for (std::size_t i = 0; i < nx; ++i) out[i] = t > 0 ? (1 - t) * ha[i] + t * hc[i] : ha[i];
-    const double* ga = line_gain.data() + a * nx;
-    const double* gc = line_gain.data() + c * nx;
+    const double* ga = line_gain.get() + a * nx;
+    const double* gc = line_gain.get() + c * nx;
     double* g = gain.data() + static_cast<std::size_t>(grid.index(0, j));
     for (std::size_t i = 0; i < nx; ++i) g[i] = t > 0 ? (1 - t) * ga[i] + t * gc[i] : ga[i];
   }
