@@ -49,6 +49,24 @@ local function call(pose, creepage, method, sensitivity, rolling)
   return ws:contact(args)
 end
 
+-- The central quotient of the wrenches fp, fm at +-h around f0, the forward and backward ones, and whether those two
+-- agree within `share` of tol times each block's (forces, moments) scale.
+local function quotients(fp, fm, f0, h, share)
+  local d, fwd, bwd = {}, {}, {}
+  for i = 1, 6 do
+    d[i] = (fp[i] - fm[i]) / (2 * h)
+    fwd[i] = (fp[i] - f0[i]) / h
+    bwd[i] = (f0[i] - fm[i]) / h
+  end
+  local ok = true
+  for _, rows in ipairs{{1, 2, 3}, {4, 5, 6}} do
+    local scale = 0
+    for _, i in ipairs(rows) do scale = math.max(scale, math.abs(d[i])) end
+    for _, i in ipairs(rows) do ok = ok and math.abs(fwd[i] - bwd[i]) <= share * tol * scale end
+  end
+  return d, ok, fwd, bwd
+end
+
 -- Central difference of a column with its one-sided check; nil and the last forward and backward quotients when they
 -- never agree (a kink at the pose itself).
 local function difference(pose, creepage, method, col, f0)
@@ -59,19 +77,7 @@ local function difference(pose, creepage, method, col, f0)
     if creepage_step[col] and creepage.V then return nil, nil  -- kinematics: no creepage of their own to vary
     elseif creepage_step[col] then cp[col], cm[col] = creepage[col] + h, creepage[col] - h
     else p[col], m[col] = pose[col] + h, pose[col] - h end
-    local fp, fm = wrench(call(p, cp, method)), wrench(call(m, cm, method))
-    local d, fwd, bwd = {}, {}, {}
-    for i = 1, 6 do
-      d[i] = (fp[i] - fm[i]) / (2 * h)
-      fwd[i] = (fp[i] - f0[i]) / h
-      bwd[i] = (f0[i] - fm[i]) / h
-    end
-    local ok = true
-    for _, rows in ipairs{{1, 2, 3}, {4, 5, 6}} do
-      local scale = 0
-      for _, i in ipairs(rows) do scale = math.max(scale, math.abs(d[i])) end
-      for _, i in ipairs(rows) do ok = ok and math.abs(fwd[i] - bwd[i]) <= 0.1 * tol * scale end
-    end
+    local d, ok, fwd, bwd = quotients(wrench(call(p, cp, method)), wrench(call(m, cm, method)), f0, h, 0.1)
     if ok then return d end
     h = h / 2
     last = {fwd, bwd}
@@ -166,19 +172,8 @@ for _, y in ipairs{3e-3, 6.5e-3} do
     end
     local f0, d, sides = at(base), nil, nil
     for _ = 1, 5 do
-      local fp, fm = at(p), at(m)
-      local fwd, bwd = {}, {}
-      d = {}
-      for i = 1, 6 do
-        d[i] = (fp[i] - fm[i]) / (2 * h)
-        fwd[i], bwd[i] = (fp[i] - f0[i]) / h, (f0[i] - fm[i]) / h
-      end
-      local ok = true
-      for _, rows in ipairs{{1, 2, 3}, {4, 5, 6}} do
-        local scale = 0
-        for _, i in ipairs(rows) do scale = math.max(scale, math.abs(d[i])) end
-        for _, i in ipairs(rows) do ok = ok and math.abs(fwd[i] - bwd[i]) <= 0.5 * tol * scale end
-      end
+      local ok, fwd, bwd
+      d, ok, fwd, bwd = quotients(at(p), at(m), f0, h, 0.5)
       if ok or col == "z" or creepage[col] then sides = nil break end
       sides = {fwd, bwd}
       h = h / 2
