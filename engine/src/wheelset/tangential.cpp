@@ -115,12 +115,16 @@ class AreaGeometry {
 // the axle's plane (up to 8e-5 on a 12 mm long patch at r = 0.46 m), a slip the rolling wheel does not have.
 // With tilt = tn / (2 |tw|), tn = tw . n: (v . t1 |tw| + tn v . n / 2) / sqrt(|tw|^2 + tn^2 / 4), one division per
 // element (it runs over every contact element twice per time step: divisions were most of its time).
-[[gnu::always_inline]] inline double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X,
-                                                  const Eigen::Vector3d& v, const ElementFrame& f) {
-  const Eigen::Vector3d tw = field.axle.cross(X - field.c);
+// `tw`: axle x (X - c), the wheel's circumferential direction at X (unnormalised).
+[[gnu::always_inline]] inline double rolling_slip(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
+                                                  const ElementFrame& f) {
   const double norm2 = tw.squaredNorm(), tn = tw.dot(f.t1) < 0 ? -tw.dot(f.n) : tw.dot(f.n);
   if (!(norm2 > 0)) return v.dot(f.t1);
   return (v.dot(f.t1) * std::sqrt(norm2) + 0.5 * tn * v.dot(f.n)) / std::sqrt(norm2 + 0.25 * tn * tn);
+}
+[[gnu::always_inline]] inline double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X,
+                                                  const Eigen::Vector3d& v, const ElementFrame& f) {
+  return rolling_slip(field.axle.cross(X - field.c), v, f);
 }
 
 // rolling_slip's change (the frame held) for changes dv of v, dr of X - c and d_axle of the axle.
@@ -166,12 +170,28 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   const double inv_speed = 1 / speed;
   for (int j = 0; j < g.ny; ++j) {
     const ElementFrame f = geo.frame(j);
+    // On a conformal area a row's contact points are affine in the element's index and h (along the row's normal),
+    // and so are v and axle x (X - c): per element two sums instead of the point and two cross products.
+    Eigen::Vector3d X0, Xi, Xh, v0, vi, vh, t0, ti, th;
+    if (pc.conformal) {
+      X0 = geo.contact_point(0, j, 0.0), Xi = geo.contact_point(1, j, 0.0) - X0, Xh = geo.contact_point(0, j, 1.0) - X0;
+      v0 = field.at(X0), vi = field.omega.cross(Xi), vh = field.omega.cross(Xh);
+      t0 = field.axle.cross(X0 - field.c), ti = field.axle.cross(Xi), th = field.axle.cross(Xh);
+    }
     for (int i = 0; i < g.nx; ++i) {
       const auto q = static_cast<std::size_t>(g.index(i, j));
       if (!(pc.solution.pressure[q] > 0)) continue;  // the slip matters on the contact only
-      const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), v = field.at(X);
-      a.extra_x[q] = rolling_slip(field, X, v, f) * inv_speed - (c.xi - c.phi * g.y(j));
-      a.extra_y[q] = v.dot(f.t2) * inv_speed - (c.eta + c.phi * g.x(i));
+      double sx, sy;
+      if (pc.conformal) {
+        const double h = pc.h[q];
+        const Eigen::Vector3d v = v0 + i * vi + h * vh;
+        sx = rolling_slip(t0 + i * ti + h * th, v, f), sy = v.dot(f.t2);
+      } else {
+        const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), v = field.at(X);
+        sx = rolling_slip(field, X, v, f), sy = v.dot(f.t2);
+      }
+      a.extra_x[q] = sx * inv_speed - (c.xi - c.phi * g.y(j));
+      a.extra_y[q] = sy * inv_speed - (c.eta + c.phi * g.x(i));
       if (!rigid) continue;
       // halfspace::rigid_slip's sums (the reference point at the grid's origin), without its pass over the grid
       a.rigid_x[q] = c.xi - c.phi * g.y(j) + a.extra_x[q];
