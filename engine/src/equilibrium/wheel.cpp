@@ -74,9 +74,9 @@ class WheelSolver {
   // areas or steep normals (no prediction). From a close start (a trajectory's last approach) the first step is within
   // 1e-3 of the approach and the second is skipped. `predicted_at`: called with the last prediction's evaluation and
   // approach when it was solved at normal_tolerance; it may set another load and move the approach (then true). The
-  // evaluation there no longer starts from the solution it needs (its pressures carry the old load): it is solved
-  // kMovedTolerance tighter, or its force would miss by its solve's noise (~1e-6 of the load at 1e-6) and cost an
-  // evaluation more; its force measures the stiffness on the way. True when converged frictionless.
+  // evaluation there no longer starts from the solution it needs (its pressures carry the old load): it is solved to
+  // kMovedTolerance x normal_tolerance, or its force would miss by its solve's noise (~1e-6 of the load at 1e-6) and
+  // cost an evaluation more; its force measures the stiffness on the way. True when converged frictionless.
   bool solve(std::optional<double> start, const std::function<bool(double&)>& predicted_at = {}) {
     const double cold = opt_.wheel_approach * std::cbrt((load_ / 100e3) * (load_ / 100e3));  // Hertz: a ~ F^(2/3)
     double a1 = std::min(start && *start > 0 ? *start : cold, opt_.limits.max_penetration);
@@ -86,7 +86,8 @@ class WheelSolver {
     if (predicted && std::abs(a1 - from) > 1e-3 * a1) tight = predicted = predict(a1, tight_);
     const double a0 = a1, f0 = wheel_force();  // the prediction carries the load (to round-off)
     const bool moved = tight && predicted_at && predicted_at(a1);
-    const double f1 = phi(a1, moved ? std::min(final_, kMovedTolerance * tight_) : predicted ? final_ : start ? tight_ : loose_);
+    const double f1 =
+        phi(a1, moved ? std::min(final_, kMovedTolerance * tight_) : predicted ? final_ : start ? tight_ : loose_);
     if (moved) measure_stiffness(a0, f0);
     return secant(a1, f1);
   }

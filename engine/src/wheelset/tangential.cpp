@@ -113,8 +113,8 @@ class AreaGeometry {
 // surfaces' material moves along the deformed contact surface, which lies between the two undeformed ones (one
 // material: midway); v . t1 alone would add the wheel's own curvature term x^2 / (2 r^2) to xi at a distance x from
 // the axle's plane (up to 8e-5 on a 12 mm long patch at r = 0.46 m), a slip the rolling wheel does not have.
-// With tilt = tn / (2 |tw|), tn = tw . n: (v . t1 |tw| + tn v . n / 2) / sqrt(|tw|^2 + tn^2 / 4), one division per
-// element (it runs over every contact element twice per time step: divisions were most of its time).
+// With tilt = tn / (2 |tw|), tn = tw . n: (v . t1 |tw| + tn v . n / 2) / sqrt(|tw|^2 + tn^2 / 4), one division
+// instead of two (it runs over every contact element, twice per time step of a wheel with friction).
 // `tw`: axle x (X - c), the wheel's circumferential direction at X (unnormalised).
 [[gnu::always_inline]] inline double rolling_slip(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
                                                   const ElementFrame& f) {
