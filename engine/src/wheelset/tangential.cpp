@@ -172,9 +172,10 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
     const ElementFrame f = geo.frame(j);
     // On a conformal area a row's contact points are affine in the element's index and h (along the row's normal),
     // and so are v and axle x (X - c): per element two sums instead of the point and two cross products.
-    Eigen::Vector3d X0, Xi, Xh, v0, vi, vh, t0, ti, th;
+    Eigen::Vector3d v0 = Eigen::Vector3d::Zero(), vi = v0, vh = v0, t0 = v0, ti = v0, th = v0;
     if (pc.conformal) {
-      X0 = geo.contact_point(0, j, 0.0), Xi = geo.contact_point(1, j, 0.0) - X0, Xh = geo.contact_point(0, j, 1.0) - X0;
+      const Eigen::Vector3d X0 = geo.contact_point(0, j, 0.0);
+      const Eigen::Vector3d Xi = geo.contact_point(1, j, 0.0) - X0, Xh = geo.contact_point(0, j, 1.0) - X0;
       v0 = field.at(X0), vi = field.omega.cross(Xi), vh = field.omega.cross(Xh);
       t0 = field.axle.cross(X0 - field.c), ti = field.axle.cross(Xi), th = field.axle.cross(Xh);
     }
