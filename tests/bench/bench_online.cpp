@@ -20,9 +20,11 @@
 // The machine may be shared: CPU times (thread or process) are printed; wall times only where threads matter.
 //
 //   bench_online [quick] [reps=20] [surface=conformal|planar] [only=N] [poses] [passes=K] [steps=N] [grid=G]
+//                [variants=N]
 //   (default surface: conformal; only=N runs section N alone, for a profiler; section 1 runs 2 as well, for its poses;
 //   poses: section 3's time and evaluations per pose; passes=K: K more passes of section 3, e.g. for a profiler;
-//   steps=N: section 6's time steps, 667 (one period; quick: 200); grid=G: section 6 at G mm alone)
+//   steps=N: section 6's time steps, 667 (one period; quick: 200); grid=G: section 6 at G mm alone; variants=N:
+//   section 6's first N variants alone, e.g. 2: frictionless and FASTSIM, for a profiler)
 #include "lua/lua.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/lua/host.hpp"
@@ -131,7 +133,7 @@ HuntingStep hunting(int k) {
 
 // Section 6: the left wheel's Fz given along the hunting motion at V = 30 m/s, frictionless, FASTSIM and exact, the
 // three trajectories stepped in turn; per variant the median thread CPU per step and its ratio to the frictionless.
-void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double grid, int steps) {
+void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double grid, int steps, int variants) {
   constexpr double V = 30, mu = 0.3, Fz = 100e3;
   const char* names[3] = {"frictionless", "FASTSIM", "exact"};
   std::vector<wrc::Trajectory> traj;
@@ -146,7 +148,7 @@ void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double 
     const double w = 2 * std::numbers::pi * 1.5, time = k * 1e-3, A = 5e-3;
     const double y = A * std::sin(w * time), vy = A * w * std::cos(w * time), yaw = -vy / V;
     const double yaw_rate = A * w * w / V * std::sin(w * time);
-    for (int v = 0; v < 3; ++v) {
+    for (int v = 0; v < variants; ++v) {
       std::optional<wrc::RollingRequest> rolling;
       if (v > 0) {
         rolling.emplace();
@@ -170,12 +172,13 @@ void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double 
   }
   const double base = median(t[0]);
   fmt::print("grid {:.1f} mm:\n", grid * 1e3);
-  for (int v = 0; v < 3; ++v)
+  for (int v = 0; v < variants; ++v)
     fmt::print("  {:<12}: {:7.3f} ms per step ({:.2f}x the frictionless), {:.2f} evaluations per step, {} failed\n",
                names[v], 1e3 * median(t[v]), median(t[v]) / base, double(evaluations[v]) / steps, failed[v]);
-  for (int v = 0; v < 3; ++v)
+  for (int v = 0; v < variants; ++v)
     print_times(fmt::format("{}, per evaluation (normal part)", names[v]).c_str(), traj[static_cast<std::size_t>(v)].workspace().times,
                 traj[static_cast<std::size_t>(v)].workspace().times.evaluations);
+  if (variants < 3) return;
   fmt::print("  exact, the step's last tangential solve: {:.2f} Newton iterations, {:.1f} GMRES iterations, {:.1f} products "
              "with the influence matrix\n", creep_iterations / steps, creep_linear / steps, creep_products / steps);
   const auto& all = traj[2].workspace().rolling.totals;
@@ -188,7 +191,7 @@ int main(int argc, char** argv) {
   bool quick = false;
   int reps = 20, only = 0;
   bool per_pose = false;
-  int extra_passes = 0, rolling_steps = 667;
+  int extra_passes = 0, rolling_steps = 667, rolling_variants = 3;
   double rolling_grid = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "quick") == 0) quick = true, reps = 5;
@@ -199,6 +202,7 @@ int main(int argc, char** argv) {
     if (std::strncmp(argv[i], "passes=", 7) == 0) extra_passes = std::atoi(argv[i] + 7);
     if (std::strncmp(argv[i], "steps=", 6) == 0) rolling_steps = std::max(1, std::atoi(argv[i] + 6));
     if (std::strncmp(argv[i], "grid=", 5) == 0) rolling_grid = 1e-3 * std::atof(argv[i] + 5);
+    if (std::strncmp(argv[i], "variants=", 9) == 0) rolling_variants = std::clamp(std::atoi(argv[i] + 9), 1, 3);
   }
   if (quick) rolling_steps = std::min(rolling_steps, 200);
   auto run = [&](int section) { return only == 0 || only == section; };
@@ -403,7 +407,7 @@ int main(int argc, char** argv) {
                "at 1 kHz, yaw following, V = 30 m/s, mu = 0.3; {} steps ==\n", rolling_steps);
     std::vector<double> grids{0.5e-3, 0.2e-3};
     if (rolling_grid > 0) grids = {rolling_grid};
-    for (double grid : grids) rolling_steps_table(paper_wheelset(grid), grid, rolling_steps);
+    for (double grid : grids) rolling_steps_table(paper_wheelset(grid), grid, rolling_steps, rolling_variants);
   }
   return 0;
 }

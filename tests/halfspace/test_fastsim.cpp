@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -208,6 +209,63 @@ TEST_CASE("FASTSIM with mu_s > mu_k: the simplified theory's continuum solution,
           CHECK(std::hypot(s.px[k], s.py[k]) <= muk * h.pressure[k] * (1 + 1e-12));
       }
   }
+}
+
+// The march takes rows in groups (lockstep, for speed) but each row is a strip of its own: padding the grid with 1 .. 3
+// empty rows below the patch shifts every row to another place in its group (and the last group's size), and must
+// change no element's traction, slip or state, nor the sums; for constant friction with mu_s > mu_k and a falling law
+// (its own march), in partial slip, rolling either way, on patches of 9 and 12 rows whose grid ends at their last
+// row (with the padding, every size of the last group).
+TEST_CASE("FASTSIM's rows are independent strips: empty rows added below the patch change no element") {
+  for (int n : {5, 6})  // elements on the semi-axis b
+    for (int direction : {1, -1})
+      for (bool falling : {false, true}) {
+        const wrc::test::HertzPatch h = hertz_patch(3e-3, 1.2e-3, 1e9, n);
+        int j0 = h.grid.ny, j1 = -1;  // the rows in contact
+        for (int k = 0; k < h.grid.size(); ++k)
+          if (h.pressure[k] > 0) j0 = std::min(j0, k / h.grid.nx), j1 = std::max(j1, k / h.grid.nx);
+        // The contact rows alone, below them m empty rows.
+        const auto problem = [&](int m, std::vector<double>& p) {
+          TangentialProblem pb = rolling_problem(h, {0.4e-3, -0.5e-3, 0.6}, 0.3, direction);
+          pb.friction.static_coefficient = 0.35;
+          if (falling) pb.friction = Friction::polach(0.4, 0.4, 0.6), pb.speed = 30;
+          pb.grid.ny = j1 - j0 + 1 + m;
+          pb.grid.y0 = h.grid.y(j0) - m * h.grid.dy;
+          p.assign(static_cast<std::size_t>(pb.grid.size()), 0.0);
+          std::copy(h.pressure.begin() + j0 * h.grid.nx, h.pressure.begin() + (j1 + 1) * h.grid.nx,
+                    p.begin() + m * h.grid.nx);
+          pb.pressure = p;
+          return pb;
+        };
+        std::vector<double> p0, p;
+        const TangentialSolution ref = solve_fastsim(kSteel, problem(0, p0));
+        int slipping = 0;
+        for (unsigned char st : ref.state) slipping += st == kSlip;
+        CAPTURE(n);
+        CAPTURE(direction);
+        CAPTURE(falling);
+        CHECK(ref.grid.ny == (n == 5 ? 9 : 12));  // the last group's size 1 .. 4 as m goes 0 .. 3
+        CHECK(slipping > 5);
+        CHECK(ref.adhesion_fraction() > 0.1);
+        for (int m = 1; m <= 3; ++m) {
+          const TangentialSolution s = solve_fastsim(kSteel, problem(m, p));
+          CAPTURE(m);
+          const double tol = 1e-12 * 0.4 * 1e9;  // Pa: rounding (the rows' y now y0 - m dy + (j + m) dy)
+          const auto shift = static_cast<std::size_t>(m * h.grid.nx);
+          for (std::size_t k = 0; k < ref.state.size(); ++k) {
+            CHECK(s.state[k + shift] == ref.state[k]);
+            CHECK(std::abs(s.px[k + shift] - ref.px[k]) <= tol);
+            CHECK(std::abs(s.py[k + shift] - ref.py[k]) <= tol);
+            CHECK(std::abs(s.sx[k + shift] - ref.sx[k]) <= 1e-9 * (std::abs(ref.sx[k]) + 1e-9));
+            CHECK(std::abs(s.sy[k + shift] - ref.sy[k]) <= 1e-9 * (std::abs(ref.sy[k]) + 1e-9));
+          }
+          for (std::size_t k = 0; k < shift; ++k) CHECK(s.state[k] == kExterior);
+          CHECK(s.fx == within_rel(ref.fx, 1e-12));
+          CHECK(s.fy == within_rel(ref.fy, 1e-12));
+          CHECK(s.power_per_speed == within_rel(ref.power_per_speed, 1e-12));
+          CHECK(s.adhesion_area == ref.adhesion_area);
+        }
+      }
 }
 
 // A change of the pressure changes FASTSIM's forces through the bound mu p of the slip elements and through the

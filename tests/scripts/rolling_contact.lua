@@ -59,6 +59,43 @@ for surface, w in pairs{conformal = ws, planar = wp} do
   end
 end
 
+-- The rigid slip of every element of the conformal areas at y = 3 mm with all the kinematics (vy, yaw rate, omega off
+-- pure rolling), written out here: v = (V, vy, 0) + Omega x (X - c) at the element's point X on the wheel's undeformed
+-- surface (the row's point on the rail, h below it along the row's normal n), c = (0, y, z) the wheelset centre;
+-- along the track v . e_x tilted toward n by half the slope of the wheel's circumference a x (X - c) (a the axle),
+-- across it v . t2 with t2 = (0, n_z, -n_y).
+do
+  local c = ws:contact(pose(e3, {V = V, mu = 0.3, yaw_rate = 0.02, vy = 0.1, omega = V / r0 * 1.001}))
+  local a = {x = 0, y = math.cos(e3.roll), z = math.sin(e3.roll)}
+  local om = {x = V / r0 * 1.001 * a.x, y = V / r0 * 1.001 * a.y, z = V / r0 * 1.001 * a.z + 0.02}
+  local worst, count = 0, 0
+  for _, side in ipairs{"left", "right"} do
+    for _, p in ipairs(c[side].patches) do
+      for j = 1, p.grid.ny do
+        local n = {x = 0, y = p.rows.normal_y[j], z = p.rows.normal_z[j]}
+        for k = 1, p.grid.nx do
+          if p.pressure[j][k] > 0 then
+            local h = p.h[j][k]
+            local d = {x = p.frame.origin.x + p.grid.x0 + (k - 1) * p.grid.dx,
+                       y = p.rows.y[j] - h * n.y - e3.y, z = p.rows.z[j] - h * n.z - e3.z}
+            local w = cross(om, d)
+            local v = {x = V + w.x, y = 0.1 + w.y, z = w.z}
+            local tw = cross(a, d)
+            if tw.x < 0 then tw = {x = -tw.x, y = -tw.y, z = -tw.z} end
+            local tilt = 0.5 * (tw.y * n.y + tw.z * n.z) / math.sqrt(tw.x ^ 2 + tw.y ^ 2 + tw.z ^ 2)
+            local sx = (v.x + tilt * (v.y * n.y + v.z * n.z)) / math.sqrt(1 + tilt * tilt)
+            local sy = v.y * n.z - v.z * n.y
+            worst = math.max(worst, math.abs(p.rigid_slip_x[j][k] - sx), math.abs(p.rigid_slip_y[j][k] - sy))
+            count = count + 1
+          end
+        end
+      end
+    end
+  end
+  check.ok(count > 100, "conformal kinematics: elements in contact (" .. count .. ")")
+  check.ok(worst < 1e-12 * V, "conformal kinematics: the rigid slip of every element (worst " .. worst .. " m/s)")
+end
+
 -- The rigid slip of every element of the wide, curved patch of the centred wheelset (zero yaw, roll ~ 0): the wheel's
 -- point at lateral position Y and track x moves at V - omega d along the track, d its height below the axle:
 -- sqrt(R(Y)^2 - x^2) with R the wheel radius there (the placed profile, interpolated here): the wheel's undeformed

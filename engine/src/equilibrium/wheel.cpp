@@ -27,6 +27,11 @@ constexpr double kFirstRollingTolerance = 1e-4;
 // concludes at (WheelResult::converged: within it): 2e-3 Fz, or 10 % of C (an element more in a region of ten
 // along the rolling direction lengthens FASTSIM's rows by 10 %); larger ones are no grid element's.
 constexpr double kMaxJump = 2e-3, kMaxCreepJump = 0.1;
+// The evaluation after the creep forces moved the load and the approach, solved this much tighter than
+// normal_tolerance: its start carries the old load (~1e-4 off), and at 1x its force missed the load by its solve's
+// noise in a tenth of the steps (an evaluation more); at 0.5x it does so as rarely as at 0.1x (S1002/60E1 at 0.2 mm,
+// 667 time steps: 2.09 against 2.08 evaluations per step, 1.0 CG iteration fewer; docs/performance.md).
+constexpr double kMovedTolerance = 0.5;
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
 //
@@ -69,9 +74,9 @@ class WheelSolver {
   // areas or steep normals (no prediction). From a close start (a trajectory's last approach) the first step is within
   // 1e-3 of the approach and the second is skipped. `predicted_at`: called with the last prediction's evaluation and
   // approach when it was solved at normal_tolerance; it may set another load and move the approach (then true). The
-  // evaluation there no longer starts from the solution it needs (its pressures carry the old load): it is solved
-  // 10x tighter, or its force would miss by its solve's noise (~1e-6 of the load at 1e-6) and cost an evaluation
-  // more; its force measures the stiffness on the way. True when converged frictionless.
+  // evaluation there no longer starts from the solution it needs (its pressures carry the old load): it is solved to
+  // kMovedTolerance x normal_tolerance, or its force would miss by its solve's noise (~1e-6 of the load at 1e-6) and
+  // cost an evaluation more; its force measures the stiffness on the way. True when converged frictionless.
   bool solve(std::optional<double> start, const std::function<bool(double&)>& predicted_at = {}) {
     const double cold = opt_.wheel_approach * std::cbrt((load_ / 100e3) * (load_ / 100e3));  // Hertz: a ~ F^(2/3)
     double a1 = std::min(start && *start > 0 ? *start : cold, opt_.limits.max_penetration);
@@ -81,7 +86,8 @@ class WheelSolver {
     if (predicted && std::abs(a1 - from) > 1e-3 * a1) tight = predicted = predict(a1, tight_);
     const double a0 = a1, f0 = wheel_force();  // the prediction carries the load (to round-off)
     const bool moved = tight && predicted_at && predicted_at(a1);
-    const double f1 = phi(a1, moved ? std::min(final_, 0.1 * tight_) : predicted ? final_ : start ? tight_ : loose_);
+    const double f1 =
+        phi(a1, moved ? std::min(final_, kMovedTolerance * tight_) : predicted ? final_ : start ? tight_ : loose_);
     if (moved) measure_stiffness(a0, f0);
     return secant(a1, f1);
   }

@@ -127,66 +127,89 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
   const double mus = pb.friction.static_coefficient, muk = pb.friction.kinetic_coefficient, dA = g.element_area();
   const double half = 0.5 * g.dx, inv_dx = 1 / g.dx;
   const bool extra = !pb.extra_x.empty(), scaled = !pb.friction_scale.empty(), falling = pb.friction.slip_dependent();
-  double fx = 0, fy = 0, mz = 0, power = 0, contact = 0, adhesion = 0;
   // The rows, compiled apart for constant and slip-dependent friction (the latter's branch in the constant one's
-  // loop cost it 5 % more instructions).
+  // loop cost it 5 % more instructions). Each element hangs on its upstream neighbour (in slip through project()'s
+  // divisions and roots, whose latency the march waited on), the rows on nothing: kRows of them are marched in
+  // lockstep, so that the processor overlaps their chains (a third less time at 0.2 mm; the same operations per
+  // element, the same results).
+  constexpr int kRows = 4;
+  struct Strip {
+    double ux = 0, uy = 0, wx_up = 0, wy_up = 0;  // upstream element's layer displacement and slip (0 outside)
+    bool sliding = false;                          // the upstream element slipped
+  };
   const auto march = [&](auto slip_dependent) {
-    for (int j = 0; j < g.ny; ++j) {
+    const auto element = [&](int i, int j, double x, Strip& st) {
+      const auto k = static_cast<std::size_t>(g.index(i, j));
+      const double pn = pb.pressure[k];
+      out.sx[k] = out.sy[k] = 0;
+      if (!(pn > 0)) {
+        out.px[k] = out.py[k] = 0;
+        out.state[k] = kExterior;
+        st = Strip{};
+        return;
+      }
+      const Layer& L = layers[static_cast<std::size_t>(label[k])];
       const double y = g.y(j) - pb.ref_y;
-      double ux = 0, uy = 0, wx_up = 0, wy_up = 0;  // upstream element's layer displacement and slip (0 outside)
-      bool sliding = false;                          // the upstream element slipped
+      // The layer's rigid slip: translational creepages and the extra slip as they are, the spin scaled per axis.
+      const double wx = c.xi - L.spin_x * y + (extra ? pb.extra_x[k] : 0.0);
+      const double wy = c.eta + L.spin_y * x + (extra ? pb.extra_y[k] : 0.0);
+      const double qx = (st.ux - half * (wx + st.wx_up)) * L.inv_lx, qy = (st.uy - half * (wy + st.wy_up)) * L.inv_ly;
+      double px = qx, py = qy, sx = 0, sy = 0;
+      const double gp = scaled ? pn * pb.friction_scale[k] : pn;
+      bool sliding = st.sliding;
+      if constexpr (decltype(slip_dependent)::value) {
+        const FallingSlip fs{L.lx, L.ly, inv_dx, pb.speed, pb.friction};
+        sliding = (sliding || qx * qx + qy * qy > mus * mus * gp * gp) && fs.solve(qx, qy, gp, px, py, sx, sy) > 0;
+        if (!sliding) px = qx, py = qy;
+      } else {
+        const double bound = (sliding ? muk : mus) * gp;
+        sliding = qx * qx + qy * qy > bound * bound;
+        if (sliding) {
+          project(L.lx, L.ly, qx, qy, muk * gp, px, py);
+          sx = L.lx * (px - qx) * inv_dx, sy = L.ly * (py - qy) * inv_dx;
+        }
+      }
+      out.state[k] = sliding ? kSlip : kAdhesion;
+      out.sx[k] = sx;
+      out.sy[k] = sy;
+      out.px[k] = px, out.py[k] = py;
+      st = {L.lx * px, L.ly * py, wx, wy, sliding};
+    };
+    for (int j0 = 0; j0 < g.ny; j0 += kRows) {
+      const int rows = std::min(kRows, g.ny - j0);
+      Strip st[kRows];
       for (int step = 0; step < g.nx; ++step) {
         const int i = pb.direction > 0 ? g.nx - 1 - step : step;
-        const auto k = static_cast<std::size_t>(g.index(i, j));
-        const double pn = pb.pressure[k];
-        out.sx[k] = out.sy[k] = 0;
-        if (!(pn > 0)) {
-          out.px[k] = out.py[k] = 0;
-          out.state[k] = kExterior;
-          ux = uy = wx_up = wy_up = 0;
-          sliding = false;
-          continue;
-        }
-        const Layer& L = layers[static_cast<std::size_t>(label[k])];
         const double x = g.x(i) - pb.ref_x;
-        // The layer's rigid slip: translational creepages and the extra slip as they are, the spin scaled per axis.
-        const double wx = c.xi - L.spin_x * y + (extra ? pb.extra_x[k] : 0.0);
-        const double wy = c.eta + L.spin_y * x + (extra ? pb.extra_y[k] : 0.0);
-        const double qx = (ux - half * (wx + wx_up)) * L.inv_lx, qy = (uy - half * (wy + wy_up)) * L.inv_ly;
-        double px = qx, py = qy, sx = 0, sy = 0;
-        const double gp = scaled ? pn * pb.friction_scale[k] : pn;
-        if constexpr (decltype(slip_dependent)::value) {
-          const FallingSlip fs{L.lx, L.ly, inv_dx, pb.speed, pb.friction};
-          sliding = (sliding || qx * qx + qy * qy > mus * mus * gp * gp) && fs.solve(qx, qy, gp, px, py, sx, sy) > 0;
-          if (!sliding) px = qx, py = qy;
+        if (rows == kRows) {
+#pragma GCC unroll 4
+          for (int r = 0; r < kRows; ++r) element(i, j0 + r, x, st[r]);
         } else {
-          const double bound = (sliding ? muk : mus) * gp;
-          sliding = qx * qx + qy * qy > bound * bound;
-          if (sliding) {
-            project(L.lx, L.ly, qx, qy, muk * gp, px, py);
-            sx = L.lx * (px - qx) * inv_dx, sy = L.ly * (py - qy) * inv_dx;
-          }
+          for (int r = 0; r < rows; ++r) element(i, j0 + r, x, st[r]);
         }
-        if (sliding) {
-          out.state[k] = kSlip;
-          out.sx[k] = sx;
-          out.sy[k] = sy;
-          power -= px * sx + py * sy;
-        } else {
-          out.state[k] = kAdhesion;
-          adhesion += 1;
-        }
-        out.px[k] = px, out.py[k] = py;
-        contact += 1;
-        fx += px;
-        fy += py;
-        mz += x * py - y * px;
-        ux = L.lx * px, uy = L.ly * py, wx_up = wx, wy_up = wy;
       }
     }
   };
   if (falling) march(std::true_type{});
   else march(std::false_type{});
+  // The sums, row by row along the rolling direction as the march went before its rows were interleaved (the same
+  // order of additions: the same bits).
+  double fx = 0, fy = 0, mz = 0, power = 0, contact = 0, adhesion = 0;
+  for (int j = 0; j < g.ny; ++j) {
+    const double y = g.y(j) - pb.ref_y;
+    for (int step = 0; step < g.nx; ++step) {
+      const int i = pb.direction > 0 ? g.nx - 1 - step : step;
+      const auto k = static_cast<std::size_t>(g.index(i, j));
+      if (out.state[k] == kExterior) continue;
+      const double x = g.x(i) - pb.ref_x, px = out.px[k], py = out.py[k];
+      if (out.state[k] == kSlip) power -= px * out.sx[k] + py * out.sy[k];
+      else adhesion += 1;
+      contact += 1;
+      fx += px;
+      fy += py;
+      mz += x * py - y * px;
+    }
+  }
   out.fx = fx * dA;
   out.fy = fy * dA;
   out.mz = mz * dA;

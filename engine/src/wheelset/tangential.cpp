@@ -61,10 +61,12 @@ VelocityField velocity_field(const Kinematics& k, double r0, const Pose& pose) {
 }
 
 // The tangential problem of an area: its pressure, the creepages at the plane's origin and, from kinematics, the
-// per-element difference of the rigid slip at the elements' contact points from the creepages' linear field.
+// per-element difference of the rigid slip at the elements' contact points from the creepages' linear field; with
+// `rigid`, also the rigid slip itself (the result's, 0 outside the contact), as halfspace::rigid_slip sums it.
 struct AreaSlip {
   halfspace::Creepages creepages;
   std::vector<double> extra_x, extra_y;
+  std::vector<double> rigid_x, rigid_y;
   double V = 1;
 };
 
@@ -111,14 +113,18 @@ class AreaGeometry {
 // surfaces' material moves along the deformed contact surface, which lies between the two undeformed ones (one
 // material: midway); v . t1 alone would add the wheel's own curvature term x^2 / (2 r^2) to xi at a distance x from
 // the axle's plane (up to 8e-5 on a 12 mm long patch at r = 0.46 m), a slip the rolling wheel does not have.
-double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X, const Eigen::Vector3d& v,
-                    const ElementFrame& f) {
-  Eigen::Vector3d tw = field.axle.cross(X - field.c);
-  if (tw.dot(f.t1) < 0) tw = -tw;
-  const double norm = tw.norm();
-  if (!(norm > 0)) return v.dot(f.t1);
-  const double tilt = 0.5 * tw.dot(f.n) / norm;
-  return (v.dot(f.t1) + tilt * v.dot(f.n)) / std::sqrt(1 + tilt * tilt);
+// With tilt = tn / (2 |tw|), tn = tw . n: (v . t1 |tw| + tn v . n / 2) / sqrt(|tw|^2 + tn^2 / 4), one division
+// instead of two (it runs over every contact element, twice per time step of a wheel with friction).
+// `tw`: axle x (X - c), the wheel's circumferential direction at X (unnormalised).
+[[gnu::always_inline]] inline double rolling_slip(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
+                                                  const ElementFrame& f) {
+  const double norm2 = tw.squaredNorm(), tn = tw.dot(f.t1) < 0 ? -tw.dot(f.n) : tw.dot(f.n);
+  if (!(norm2 > 0)) return v.dot(f.t1);
+  return (v.dot(f.t1) * std::sqrt(norm2) + 0.5 * tn * v.dot(f.n)) / std::sqrt(norm2 + 0.25 * tn * tn);
+}
+[[gnu::always_inline]] inline double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X,
+                                                  const Eigen::Vector3d& v, const ElementFrame& f) {
+  return rolling_slip(field.axle.cross(X - field.c), v, f);
 }
 
 // rolling_slip's change (the frame held) for changes dv of v, dr of X - c and d_axle of the axle.
@@ -135,7 +141,8 @@ double rolling_slip_change(const VelocityField& field, const Eigen::Vector3d& X,
   return (dv.dot(f.t1) + tilt * dv.dot(f.n) + dtilt * v.dot(f.n)) / root - s * tilt * dtilt / (root * root);
 }
 
-AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq) {
+AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq,
+                   bool rigid = false) {
   AreaSlip a;
   if (rq.creepage) {
     a.creepages = *rq.creepage;
@@ -158,14 +165,38 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   a.creepages = {rolling_slip(field, X0, v0, f0) / speed, v0.dot(f0.t2) / speed, field.omega.dot(f0.n) / speed};
   a.extra_x.assign(static_cast<std::size_t>(g.size()), 0.0);
   a.extra_y.assign(a.extra_x.size(), 0.0);
+  if (rigid) a.rigid_x.assign(a.extra_x.size(), 0.0), a.rigid_y.assign(a.extra_x.size(), 0.0);
+  const halfspace::Creepages& c = a.creepages;
+  const double inv_speed = 1 / speed;
   for (int j = 0; j < g.ny; ++j) {
     const ElementFrame f = geo.frame(j);
+    // On a conformal area a row's contact points are affine in the element's index and h (along the row's normal),
+    // and so are v and axle x (X - c): per element two sums instead of the point and two cross products.
+    Eigen::Vector3d v0 = Eigen::Vector3d::Zero(), vi = v0, vh = v0, t0 = v0, ti = v0, th = v0;
+    if (pc.conformal) {
+      const Eigen::Vector3d X0 = geo.contact_point(0, j, 0.0);
+      const Eigen::Vector3d Xi = geo.contact_point(1, j, 0.0) - X0, Xh = geo.contact_point(0, j, 1.0) - X0;
+      v0 = field.at(X0), vi = field.omega.cross(Xi), vh = field.omega.cross(Xh);
+      t0 = field.axle.cross(X0 - field.c), ti = field.axle.cross(Xi), th = field.axle.cross(Xh);
+    }
     for (int i = 0; i < g.nx; ++i) {
       const auto q = static_cast<std::size_t>(g.index(i, j));
       if (!(pc.solution.pressure[q] > 0)) continue;  // the slip matters on the contact only
-      const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), v = field.at(X);
-      a.extra_x[q] = rolling_slip(field, X, v, f) / speed - (a.creepages.xi - a.creepages.phi * g.y(j));
-      a.extra_y[q] = v.dot(f.t2) / speed - (a.creepages.eta + a.creepages.phi * g.x(i));
+      double sx, sy;
+      if (pc.conformal) {
+        const double h = pc.h[q];
+        const Eigen::Vector3d v = v0 + i * vi + h * vh;
+        sx = rolling_slip(t0 + i * ti + h * th, v, f), sy = v.dot(f.t2);
+      } else {
+        const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), v = field.at(X);
+        sx = rolling_slip(field, X, v, f), sy = v.dot(f.t2);
+      }
+      a.extra_x[q] = sx * inv_speed - (c.xi - c.phi * g.y(j));
+      a.extra_y[q] = sy * inv_speed - (c.eta + c.phi * g.x(i));
+      if (!rigid) continue;
+      // halfspace::rigid_slip's sums (the reference point at the grid's origin), without its pass over the grid
+      a.rigid_x[q] = c.xi - c.phi * g.y(j) + a.extra_x[q];
+      a.rigid_y[q] = c.eta + c.phi * g.x(i) + a.extra_y[q];
     }
   }
   return a;
@@ -329,7 +360,7 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   }
   if (pc.solution.pressure.empty() || pc.h.empty())
     fail("rolling contact: the {} wheel's area has no pressure grid (kept grids are needed)", side_name(pc.side));
-  const AreaSlip slip = area_slip(model, pose, pc, rq);
+  AreaSlip slip = area_slip(model, pose, pc, rq, true);
   halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
   PatchRolling r;
   if (const auto& profile = rq.friction_profile[static_cast<std::size_t>(pc.side)]) {
@@ -358,9 +389,14 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
     next.push_back({frame.O, frame.t1, frame.t2, frame.n, s.grid, pc.solution.pressure, {}, s.px, s.py, s.state});
   }
   const halfspace::TangentialSolution& s = r.solution;
-  halfspace::rigid_slip(pb, r.rigid_x, r.rigid_y);
-  for (std::size_t k = 0; k < r.rigid_x.size(); ++k)
-    if (!(pb.pressure[k] > 0)) r.rigid_x[k] = r.rigid_y[k] = 0;
+  if (!slip.rigid_x.empty()) {  // kinematics: area_slip summed it
+    r.rigid_x = std::move(slip.rigid_x);
+    r.rigid_y = std::move(slip.rigid_y);
+  } else {
+    halfspace::rigid_slip(pb, r.rigid_x, r.rigid_y);
+    for (std::size_t k = 0; k < r.rigid_x.size(); ++k)
+      if (!(pb.pressure[k] > 0)) r.rigid_x[k] = r.rigid_y[k] = 0;
+  }
   r.fx = s.fx;
   r.fy = s.fy;
   r.mz = s.mz;
