@@ -267,7 +267,7 @@ end
 local function sweep_keys(ws, g, o, warm)
   local c = g.case
   local k = {y = g.ys, yaw = {c.yaw}, Q = c.Q, V = c.V, mu = c.mu, wear = o.wear or {}, method = o.method,
-             grids = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
+             rows = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
   if c.creepage then k.creepage = c.creepage
   elseif c.radius then k.yaw_rate = c.V / c.radius end
   -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group

@@ -5,7 +5,9 @@
 --     wear model, grids, contact starts), while the script ran an equilibrium and a second job meanwhile; that
 --     equilibrium and the second job's rows equal the same calls made alone;
 --   - the result is given once: a second wait is refused; a job never waited for is collected without harm;
---   - bad keys are refused by ws:sweep_start naming the key; an error of the run itself comes with wait.
+--   - bad keys are refused by ws:sweep_start naming the key; an error of the run itself comes with wait;
+--   - rows = true (ws:sweep's key: per-row results without the grids) keeps wear_passage bit for bit, and its sum
+--     over the rows times their width is the area's wear volume per metre rolled (the Archard integral, both ways).
 local check = require "wrc.check"
 
 local ws = wrc.wheelset{wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua"),
@@ -51,4 +53,28 @@ check.fails(function() ws:sweep_start{y = {0}, yaw = {0}, Q = Q, chian = 2} end,
 check.fails(function() ws:sweep_start{y = {0}, yaw = {0}} end, "Q", "no Q")
 local bad = ws:sweep_start{y = {0}, yaw = {0}, Q = -1, progress = false}
 check.fails(function() bad:wait() end, "Q = -1 N must be a positive number", "a negative Q, at wait")
+
+-- rows = true (the wear loop's sweeps): the grids dropped, each area's wear per row kept, the same bits as with the
+-- grids, and summed over the rows (times their width) the area's wear volume per metre rolled.
+local light = {}
+for k, v in pairs(keys) do light[k] = v end
+light.grids, light.rows, light.contact_starts = nil, true, nil
+local lr = ws:sweep(light)
+local areas = 0
+for i, row in ipairs(lr) do
+  for _, side in ipairs{"left", "right"} do
+    for k, p in ipairs(row[side].patches) do
+      local full = rows[i][side].patches[k]
+      check.ok(p.wear_depth == nil and full.wear_depth ~= nil, "rows: no grids (and the full sweep's are there)")
+      local sum = 0
+      for j, d in ipairs(p.wear_passage) do
+        check.ok(d == full.wear_passage[j], "rows: the same bits as with the grids")
+        sum = sum + d * p.grid.dy
+      end
+      check.near(sum, p.wear_volume, 1e-9 * p.wear_volume, "rows: wear_passage dy summed = wear_volume")
+      areas = areas + 1
+    end
+  end
+end
+check.ok(areas >= 12, ("rows: %d areas checked"):format(areas))
 print("sweep_start: ok")
