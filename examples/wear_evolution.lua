@@ -79,14 +79,15 @@ local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, 
 local csv_cases = opt.cases ~= "" and loop.read_cases(opt.cases) or nil
 
 -- The cases on a state's profiles: the CSV's, or generated (the curving ones pressed against the flange with their
--- lateral forces, found on the state's profiles: wear moves the flange away, the force stays).
+-- lateral forces, found on the state's profiles: wear moves the flange away, the force stays; the tangent cases are
+-- solved meanwhile: `early`).
 local forces = {}
 for f in opt.curve_forces_kN:gmatch("[^,%s]+") do
   local v = tonumber(f)
   if not v or v <= 0 or v > 500 then error("curve_forces_kN: '" .. f .. "' is not a force in ]0, 500] kN", 0) end
   forces[#forces + 1] = v * 1e3
 end
-local function cases_of(st)
+local function cases_of(st, early)
   if csv_cases then return csv_cases end
   local curve_share = #forces > 0 and opt.curve_share or 0
   local curves = {}
@@ -100,7 +101,7 @@ local function cases_of(st)
   return loop.generated_cases{
     Q = Q, V = opt.V_kmh / 3.6, mu = opt.mu, tangent = opt.tangent, sigma = opt.sigma_mm * 1e-3, curves = curves,
     forces = forces, y_for_force = function(sign, Y, yaw, from, hint) return loop.y_for_force(ws, sign, Y, yaw, Q, from, hint) end,
-    previous = st.previous_cases}
+    previous = st.previous_cases, early = early}
 end
 
 -- The states of the loop: state k after k steps, with its measures. Kept from one compute call to the next; a run

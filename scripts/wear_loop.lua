@@ -78,10 +78,13 @@ end
 
 -- Generated cases (o: Q, V, mu, tangent = n, sigma (m), curves = {{radius =, yaw =, share =}, ...}, forces = {N, ...},
 -- y_for_force = function(sign, Y, yaw, from, hint) -> y, root (M.y_for_force), previous = the cases generated on the
--- profiles before (their equilibria start the search; a state's `previous_cases`, set by M.step)): n cases on tangent track at lateral shifts over +-3 sigma weighted by a
--- normal distribution (together the share 1 - the curves'), and per curve one case for each lateral force in
--- `forces`, the wheelset pressed with it against the curve's outer rail (y_for_force: the shift at which the
--- frictionless equilibrium needs that lateral force, M.y_for_force), with the curve's attack angle and yaw rate.
+-- profiles before (their equilibria start the search; a state's `previous_cases`, set by M.step),
+-- early = function(list) (optional: given the tangent cases before the curving ones are placed, e.g. the `early` M.step
+-- hands a cases function, which starts their solves meanwhile)): n cases on tangent track at lateral shifts over
+-- +-3 sigma weighted by a normal distribution (together the share 1 - the curves'), and per curve one case for each
+-- lateral force in `forces`, the wheelset pressed with it against the curve's outer rail (y_for_force: the shift at
+-- which the frictionless equilibrium needs that lateral force, M.y_for_force), with the curve's attack angle and yaw
+-- rate.
 function M.generated_cases(o)
   local cases, curve_share = {}, 0
   for _, cv in ipairs(o.curves or {}) do curve_share = curve_share + cv.share end
@@ -97,6 +100,7 @@ function M.generated_cases(o)
     cases[#cases + 1] = {y = w.y, yaw = 0, Q = o.Q, V = o.V, mu = o.mu, share = (1 - curve_share) * w.w / total,
                          kind = "tangent"}
   end
+  if o.early and #cases > 0 then o.early({table.unpack(cases)}) end
   for _, cv in ipairs(o.curves or {}) do
     local sign = cv.radius > 0 and -1 or 1  -- a curve toward +y has its outer rail at -y: flange on the right
     local forces = {table.unpack(o.forces)}
@@ -263,7 +267,7 @@ end
 local function sweep_keys(ws, g, o, warm)
   local c = g.case
   local k = {y = g.ys, yaw = {c.yaw}, Q = c.Q, V = c.V, mu = c.mu, wear = o.wear or {}, method = o.method,
-             grids = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
+             rows = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
   if c.creepage then k.creepage = c.creepage
   elseif c.radius then k.yaw_rate = c.V / c.radius end
   -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group
@@ -279,35 +283,67 @@ end
 -- moves as the flange wears) or its y.
 local function start_key(c) return case_key(c) .. "|" .. (c.Y and ("Y%.17g"):format(c.Y) or ("%.17g"):format(c.y)) end
 
+-- The sweeps of a state's cases, each started on threads of its own (ws:sweep_start) as soon as its group's cases are
+-- known, so that the script goes on meanwhile (placing the curving cases while the tangent ones are solved). `starts`
+-- as M.solve's. start(cases) starts the groups not started yet (a group is its sweep key and its y values);
+-- finish(cases, each) starts the rest, calls each(i, result), if given, for the cases in the list's order as soon as
+-- a case and the ones before it are solved, and returns M.solve's results. Every case's result is the same whichever
+-- sweeps ran together: no case depends on the thread that solves it.
+local function solver(ws, o, starts)
+  local jobs = {}
+  local function id(g)
+    local ys = {}
+    for k, y in ipairs(g.ys) do ys[k] = ("%.17g"):format(y) end
+    return case_key(g.case) .. "|" .. table.concat(ys, ",")
+  end
+  local function start(cases)
+    for _, g in ipairs(groups_of(cases)) do
+      local key = id(g)
+      if not jobs[key] then
+        local keys = sweep_keys(ws, g, o, starts ~= nil)
+        keys.contact_starts = o.warm ~= false and o.warm ~= "equilibrium"
+        if starts then
+          local z, roll, contact = {}, {}, {}
+          for k, y in ipairs(g.ys) do
+            local s = starts[start_key(cases[g.members[("%.17g"):format(y)][1]])]
+            z[k], roll[k] = s and s.z or 0 / 0, s and s.roll or 0 / 0
+            contact[k] = keys.contact_starts and s and s.contact or false
+          end
+          keys.starts = {z = z, roll = roll, contact = contact}
+        end
+        jobs[key] = ws:sweep_start(keys)
+      end
+    end
+  end
+  local function finish(cases, each)
+    start(cases)
+    local results, next_starts, done = {}, {}, 0
+    for _, g in ipairs(groups_of(cases)) do
+      local s = jobs[id(g)]:wait()
+      for k, y in ipairs(g.ys) do
+        for _, i in ipairs(g.members[("%.17g"):format(y)]) do
+          results[i] = s[k]
+          if s[k].converged then
+            next_starts[start_key(cases[i])] = {z = s[k].z, roll = s[k].roll, contact = s[k].contact_start}
+          end
+        end
+      end
+      while each and results[done + 1] do
+        done = done + 1
+        each(done, results[done])
+      end
+    end
+    return results, next_starts
+  end
+  return {start = start, finish = finish}
+end
+
 -- Every case solved: results[i] = the equilibrium with its rolling contact (e.converged false: failed). `starts`
 -- (optional): by start_key, the equilibria {z =, roll =} and the pressures and tractions they ended with (contact:
 -- ws:sweep's contact_start) of the cases solved on profiles worn a little less, which start each case's (ws:sweep's
 -- starts). Returns the results and the starts they give the next profiles.
 function M.solve(ws, cases, o, starts)
-  local results, next_starts = {}, {}
-  for _, g in ipairs(groups_of(cases)) do
-    local keys = sweep_keys(ws, g, o, starts ~= nil)
-    keys.contact_starts = o.warm ~= false and o.warm ~= "equilibrium"
-    if starts then
-      local z, roll, contact = {}, {}, {}
-      for k, y in ipairs(g.ys) do
-        local s = starts[start_key(cases[g.members[("%.17g"):format(y)][1]])]
-        z[k], roll[k] = s and s.z or 0 / 0, s and s.roll or 0 / 0
-        contact[k] = keys.contact_starts and s and s.contact or false
-      end
-      keys.starts = {z = z, roll = roll, contact = contact}
-    end
-    local s = ws:sweep(keys)
-    for k, y in ipairs(g.ys) do
-      for _, i in ipairs(g.members[("%.17g"):format(y)]) do
-        results[i] = s[k]
-        if s[k].converged then
-          next_starts[start_key(cases[i])] = {z = s[k].z, roll = s[k].roll, contact = s[k].contact_start}
-        end
-      end
-    end
-  end
-  return results, next_starts
+  return solver(ws, o, starts).finish(cases)
 end
 
 ----------------------------------------------------------------------------------------------------------------
@@ -393,19 +429,24 @@ end
 -- One step
 
 -- The wear rates of a state: per body the depth per point (m) per metre rolled (wheels) or per passage (rails),
--- smoothed; the Archard volume per metre rolled of each wheel (m^3/m, share-weighted); the failed cases.
+-- smoothed; the Archard volume per metre rolled of each wheel (m^3/m, share-weighted); the failed cases. `cases`: a
+-- list, or M.step's function of the state (called with the state and `early`, which starts the solves of the cases
+-- it is given while the function places the others). Returns the rates and the list of cases.
 local function rates(st, cases, o)
   local ws = M.wheelset(st)
   local geo = {bodies = st.bodies, y_tape = ws.params.back_to_back / 2 + ws.params.tape_offset,
                r0 = ws.params.radius, placed = placed_rails(st, ws)}
-  local results, starts = M.solve(ws, cases, o, o.warm ~= false and st.starts or nil)
+  local solve = solver(ws, o, o.warm ~= false and st.starts or nil)
+  if type(cases) == "function" then cases = cases(st, solve.start) end
   local strips = {dy = {}}
   for _, name in ipairs(M.BODIES) do strips[name] = {centre = {}, width = {}, area = {}} end
   local total_share = 0
   for _, c in ipairs(cases) do total_share = total_share + c.share end
-  local r = {cases = #cases, failed = 0, archard = {left = 0, right = 0}, errors = {}, rate = {}, starts = starts,
+  local r = {cases = #cases, failed = 0, archard = {left = 0, right = 0}, errors = {}, rate = {},
              evaluations = 0, products = 0}
-  for i, e in ipairs(results) do
+  -- Each case mapped in the list's order (the sums' order) as soon as it and the ones before it are solved: the
+  -- tangent cases while the curving ones still are.
+  local function map(i, e)
     r.evaluations = r.evaluations + (e.evaluations or 0)
     for _, side in ipairs{"left", "right"} do
       for _, p in ipairs(e[side] and e[side].patches or {}) do r.products = r.products + (p.creep_products or 0) end
@@ -420,6 +461,8 @@ local function rates(st, cases, o)
       r.errors[#r.errors + 1] = ("case %d: %s"):format(i, tostring(e.error))
     end
   end
+  local _, starts = solve.finish(cases, map)
+  r.starts = starts
   for _, name in ipairs(M.BODIES) do
     local b = st.bodies[name]
     local arc = wrc.wear.arc_length{y = b.y, z = b.z}
@@ -428,7 +471,7 @@ local function rates(st, cases, o)
     if d and o.smooth > 0 then d = wrc.wear.smooth{arc = arc, depth = d, length = o.smooth} end
     r.rate[name] = d or nil
   end
-  return r
+  return r, cases
 end
 
 -- A profile must be monotone in y (wrc.profile.points). On a flange face steeper than 80 degrees, points 0.1 mm apart
@@ -497,8 +540,10 @@ local function mean_rate(a, b)
   return m
 end
 
--- `cases`: a list, or a function(state) -> list (cases placed on the state's profiles, e.g. from its flanges; the
--- state's `previous_cases` are the list placed on the profiles before, to start from).
+-- `cases`: a list, or a function(state, early) -> list (cases placed on the state's profiles, e.g. from its flanges;
+-- the state's `previous_cases` are the list placed on the profiles before, to start from; early(list), optional,
+-- starts the solves of the cases in `list`, those of the final list that need no placing, while it places the others:
+-- M.generated_cases' key `early`).
 -- o = {step = m (the largest wheel depth of the step), smooth = m (the smoothing's standard deviation), wear = {...}
 -- (the wear model's keys), method =, threads =, chain =, rail_passes = (passages of the wheelset over a rail
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =
@@ -516,12 +561,10 @@ end
 -- (m^3), the cases and failed cases, the times the control shortened it (retries), the contact evaluations of the
 -- cases' equilibria (evaluations) and the exact tangential solver's products on the areas' grids (products).
 function M.step(st, cases, o)
-  local function cases_at(state) return type(cases) == "function" and cases(state) or cases end
   if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
     error("wear step: tolerance = " .. tostring(o.tolerance) .. " must be a depth > 0 (m) or nil", 0)
   end
-  local cases0 = cases_at(st)
-  local r0 = rates(st, cases0, o)
+  local r0, cases0 = rates(st, cases, o)
   local largest = 0
   for _, name in ipairs{"left_wheel", "right_wheel"} do
     for _, v in ipairs(r0.rate[name] or {}) do largest = math.max(largest, v) end
@@ -540,8 +583,7 @@ function M.step(st, cases, o)
     while true do
       local predicted = advance(st, r0.rate, distance, o, km)
       predicted.previous_cases, predicted.starts = cases0, r0.starts
-      cases1 = cases_at(predicted)
-      r1 = rates(predicted, cases1, o)
+      r1, cases1 = rates(predicted, cases, o)
       evaluations, products = evaluations + r1.evaluations, products + r1.products
       -- Heun's depth minus Euler's: the local error of the Euler step, an upper bound of Heun's.
       local err = distance * largest_difference(r0.rate, r1.rate) / 2

@@ -327,6 +327,33 @@ do  -- curves alone: flange contact (80 and 100 kN: up the flange root toward Sd
   check.ok(m.right_wheel.Sd < m0.right_wheel.Sd - 0.05e-3, "curves: Sd of the right wheel falls")
 end
 
+do  -- the tangent cases solved while the curving ones are placed: generated_cases hands them to `early` before the
+    -- first placement, and a step given the cases as a function of the state (which M.step calls with its `early`)
+    -- wears the same bits as a step given the same cases as a list
+  local st = initial()
+  local ws = loop.wheelset(st)
+  local function placed(state, early, order)
+    return loop.generated_cases{Q = Q, V = V, mu = mu, tangent = 3, sigma = 1.5e-3, curves = mixed.curves,
+                                forces = {40e3}, early = early, y_for_force = function(sign, Y, yaw, from, hint)
+                                  if order then order[#order + 1] = "place" end
+                                  return loop.y_for_force(ws, sign, Y, yaw, Q, from, hint)
+                                end}
+  end
+  local order = {}
+  local list = placed(st, function(l) order[#order + 1] = "early " .. #l end, order)
+  check.ok(order[1] == "early 3" and order[2] == "place" and #list == 5,
+           "early: the 3 tangent cases before the first placement (" .. table.concat(order, ", ") .. ")")
+  local o = {scheme = "euler"}
+  for key, v in pairs(options) do o[key] = v end
+  local a = loop.step(st, list, o)
+  local b = loop.step(st, placed, o)
+  for _, name in ipairs(loop.BODIES) do
+    local ba, bb = a.bodies[name], b.bodies[name]
+    for i = 1, #ba.y do check.ok(ba.y[i] == bb.y[i] and ba.z[i] == bb.z[i], name .. ": the same bits either way") end
+  end
+  check.ok(a.km == b.km and a.km > 0, "early: the same distance")
+end
+
 -- Bad cases: the key and the value named.
 check.fails(function() loop.generated_cases{Q = -1, V = V, mu = mu, tangent = 1, sigma = 1e-3} end,
             "generated case 1: Q = -1 must be a wheelset load", "a negative load")

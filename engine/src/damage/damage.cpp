@@ -160,9 +160,10 @@ void describe_wear(const PatchDamage& d, FieldSink& out) {
     out.string("usfd_regime", regime_name(d.usfd_regime), {"", "mild, severe or catastrophic at Tgamma_per_area"});
   out.number("wear_volume", d.wear_volume, {"m^3/m", "volume worn off per metre rolled: sum of wear_depth dA (with wear)"});
   out.number("wear_passage_max", d.wear_passage_max, {"m", "the largest of wear_passage"});
+  if (!d.wear_passage.empty())  // a sweep's rows = true keeps it without the grids
+    out.numbers("wear_passage", d.wear_passage.data(), d.wear_passage.size(),
+                {"m", "per grid row: depth worn off in one passage through the area, sum of wear_depth dx"});
   if (d.wear_depth.empty()) return;  // grids dropped
-  out.numbers("wear_passage", d.wear_passage.data(), d.wear_passage.size(),
-              {"m", "per grid row: depth worn off in one passage through the area, sum of wear_depth dx"});
   out.grid("wear_depth", d.wear_depth.data(), nx, ny,
            {"m/m", "per element: depth worn off per metre rolled while the material is in the element"});
   if (d.model == WearModel::archard)

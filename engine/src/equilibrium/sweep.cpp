@@ -59,6 +59,24 @@ std::optional<Start> predicted_start(const std::vector<ChainPoint>& path, double
   return st;
 }
 
+// Drops the grids of a case's result; with `rows`, each area's per-row wear (wear_passage) stays (a wear loop's
+// input: a hundredth of the numbers).
+void drop_case_grids(ContactResult& c, bool rows) {
+  std::vector<std::vector<double>> kept;
+  if (rows)
+    for (WheelContact& wc : c.wheel)
+      for (PatchContact& pc : wc.patches)
+        kept.push_back(pc.rolling ? std::move(pc.rolling->damage.wear_passage) : std::vector<double>{});
+  drop_grids(c);
+  std::size_t k = 0;
+  if (rows)
+    for (WheelContact& wc : c.wheel)
+      for (PatchContact& pc : wc.patches) {
+        if (pc.rolling) pc.rolling->damage.wear_passage = std::move(kept[k]);
+        ++k;
+      }
+}
+
 class SweepRun {
  public:
   SweepRun(const ContactModel& model, const SweepPlan& plan, const SweepOptions& opt, SweepResult& out)
@@ -113,7 +131,7 @@ class SweepRun {
       if (ok && rolling) {  // creep forces at the (frictionless) equilibrium's pose
         if (given) given->adopt_tangential(ws);
         add_rolling(model_, e.contact, *opt_.rolling, ws);
-        if (!opt_.keep_grids) drop_grids(e.contact);
+        if (!opt_.keep_grids) drop_case_grids(e.contact, opt_.keep_rows);
       }
       if (ok && reported && opt_.keep_starts)
         out_.contact_starts[static_cast<std::size_t>(slot)] = std::make_shared<const ContactStart>(ContactStart{ws.previous, ws.tangential});
@@ -233,6 +251,8 @@ SweepOptions read_sweep_options(OptionReader& r) {
   o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
   o.rigid = r.boolean("rigid", {"-", "also solve the rigid reference of each case"}, o.rigid);
   o.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids of every case"}, o.keep_grids);
+  o.keep_rows = r.boolean("rows", {"-", "without the grids: keep each area's per-row results (wear_passage)"},
+                          o.keep_rows);
   o.chain = r.integer("chain", 0, 100000000, {"-", "reported cases per chunk at most (0: whole chains)"}, o.chain);
   o.equilibrium = read_newton_options(r);
   o.rolling = read_rolling_request(r);

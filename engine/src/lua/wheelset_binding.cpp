@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 
 namespace wrc::lua {
 
@@ -141,23 +142,9 @@ int wheelset_conicity(lua_State* L) {
   return 2;
 }
 
-// ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, chain=, chunks=, progress=,
-// starts=, contact_starts=, tolerances}: chunks = {k, ...} (1-based, as ws:sweep_plan lists them) runs those chunks
-// alone; contact_starts = true gives each converged case its contact_start (a wrc.ContactStart, for starts.contact).
-int wheelset_sweep(lua_State* L) {
-  const char* ctx = "wheelset:sweep";
-  LuaWheelset& w = self(L, ctx);
-  auto call = read_call<api::SweepCall>(L, ctx);
-  SweepOptions& so = call.options;
-  if (call.progress.on(host::stderr_is_terminal())) so.progress = host::progress_line("sweep", "cases");
-  so.notice = host::note_printer("sweep");
-  // An inline Lua strategy runs only in this state: one thread, this state's search.
-  const bool portable = w.model->strategy().info().portable;
-  if (!portable) so.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
-  const SweepResult r = call.run(*w.model, [&]() -> std::unique_ptr<ContactWorkspace> {
-    if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
-    return w.model->make_workspace();  // a worker's own Lua state
-  });
+// The table ws:sweep gives: one row per case (with its contact_start when asked for), then seconds, threads,
+// threads_note, failed.
+void push_sweep(lua_State* L, const SweepResult& r) {
   int failed = 0;
   lua_createtable(L, static_cast<int>(r.cases.size()), 3);
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
@@ -176,6 +163,75 @@ int wheelset_sweep(lua_State* L) {
   set_integer(L, "threads", r.threads);
   if (!r.threads_note.empty()) set_string(L, "threads_note", r.threads_note.c_str());
   set_integer(L, "failed", failed);
+}
+
+// The sweep call of ws:sweep and ws:sweep_start, with its progress line and notices.
+api::SweepCall read_sweep_call(lua_State* L, const char* ctx) {
+  auto call = read_call<api::SweepCall>(L, ctx);
+  SweepOptions& so = call.options;
+  if (call.progress.on(host::stderr_is_terminal())) so.progress = host::progress_line("sweep", "cases");
+  so.notice = host::note_printer("sweep");
+  return call;
+}
+
+// ws:sweep{y = {...} | {from=, to=, step=}, yaw = ..., Q=, threads=, rigid=, grids=, chain=, chunks=, progress=,
+// starts=, contact_starts=, tolerances}: chunks = {k, ...} (1-based, as ws:sweep_plan lists them) runs those chunks
+// alone; contact_starts = true gives each converged case its contact_start (a wrc.ContactStart, for starts.contact).
+int wheelset_sweep(lua_State* L) {
+  const char* ctx = "wheelset:sweep";
+  LuaWheelset& w = self(L, ctx);
+  auto call = read_sweep_call(L, ctx);
+  SweepOptions& so = call.options;
+  // An inline Lua strategy runs only in this state: one thread, this state's search.
+  const bool portable = w.model->strategy().info().portable;
+  if (!portable) so.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
+  const SweepResult r = call.run(*w.model, [&]() -> std::unique_ptr<ContactWorkspace> {
+    if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
+    return w.model->make_workspace();  // a worker's own Lua state
+  });
+  push_sweep(L, r);
+  return 1;
+}
+
+// A sweep running on threads of its own (ws:sweep_start) while the script goes on; job:wait() gives its table.
+// It holds the model; a job collected unfinished is waited for (std::async's future).
+struct SweepJob {
+  static constexpr const char* kTypeName = "wrc.SweepJob";
+  std::shared_ptr<const Wheelset> model;
+  std::future<SweepResult> result;
+  bool taken = false;
+};
+
+// ws:sweep_start{the keys of ws:sweep} -> job; job:wait() -> what ws:sweep gives (the same bits: no case depends on
+// the thread that solves it), or the sweep's error. The calling state goes on meanwhile (other calls, other jobs).
+// With an inline Lua strategy, which runs only in the calling state, the sweep runs here, before the job returns.
+int wheelset_sweep_start(lua_State* L) {
+  const char* ctx = "wheelset:sweep_start";
+  LuaWheelset& w = self(L, ctx);
+  auto call = read_sweep_call(L, ctx);
+  call.validate();  // the errors of the keys here; the cases' own go into the rows
+  auto job = std::make_shared<SweepJob>();
+  job->model = w.model;
+  if (!w.model->strategy().info().portable) {
+    call.options.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
+    std::promise<SweepResult> done;
+    done.set_value(call.run(*w.model, [&] { return w.model->make_workspace_with(w.strategy->main_search(L)); }));
+    job->result = done.get_future();
+  } else {
+    job->result = std::async(std::launch::async, [call = std::move(call), model = w.model] {
+      return call.run(*model, [&] { return model->make_workspace(); });  // each worker's own Lua state
+    });
+  }
+  push_shared(L, std::move(job), SweepJob::kTypeName);
+  return 1;
+}
+
+int sweep_job_wait(lua_State* L) {
+  const char* ctx = "SweepJob:wait";
+  SweepJob& job = *check_shared<SweepJob>(L, 1, SweepJob::kTypeName, ctx);
+  if (job.taken) fail("{}: the job's result was taken by an earlier wait (it gives it once)", ctx);
+  job.taken = true;
+  push_sweep(L, job.result.get());  // rethrows the sweep's error
   return 1;
 }
 
@@ -505,6 +561,7 @@ void open_wheelset(lua_State* L) {
                                 {"equilibrium", guarded<wheelset_equilibrium>}, {"wheel", guarded<wheelset_wheel>},
                                 {"rigid", guarded<wheelset_rigid>},     {"sweep", guarded<wheelset_sweep>},
                                 {"sweep_plan", guarded<wheelset_sweep_plan>},
+                                {"sweep_start", guarded<wheelset_sweep_start>},
                                 {"geometry_table", guarded<wheelset_geometry_table>},
                                 {"conicity", guarded<wheelset_conicity>},
                                 {"cones", guarded<wheelset_cones>},     {"lines", guarded<wheelset_lines>},
@@ -518,6 +575,15 @@ void open_wheelset(lua_State* L) {
   lua_setfield(L, -2, "wheelset");
   push_defaults(L);
   lua_setfield(L, -2, "defaults");
+  if (luaL_newmetatable(L, SweepJob::kTypeName)) {  // ws:sweep_start's job: one method, wait
+    lua_pushcfunction(L, gc_shared<SweepJob>);
+    lua_setfield(L, -2, "__gc");
+    lua_newtable(L);
+    lua_pushcfunction(L, guarded<sweep_job_wait>);
+    lua_setfield(L, -2, "wait");
+    lua_setfield(L, -2, "__index");
+  }
+  lua_pop(L, 1);
   if (luaL_newmetatable(L, ContactStart::kTypeName)) {  // a sweep's contact_start: opaque
     lua_pushcfunction(L, gc_shared<const ContactStart>);
     lua_setfield(L, -2, "__gc");

@@ -81,7 +81,7 @@ PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& option
 
 // Fields (Lua and C), flat so that they sit beside an area's own (p.Tgamma, p.wear_volume) with no name in common:
 // Tgamma, Tgamma_spin, Tgamma_per_area; with wear: wear_model, wear_map (Archard) or usfd_regime (USFD),
-// wear_volume, wear_passage_max, wear_passage (per row, with the grids), the grids wear_depth, wear_coefficient
+// wear_volume, wear_passage_max, wear_passage (per row, while kept), the grids wear_depth, wear_coefficient
 // (Archard), tgamma_density (when kept: drop_grids empties them); then rcf_damage, rcf_regime,
 // traction_coefficient, fi_a, fi_b, shear_yield and fi_surf (with contact); each with its FieldDoc.
 void describe(const PatchDamage& damage, FieldSink& out);

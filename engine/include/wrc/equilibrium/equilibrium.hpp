@@ -49,6 +49,7 @@ struct SweepOptions {
   int threads = 0;             // 0: the cores this process may use (available_cores)
   double Q = 200e3;            // N
   bool keep_grids = false;     // keep pressure/h grids of every case (memory)
+  bool keep_rows = false;      // without the grids: keep each area's per-row results (wear_passage) all the same
   bool rigid = false;          // also solve the rigid reference of each case
   int chain = 0;               // reported cases per chunk at most (0: whole continuation chains); see SweepPlan
   NewtonOptions equilibrium;   // of every case
