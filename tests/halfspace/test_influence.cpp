@@ -1,6 +1,7 @@
 // Love's influence coefficients and the FFT products built on them.
 #include "wrc/halfspace/convolution.hpp"
 #include "wrc/halfspace/influence.hpp"
+#include "wrc/halfspace/shear.hpp"
 #include "wrc/core/error.hpp"
 
 #include "ray_integral.hpp"
@@ -10,11 +11,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <thread>
 #include <vector>
 
+using wrc::test::within_abs;
 using wrc::test::within_rel;
 using namespace wrc::halfspace;
 
@@ -235,4 +238,86 @@ TEST_CASE("cache: spectra shared by shape, products identical from several threa
     });
   for (auto& th : threads) th.join();
   for (int m : mismatches) CHECK(m == 0);
+}
+
+TEST_CASE("FFT plans: built once per shape for the process, shared by new models, exact from several threads") {
+  // Two models of the same grids (as the wear loop's wheelsets of each step, each with its own caches): the second
+  // builds its spectra but plans nothing, and runs the first one's plans.
+  const Material material{2.1e11, 0.3};
+  const Grid g = Grid::square(37, 23, 0.17e-3);
+  ShearCache first(material), second(material);
+  InfluenceCache normal_first, normal_second;
+  const auto a = first.get(g, ShearSpectrum::Kind::linear), pa = first.get(g, ShearSpectrum::Kind::periodic);
+  const auto na = normal_first.get(g);
+  const FftPlanStats after_first = fft_plan_stats();  // the plans of these shapes exist now (built here or before)
+  const auto b = second.get(g, ShearSpectrum::Kind::linear), pb = second.get(g, ShearSpectrum::Kind::periodic);
+  const auto nb = normal_second.get(g);
+  CHECK(a != b);
+  CHECK(na != nb);
+  CHECK(a->fft().shares_plans(b->fft()));
+  CHECK(pa->fft().shares_plans(pb->fft()));
+  CHECK(na->fft().shares_plans(nb->fft()));
+  CHECK(fft_plan_stats().built == after_first.built);
+  CHECK(a->xx() == b->xx());  // the kernel spectra through the shared 2-D plan: the same bits
+
+  // Threads with fresh caches race for the plans of new shapes; each alternates a linear and a periodic spectrum in
+  // one workspace (two layouts in one buffer, as the shear products do); the products equal the dense ones.
+  std::vector<Grid> grids;
+  for (int k = 0; k < 4; ++k) grids.push_back(Grid::square(9 + 5 * k, 21 - 3 * k, 0.13e-3));
+  std::vector<std::vector<double>> inputs, dense;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (const Grid& gr : grids) {
+    inputs.emplace_back(gr.size());
+    for (double& v : inputs.back()) v = U(rng);
+    dense.push_back(direct_product(gr, inputs.back()));
+  }
+  std::vector<std::vector<std::vector<double>>> results(4);
+  std::vector<int> changed(4, 0);  // products that changed after the workspace served the other layout
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      InfluenceCache cache;
+      ConvolutionWorkspace ws;
+      for (std::size_t k = 0; k < grids.size(); ++k) {
+        const Grid& gr = grids[(k + t) % grids.size()];
+        std::vector<double> u(gr.size()), z(gr.size());
+        convolve(*cache.get(gr), gr, inputs[(k + t) % grids.size()].data(), u.data(), ws);
+        deconvolve(*cache.get(gr, InfluenceSpectrum::Kind::periodic), gr, u.data(), z.data(), ws);
+        convolve(*cache.get(gr), gr, inputs[(k + t) % grids.size()].data(), z.data(), ws);  // after the other layout
+        if (z != u) ++changed[t];
+        results[t].push_back(u);
+      }
+    });
+  for (auto& th : threads) th.join();
+  for (int c : changed) CHECK(c == 0);
+  for (int t = 0; t < 4; ++t)
+    for (std::size_t k = 0; k < grids.size(); ++k) {
+      const std::size_t which = (k + t) % grids.size();
+      std::vector<double> diff(dense[which].size());
+      for (std::size_t q = 0; q < diff.size(); ++q) diff[q] = results[t][k][q] - dense[which][q];
+      CHECK(max_abs(diff) < 1e-12 * max_abs(dense[which]));
+      CHECK(results[t][k] == results[0][which]);  // the same bits in every thread
+    }
+}
+
+TEST_CASE("FFT plans: the cache is bounded and plans it dropped still serve their owners") {
+  // More row counts of one size than the cache holds: it keeps at most kFftPlanCacheSize sets; the first transform
+  // (its set dropped meanwhile) still runs: a forward and backward round trip gives Mx My times the input's rows.
+  const int Mx = 6, My = static_cast<int>(kFftPlanCacheSize) + 20;
+  std::vector<std::unique_ptr<PrunedFft>> ffts;
+  for (int rows = 1; rows <= My; ++rows) ffts.push_back(std::make_unique<PrunedFft>(Mx, My, rows, FftPlanning::estimate));
+  CHECK(fft_plan_stats().cached <= kFftPlanCacheSize);
+  const PrunedFft again(Mx, My, 1, FftPlanning::estimate);  // dropped: built anew
+  CHECK_FALSE(again.shares_plans(*ffts.front()));
+  Grid g = Grid::square(Mx / 2, 1, 1e-3);
+  for (const PrunedFft* f : {static_cast<const PrunedFft*>(ffts.front().get()), &again}) {
+    ConvolutionWorkspace ws;
+    ws.prepare(*f, g);
+    const double values[] = {0.5, -1.25, 2.0};
+    std::copy(values, values + 3, ws.input());
+    f->forward(ws.input(), ws.spectrum_buffer(), 1);
+    f->backward(ws.spectrum_buffer(), ws.output(), 1);
+    for (int i = 0; i < Mx; ++i) CHECK(ws.output()[i] == within_abs(Mx * My * (i < 3 ? values[i] : 0.0), 1e-9 * Mx * My));
+  }
 }

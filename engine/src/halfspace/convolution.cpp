@@ -97,52 +97,128 @@ std::mutex& fftw_planner_mutex() {
   return m;
 }
 
-PrunedFft::PrunedFft(int Mx, int My, int rows, FftPlanning planning) : Mx_(Mx), My_(My), rows_(rows) {
-  if (Mx < 1 || My < 1 || rows < 1 || rows > My)
-    fail("PrunedFft: periodic size {} x {} with {} rows is not valid", Mx, My, rows);
-  const int H = Mx / 2 + 1;  // complex values per row of the r2c transform
+// A set of FFTW plans; destroyed under the planner lock.
+struct FftPlans {
+  fftw_plan plan[4] = {nullptr, nullptr, nullptr, nullptr};
+  FftPlans() = default;
+  FftPlans(const FftPlans&) = delete;
+  FftPlans& operator=(const FftPlans&) = delete;
+  ~FftPlans() {
+    std::lock_guard lock(fftw_planner_mutex());
+    for (fftw_plan p : plan)
+      if (p) fftw_destroy_plan(p);
+  }
+};
+
+namespace {
+
+// What a plan set transforms: PrunedFft's (rows > 0) or real_spectrum's plain 2-D r2c (rows = 0).
+using PlanKey = std::tuple<int, int, int, int>;  // Mx, My, rows, planning
+
+// PrunedFft's plans: one row transform (length Mx), run on each row that holds data, and the column transforms
+// (length My, stride H) of all H columns, in place in the complex buffer. FFTW's new-array execution needs arrays
+// aligned as the plan's: if the rows do not all start so (an odd Mx with FFTW's 16-byte SIMD alignment), the row
+// plans are made unaligned. Called under the planner lock.
+void plan_pruned(FftPlans& p, int Mx, int My, unsigned flags, double* in, double* out, fftw_complex* spec) {
+  const int H = Mx / 2 + 1;
+  const bool rows_aligned = fftw_alignment_of(in + Mx) == fftw_alignment_of(in) &&
+                            fftw_alignment_of(out + Mx) == fftw_alignment_of(out) &&
+                            fftw_alignment_of(spec[H]) == fftw_alignment_of(spec[0]);
+  const unsigned row_flags = flags | (rows_aligned ? 0u : FFTW_UNALIGNED);
+  int ny = My;
+  p.plan[0] = fftw_plan_dft_r2c_1d(Mx, in, spec, row_flags);
+  p.plan[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
+  p.plan[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
+  p.plan[3] = fftw_plan_dft_c2r_1d(Mx, spec, out, row_flags);
+}
+
+// Builds a plan set on scratch buffers allocated as the workspaces' (fftw_alloc: FFTW's SIMD alignment).
+std::shared_ptr<const FftPlans> build_plans(const PlanKey& key, const char* who) {
+  const auto [Mx, My, rows, planning] = key;
   const std::size_t nreal = static_cast<std::size_t>(Mx) * My;
-  const std::size_t ncomplex = static_cast<std::size_t>(My) * H;
+  const std::size_t ncomplex = static_cast<std::size_t>(My) * (Mx / 2 + 1);
   double* in = fftw_alloc_real(nreal);
   double* out = fftw_alloc_real(nreal);
   fftw_complex* spec = fftw_alloc_complex(ncomplex);
+  auto plans = std::make_shared<FftPlans>();
   bool planned = false;
   if (in && out && spec) {
-    // One row transform (length Mx), run on each row that holds data, and the column transforms (length My,
-    // stride H) of all H columns, in place in the complex buffer. FFTW's new-array execution needs arrays aligned
-    // as the plan's: if the rows do not all start so (an odd Mx with FFTW's 16-byte SIMD alignment), the row plans
-    // are made unaligned.
     std::lock_guard lock(fftw_planner_mutex());
-    const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-    const bool rows_aligned = fftw_alignment_of(in + Mx) == fftw_alignment_of(in) &&
-                              fftw_alignment_of(out + Mx) == fftw_alignment_of(out) &&
-                              fftw_alignment_of(spec[H]) == fftw_alignment_of(spec[0]);
-    const unsigned row_flags = flags | (rows_aligned ? 0u : FFTW_UNALIGNED);
-    int ny = My;
-    plans_[0] = fftw_plan_dft_r2c_1d(Mx, in, spec, row_flags);
-    plans_[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
-    plans_[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
-    plans_[3] = fftw_plan_dft_c2r_1d(Mx, spec, out, row_flags);
-    planned = plans_[0] && plans_[1] && plans_[2] && plans_[3];
+    const unsigned flags = planning == static_cast<int>(FftPlanning::measure) ? FFTW_MEASURE : FFTW_ESTIMATE;
+    if (rows > 0) {
+      plan_pruned(*plans, Mx, My, flags, in, out, spec);
+      planned = plans->plan[0] && plans->plan[1] && plans->plan[2] && plans->plan[3];
+    } else {
+      plans->plan[0] = fftw_plan_dft_r2c_2d(My, Mx, in, spec, flags);
+      planned = plans->plan[0] != nullptr;
+    }
   }
   fftw_free(in);
   fftw_free(out);
   fftw_free(spec);
-  if (!planned) {
-    {
-      std::lock_guard lock(fftw_planner_mutex());
-      for (void*& plan : plans_)
-        if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan)), plan = nullptr;
-    }
-    fail("PrunedFft: FFTW could not allocate or plan a {} x {} transform", Mx, My);
-  }
+  if (!planned) fail("{}: FFTW could not allocate or plan a {} x {} transform", who, Mx, My);  // ~FftPlans frees any made
+  return plans;
 }
 
-PrunedFft::~PrunedFft() {
-  std::lock_guard lock(fftw_planner_mutex());
-  for (void* plan : plans_)
-    if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+// The process-wide store of plan sets: the most recently used kFftPlanCacheSize kept.
+class PlanCache {
+ public:
+  std::shared_ptr<const FftPlans> get(const PlanKey& key, const char* who) {
+    std::lock_guard lock(mutex_);
+    if (auto it = entries_.find(key); it != entries_.end()) {
+      uses_.splice(uses_.begin(), uses_, it->second.use);
+      return it->second.plans;
+    }
+    // Built under the cache's lock (the planner's lock serialises planning anyway); the lock order is always the
+    // cache's, then the planner's.
+    auto plans = build_plans(key, who);
+    if (entries_.size() >= kFftPlanCacheSize) {  // drop the least recently used
+      entries_.erase(uses_.back());
+      uses_.pop_back();
+    }
+    uses_.push_front(key);
+    entries_.emplace(key, Entry{plans, uses_.begin()});
+    ++built_;
+    return plans;
+  }
+  FftPlanStats stats() {
+    std::lock_guard lock(mutex_);
+    return {entries_.size(), built_};
+  }
+
+ private:
+  struct Entry {
+    std::shared_ptr<const FftPlans> plans;
+    std::list<PlanKey>::iterator use;  // position in uses_ (front: most recent)
+  };
+  std::mutex mutex_;
+  std::map<PlanKey, Entry> entries_;
+  std::list<PlanKey> uses_;
+  std::size_t built_ = 0;
+};
+
+PlanCache& plan_cache() {
+  // Never destroyed: plans may still be released by other static objects at exit (their destructor takes the
+  // planner's lock, made first so that it outlives them).
+  static PlanCache* cache = (fftw_planner_mutex(), new PlanCache);
+  return *cache;
 }
+
+std::shared_ptr<const FftPlans> cached_plans(const char* who, int Mx, int My, int rows, FftPlanning planning) {
+  return plan_cache().get(PlanKey{Mx, My, rows, static_cast<int>(planning)}, who);
+}
+
+}  // namespace
+
+FftPlanStats fft_plan_stats() { return plan_cache().stats(); }
+
+PrunedFft::PrunedFft(int Mx, int My, int rows, FftPlanning planning) : Mx_(Mx), My_(My), rows_(rows) {
+  if (Mx < 1 || My < 1 || rows < 1 || rows > My)
+    fail("PrunedFft: periodic size {} x {} with {} rows is not valid", Mx, My, rows);
+  plans_ = cached_plans("PrunedFft", Mx, My, rows, planning);
+}
+
+PrunedFft::~PrunedFft() = default;
 
 int PrunedFft::row_count(int rows) const {
   if (rows < 0) return rows_;
@@ -154,19 +230,19 @@ void PrunedFft::forward(double* in, void* spectrum, int rows) const {
   rows = row_count(rows);
   auto* spec = static_cast<fftw_complex*>(spectrum);
   const std::size_t H = Mx_ / 2 + 1;
-  const auto r2c = static_cast<fftw_plan>(plans_[0]);
+  const fftw_plan r2c = plans_->plan[0];
   for (int j = 0; j < rows; ++j) fftw_execute_dft_r2c(r2c, in + static_cast<std::size_t>(Mx_) * j, spec + H * j);
   // The other rows of the input are zero, so are their row transforms.
   std::memset(static_cast<void*>(spec + H * rows), 0, sizeof(fftw_complex) * H * (My_ - rows));
-  fftw_execute_dft(static_cast<fftw_plan>(plans_[1]), spec, spec);
+  fftw_execute_dft(plans_->plan[1], spec, spec);
 }
 
 void PrunedFft::backward(void* spectrum, double* out, int rows) const {
   rows = row_count(rows);
   auto* spec = static_cast<fftw_complex*>(spectrum);
   const std::size_t H = Mx_ / 2 + 1;
-  fftw_execute_dft(static_cast<fftw_plan>(plans_[2]), spec, spec);
-  const auto c2r = static_cast<fftw_plan>(plans_[3]);
+  fftw_execute_dft(plans_->plan[2], spec, spec);
+  const fftw_plan c2r = plans_->plan[3];
   for (int j = 0; j < rows; ++j) fftw_execute_dft_c2r(c2r, spec + H * j, out + static_cast<std::size_t>(Mx_) * j);
 }
 
@@ -214,26 +290,19 @@ std::vector<double> real_spectrum(const std::vector<double>& kernel, int Mx, int
   const std::size_t nreal = static_cast<std::size_t>(Mx) * My;
   const std::size_t ncomplex = static_cast<std::size_t>(My) * H;
   if (kernel.size() != nreal) fail("real_spectrum: {} values for a {} x {} grid", kernel.size(), Mx, My);
+  // The plain 2-D transform (FFTW_ESTIMATE, from the plan cache), on buffers aligned as at planning.
+  const auto plans = cached_plans("real_spectrum", Mx, My, 0, FftPlanning::estimate);
   double* in = fftw_alloc_real(nreal);
   fftw_complex* spec = fftw_alloc_complex(ncomplex);
-  fftw_plan full = nullptr;  // plain 2-D transform, once per kernel
-  if (in && spec) {
-    std::lock_guard lock(fftw_planner_mutex());
-    full = fftw_plan_dft_r2c_2d(My, Mx, in, spec, FFTW_ESTIMATE);
-  }
-  if (!full) {
+  if (!in || !spec) {
     fftw_free(in);
     fftw_free(spec);
-    fail("real_spectrum: FFTW could not allocate or plan a {} x {} transform", Mx, My);
+    fail("real_spectrum: cannot allocate FFT buffers for {} x {}", Mx, My);
   }
   std::copy(kernel.begin(), kernel.end(), in);
-  fftw_execute(full);
+  fftw_execute_dft_r2c(plans->plan[0], in, spec);
   std::vector<double> out(ncomplex);
   for (std::size_t q = 0; q < ncomplex; ++q) out[q] = spec[q][0];
-  {
-    std::lock_guard lock(fftw_planner_mutex());
-    fftw_destroy_plan(full);
-  }
   fftw_free(in);
   fftw_free(spec);
   return out;
@@ -292,9 +361,13 @@ void ConvolutionWorkspace::prepare(const PrunedFft& s, const Grid& grid) {
     }
     real_capacity_ = nreal;
     complex_capacity_ = ncomplex;
+    std::memset(in_, 0, nreal * sizeof(double));
+    Mx_ = My_ = nx_ = ny_ = 0;
   }
+  // The input buffer is zero but for the last window (rows of Mx_): a window at least as large in the same layout
+  // overwrites it; otherwise that window alone is cleared (the shear products alternate two layouts in one buffer).
   if (Mx_ != s.Mx() || My_ != s.My() || grid.nx < nx_ || grid.ny < ny_) {
-    std::memset(in_, 0, nreal * sizeof(double));  // then only windows at least as large are written
+    for (int j = 0; j < ny_; ++j) std::memset(in_ + static_cast<std::size_t>(Mx_) * j, 0, nx_ * sizeof(double));
     Mx_ = s.Mx();
     My_ = s.My();
   }

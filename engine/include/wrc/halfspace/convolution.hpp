@@ -38,11 +38,14 @@ FftShape fft_shape(int min_x, int min_y, bool pruned);
 // faster to run), `estimate` picks one by heuristics.
 enum class FftPlanning { estimate, measure };
 
+struct FftPlans;  // a set of FFTW plans (convolution.cpp), shared through the process-wide plan cache
+
 // The FFTW plans of the 2-D real transforms of an Mx x My periodic grid, pruned: at most the first `rows` rows
 // are transformed along x (the input is zero beyond them, and the output is not needed there), so the 2-D
 // transform runs as row transforms (one plan, run on each row that holds data) and batched column transforms.
 // Immutable once built; execution is thread-safe (FFTW's new-array interface on buffers aligned like the
-// workspace's).
+// workspace's). The plans come from a process-wide cache keyed by (Mx, My, rows, planning): a new model of the same
+// grids (each step of the wear loop builds new wheelsets) plans nothing again, and the same plans give the same bits.
 class PrunedFft {
  public:
   PrunedFft(int Mx, int My, int rows, FftPlanning planning);
@@ -57,12 +60,23 @@ class PrunedFft {
   // (unnormalised; the output rows from `rows` on are left undefined); rows <= rows(), -1 for rows().
   void forward(double* in, void* spectrum, int rows = -1) const;
   void backward(void* spectrum, double* out, int rows = -1) const;
+  // Whether both run the same FFTW plans (the cache's sharing, for the tests).
+  bool shares_plans(const PrunedFft& other) const { return plans_ == other.plans_; }
 
  private:
   int row_count(int rows) const;
   int Mx_, My_, rows_;
-  void* plans_[4] = {nullptr, nullptr, nullptr, nullptr};  // fftw_plan: a row r2c, columns fwd, columns bwd, a row c2r
+  std::shared_ptr<const FftPlans> plans_;  // a row r2c, columns forward, columns backward, a row c2r
 };
+
+// The process-wide cache of FFTW plans (PrunedFft's and real_spectrum's): it keeps the most recently used
+// kFftPlanCacheSize sets (least recently used dropped first; sets in use stay alive through their owners).
+inline constexpr std::size_t kFftPlanCacheSize = 256;
+struct FftPlanStats {
+  std::size_t cached;  // plan sets held by the cache
+  std::size_t built;   // plan sets built since the process started (one dropped and needed again counts again)
+};
+FftPlanStats fft_plan_stats();
 
 // FFTW's planner is not thread-safe: every plan creation and destruction in wrc holds this lock.
 std::mutex& fftw_planner_mutex();
@@ -130,7 +144,8 @@ class ConvolutionWorkspace {
   ConvolutionWorkspace& operator=(ConvolutionWorkspace&& other) noexcept;
 
   // Makes room for a spectrum's transforms on `grid` and makes sure the input buffer is zero outside the
-  // grid's window (only the window is written afterwards).
+  // grid's window (the first ny rows' first nx values, rows of Mx). Callers write the window alone until they
+  // prepare again: only the last window is cleared then.
   void prepare(const InfluenceSpectrum& spectrum, const Grid& grid) { prepare(spectrum.fft(), grid); }
   void prepare(const PrunedFft& fft, const Grid& grid);
   double* input() { return in_; }
