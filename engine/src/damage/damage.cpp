@@ -174,9 +174,9 @@ void describe_wear(const PatchDamage& d, FieldSink& out) {
 
 }  // namespace
 
-void drop_grids(PatchDamage& d) {
+void drop_grids(PatchDamage& d, bool keep_rows) {
   d.wear_depth = {};
-  d.wear_passage = {};
+  if (!keep_rows) d.wear_passage = {};
   d.wear_coefficient = {};
   d.tgamma_density = {};
 }

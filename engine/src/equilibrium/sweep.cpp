@@ -59,24 +59,6 @@ std::optional<Start> predicted_start(const std::vector<ChainPoint>& path, double
   return st;
 }
 
-// Drops the grids of a case's result; with `rows`, each area's per-row wear (wear_passage) stays (a wear loop's
-// input: a hundredth of the numbers).
-void drop_case_grids(ContactResult& c, bool rows) {
-  std::vector<std::vector<double>> kept;
-  if (rows)
-    for (WheelContact& wc : c.wheel)
-      for (PatchContact& pc : wc.patches)
-        kept.push_back(pc.rolling ? std::move(pc.rolling->damage.wear_passage) : std::vector<double>{});
-  drop_grids(c);
-  std::size_t k = 0;
-  if (rows)
-    for (WheelContact& wc : c.wheel)
-      for (PatchContact& pc : wc.patches) {
-        if (pc.rolling) pc.rolling->damage.wear_passage = std::move(kept[k]);
-        ++k;
-      }
-}
-
 class SweepRun {
  public:
   SweepRun(const ContactModel& model, const SweepPlan& plan, const SweepOptions& opt, SweepResult& out)
@@ -131,7 +113,7 @@ class SweepRun {
       if (ok && rolling) {  // creep forces at the (frictionless) equilibrium's pose
         if (given) given->adopt_tangential(ws);
         add_rolling(model_, e.contact, *opt_.rolling, ws);
-        if (!opt_.keep_grids) drop_case_grids(e.contact, opt_.keep_rows);
+        if (!opt_.keep_grids) drop_grids(e.contact, opt_.keep_rows);  // rows: a wear loop's input, a hundredth of the numbers
       }
       if (ok && reported && opt_.keep_starts)
         out_.contact_starts[static_cast<std::size_t>(slot)] = std::make_shared<const ContactStart>(ContactStart{ws.previous, ws.tangential});

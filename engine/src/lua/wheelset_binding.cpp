@@ -165,6 +165,9 @@ void push_sweep(lua_State* L, const SweepResult& r) {
   set_integer(L, "failed", failed);
 }
 
+// Why a sweep with an inline Lua strategy runs on the calling thread alone (ws:sweep, ws:sweep_start).
+constexpr const char* kInlineStrategy = "the strategy is an inline Lua table, which runs only in the calling Lua state";
+
 // The sweep call of ws:sweep and ws:sweep_start, with its progress line and notices.
 api::SweepCall read_sweep_call(lua_State* L, const char* ctx) {
   auto call = read_call<api::SweepCall>(L, ctx);
@@ -184,7 +187,7 @@ int wheelset_sweep(lua_State* L) {
   SweepOptions& so = call.options;
   // An inline Lua strategy runs only in this state: one thread, this state's search.
   const bool portable = w.model->strategy().info().portable;
-  if (!portable) so.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
+  if (!portable) so.single_thread = kInlineStrategy;
   const SweepResult r = call.run(*w.model, [&]() -> std::unique_ptr<ContactWorkspace> {
     if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
     return w.model->make_workspace();  // a worker's own Lua state
@@ -213,7 +216,7 @@ int wheelset_sweep_start(lua_State* L) {
   auto job = std::make_shared<SweepJob>();
   job->model = w.model;
   if (!w.model->strategy().info().portable) {
-    call.options.single_thread = "the strategy is an inline Lua table, which runs only in the calling Lua state";
+    call.options.single_thread = kInlineStrategy;
     std::promise<SweepResult> done;
     done.set_value(call.run(*w.model, [&] { return w.model->make_workspace_with(w.strategy->main_search(L)); }));
     job->result = done.get_future();

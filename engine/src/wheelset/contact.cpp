@@ -346,7 +346,7 @@ void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWo
   }
 }
 
-void drop_grids(ContactResult& result) {
+void drop_grids(ContactResult& result, bool keep_rows) {
   for (WheelContact& wc : result.wheel)
     for (PatchContact& pc : wc.patches) {
       pc.h = {};
@@ -354,7 +354,7 @@ void drop_grids(ContactResult& result) {
       pc.solution.pressure = {};
       pc.solution.gap = {};
       pc.solution.displacement = {};  // moved to the workspace already; kept empty whatever the path
-      if (pc.rolling) drop_grids(*pc.rolling);
+      if (pc.rolling) drop_grids(*pc.rolling, keep_rows);
     }
 }
 

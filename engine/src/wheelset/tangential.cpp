@@ -434,7 +434,7 @@ void add_creep(CreepTotals& total, const CreepTotals& part) {
   total.power += part.power;
 }
 
-void drop_grids(PatchRolling& r) {
+void drop_grids(PatchRolling& r, bool keep_rows) {
   r.solution.px = {};
   r.solution.py = {};
   r.solution.sx = {};
@@ -442,7 +442,7 @@ void drop_grids(PatchRolling& r) {
   r.solution.state = {};
   r.rigid_x = {};
   r.rigid_y = {};
-  damage::drop_grids(r.damage);
+  damage::drop_grids(r.damage, keep_rows);
   r.friction_scale = {};
 }
 

@@ -29,7 +29,7 @@ Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const Pat
 // Accumulates an area's (or a wheel's) creep totals.
 void add_creep(CreepTotals& total, const PatchContact& area);
 void add_creep(CreepTotals& total, const CreepTotals& part);
-// Releases the tangential grids.
-void drop_grids(PatchRolling& rolling);
+// Releases the tangential grids (with keep_rows, not the per-row ones).
+void drop_grids(PatchRolling& rolling, bool keep_rows = false);
 
 }  // namespace wrc

@@ -85,7 +85,7 @@ PatchDamage compute_damage(const AreaFields& fields, const DamageOptions& option
 // (Archard), tgamma_density (when kept: drop_grids empties them); then rcf_damage, rcf_regime,
 // traction_coefficient, fi_a, fi_b, shear_yield and fi_surf (with contact); each with its FieldDoc.
 void describe(const PatchDamage& damage, FieldSink& out);
-// Releases the per-element and per-row vectors (the scalars stay).
-void drop_grids(PatchDamage& damage);
+// Releases the per-element and, unless keep_rows, the per-row vectors (the scalars stay).
+void drop_grids(PatchDamage& damage, bool keep_rows = false);
 
 }  // namespace wrc::damage

@@ -321,8 +321,9 @@ void add_jacobian(const ContactModel& model, ContactResult& result, const std::o
 // dz = -(dFz/dq) / (dFz/dz) per unit of column q; the z column becomes d(.)/dFz = J.col(z) / (dFz/dz). Throws
 // wrc::Error when dFz/dz is not negative (no vertical stiffness).
 Jacobian constant_fz(const Jacobian& J);
-// Releases the pressure, gap and h grids of a result.
-void drop_grids(ContactResult& result);
+// Releases the pressure, gap and h grids of a result; with keep_rows, each area's per-row results (the wear per
+// grid row, wear_passage: a wear loop's input) stay.
+void drop_grids(ContactResult& result, bool keep_rows = false);
 
 // The object type of an area's description (FieldSink::object_type): Lua gives the table the methods of that type.
 inline constexpr const char* kPatchType = "wrc.Patch";
