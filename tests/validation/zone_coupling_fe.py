@@ -3,7 +3,7 @@
 
 A study, not a test (not run by ctest). Run from the repository root:
 
-    nice -n 10 /usr/bin/python3 tests/validation/zone_coupling_fe.py          # about 3-6 minutes on one core
+    nice -n 10 /usr/bin/python3 tests/validation/zone_coupling_fe.py          # about 6 minutes on one core
     nice -n 10 /usr/bin/python3 tests/validation/zone_coupling_fe.py --quick  # the coarse mesh alone
 
 Question (docs/validation.md, "Against CONTACT", y = 6.3 mm): S1002 on 60E1 touches in three zones, flange root,
@@ -139,8 +139,7 @@ def polygon_sdf(poly, fine=0.02):
 
 
 def resample_boundary(poly, fh):
-    """Boundary nodes along the closed polygon at the local size fh, keeping every vertex marked as a corner."""
-    out = []
+    """Boundary nodes along the closed polygon at the local size fh, one snapped to each sharp corner."""
     P = np.vstack([poly, poly[:1]])
     seg_len = np.hypot(*np.diff(P, axis=0).T)
     # walk along the polygon, stepping by fh
@@ -211,9 +210,6 @@ def distmesh(poly, fh, hmin, iters=120):
             gy = (sdf(q + [0, eps]) - d[out]) / eps
             q -= ((d[out] + 0.2 * fh(q)) / np.maximum(gx**2 + gy**2, 1e-12))[:, None] * np.column_stack([gx, gy])
             p[nf:][out] = q
-            pp = p[nf:]
-            pp[out] = q
-            p[nf:] = pp
     tri = Delaunay(p).simplices
     tri = tri[sdf(p[tri].mean(1)) < -1e-3 * hmin]
     # drop nodes no triangle uses, orient counter-clockwise
@@ -388,17 +384,31 @@ class Body:
                     np.add.at(F[:, c], 3 * self.surf[:, a] + 1 + j, f * nvec[j])
         return F
 
-    def compliance(self, ks, zones):
-        """C[q] = F^T K(k_q)^-1 F for each k in ks (3-D: u_y, u_z in each zone's normal direction)."""
+    def compliance(self, ks, zones, rail=None):
+        """C[q] = F^T K(k_q)^-1 F for each k in ks (3-D: u_y, u_z in each zone's normal direction); with the rail's
+        (y, z, s), also the surface's displacement along the rail's inward normal (this body's share of the gap's
+        closing) at x = 0 under zone 0's unit load, at the surface nodes (s, u_n(k_q))."""
         K0, K1, K2 = self.K
         fr = self.free
-        out = []
+        out, un = [], []
+        if rail is not None:
+            sn = np.unique(self.surf.ravel())
+            s_n = self.s_of(self.nodes[sn])
+            o = np.argsort(s_n)
+            sn, s_n = sn[o], s_n[o]
+            nrm = np.array([surface_frame(*rail, v)[1] for v in s_n])
         for k in ks:
             Kk = (K0 + k * K1 + k * k * K2)[fr][:, fr].tocsc()
             F = self.load_vectors(k, zones)[fr]
             U = spla.splu(Kk, permc_spec='COLAMD').solve(F)
             out.append(F.T @ U)
-        return np.array(out)
+            if rail is not None:
+                Uf = np.zeros(self.ndof)
+                Uf[fr] = U[:, 0]
+                un.append(self.inward_sign * (nrm[:, 0] * Uf[3 * sn + 1] + nrm[:, 1] * Uf[3 * sn + 2]))
+        if rail is None:
+            return np.array(out)
+        return np.array(out), (s_n, np.array(un))
 
 
 def hertz_hat(k, s, zn):
@@ -535,7 +545,7 @@ def build_zones(y, z, s, scale_ab=1.0, root_y=None):
 def bodies(y, z, s, zones, h0, grade=0.25, hmax=5.0, size=1.0):
     """The rail head (bottom fixed) and the wheel (top fixed), meshed finely at the zones."""
     cut = 36.0 * size
-    yr, zr, sr = rail_60e1(cut)
+    yr, zr, _ = rail_60e1(cut)
     surfp = np.column_stack([y, z])
     segs = []
     for zn in zones:
@@ -629,11 +639,53 @@ def study(h0, nk, size=1.0, scale_ab=1.0, root_y=None):
     C = np.zeros((3, 3))
     per = {}
     for b in (rb, wb):
-        Ck = b.compliance(ks, zones)
+        Ck, (s_n, un) = b.compliance(ks, zones, (y, z, s))
         Cb = (wk[:, None, None] * Ck).sum(0) / np.pi
         per[b.name] = Cb
+        per[b.name + ' profile'] = (s_n, (wk[:, None] * un).sum(0) / np.pi)
         C += Cb
     return zones, (rb, wb), C, per, (y, z, s)
+
+
+def profile_table(r):
+    """The gap's closing at x = 0 along the surface under the root's unit load, relative to the root patch's edge
+    toward the tread: finite elements (both bodies) against the flat half-space."""
+    zones, (y, z, s), per = r['zones'], r['rail'], r['per']
+    root = zones[0]
+    edge = root['s0'] + root['b']
+    xq, sq, wq = ellipse_quadrature(root, 40)
+    P = lambda v: np.column_stack([np.interp(v, s, y), np.interp(v, s, z)])
+    n0 = root['n_in']
+
+    def hs(v, mode):
+        v = np.atleast_1d(v)
+        if mode == 'surface':
+            d2 = (v[:, None] - sq.ravel()[None])**2
+            proj = 1.0
+        else:
+            d2 = ((P(v)[:, None] - P(sq.ravel())[None])**2).sum(-1)
+            proj = np.array([surface_frame(y, z, s, vv)[1] @ n0 for vv in v])[:, None]
+        return (proj * wq.ravel()[None] / np.sqrt(xq.ravel()[None]**2 + d2)).sum(1) / (np.pi * E_STAR)
+
+    def fe(v):
+        return sum(np.interp(v, *per[b + ' profile']) for b in ('rail', 'wheel'))
+    print(f"   s from the root's centre (mm); tread centre at {zones[1]['s0'] - root['s0']:.2f}, its patch "
+          f"{zones[1]['s0'] - zones[1]['b'] - root['s0']:.2f} .. {zones[1]['s0'] + zones[1]['b'] - root['s0']:.2f}")
+    print("     s      FE     half-space (surface distance)   (3-D distance, projected)   [1e-9 mm/N]")
+    for ds in sorted([root['b'], 4.0, 6.0, 8.0, 10.0, 12.0, zones[1]['s0'] - root['s0'], 16.0, 20.0, 25.0]):
+        v = root['s0'] + ds
+        f = fe(v) - fe(edge)
+        a = hs(v, 'surface')[0] - hs(edge, 'surface')[0]
+        c = hs(v, 'chord')[0] - hs(edge, 'chord')[0]
+        print(f"   {ds:6.2f} {f * 1e9:9.2f} {a * 1e9:9.2f} ({(a - f) / abs(f) * 100 if f else 0:+6.1f} %)"
+              f"           {c * 1e9:9.2f} ({(c - f) / abs(f) * 100 if f else 0:+6.1f} %)")
+    # each body alone (twice its share, against the half-space of both) at the tread's centre
+    v = zones[1]['s0']
+    a = hs(v, 'surface')[0] - hs(edge, 'surface')[0]
+    for b in ('rail', 'wheel'):
+        f = 2 * (np.interp(v, *per[b + ' profile']) - np.interp(edge, *per[b + ' profile']))
+        print(f"     at the tread's centre, the {b} alone (twice its share): {f * 1e9:.2f}, the half-space "
+              f"{(a - f) / abs(f) * 100:+.1f} % from it")
 
 
 def hs_matrix(zones, rail, mode):
@@ -732,6 +784,13 @@ def main():
               + f"; C_root,tread from the rail {r['per']['rail'][0, 1] * 1e9:.2f}, the wheel {r['per']['wheel'][0, 1] * 1e9:.2f}")
     print("   (the FE's bodies are fixed ~40 mm away: their displacements lack the half-space's far tail, a near")
     print("   constant on every C_ij, which drops out of the split)\n")
+    print("   The root's unit load: closing of the gap along the surface toward the tread, relative to the root")
+    print("   patch's edge (the tread's normal displacement minus the root edge's; no coupling: the tread does not move)")
+    for r in results:
+        if r['label'] in ('mesh 3', 'mesh 2, root at track y 721 mm'):
+            print(f"   {r['label']}:")
+            profile_table(r)
+    print()
     print(f"4. Load split at the same total {P_WRC.sum() / 1e3:.2f} kN (kN: root, tread, crown)")
     print(f"   reported: wrc {P_WRC / 1e3}, CONTACT {P_CONTACT / 1e3}, wrc merge_angle = 1.2 {P_WRC_MERGED / 1e3}")
     for r in results:
