@@ -164,6 +164,31 @@ do  -- every case started from its equilibrium and the pressures and tractions i
   check.ok(runs[3].products < 0.92 * runs[2].products, "carried tractions: fewer tangential products")
 end
 
+do  -- the exact tangential solver at the loop's tolerance (M.ROLLING_TOLERANCE, 1e-4 of the rigid slip) against 1e-6
+    -- (wrc.wheelset's): one Heun step wears the same profiles (every point within 1e-5 of the step's depth, the
+    -- distance within 1e-5) with fewer products; a tolerance out of range is refused with its key and value
+  local runs = {}
+  for _, tol in ipairs{1e-6, false} do
+    local o = {rolling_tolerance = tol or nil}
+    for key, v in pairs(options) do o[key] = v end
+    local st, info = step(initial(), mixed, o)
+    runs[#runs + 1] = {st = st, products = info.products}
+  end
+  local a, b = runs[1], runs[2]
+  local worst = 0
+  for _, name in ipairs(loop.BODIES) do
+    for i, v in ipairs(a.st.bodies[name].worn) do worst = math.max(worst, math.abs(v - b.st.bodies[name].worn[i])) end
+  end
+  print(("rolling_tolerance %s: %d tangential products, %d at 1e-6; worn depths differ by %.3g nm at most, the " ..
+         "distance by %.2g"):format(tostring(loop.ROLLING_TOLERANCE), b.products, a.products, worst * 1e9, b.st.km / a.st.km - 1))
+  check.ok(worst <= 1e-5 * options.step, "rolling_tolerance: the same worn profiles as at 1e-6")
+  check.rel(b.st.km, a.st.km, 1e-5, "rolling_tolerance: the same distance as at 1e-6")
+  check.ok(b.products < 0.8 * a.products, "rolling_tolerance: fewer tangential products than at 1e-6")
+  local o = {rolling_tolerance = 0.5}
+  for key, v in pairs(options) do if key ~= "rolling_tolerance" then o[key] = v end end
+  check.fails(function() step(initial(), mixed, o) end, "rolling_tolerance = 0.5", "a tolerance out of range")
+end
+
 do  -- halving the step: the worn area at the same km (Archard with a constant k: the KTH map's jumps of k, 60-fold
     -- where the pressure passes 0.8 H, make the first steps' running-in depend on the step: docs/guide/wear.md)
   local function run(depth, km_end)
