@@ -52,20 +52,25 @@ double wheel_radius_at(const WheelCones& w, double Y) {
   return -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
 }
 
-double wheel_normal_depth(const WheelCones& w, double Y, double rho) {
+WheelNormalFoot wheel_normal_foot(const WheelCones& w, double Y, double rho) {
   const int n = w.cone_count();  // running-surface cones 1 .. n - 2, ascending in y
   double Yc = Y, t = 0;
   const int c = cone_holding(w, Yc, t);
-  const auto distance = [&](int k) {
+  WheelNormalFoot best{INFINITY, Yc};
+  const auto nearer = [&](int k) {
     const double ay = w.y[k], ar = -w.z[k], dy = w.y[k + 1] - ay, dr = -w.z[k + 1] - ar, L2 = dy * dy + dr * dr;
     const double u = L2 > 0 ? std::clamp(((Y - ay) * dy + (rho - ar) * dr) / L2, 0.0, 1.0) : 0.0;
-    return std::hypot(Y - (ay + u * dy), rho - (ar + u * dr));
+    const double d = std::hypot(Y - (ay + u * dy), rho - (ar + u * dr));
+    if (d < best.depth) best = {d, ay + u * dy};
   };
-  double best = distance(c);
-  for (int k = c + 1; k <= n - 2 && w.y[k] - Y < best; ++k) best = std::min(best, distance(k));
-  for (int k = c - 1; k >= 1 && Y - w.y[k + 1] < best; --k) best = std::min(best, distance(k));
-  return rho < wheel_radius_at(w, Y) ? best : -best;
+  nearer(c);
+  for (int k = c + 1; k <= n - 2 && w.y[k] - Y < best.depth; ++k) nearer(k);
+  for (int k = c - 1; k >= 1 && Y - w.y[k + 1] < best.depth; --k) nearer(k);
+  if (!(rho < wheel_radius_at(w, Y))) best.depth = -best.depth;
+  return best;
 }
+
+double wheel_normal_depth(const WheelCones& w, double Y, double rho) { return wheel_normal_foot(w, Y, rho).depth; }
 
 double wheel_normal_turning(const WheelCones& w, double Y) {
   double t = 0;
@@ -88,14 +93,28 @@ WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
   return s;
 }
 
-Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d q = frame.to_wheelset(p);
-  const WheelSurfacePoint s = wheel_surface_at(w, q.y());
+namespace {
+
+// The inward normal of the wheel surface at lateral position Y, in the meridian plane of the wheelset-frame point q.
+Eigen::Vector3d inward_normal_at(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& q, double Y) {
+  const WheelSurfacePoint s = wheel_surface_at(w, Y);
   // eq. (1): q = (-Z sin eps, Y, Z cos eps) with Z = -rho, so q_x = rho sin eps, q_z = -rho cos eps.
   const double rho = std::hypot(q.x(), q.z());
   const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
   const Eigen::Vector3d outward(s.normal_r * se, s.normal_y, -s.normal_r * ce);
   return -(frame.matrix() * outward);
+}
+
+}  // namespace
+
+Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = frame.to_wheelset(p);
+  return inward_normal_at(w, frame, q, q.y());
+}
+
+Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = frame.to_wheelset(p);
+  return inward_normal_at(w, frame, q, wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z())).Y);
 }
 
 LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r, double floor) {

@@ -25,11 +25,12 @@ namespace {
 struct SurfaceLine {
   double S = 0;          // arc length along the rail profile from the side's first line (m)
   double y = 0, z = 0;   // the line (track frame, m)
-  Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the line's deepest
-                         // point, x component dropped): the normal of the surface midway between them
+  Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the normal foot of
+                         // the line's deepest point, along which its depth is measured; x component dropped): the
+                         // normal of the surface midway between them
   LineProfile h;         // depth along the wheel's normal as a function of track x (v, u0 unused)
-  double deepening = 1;  // dh/dz: h's growth as the wheel moves down, the z part of the wheel's normal n_w (h is a
-                         // depth along n_w; n is the bisector)
+  double deepening = 1;  // dh/dz before h_gain: the z part of the wheel's normal at the deepest point's lateral
+                         // position (the radial depth's; times h_gain, 1 - 2 bend d, the normal foot's)
 };
 
 double chord(const RailLines& rail, int r) {  // between lines r and r + 1 (m)
@@ -126,18 +127,19 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
     lines[k].h.arcs.push_back(&s);
     if (s.sagitta > depth[k]) {
       depth[k] = s.sagitta;
-      lines[k].n = lateral_normal(s.normal);
+      lines[k].n = lateral_normal(s.foot_normal);
+      lines[k].deepening = lateral_normal(s.normal).y();
       lines[k].h.bend = depth_bend(wheel, st.frame().to_wheelset(s.mid), s.sagitta);
     }
   }
   for (SurfaceLine& l : lines) {
     if (!l.h.arcs.empty()) continue;
     const LineApproach a = arc_through_deepest(wheel, st, l.y, l.z, l.h);
-    l.n = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z}));
+    l.n = lateral_normal(wheel_foot_normal(wheel, st.frame(), {a.x, l.y, l.z}));
+    l.deepening = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z})).y();
   }
   for (int r = rlo; r <= rhi; ++r) {
     SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
-    l.deepening = l.n.y();
     l.n = mid_normal(l.n, rail_normal(rail, r));
   }
   return lines;
@@ -388,10 +390,10 @@ void row_turning(const ContactModel& model, const Pose& pose, const PatchContact
   for (int j = 0; j < g.ny; ++j) {
     const auto js = static_cast<std::size_t>(j);
     const double x = P[js] > 0 ? Q[js] / P[js] : surf.x0;
-    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j), nw = yz(wheel_inward_normal(wheel, f0, X));
+    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j), nw = yz(wheel_foot_normal(wheel, f0, X));
     const Eigen::Vector3d nr = 2 * nw.dot(n) * n - nw;  // the rail's: n bisects it and the wheel's
-    const Eigen::Vector3d nl = (nr + yz(wheel_inward_normal(wheel, fl, X))).normalized();
-    const Eigen::Vector3d nh = (nr + yz(wheel_inward_normal(wheel, fh, X))).normalized();
+    const Eigen::Vector3d nl = (nr + yz(wheel_foot_normal(wheel, fl, X))).normalized();
+    const Eigen::Vector3d nh = (nr + yz(wheel_foot_normal(wheel, fh, X))).normalized();
     dn[js] = (nh - nl) / (2 * kRowTurnStep);
   }
 }

@@ -122,6 +122,7 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
     info.sagitta = std::max(0.0, info.rim + info.correction(info.xm));
     info.weight = (2.0 / 3.0) * info.L * info.sagitta * line_spacing(g.side[side].rail, s.line);
     info.normal = wheel_inward_normal(w, f, info.mid);
+    info.foot_normal = wheel_foot_normal(w, f, info.mid);
     out.push_back(std::move(info));
   }
 }
@@ -133,7 +134,7 @@ Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
   for (const auto& s : infos) {
     W += s.weight;
     O += s.weight * s.mid;
-    n += s.weight * s.normal;
+    n += s.weight * s.foot_normal;
   }
   if (W > 0 && n.norm() > 0) {
     pl.O = O / W;

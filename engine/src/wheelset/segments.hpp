@@ -31,7 +31,10 @@ struct SegmentInfo {
   double y = 0, z = 0;         // rail line (track frame)
   double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
   double weight = 0;           // share of the inter-penetration volume (m^3)
-  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
+  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there (at its lateral position)
+  // The wheel's inward normal at the mid-point's normal foot (its closest wheel point), the direction of its depth:
+  // the plane's and the conformal rows' normals. Turned from `normal` by kappa d tan(delta) (wheel_foot_normal).
+  Eigen::Vector3d foot_normal;
   double rim = 0;              // the arc's height at the mid-point (m)
   double sagitta = 0;          // h at the mid-point (m): rim plus the correction there
   // Under yaw: the correction's knots (x, value; m), ascending track x strictly between the segment's ends; the
