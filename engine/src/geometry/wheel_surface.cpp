@@ -61,7 +61,8 @@ WheelNormalFoot wheel_normal_foot(const WheelCones& w, double Y, double rho) {
     const double ay = w.y[k], ar = -w.z[k], dy = w.y[k + 1] - ay, dr = -w.z[k + 1] - ar, L2 = dy * dy + dr * dr;
     const double u = L2 > 0 ? std::clamp(((Y - ay) * dy + (rho - ar) * dr) / L2, 0.0, 1.0) : 0.0;
     const double d = std::hypot(Y - (ay + u * dy), rho - (ar + u * dr));
-    if (d < best.depth) best = {d, ay + u * dy};
+    const bool inner = u > 0 && u < 1;  // the foot slides along the cone (else it stays at a vertex)
+    if (d < best.depth) best = {d, ay + u * dy, inner ? dy * dy / L2 : 0.0, inner ? dy * dr / L2 : 0.0};
   };
   nearer(c);
   for (int k = c + 1; k <= n - 2 && w.y[k] - Y < best.depth; ++k) nearer(k);
@@ -81,13 +82,32 @@ double wheel_normal_turning(const WheelCones& w, double Y) {
   return std::atan2(a.y() * b.x() - a.x() * b.y(), a.dot(b)) / dy;  // theta(b) - theta(a), theta = atan2(n_y, n_r)
 }
 
+namespace {
+
+// The smooth meridian normal (n_y, n_r) at Y and, with `rate`, its derivative by Y (the vertex normals' interpolation
+// normalised; 0 where Y is clamped to the profile).
+Eigen::Vector2d smooth_normal(const WheelCones& w, double Y, int& c, double& t, Eigen::Vector2d* rate = nullptr) {
+  const double Yc = Y;
+  c = cone_holding(w, Y, t);
+  const Eigen::Vector2d a = vertex_normal(w, c), b = vertex_normal(w, c + 1), v = (1 - t) * a + t * b;
+  const Eigen::Vector2d n = v.normalized();
+  if (rate) {
+    const double dy = w.y[c + 1] - w.y[c];
+    const bool inside = dy > 0 && Y == Yc;
+    *rate = inside ? Eigen::Vector2d((b - a - n * n.dot(b - a)) / (v.norm() * dy)) : Eigen::Vector2d::Zero();
+  }
+  return n;
+}
+
+}  // namespace
+
 WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
   double t = 0;
-  const int c = cone_holding(w, Y, t);
+  int c = 0;
+  const Eigen::Vector2d nrm = smooth_normal(w, Y, c, t);
   WheelSurfacePoint s;
   s.cone = c;
   s.radius = -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
-  const Eigen::Vector2d nrm = ((1 - t) * vertex_normal(w, c) + t * vertex_normal(w, c + 1)).normalized();
   s.normal_y = nrm.x();
   s.normal_r = nrm.y();
   return s;
@@ -115,6 +135,26 @@ Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame,
 Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
   const Eigen::Vector3d q = frame.to_wheelset(p);
   return inward_normal_at(w, frame, q, wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z())).Y);
+}
+
+WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                       const Eigen::Vector3d& v) {
+  const Eigen::Matrix3d A = frame.matrix();
+  const Eigen::Vector3d q = frame.to_wheelset(p), dq = A.transpose() * v;
+  const double rho = std::hypot(q.x(), q.z());
+  const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
+  // The point's meridian coordinates move by drho and deps (q_x = rho sin eps, q_z = -rho cos eps), its foot by dY.
+  const double drho = se * dq.x() - ce * dq.z(), deps = rho > 0 ? (ce * dq.x() + se * dq.z()) / rho : 0.0;
+  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), rho);
+  const double dY = foot.dY_dY * dq.y() + foot.dY_drho * drho;
+  int c = 0;
+  double t = 0;
+  Eigen::Vector2d dn;
+  const Eigen::Vector2d n = smooth_normal(w, foot.Y, c, t, &dn);
+  dn *= dY;
+  const Eigen::Vector3d outward(n.y() * se, n.x(), -n.y() * ce);
+  const Eigen::Vector3d doutward(dn.y() * se + n.y() * ce * deps, dn.x(), -dn.y() * ce + n.y() * se * deps);
+  return {-(A * outward), -(A * doutward)};
 }
 
 LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r, double floor) {

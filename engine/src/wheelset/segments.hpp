@@ -32,9 +32,6 @@ struct SegmentInfo {
   double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
   double weight = 0;           // share of the inter-penetration volume (m^3)
   Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there (at its lateral position)
-  // The wheel's inward normal at the mid-point's normal foot (its closest wheel point), the direction of its depth:
-  // the plane's and the conformal rows' normals. Turned from `normal` by kappa d tan(delta) (wheel_foot_normal).
-  Eigen::Vector3d foot_normal;
   double rim = 0;              // the arc's height at the mid-point (m)
   double sagitta = 0;          // h at the mid-point (m): rim plus the correction there
   // Under yaw: the correction's knots (x, value; m), ascending track x strictly between the segment's ends; the
@@ -91,8 +88,13 @@ struct Plane {
 };
 
 // The plane tangent to the wheel at the segments' weighted mid-point (wrc/wheelset/contact.hpp); the paper's nominal
-// point of `fallback` when only tangencies are left.
+// point of `fallback` when only tangencies are left. Its normal: the segments' `normal`s weighted (grouping the areas,
+// sizing their grids).
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback);
+// The same with each mid-point's normal at its normal foot (wheel_foot_normal: the direction of its depth, turned
+// from `normal` by kappa d tan(delta) inside a curved profile): the planar surface's plane.
+Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
+                    const Patch& fallback);
 
 // The rectangle of a plane's coordinates (u along t1, v along t2) that holds the segments' end points.
 struct Bounds {

@@ -36,6 +36,9 @@ struct AreaLayout {
   Plane frame;
   std::vector<double> vertical;   // per grid row: the vertical part of its normal (a vertical load's weights)
   std::vector<double> deepening;  // per grid row: dh/dz, h's growth as the wheel moves down
+  // Conformal, per grid row: d(normal_y, normal_z)/da, the row normal's turning as the wheel moves down by a (1/m; the
+  // wheel's normal at a line's normal foot turns as the foot slides). Empty: normals fixed.
+  std::vector<Eigen::Vector2d> turning;
 };
 
 // A rigid motion of the wheelset per unit of one of its pose coordinates (Pose: y, z, roll, yaw): its centre c moves by

@@ -34,10 +34,12 @@ double wheel_radius_at(const WheelCones& wheel, double Y);
 // the one holding Y only as far as one can be nearer.
 double wheel_normal_depth(const WheelCones& wheel, double Y, double rho);
 // The same search, with where it ends: the depth (m, as wheel_normal_depth) and the lateral position (m) of the
-// point's closest generatrix point, its normal foot.
+// point's closest generatrix point, its normal foot, and how far the foot moves in Y as the point moves: by
+// dY_dY dY + dY_drho drho (the point's motion along the foot's cone, times the cone's y direction; 0 at a vertex).
 struct WheelNormalFoot {
   double depth = 0;
   double Y = 0;
+  double dY_dY = 0, dY_drho = 0;
 };
 WheelNormalFoot wheel_normal_foot(const WheelCones& wheel, double Y, double rho);
 // How fast the smooth normal of wheel_surface_at turns with Y there: d(atan2(n_y, n_r)) / dY (rad/m), constant on a
@@ -56,6 +58,14 @@ Eigen::Vector3d wheel_inward_normal(const WheelCones& wheel, const PoseFrame& fr
 // at its lateral position: the direction along which its depth d is measured. Inside a profile of curvature kappa
 // and slope delta the two differ by kappa d tan(delta) (0.9 deg at 70 deg, 40 um deep in a 4 mm circle).
 Eigen::Vector3d wheel_foot_normal(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p);
+// wheel_foot_normal and how it turns as the point moves relative to the wheel: d(normal)/ds at p + s v (track-frame
+// direction v, m; 1/m). The foot slides along its cone with the point, the smooth normal turning with its Y
+// (wheel_normal_turning), and the meridian plane turns about the axle. E.g. v = e_z: the wheel moving down by s.
+struct WheelFootNormal {
+  Eigen::Vector3d normal, rate;
+};
+WheelFootNormal wheel_foot_normal_rate(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                       const Eigen::Vector3d& v);
 
 // The deepest point of the rail line (y_r, z_r) (track frame, m) relative to the wheel: the maximum over x of
 // overlap(x) = wheel radius at the line point's lateral position - the point's distance to the axle, which is
