@@ -407,22 +407,21 @@ void row_turning(const ContactModel& model, const Pose& pose, const PatchContact
   const WheelCones& wheel = model.geometry().side[static_cast<std::size_t>(pc.side)].wheel;
   std::vector<double> P, Q;
   row_sums(g, pc.solution.pressure, surf.x0, P, Q);
-  Pose lo = pose, hi = pose;
-  double* a[4] = {&lo.y, &lo.z, &lo.roll, &lo.yaw};
-  double* b[4] = {&hi.y, &hi.z, &hi.roll, &hi.yaw};
-  *a[coordinate] -= kRowTurnStep;
-  *b[coordinate] += kRowTurnStep;
-  const PoseFrame f0(pose), fl(lo), fh(hi);
-  const auto yz = [](Eigen::Vector3d v) { return Eigen::Vector3d(0, v.y(), v.z()).normalized(); };
+  const PoseFrame f0(pose);
+  const RigidMotion m = pose_motion(pose, coordinate);
+  const Eigen::Vector3d c(0, pose.y, pose.z);
   dn.assign(static_cast<std::size_t>(g.ny), Eigen::Vector3d::Zero());
   for (int j = 0; j < g.ny; ++j) {
     const auto js = static_cast<std::size_t>(j);
     const double x = P[js] > 0 ? Q[js] / P[js] : surf.x0;
-    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j), nw = yz(wheel_foot_normal(wheel, f0, X));
-    const Eigen::Vector3d nr = 2 * nw.dot(n) * n - nw;  // the rail's: n bisects it and the wheel's
-    const Eigen::Vector3d nl = (nr + yz(wheel_foot_normal(wheel, fl, X))).normalized();
-    const Eigen::Vector3d nh = (nr + yz(wheel_foot_normal(wheel, fh, X))).normalized();
-    dn[js] = (nh - nl) / (2 * kRowTurnStep);
+    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j);
+    // The wheel's normal at X turns with the wheel (W x n) and as X moves relative to it, by -(T + W x (X - c)).
+    const WheelFootNormal fn = wheel_foot_normal_rate(wheel, f0, X, -(m.translation + m.rotation.cross(X - c)));
+    const Eigen::Vector3d dw = m.rotation.cross(fn.normal) + fn.rate;
+    const Eigen::Vector2d v(fn.normal.y(), fn.normal.z()), nw = v.normalized();  // x component dropped
+    const Eigen::Vector2d n2(n.y(), n.z()), nr = 2 * nw.dot(n2) * n2 - nw;      // the rail's: n bisects it and nw
+    const Eigen::Vector2d d = unit_rate(nr + nw, unit_rate(v, {dw.y(), dw.z()}));
+    dn[js] = {0.0, d.x(), d.y()};
   }
 }
 

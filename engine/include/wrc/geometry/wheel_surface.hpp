@@ -34,12 +34,12 @@ double wheel_radius_at(const WheelCones& wheel, double Y);
 // the one holding Y only as far as one can be nearer.
 double wheel_normal_depth(const WheelCones& wheel, double Y, double rho);
 // The same search, with where it ends: the depth (m, as wheel_normal_depth) and the lateral position (m) of the
-// point's closest generatrix point, its normal foot, and how far the foot moves in Y as the point moves: by
-// dY_dY dY + dY_drho drho (the point's motion along the foot's cone, times the cone's y direction; 0 at a vertex).
+// point's closest generatrix point, its normal foot, at position t in [0, 1] on running-surface cone `cone`.
 struct WheelNormalFoot {
   double depth = 0;
   double Y = 0;
-  double dY_dY = 0, dY_drho = 0;
+  int cone = 0;
+  double t = 0;
 };
 WheelNormalFoot wheel_normal_foot(const WheelCones& wheel, double Y, double rho);
 // How fast the smooth normal of wheel_surface_at turns with Y there: d(atan2(n_y, n_r)) / dY (rad/m), constant on a
@@ -59,8 +59,10 @@ Eigen::Vector3d wheel_inward_normal(const WheelCones& wheel, const PoseFrame& fr
 // and slope delta the two differ by kappa d tan(delta) (0.9 deg at 70 deg, 40 um deep in a 4 mm circle).
 Eigen::Vector3d wheel_foot_normal(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p);
 // wheel_foot_normal and how it turns as the point moves relative to the wheel: d(normal)/ds at p + s v (track-frame
-// direction v, m; 1/m). The foot slides along its cone with the point, the smooth normal turning with its Y
-// (wheel_normal_turning), and the meridian plane turns about the axle. E.g. v = e_z: the wheel moving down by s.
+// direction v, m; 1/m). The foot slides along the smooth surface (the normals interpolated between the vertices, of
+// curvature kappa) by the point's tangential motion / (1 - kappa d), d its depth, the normal turning with the foot's
+// Y (wheel_normal_turning), and the meridian plane turns about the axle. E.g. v = e_z: the wheel moving down by s.
+// (wheel_foot_normal itself is the polygon's: between small jumps from cone to cone it turns 1 - kappa d as fast.)
 struct WheelFootNormal {
   Eigen::Vector3d normal, rate;
 };
