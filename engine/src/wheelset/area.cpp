@@ -84,11 +84,12 @@ halfspace::NormalSolution solve_normal(const ContactModel& model, const AreaSolv
 
 // A prediction's rows turned to the approach a it predicts. Its vertical force there is sum n_z(a) p dA, the rows'
 // normals turning with the approach (AreaLayout::turning, dn/da: the wheel's normal foot slides), which the solve's
-// weights n_z(0) miss by a sum dn_z/da p dA: a first-order error of a / (1 + sum dn_z/da p dA / k), k the area's
-// vertical stiffness (6.6e-4 of a at the S1002 flange root). The rows are turned to n(a) = n + a dn/da, normalised, and
-// the area solved again for the force with their n_z as weights (from the first solution: a few CG iterations); its
-// approach then misses the exact one by the second order (a - a') dn_z/da. Skipped (false) for an estimate, without
-// turning, and where the term a sum dn_z/da p dA is below a tenth of the solve's tolerance times the force.
+// fixed weights n_z miss by a sum dn_z/da p dA: to first order the predicted approach is off by the relative
+// sum dn_z/da p dA / k, k the area's vertical stiffness (6.6e-4 at the S1002 flange root). So the rows are turned to
+// n + a dn/da, normalised (the prediction's result then holds the rows of the approach it predicts), and the area is
+// solved again for the force with their n_z as weights, from the first solution (a few CG iterations): its approach
+// a' then misses the exact one by the second order, (a' - a) dn_z/da against n_z. Skipped (false) for an estimate,
+// without turning, and where a sum dn_z/da p dA is below a tenth of the solve's tolerance times the force.
 bool turn_rows(const AreaSolve& how, double tolerance, AreaLayout& l, PatchContact& pc) {
   const halfspace::NormalSolution& sol = pc.solution;
   if (!how.vertical_force || how.estimate || l.turning.empty() || !pc.conformal ||
