@@ -9,9 +9,11 @@
 -- directions are those along which its h changes when the wheel moves. The engine's h along a rail line is the
 -- line's depth inside the wheel along the wheel's normal, so an element's h changes by -n . dX: the conformal
 -- surface, whose elements push along their own normals, satisfies virtual work to the order of its approximations
--- (asserted: within 2.5 % of Fy, 2 % of Fz); a plane pushes all of its pressure along one normal, and the planar
+-- (asserted: within 0.4 % of Fy, 0.2 % of Fz); a plane pushes all of its pressure along one normal, and the planar
 -- errors are printed, not asserted: they are what the conformal surface is for (measured at this 0.4 mm grid:
--- planar -15, +6, +21 % of Fy, conformal -1.7, -1.2, +0.3 %).
+-- planar -15.7, +5.3, +18.8 % of Fy, conformal -0.17, -0.08, +0.11 %, Fz within 0.1 %). With the wheel's normal taken
+-- at the radial foot of a line's deepest point instead of at its normal foot, the direction its depth is measured
+-- along, the conformal rows leaned at the flange root's concave throat: +0.02, +0.37, +0.72 % of Fy, Fz -0.33 %.
 local check = require "wrc.check"
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
@@ -62,8 +64,8 @@ for _, surface in ipairs{"planar", "conformal"} do
     print(("  %-9s y = %.1f mm: Fy %8.3f vs %8.3f (%+6.2f %%), Fz %8.3f vs %8.3f (%+5.2f %%); angle %.1f deg"):format(
         surface, y * 1e3, w.force.y / 1e3, fy / 1e3, 100 * ey, w.force.z / 1e3, fz / 1e3, 100 * ez, math.deg(w.angle)))
     if surface == "conformal" then
-      check.ok(math.abs(ey) < 0.025, what .. ("lateral force = -dPi/dy within 2.5 %% (%.2f %%)"):format(100 * ey))
-      check.ok(math.abs(ez) < 0.02, what .. ("vertical force = -dU/dz within 2 %% (%.2f %%)"):format(100 * ez))
+      check.ok(math.abs(ey) < 0.004, what .. ("lateral force = -dPi/dy within 0.4 %% (%.2f %%)"):format(100 * ey))
+      check.ok(math.abs(ez) < 0.002, what .. ("vertical force = -dU/dz within 0.2 %% (%.2f %%)"):format(100 * ez))
     end
   end
 end

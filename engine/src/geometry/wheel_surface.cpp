@@ -52,20 +52,25 @@ double wheel_radius_at(const WheelCones& w, double Y) {
   return -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
 }
 
-double wheel_normal_depth(const WheelCones& w, double Y, double rho) {
+WheelNormalFoot wheel_normal_foot(const WheelCones& w, double Y, double rho) {
   const int n = w.cone_count();  // running-surface cones 1 .. n - 2, ascending in y
   double Yc = Y, t = 0;
   const int c = cone_holding(w, Yc, t);
-  const auto distance = [&](int k) {
+  WheelNormalFoot best{INFINITY, Yc, c, t};
+  const auto nearer = [&](int k) {
     const double ay = w.y[k], ar = -w.z[k], dy = w.y[k + 1] - ay, dr = -w.z[k + 1] - ar, L2 = dy * dy + dr * dr;
     const double u = L2 > 0 ? std::clamp(((Y - ay) * dy + (rho - ar) * dr) / L2, 0.0, 1.0) : 0.0;
-    return std::hypot(Y - (ay + u * dy), rho - (ar + u * dr));
+    const double d = std::hypot(Y - (ay + u * dy), rho - (ar + u * dr));
+    if (d < best.depth) best = {d, ay + u * dy, k, u};
   };
-  double best = distance(c);
-  for (int k = c + 1; k <= n - 2 && w.y[k] - Y < best; ++k) best = std::min(best, distance(k));
-  for (int k = c - 1; k >= 1 && Y - w.y[k + 1] < best; --k) best = std::min(best, distance(k));
-  return rho < wheel_radius_at(w, Y) ? best : -best;
+  nearer(c);
+  for (int k = c + 1; k <= n - 2 && w.y[k] - Y < best.depth; ++k) nearer(k);
+  for (int k = c - 1; k >= 1 && Y - w.y[k + 1] < best.depth; --k) nearer(k);
+  if (!(rho < -(w.z[c] + t * (w.z[c + 1] - w.z[c])))) best.depth = -best.depth;  // the radius at Y
+  return best;
 }
+
+double wheel_normal_depth(const WheelCones& w, double Y, double rho) { return wheel_normal_foot(w, Y, rho).depth; }
 
 double wheel_normal_turning(const WheelCones& w, double Y) {
   double t = 0;
@@ -76,26 +81,84 @@ double wheel_normal_turning(const WheelCones& w, double Y) {
   return std::atan2(a.y() * b.x() - a.x() * b.y(), a.dot(b)) / dy;  // theta(b) - theta(a), theta = atan2(n_y, n_r)
 }
 
+namespace {
+
+// The smooth meridian normal (n_y, n_r) at position t on cone c (the vertex normals' interpolation normalised) and,
+// with `rate`, its derivative by Y there.
+Eigen::Vector2d normal_on(const WheelCones& w, int c, double t, Eigen::Vector2d* rate = nullptr) {
+  const Eigen::Vector2d a = vertex_normal(w, c), b = vertex_normal(w, c + 1), v = (1 - t) * a + t * b;
+  const Eigen::Vector2d n = v.normalized();
+  if (rate) {
+    const double dy = w.y[c + 1] - w.y[c];
+    *rate = dy > 0 ? Eigen::Vector2d((b - a - n * n.dot(b - a)) / (v.norm() * dy)) : Eigen::Vector2d::Zero();
+  }
+  return n;
+}
+
+}  // namespace
+
 WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
   double t = 0;
   const int c = cone_holding(w, Y, t);
+  const Eigen::Vector2d nrm = normal_on(w, c, t);
   WheelSurfacePoint s;
   s.cone = c;
   s.radius = -(w.z[c] + t * (w.z[c + 1] - w.z[c]));
-  const Eigen::Vector2d nrm = ((1 - t) * vertex_normal(w, c) + t * vertex_normal(w, c + 1)).normalized();
   s.normal_y = nrm.x();
   s.normal_r = nrm.y();
   return s;
 }
 
-Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d q = frame.to_wheelset(p);
-  const WheelSurfacePoint s = wheel_surface_at(w, q.y());
+namespace {
+
+// The inward normal of the wheel surface of meridian normal (n_y, n_r) in the meridian plane of the wheelset-frame
+// point q.
+Eigen::Vector3d inward_normal_at(const PoseFrame& frame, const Eigen::Vector3d& q, const Eigen::Vector2d& n) {
   // eq. (1): q = (-Z sin eps, Y, Z cos eps) with Z = -rho, so q_x = rho sin eps, q_z = -rho cos eps.
   const double rho = std::hypot(q.x(), q.z());
   const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
-  const Eigen::Vector3d outward(s.normal_r * se, s.normal_y, -s.normal_r * ce);
+  const Eigen::Vector3d outward(n.y() * se, n.x(), -n.y() * ce);
   return -(frame.matrix() * outward);
+}
+
+}  // namespace
+
+Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = frame.to_wheelset(p);
+  const WheelSurfacePoint s = wheel_surface_at(w, q.y());
+  return inward_normal_at(frame, q, {s.normal_y, s.normal_r});
+}
+
+Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = frame.to_wheelset(p);
+  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z()));
+  return inward_normal_at(frame, q, normal_on(w, foot.cone, foot.t));
+}
+
+WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                       const Eigen::Vector3d& v) {
+  const Eigen::Matrix3d A = frame.matrix();
+  const Eigen::Vector3d q = frame.to_wheelset(p), dq = A.transpose() * v;
+  const double rho = std::hypot(q.x(), q.z());
+  const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
+  // The point's meridian coordinates move by drho and deps (q_x = rho sin eps, q_z = -rho cos eps).
+  const double drho = se * dq.x() - ce * dq.z(), deps = rho > 0 ? (ce * dq.x() + se * dq.z()) / rho : 0.0;
+  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), rho);
+  const int c = foot.cone;
+  Eigen::Vector2d dn_dY;
+  const Eigen::Vector2d n = normal_on(w, c, foot.t, &dn_dY);
+  // The foot's cone, unit tangent g (ascending y), and the smooth surface's curvature there, kappa = (g . dn/dY) g_y
+  // per arc length. A point d deep moves its foot along it by ds = g . (dY, drho) / (1 - kappa d). (On the polygon
+  // the foot slides by the numerator alone, or stays at a vertex, and jumps from cone to cone where two feet are
+  // equally near: on average the same.) kappa d stays far below 1 in a contact; the guard keeps the centre of
+  // curvature out.
+  const Eigen::Vector2d g = Eigen::Vector2d(w.y[c + 1] - w.y[c], w.z[c] - w.z[c + 1]).normalized();
+  const double kappa = g.dot(dn_dY) * g.x();
+  const double ds = g.dot(Eigen::Vector2d(dq.y(), drho)) / std::max(1 - kappa * foot.depth, 0.5);
+  const Eigen::Vector2d dn = dn_dY * (g.x() * ds);
+  const Eigen::Vector3d outward(n.y() * se, n.x(), -n.y() * ce);
+  const Eigen::Vector3d doutward(dn.y() * se + n.y() * ce * deps, dn.x(), -dn.y() * ce + n.y() * se * deps);
+  return {-(A * outward), -(A * doutward)};
 }
 
 LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r, double floor) {

@@ -25,11 +25,14 @@ namespace {
 struct SurfaceLine {
   double S = 0;          // arc length along the rail profile from the side's first line (m)
   double y = 0, z = 0;   // the line (track frame, m)
-  Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the line's deepest
-                         // point, x component dropped): the normal of the surface midway between them
+  Eigen::Vector2d n;     // (n_y, n_z), unit: the bisector of the rail's normal and the wheel's (at the normal foot of
+                         // the line's deepest point, along which its depth is measured; x component dropped): the
+                         // normal of the surface midway between them
+  Eigen::Vector2d dn = Eigen::Vector2d::Zero();  // dn / da: n's turning as the wheel moves down by a (1/m), from the
+                                                 // foot's sliding along the wheel (wheel_foot_normal_rate)
   LineProfile h;         // depth along the wheel's normal as a function of track x (v, u0 unused)
-  double deepening = 1;  // dh/dz: h's growth as the wheel moves down, the z part of the wheel's normal n_w (h is a
-                         // depth along n_w; n is the bisector)
+  double deepening = 1;  // dh/dz before h_gain: the z part of the wheel's normal at the deepest point's lateral
+                         // position (the radial depth's; times h_gain, 1 - 2 bend d, the normal foot's)
 };
 
 double chord(const RailLines& rail, int r) {  // between lines r and r + 1 (m)
@@ -96,6 +99,23 @@ Eigen::Vector2d mid_normal(const Eigen::Vector2d& wheel, const Eigen::Vector2d& 
   return n.norm() > 0 ? Eigen::Vector2d(n.normalized()) : rail;
 }
 
+// The derivative of v / |v| for v moving by dv.
+Eigen::Vector2d unit_rate(const Eigen::Vector2d& v, const Eigen::Vector2d& dv) {
+  const double l = v.norm();
+  if (!(l > 0)) return Eigen::Vector2d::Zero();
+  const Eigen::Vector2d u = v / l;
+  return (dv - u * u.dot(dv)) / l;
+}
+
+// A line's wheel normal at track point p (lateral_normal of the foot normal) and the turning of its bisector with the
+// rail's normal as the wheel moves down (the point moves up relative to it).
+void line_normal(const WheelCones& wheel, const PoseFrame& f, const Eigen::Vector3d& p, SurfaceLine& l) {
+  const WheelFootNormal fn = wheel_foot_normal_rate(wheel, f, p, Eigen::Vector3d::UnitZ());
+  const Eigen::Vector2d v(fn.normal.y(), fn.normal.z());
+  l.n = lateral_normal(fn.normal);
+  l.dn = unit_rate(v, {fn.rate.y(), fn.rate.z()});
+}
+
 // The rail lines from the last one at or before the grid's first row to the first one at or after its last row
 // (as far as the rail goes), each with its arc length, normal and h(x): the arcs of its segments (the deepest one
 // gives the wheel's normal), or the arc through its deepest point.
@@ -115,6 +135,7 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
   while (rhi < rail.count() - 1 && S_hi < s_last) S_hi += chord(rail, rhi++);
   std::vector<SurfaceLine> lines(static_cast<std::size_t>(rhi - rlo + 1));
   std::vector<double> depth(lines.size(), -INFINITY);
+  std::vector<const SegmentInfo*> deepest(lines.size(), nullptr);
   for (int r = rlo; r <= rhi; ++r) {
     SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
     l.S = arc[static_cast<std::size_t>(r)];
@@ -126,19 +147,26 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
     lines[k].h.arcs.push_back(&s);
     if (s.sagitta > depth[k]) {
       depth[k] = s.sagitta;
-      lines[k].n = lateral_normal(s.normal);
+      deepest[k] = &s;
+      lines[k].deepening = lateral_normal(s.normal).y();
       lines[k].h.bend = depth_bend(wheel, st.frame().to_wheelset(s.mid), s.sagitta);
     }
   }
-  for (SurfaceLine& l : lines) {
-    if (!l.h.arcs.empty()) continue;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    SurfaceLine& l = lines[k];
+    if (deepest[k]) {
+      line_normal(wheel, st.frame(), deepest[k]->mid, l);
+      continue;
+    }
     const LineApproach a = arc_through_deepest(wheel, st, l.y, l.z, l.h);
-    l.n = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z}));
+    line_normal(wheel, st.frame(), {a.x, l.y, l.z}, l);
+    l.deepening = lateral_normal(wheel_inward_normal(wheel, st.frame(), {a.x, l.y, l.z})).y();
   }
   for (int r = rlo; r <= rhi; ++r) {
     SurfaceLine& l = lines[static_cast<std::size_t>(r - rlo)];
-    l.deepening = l.n.y();
+    const Eigen::Vector2d v = l.n + rail_normal(rail, r);
     l.n = mid_normal(l.n, rail_normal(rail, r));
+    l.dn = unit_rate(v, l.dn);  // the bisector turns by half the wheel normal's turning
   }
   return lines;
 }
@@ -146,14 +174,15 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
 // Rows of the grid on the lines: per row its point, normal, dh/dz and the h of its elements (linear in s between the
 // two lines bracketing the row; the nearest line's beyond the rail's ends).
 void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid, const Eigen::Vector2d& o,
-              ConformalSurface& surf, std::vector<double>& deepening, std::vector<double>& h,
-              std::vector<double>& gain) {
+              ConformalSurface& surf, std::vector<double>& deepening, std::vector<Eigen::Vector2d>& turning,
+              std::vector<double>& h, std::vector<double>& gain) {
   const int ny = grid.ny;
   surf.y.resize(static_cast<std::size_t>(ny));
   surf.z.resize(static_cast<std::size_t>(ny));
   surf.normal_y.resize(static_cast<std::size_t>(ny));
   surf.normal_z.resize(static_cast<std::size_t>(ny));
   deepening.resize(static_cast<std::size_t>(ny));
+  turning.resize(static_cast<std::size_t>(ny));
   h.resize(static_cast<std::size_t>(grid.size()));  // every element is written below
   gain.resize(h.size());
   // Each line's h (and normal_depth's slope) at the grid's columns, computed once (neighbouring rows share their lines).
@@ -184,6 +213,7 @@ void lay_rows(const std::vector<SurfaceLine>& lines, const halfspace::Grid& grid
     surf.y[js] = (1 - t) * la.y + t * lc.y;
     surf.z[js] = (1 - t) * la.z + t * lc.z;
     const Eigen::Vector2d n = ((1 - t) * la.n + t * lc.n).normalized();
+    turning[js] = unit_rate((1 - t) * la.n + t * lc.n, (1 - t) * la.dn + t * lc.dn);
     surf.normal_y[js] = n.x();
     surf.normal_z[js] = n.y();
     deepening[js] = (1 - t) * la.deepening + t * lc.deepening;
@@ -267,7 +297,7 @@ class ConformalAreaSurface final : public AreaSurface {
     const auto lines = surface_lines(in.model.geometry(), in.located, in.side, arc, all, o.y() + grid.y(0),
                                      o.y() + grid.y(grid.ny - 1));
     ConformalSurface& surf = pc.conformal.emplace();
-    lay_rows(lines, grid, o, surf, l.deepening, pc.h, pc.h_gain);
+    lay_rows(lines, grid, o, surf, l.deepening, l.turning, pc.h, pc.h_gain);
     surf.x0 = o.x();
     surf.s0 = o.y();
     const int j0 = origin_row(grid);
@@ -377,22 +407,21 @@ void row_turning(const ContactModel& model, const Pose& pose, const PatchContact
   const WheelCones& wheel = model.geometry().side[static_cast<std::size_t>(pc.side)].wheel;
   std::vector<double> P, Q;
   row_sums(g, pc.solution.pressure, surf.x0, P, Q);
-  Pose lo = pose, hi = pose;
-  double* a[4] = {&lo.y, &lo.z, &lo.roll, &lo.yaw};
-  double* b[4] = {&hi.y, &hi.z, &hi.roll, &hi.yaw};
-  *a[coordinate] -= kRowTurnStep;
-  *b[coordinate] += kRowTurnStep;
-  const PoseFrame f0(pose), fl(lo), fh(hi);
-  const auto yz = [](Eigen::Vector3d v) { return Eigen::Vector3d(0, v.y(), v.z()).normalized(); };
+  const PoseFrame f0(pose);
+  const RigidMotion m = pose_motion(pose, coordinate);
+  const Eigen::Vector3d c(0, pose.y, pose.z);
   dn.assign(static_cast<std::size_t>(g.ny), Eigen::Vector3d::Zero());
   for (int j = 0; j < g.ny; ++j) {
     const auto js = static_cast<std::size_t>(j);
     const double x = P[js] > 0 ? Q[js] / P[js] : surf.x0;
-    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j), nw = yz(wheel_inward_normal(wheel, f0, X));
-    const Eigen::Vector3d nr = 2 * nw.dot(n) * n - nw;  // the rail's: n bisects it and the wheel's
-    const Eigen::Vector3d nl = (nr + yz(wheel_inward_normal(wheel, fl, X))).normalized();
-    const Eigen::Vector3d nh = (nr + yz(wheel_inward_normal(wheel, fh, X))).normalized();
-    dn[js] = (nh - nl) / (2 * kRowTurnStep);
+    const Eigen::Vector3d X = surf.point(j, x), n = surf.normal(j);
+    // The wheel's normal at X turns with the wheel (W x n) and as X moves relative to it, by -(T + W x (X - c)).
+    const WheelFootNormal fn = wheel_foot_normal_rate(wheel, f0, X, -(m.translation + m.rotation.cross(X - c)));
+    const Eigen::Vector3d dw = m.rotation.cross(fn.normal) + fn.rate;
+    const Eigen::Vector2d v(fn.normal.y(), fn.normal.z()), nw = v.normalized();  // x component dropped
+    const Eigen::Vector2d n2(n.y(), n.z()), nr = 2 * nw.dot(n2) * n2 - nw;      // the rail's: n bisects it and nw
+    const Eigen::Vector2d d = unit_rate(nr + nw, unit_rate(v, {dw.y(), dw.z()}));
+    dn[js] = {0.0, d.x(), d.y()};
   }
 }
 

@@ -111,7 +111,7 @@ class PlanarAreaSurface final : public AreaSurface {
   const char* name() const override { return "planar"; }
 
   AreaLayout lay_out(const AreaInput& in, PatchContact& pc) const override {
-    const Plane pl = plane_of(in.segments, in.first);
+    const Plane pl = foot_plane_of(in.model.geometry().side[in.side].wheel, in.located.frame(), in.segments, in.first);
     pc.origin = pl.O;
     pc.normal = pl.n;
     pc.t1 = pl.t1;

@@ -126,14 +126,18 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
   }
 }
 
-Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
+namespace {
+
+// The plane through the segments' weighted mid-point with their weighted normals normal(s).
+template <class Normal>
+Plane weighted_plane(const std::vector<SegmentInfo>& infos, const Patch& fallback, const Normal& normal) {
   Plane pl;
   double W = 0;
   Eigen::Vector3d O = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
   for (const auto& s : infos) {
     W += s.weight;
     O += s.weight * s.mid;
-    n += s.weight * s.normal;
+    if (s.weight > 0) n += s.weight * normal(s);
   }
   if (W > 0 && n.norm() > 0) {
     pl.O = O / W;
@@ -147,6 +151,17 @@ Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
   pl.t1 = t1.normalized();
   pl.t2 = pl.n.cross(pl.t1);
   return pl;
+}
+
+}  // namespace
+
+Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
+  return weighted_plane(infos, fallback, [](const SegmentInfo& s) { return s.normal; });
+}
+
+Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
+                    const Patch& fallback) {
+  return weighted_plane(infos, fallback, [&](const SegmentInfo& s) { return wheel_foot_normal(wheel, frame, s.mid); });
 }
 
 Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) {

@@ -31,7 +31,7 @@ struct SegmentInfo {
   double y = 0, z = 0;         // rail line (track frame)
   double xm = 0, L = 0, R = 0; // mid-point x, length, arc radius (m)
   double weight = 0;           // share of the inter-penetration volume (m^3)
-  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there
+  Eigen::Vector3d mid, normal; // mid-point (track frame) and the wheel's inward normal there (at its lateral position)
   double rim = 0;              // the arc's height at the mid-point (m)
   double sagitta = 0;          // h at the mid-point (m): rim plus the correction there
   // Under yaw: the correction's knots (x, value; m), ascending track x strictly between the segment's ends; the
@@ -88,8 +88,13 @@ struct Plane {
 };
 
 // The plane tangent to the wheel at the segments' weighted mid-point (wrc/wheelset/contact.hpp); the paper's nominal
-// point of `fallback` when only tangencies are left.
+// point of `fallback` when only tangencies are left. Its normal: the segments' `normal`s weighted (grouping the areas,
+// sizing their grids).
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback);
+// The same with each mid-point's normal at its normal foot (wheel_foot_normal: the direction of its depth, turned
+// from `normal` by kappa d tan(delta) inside a curved profile): the planar surface's plane.
+Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
+                    const Patch& fallback);
 
 // The rectangle of a plane's coordinates (u along t1, v along t2) that holds the segments' end points.
 struct Bounds {

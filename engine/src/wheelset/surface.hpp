@@ -36,6 +36,9 @@ struct AreaLayout {
   Plane frame;
   std::vector<double> vertical;   // per grid row: the vertical part of its normal (a vertical load's weights)
   std::vector<double> deepening;  // per grid row: dh/dz, h's growth as the wheel moves down
+  // Conformal, per grid row: d(normal_y, normal_z)/da, the row normal's turning as the wheel moves down by a (1/m; the
+  // wheel's normal at a line's normal foot turns as the foot slides). Empty: normals fixed.
+  std::vector<Eigen::Vector2d> turning;
 };
 
 // A rigid motion of the wheelset per unit of one of its pose coordinates (Pose: y, z, roll, yaw): its centre c moves by
@@ -86,9 +89,10 @@ struct ConformalLayoutAt {
 };
 ConformalLayoutAt conformal_layout_at(const ContactModel& model, const LocationState& st, const PatchContact& area);
 // How a conformal area's row normals (the bisectors of the rail's and the wheel's normals, wrc/wheelset/conformal.hpp)
-// turn per unit of a pose coordinate (PoseCoordinate), per row: the wheel's normal at the row's centre of pressure
-// differenced geometrically (central, kRowTurnStep m or rad: no solve), the rail's held.
-inline constexpr double kRowTurnStep = 1e-6;
+// turn per unit of a pose coordinate (PoseCoordinate), per row: the wheel's normal at the normal foot of the row's
+// centre of pressure turning with the wheel and as the point moves relative to it (wheel_foot_normal_rate), the rail's
+// held. (Central differences of the polygon's foot normal, as before, were off at a few rows in a hundred: the foot
+// jumps from cone to cone or rests at a vertex of a concave part within their step.)
 void row_turning(const ContactModel& model, const Pose& pose, const PatchContact& area, int coordinate,
                  std::vector<Eigen::Vector3d>& dn);
 // The change of a conformal area's normal force and moment about the centre when its rows' normals turn by dn.
