@@ -68,8 +68,8 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     fail("contact model: merge_tolerance must be > 0, got {}", options.merge_tolerance);
   if (!(options.normal.tolerance >= 1e-14 && options.normal.tolerance < 1e-2))
     fail("contact model: the normal solver's tolerance must be in [1e-14, 1e-2[, got {}", options.normal.tolerance);
-  if (!(options.merge_angle >= 0) || !std::isfinite(options.merge_angle))
-    fail("contact model: merge_angle must be >= 0 rad, got {}", options.merge_angle);
+  if (const double a = merge_angle_of(options); !(a >= 0) || !std::isfinite(a))
+    fail("contact model: merge_angle must be >= 0 rad, got {}", a);
 }
 
 ContactWorkspace::ContactWorkspace(const ContactModel& model) : locator(model.geometry_ptr()) {}
@@ -101,12 +101,13 @@ halfspace::PatchFootprint footprint(const std::vector<SegmentInfo>& infos, const
 std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::vector<std::vector<SegmentInfo>>& infos,
                                           const std::vector<Plane>& planes) {
   const ContactOptions& opt = model.options();
+  const double merge_angle = merge_angle_of(opt);
   const int np = static_cast<int>(infos.size());
   UnionFind sets;
   sets.reset(np);
   for (int a = 0; a < np; ++a)
     for (int b = a + 1; b < np; ++b) {
-      if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > opt.merge_angle) continue;
+      if (std::acos(std::clamp(planes[a].n.dot(planes[b].n), -1.0, 1.0)) > merge_angle) continue;
       const auto fa = footprint(infos[a], planes[a], planes[a], opt.element);
       const auto fb = footprint(infos[b], planes[b], planes[a], opt.element);
       if (halfspace::patches_interact(model.material(), fa, fb, opt.merge_tolerance)) sets.unite(a, b);

@@ -19,7 +19,8 @@
 // height is the exact radial gap times cos(conicity); between lines h is interpolated linearly.
 //
 // Areas of one wheel are solved together when halfspace::patches_interact says the separate solutions differ
-// by more than `merge_tolerance` and their normals differ by less than `merge_angle` (one plane must serve
+// by more than `merge_tolerance` and their normals differ by less than the merge angle (merge_angle_of below: on a
+// plane 15 deg, as one plane must serve both; on the conformal surface 1.2 rad, since the curved surface serves
 // both); otherwise each alone.
 //
 // That is the planar path (ContactOptions::surface = planar). The default, conformal, lays each area on the curved
@@ -59,7 +60,8 @@ struct ContactOptions {
   double element = 0.2e-3;        // element size of the potential contact area (m), [kElementMin, kElementMax]
   int margin = 2;                 // elements around the projected inter-penetration area
   double merge_tolerance = 0.01;  // relative force error of solving two areas apart that triggers a merge
-  double merge_angle = 0.26;      // rad (15 deg): areas whose normals differ more are never merged
+  // rad: areas whose normals differ more are never merged; none: the surface's default (merge_angle_of)
+  std::optional<double> merge_angle;
   // The calls' loads and speeds checked against a railway wheelset's (wheelset/plausibility.hpp); the wheelset sets it
   // from WheelsetParams::check_setup.
   bool check_magnitudes = true;
@@ -75,6 +77,17 @@ struct ContactOptions {
   // (docs/guide/normal.md "Conformal contact").
   ContactSurface surface = ContactSurface::conformal;
 };
+
+// The default merge angles (rad; ContactOptions::merge_angle). Planar: 0.26 (15 deg), one plane must serve both areas.
+// Conformal: 1.2 (69 deg), the areas lie on the curved rail surface and couple along it; at the flange root and tread
+// 18.5 deg apart the bodies' elasticity couples them as the flat half-space along the surface does (a finite-element
+// study, docs/validation.md "Against CONTACT"), so only the gauge face's steepest turns stay apart.
+inline constexpr double kMergeAnglePlanar = 0.26, kMergeAngleConformal = 1.2;
+
+// The merge angle in force: the option's, or the surface's default.
+inline double merge_angle_of(const ContactOptions& o) {
+  return o.merge_angle.value_or(o.surface == ContactSurface::planar ? kMergeAnglePlanar : kMergeAngleConformal);
+}
 
 // Memory of the normal solve per element of a potential contact area (bytes; measured with the fast solver,
 // S1002/60E1 at 0.02 .. 0.04 mm: 350-600): for the messages about max_elements.
