@@ -290,7 +290,7 @@ int gmres(Linearisation& lin, const std::vector<double>& b, std::vector<double>&
       }
       H[j + 1][j] = std::sqrt(dot(w.data(), w.data(), n));
       if (H[j + 1][j] > 0) {
-        const double scale = 1 / H[j + 1][j];  // a product per element: a division each was a tenth of this loop's time
+        const double scale = 1 / H[j + 1][j];  // a division per element was ~6 % of gmres's own time (perf)
         for (std::size_t q = 0; q < n; ++q) V[(j + 1) * n + q] = w[q] * scale;
       }
       for (int i = 0; i < j; ++i) {
