@@ -127,7 +127,7 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
     if (s.sagitta > depth[k]) {
       depth[k] = s.sagitta;
       lines[k].n = lateral_normal(s.normal);
-      lines[k].h.bend = depth_bend(wheel, st.frame().to_wheelset(s.mid), s.sagitta);
+      fit_bend(wheel, st.frame(), s, lines[k].h);
     }
   }
   for (SurfaceLine& l : lines) {
