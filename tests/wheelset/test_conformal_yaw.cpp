@@ -46,13 +46,14 @@ double exact_depth(const WheelCones& w, double Y, double rho) {
 // 20 % too deep on those rows (the profile's bend and the normal's turning along the line); with the correction at the
 // profile points the rows' deepest h are within 1 %. Every element is within 1 % of the deepest h too (0.7 % at most
 // here) since normal_depth's bend follows the line's lateral position (fit_bend); fitted at the line's deepest point
-// alone it left elements up to 2.6 % off, the line passing under the rounding's changing curvature.
+// alone it left elements up to 2.6 % off, the line passing under the rounding's changing curvature. At 0.2 deg the
+// samples are phased in (fit_bend): within 0.8 % there.
 TEST_CASE("conformal h under yaw: every element and every row against the brute-force depth") {
   const auto wheelset = build_wheelset(paper_profiles(), {});
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
   const WheelCones& wheel = model.geometry().side[kLeft].wheel;
-  for (double yaw_deg : {0.0, 1.0})
+  for (double yaw_deg : {0.0, 0.2, 1.0})
     for (double y : {6.6e-3, 6.8e-3, 7.0e-3}) {
       CAPTURE(yaw_deg);
       CAPTURE(y);
