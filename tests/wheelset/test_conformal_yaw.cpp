@@ -44,14 +44,16 @@ double exact_depth(const WheelCones& w, double Y, double rho) {
 // alone: up to 4.6 % short on the rows at 67 deg, where the depth point and its radial foot see different slopes).
 // Under yaw 1 deg a rail line runs 0.7 mm across the profile along its 40 mm segment and the arcs alone were up to
 // 20 % too deep on those rows (the profile's bend and the normal's turning along the line); with the correction at the
-// profile points the rows' deepest h are within 1 % and every element within 3 % of the deepest h (the bend is fitted
-// at the line's deepest point only, and the line passes under the rounding's changing curvature).
+// profile points the rows' deepest h are within 1 %. Every element is within 1 % of the deepest h too (0.7 % at most
+// here) since normal_depth's bend follows the line's lateral position (fit_bend); fitted at the line's deepest point
+// alone it left elements up to 2.6 % off, the line passing under the rounding's changing curvature. At 0.2 deg the
+// samples are phased in (fit_bend): within 0.8 % there.
 TEST_CASE("conformal h under yaw: every element and every row against the brute-force depth") {
   const auto wheelset = build_wheelset(paper_profiles(), {});
   const ContactModel& model = wheelset->contact_model();
   const auto work = wheelset->make_workspace();
   const WheelCones& wheel = model.geometry().side[kLeft].wheel;
-  for (double yaw_deg : {0.0, 1.0})
+  for (double yaw_deg : {0.0, 0.2, 1.0})
     for (double y : {6.6e-3, 6.8e-3, 7.0e-3}) {
       CAPTURE(yaw_deg);
       CAPTURE(y);
@@ -80,7 +82,7 @@ TEST_CASE("conformal h under yaw: every element and every row against the brute-
             row_d = std::max(row_d, exact);
           }
           CAPTURE(j);
-          CHECK(worst <= (yaw == 0 ? 0.01 : 0.03) * hmax);
+          CHECK(worst <= 0.01 * hmax);
           if (row_d < 0.02e-3) continue;
           CHECK(std::abs(row_h - row_d) <= 0.01 * row_d);
           if (std::atan2(-s.normal_y[j], s.normal_z[j]) > 60 * std::numbers::pi / 180) ++steep_rows;

@@ -149,7 +149,7 @@ std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationSta
       depth[k] = s.sagitta;
       deepest[k] = &s;
       lines[k].deepening = lateral_normal(s.normal).y();
-      lines[k].h.bend = depth_bend(wheel, st.frame().to_wheelset(s.mid), s.sagitta);
+      fit_bend(wheel, st.frame(), s, lines[k].h);
     }
   }
   for (std::size_t k = 0; k < lines.size(); ++k) {

@@ -52,7 +52,7 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
     const SegmentInfo* deepest = lp.arcs.front();
     for (const SegmentInfo* s : lp.arcs)
       if (s->sagitta > deepest->sagitta) deepest = s;
-    lp.bend = depth_bend(wheel, st.frame().to_wheelset(deepest->mid), deepest->sagitta);
+    fit_bend(wheel, st.frame(), *deepest, lp);
   }
   // The projected lines must be ordered across the plane (they are, unless the plane is far off the rail).
   std::stable_sort(lines.begin(), lines.end(), [](const LineProfile& a, const LineProfile& b) { return a.v < b.v; });
@@ -81,8 +81,9 @@ std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, c
       const double u = grid.x(i);
       const double ra = la.radial((u - la.u0) / t1x), rb = t > 0 ? lb.radial((u - lb.u0) / t1x) : 0.0;
       const auto e = static_cast<std::size_t>(grid.index(i, j));
-      h[e] = (1 - t) * normal_depth(ra, la.bend) + t * normal_depth(rb, lb.bend);
-      gain[e] = (1 - t) * normal_depth_slope(ra, la.bend) + t * normal_depth_slope(rb, lb.bend);
+      const double ba = la.bend_at((u - la.u0) / t1x), bb = t > 0 ? lb.bend_at((u - lb.u0) / t1x) : 0.0;
+      h[e] = (1 - t) * normal_depth(ra, ba) + t * normal_depth(rb, bb);
+      gain[e] = (1 - t) * normal_depth_slope(ra, ba) + t * normal_depth_slope(rb, bb);
     }
   }
   return h;

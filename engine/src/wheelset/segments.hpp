@@ -129,6 +129,10 @@ struct LineProfile {
   std::vector<const SegmentInfo*> arcs;
   double apex = 0, x_apex = 0, R = 1;  // no segment: arc with height `apex` (< 0) at x_apex
   double bend = 0;                     // normal_depth's (1/m)
+  // normal_depth's bend as a function of x along a line with segments: (x, bend) ascending, linear between, constant
+  // beyond (fit_bend says why). Empty: `bend` everywhere.
+  SegmentInfo::Knots bends;
+  double bend_at(double x) const;
   // The radial depth turned onto the normal (before normal_depth).
   double radial(double x) const {
     if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
@@ -136,11 +140,12 @@ struct LineProfile {
     for (const SegmentInfo* s : arcs) h = std::max(h, s->height(x));
     return h;
   }
-  double height(double x) const { return normal_depth(radial(x), bend); }
+  double height(double x) const { return normal_depth(radial(x), bend_at(x)); }
   // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises); with `slope`,
   // normal_depth_slope there too.
   void heights(const double* x, std::size_t n, double* out, double* slope = nullptr) const {
     radials(x, n, out);
+    if (!bends.empty()) return bent_heights(x, n, out, slope);
     if (bend == 0) {
       if (slope) std::fill_n(slope, n, 1.0);
       return;
@@ -151,6 +156,8 @@ struct LineProfile {
       out[i] *= 1 - u;
     }
   }
+  // normal_depth with bend_at at ascending x[0 .. n) of the radial depths in out (and its slope).
+  void bent_heights(const double* x, std::size_t n, double* out, double* slope) const;
   void radials(const double* x, std::size_t n, double* out) const {
     if (arcs.empty()) {
       for (std::size_t i = 0; i < n; ++i) out[i] = radial(x[i]);
@@ -169,6 +176,9 @@ struct LineProfile {
   // One arc with its correction at ascending x[0 .. n), maximised into out.
   static void corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out);
 };
+
+// LineProfile's bend along a line whose deepest segment is s, fitted at a few points of s (segments.cpp says why).
+void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo& s, LineProfile& lp);
 
 // h along the rail line (y, z) that has no segment: the arc through the line's deepest point, whose (negative) height
 // is the exact radial gap times cos(conicity), so that h is continuous when the line starts to penetrate. Sets lp's
