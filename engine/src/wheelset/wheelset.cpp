@@ -4,10 +4,19 @@
 #include "wrc/core/error.hpp"
 #include "wrc/wheelset/plausibility.hpp"
 
+#include <fmt/format.h>
+
+#include <string>
+
 namespace wrc {
 namespace {
-const char* const kMergeAngleDoc =
-    "areas whose normals differ more are never merged (default: 1.2 conformal, 0.26 planar)";
+// The option's help, its defaults written from their one definition (contact.hpp).
+const char* merge_angle_doc() {
+  static const std::string doc =
+      fmt::format("areas whose normals differ more are never merged (default: {} conformal, {} planar)",
+                  kMergeAngleConformal, kMergeAnglePlanar);
+  return doc.c_str();
+}
 }  // namespace
 
 WheelsetParams read_wheelset_params(OptionReader& r) {
@@ -34,7 +43,7 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   c.normal.tolerance = r.number("tolerance", {"-", "normal solver's tolerance (relative)"}, c.normal.tolerance);
   c.merge_tolerance =
       r.number("merge_tolerance", {"-", "relative force error of two areas apart that merges them"}, c.merge_tolerance);
-  if (const auto a = r.number("merge_angle", {"rad", kMergeAngleDoc})) c.merge_angle = *a;
+  if (const auto a = r.number("merge_angle", {"rad", merge_angle_doc()})) c.merge_angle = *a;
   c.dense = r.choice("solver", {"fast", "dense"}, {"-", "normal solver: fast, or the dense reference"},
                      c.dense ? "dense" : "fast") == "dense";
   c.surface = r.choice("surface", {"planar", "conformal"}, {"-", "potential contact area: planar or curved"},
@@ -88,7 +97,7 @@ void describe(const WheelsetParams& p, FieldSink& out) {
              {"-", "normal solver: max |gap| over the contact set relative to max(h + approach)"});
   out.number("merge_tolerance", p.contact.merge_tolerance,
              {"-", "relative force error of solving two areas apart that merges them"});
-  out.number("merge_angle", merge_angle_of(p.contact), {"rad", kMergeAngleDoc});
+  out.number("merge_angle", merge_angle_of(p.contact), {"rad", merge_angle_doc()});
   out.string("solver", p.contact.dense ? "dense" : "fast", {"", "normal solver: fast or dense (the reference)"});
   out.string("surface", surface_name(p.contact.surface), {"", "potential contact areas: conformal or planar"});
   out.string("strategy", p.strategy, {"", "the contact location strategy's name"});
