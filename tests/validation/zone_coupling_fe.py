@@ -7,9 +7,10 @@ A study, not a test (not run by ctest). Run from the repository root:
     nice -n 10 /usr/bin/python3 tests/validation/zone_coupling_fe.py --quick  # the coarse mesh alone
 
 Question (docs/validation.md, "Against CONTACT", y = 6.3 mm): S1002 on 60E1 touches in three zones, flange root,
-tread (~15 mm along the rail's surface, its normal turned ~20 deg) and crown. wrc solves zones whose normals differ by
-more than merge_angle apart (no elastic coupling); CONTACT couples them through one flat half-space laid along its
-curved reference surface (Boussinesq at the distance along the surface). Which is closer to the real bodies?
+tread (~15 mm along the rail's surface, its normal turned ~20 deg) and crown. wrc solved zones whose normals differ by
+more than merge_angle apart (no elastic coupling; 0.26 rad then, 1.2 rad on the conformal surface since this study);
+CONTACT couples them through one flat half-space laid along its curved reference surface (Boussinesq at the distance
+along the surface). Which is closer to the real bodies?
 
 What it computes:
 1. The two bodies near the contact as linear-elastic prisms (E = 2 G (1 + nu), G = 82 GPa, nu = 0.28 as in the
@@ -28,7 +29,7 @@ What it computes:
    Boussinesq displacements of two bodies of one material cancel in the gap).
 4. The load split at a fixed total load: each zone P_i = K_i max(0, g_i + D - sum_j E_ij P_j)^1.5 with g_i the
    undeformed overlaps of the case (0.115, 0.035, 0.010 mm), K_i calibrated on wrc's own uncoupled solution of the case
-   (84.73, 15.30, 1.08 kN) and E the coupling: zero (wrc), the half-space's off-diagonal terms (CONTACT's grouping and
+   (84.73, 15.30, 1.08 kN) and E the coupling: zero (wrc then), the half-space's off-diagonal terms (CONTACT's grouping and
    all coupled), or the finite elements' (off-diagonal terms, and on the diagonal the difference between the finite
    element's and the half-space's self compliance). A constant added to all of E moves D only, so the split does not
    depend on the far boundary's constant.
