@@ -246,9 +246,9 @@ void LineProfile::bent_heights(const double* x, std::size_t n, double* out, doub
   std::size_t i = 0;
   const auto run = [&](double end, double xa, double ba, double db) {
     for (; i < n && x[i] < end; ++i) {
-      const double bi = ba + db * (x[i] - xa), u = std::clamp(bi * out[i], -0.25, 0.25);
-      if (slope) slope[i] = u == bi * out[i] ? 1 - 2 * u : 1 - u;
-      out[i] *= 1 - u;
+      const double bi = ba + db * (x[i] - xa);
+      if (slope) slope[i] = normal_depth_slope(out[i], bi);
+      out[i] = normal_depth(out[i], bi);
     }
   };
   run(b[0].x, b[0].x, b[0].h, 0.0);
