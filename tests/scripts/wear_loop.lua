@@ -207,7 +207,7 @@ end
 
 do  -- halving the step with the KTH map over its running-in (the first 2 km, where the pressure of a spot the last
     -- step made passes 0.8 H and its k jumps up to 60-fold): converged with the step control (tolerance = step / 10:
-    -- a step is shortened until its Heun and Euler depths differ by less), not without it (11 % at 2 km)
+    -- a step is shortened until its Heun and Euler depths differ by less), not without it (14 % at 2 km)
   local function run(depth, km_end)
     local st = initial()
     local o = {step = depth, smooth = 1e-3, wear = {}, threads = 2, km_end = km_end, tolerance = depth / 10}
