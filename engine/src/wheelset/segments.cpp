@@ -79,6 +79,12 @@ double SegmentInfo::correction(double x) const {
   return knot_lerp(static_cast<std::size_t>(after - knots.begin()), x);
 }
 
+double SegmentInfo::correction(double x, std::size_t& k) const {
+  if (knots.empty() || !(x > xm - 0.5 * L && x < xm + 0.5 * L)) return 0;
+  while (k < knots.size() && !(x < knots[k].x)) ++k;  // the index upper_bound finds
+  return knot_lerp(k, x);
+}
+
 // Interval by interval between the knots (x ascends), so that each inner loop is the arc plus a straight line.
 void LineProfile::corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out) {
   const double drop = s.R - s.rim;
@@ -229,14 +235,29 @@ void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo
     lp.bends.push_back({s.xm + f[k] * s.L, lp.bend + (k == 2 ? 0.0 : w * (at(Y[k]) - mid))});
 }
 
-double LineProfile::bend_at(double x) const {
-  if (bends.empty()) return bend;
-  const auto after =
-      std::upper_bound(bends.begin(), bends.end(), x, [](double v, const SegmentInfo::Knot& k) { return v < k.x; });
-  if (after == bends.begin()) return bends.begin()->h;
-  if (after == bends.end()) return (after - 1)->h;
-  const SegmentInfo::Knot& a = *(after - 1);
-  return a.h + (after->h - a.h) * (x - a.x) / (after->x - a.x);
+double LineProfile::bend_at(double x, std::size_t& k) const {
+  const std::size_t m = bends.size();
+  if (m == 0) return bend;
+  const SegmentInfo::Knot* b = bends.begin();
+  while (k < m && !(x < b[k].x)) ++k;  // the samples at or before x
+  if (k == 0) return b[0].h;
+  if (k == m) return b[m - 1].h;
+  return b[k - 1].h + (b[k].h - b[k - 1].h) * (x - b[k - 1].x) / (b[k].x - b[k - 1].x);
+}
+
+void LineProfile::walked_heights(const double* x, std::size_t n, double* out, double* slope) const {
+  if (arcs.empty()) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = radial(x[i]);
+  } else {
+    std::fill_n(out, n, -INFINITY);
+    for (const SegmentInfo* s : arcs)
+      for (std::size_t i = 0, k = 0; i < n; ++i) out[i] = std::max(out[i], s->arc(x[i]) + s->correction(x[i], k));
+  }
+  for (std::size_t i = 0, k = 0; i < n; ++i) {
+    const double b = bend_at(x[i], k);
+    slope[i] = normal_depth_slope(out[i], b);
+    out[i] = normal_depth(out[i], b);
+  }
 }
 
 // Interval by interval between the samples (x ascends), so that each inner loop is a straight line.
