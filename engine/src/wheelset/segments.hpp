@@ -72,9 +72,13 @@ struct SegmentInfo {
   Knots knots;
   double arc(double x) const { return arc_height(R, x - xm) - (R - rim); }
   double correction(double x) const;
-  // The same at ascending x without a search: k (0 before the first x) counts the knots at or before the last x.
-  double correction(double x, std::size_t& k) const;
-  double knot_lerp(std::size_t k, double x) const;  // the correction between knots k - 1 and k (the ends: 0)
+  // The correction between knots k - 1 and k (the ends: 0); inline, so that a loop over x at one k keeps the ends.
+  double knot_lerp(std::size_t k, double x) const {
+    const std::size_t m = knots.size();
+    const double xa = k == 0 ? xm - 0.5 * L : knots[k - 1].x, ha = k == 0 ? 0.0 : knots[k - 1].h;
+    const double xb = k == m ? xm + 0.5 * L : knots[k].x, hb = k == m ? 0.0 : knots[k].h;
+    return ha + (hb - ha) * (x - xa) / (xb - xa);
+  }
   double height(double x) const { return arc(x) + correction(x); }
 };
 
@@ -134,8 +138,6 @@ struct LineProfile {
   // normal_depth's bend as a function of x along a line with segments: (x, bend) ascending, linear between, constant
   // beyond (fit_bend says why). Empty: `bend` everywhere.
   SegmentInfo::Knots bends;
-  // The bend at ascending x: k (0 before the first x) counts the samples at or before the last x (walked, not searched).
-  double bend_at(double x, std::size_t& k) const;
   // The radial depth turned onto the normal (before normal_depth).
   double radial(double x) const {
     if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
@@ -143,8 +145,9 @@ struct LineProfile {
     for (const SegmentInfo* s : arcs) h = std::max(h, s->height(x));
     return h;
   }
-  // normal_depth(radial(x), bend_at(x)) at ascending x[0 .. n) into out and its normal_depth_slope into slope, the
-  // corrections' knots and the bend's samples walked along (the planar surface's columns).
+  // normal_depth(radial(x), the bend at x) at ascending x[0 .. n) into out and its normal_depth_slope into slope, each
+  // x's numbers as a single x gives them, the corrections' knots and the bend's samples walked along instead of
+  // searched for each x (the planar surface's columns).
   void walked_heights(const double* x, std::size_t n, double* out, double* slope) const;
   // h at x[0 .. n) into out computed arc by arc and interval by interval between the knots and samples (a loop the
   // compiler vectorises; the same as walked_heights but for rounding); with `slope`, normal_depth_slope there too.
