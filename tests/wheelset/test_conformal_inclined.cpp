@@ -32,6 +32,7 @@
 // lowered the wheel vertically from first touch at fixed lateral position: that turns the line of centres from delta
 // to asin(Rs sin(delta) / (Rs - D)) (71.1 deg for 70), and against Hertz at delta the force then seemed 1.5 % high.
 #include "halfspace/hertz_reference.hpp"
+#include "wheelset/exact_depth.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 #include "wrc/halfspace/normal.hpp"
 #include "wrc/wheelset/wheelset.hpp"
@@ -107,19 +108,6 @@ double touch_z(const ContactModel& m, double y) {
     (overlap(m, {y, mid, 0, 0}) > 0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
-}
-
-// Distance of the wheelset-frame point q from the wheel's generatrix in its meridian plane, by brute force over every
-// running-surface segment.
-double depth(const WheelCones& w, const Eigen::Vector3d& q) {
-  const double rho = std::hypot(q.x(), q.z());
-  double best = INFINITY;
-  for (int k = 1; k + 2 < static_cast<int>(w.y.size()); ++k) {
-    const double ay = w.y[k], ar = -w.z[k], dy = w.y[k + 1] - ay, dr = -w.z[k + 1] - ar, L2 = dy * dy + dr * dr;
-    const double t = std::clamp(((q.y() - ay) * dy + (rho - ar) * dr) / L2, 0.0, 1.0);
-    best = std::min(best, std::hypot(q.y() - (ay + t * dy), rho - (ar + t * dr)));
-  }
-  return best;
 }
 
 // The exact pair, written apart from wrc's geometry: in the plane x = 0 (y across, z up, the axle along y at z = 0)
@@ -242,7 +230,7 @@ TEST_CASE("conformal and planar h on a steep face: the force at a given normal o
       for (int i = 0; i < grid.nx; ++i) {
         const double h = pc.h[static_cast<std::size_t>(grid.index(i, j))];
         const Eigen::Vector3d q = f.to_wheelset({cs.x0 + grid.x(i), cs.y[j], cs.z[j]});
-        if (h > 0) worst = std::max(worst, std::abs(h - depth(wheel, q)));
+        if (h > 0) worst = std::max(worst, std::abs(h - test::exact_depth(wheel, q.y(), std::hypot(q.x(), q.z()))));
       }
     CHECK(worst < 1e-3 * D);
     const ExactPair pair(d, D);

@@ -1,5 +1,6 @@
 // The conformal surface's undeformed distance h under yaw against brute force, at the S1002 flange root on 60E1
 // (the paper's wheelset) where a yawed rail line runs across the steep, curved part of the profile.
+#include "wheelset/exact_depth.hpp"
 #include "wheelset/paper_profiles.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
@@ -11,30 +12,9 @@
 #include <cmath>
 #include <numbers>
 
+using wrc::test::exact_depth;
 using wrc::test::paper_profiles;
 using namespace wrc;
-
-namespace {
-
-// Signed distance of the meridian point (Y, rho) (wheelset-frame lateral position, distance to the axle) from the
-// wheel's generatrix, by brute force over every running-surface segment: > 0 inside the wheel. For a surface of
-// revolution this is the exact 3-D depth of the point (its closest wheel point lies in its meridian plane).
-double exact_depth(const WheelCones& w, double Y, double rho) {
-  double best = INFINITY;
-  const int n = static_cast<int>(w.y.size());
-  for (int k = 1; k + 2 < n; ++k) {
-    const double ay = w.y[k], ar = -w.z[k], dy = w.y[k + 1] - ay, dr = -w.z[k + 1] - ar;
-    const double L2 = dy * dy + dr * dr;
-    const double t = L2 > 0 ? std::clamp(((Y - ay) * dy + (rho - ar) * dr) / L2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(Y - (ay + t * dy), rho - (ar + t * dr)));
-  }
-  int k = 1;
-  while (k + 2 < n && w.y[k + 1] < Y) ++k;
-  const double t = std::clamp((Y - w.y[k]) / (w.y[k + 1] - w.y[k]), 0.0, 1.0);
-  return -(w.z[k] + t * (w.z[k + 1] - w.z[k])) > rho ? best : -best;
-}
-
-}  // namespace
 
 // h is the depth along the wheel's normal: the radial depth turned onto it, n_r (r(Y) - distance to the axle) (n_r the
 // radial part of the wheel's smooth normal), made the closest-point depth by normal_depth (its second-order term,

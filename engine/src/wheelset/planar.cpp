@@ -7,7 +7,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace wrc::areas {
 namespace {
@@ -60,14 +62,31 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
 }
 
 // h at the element centres: along each projected line its arcs, linear in v between the two lines bracketing
-// the element.
+// the element. A line's track x at column i is (u_i - u0) / t1x (t1 is the track's x turned into the plane: t1x > 0),
+// ascending with i: each line's h is walked along its columns (walked_heights) and kept for the next row, since rows
+// ascend in v and the bracketing pair only moves forward.
 std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, const Plane& pl,
                                         const halfspace::Grid& grid, std::vector<double>& gain) {
   std::vector<double> vs(lines.size());
   for (std::size_t k = 0; k < lines.size(); ++k) vs[k] = lines[k].v;
   const double t1x = pl.t1.x();  // u = x t1x + u0 along a line
+  const auto nx = static_cast<std::size_t>(grid.nx);
   std::vector<double> h(static_cast<std::size_t>(grid.size()), 0.0);
   gain.assign(h.size(), 1.0);
+  // Two lines' h and slope at the columns: [0, nx) h, [nx, 2 nx) slope, per slot; `held` the line each slot holds.
+  std::vector<double> xs(nx), slots(4 * nx);
+  std::array<std::size_t, 2> held{SIZE_MAX, SIZE_MAX};
+  const auto line_at = [&](std::size_t l) {
+    if (held[0] == l) return slots.data();
+    if (held[1] == l) return slots.data() + 2 * nx;
+    const std::size_t slot = held[0] == SIZE_MAX || (held[1] != SIZE_MAX && held[0] < held[1]) ? 0 : 1;  // the one behind
+    double* out = slots.data() + 2 * slot * nx;
+    const LineProfile& lp = lines[l];
+    for (std::size_t i = 0; i < nx; ++i) xs[i] = (grid.x(static_cast<int>(i)) - lp.u0) / t1x;
+    lp.walked_heights(xs.data(), nx, out, out + nx);
+    held[slot] = l;
+    return out;
+  };
   for (int j = 0; j < grid.ny; ++j) {
     const double v = grid.y(j);
     const auto it = std::upper_bound(vs.begin(), vs.end(), v);
@@ -77,13 +96,14 @@ std::vector<double> undeformed_distance(const std::vector<LineProfile>& lines, c
     const LineProfile& la = lines[a];
     const LineProfile& lb = lines[b];
     const double t = (a == b || lb.v == la.v) ? 0.0 : std::clamp((v - la.v) / (lb.v - la.v), 0.0, 1.0);
-    for (int i = 0; i < grid.nx; ++i) {
-      const double u = grid.x(i);
-      const double ra = la.radial((u - la.u0) / t1x), rb = t > 0 ? lb.radial((u - lb.u0) / t1x) : 0.0;
-      const auto e = static_cast<std::size_t>(grid.index(i, j));
-      const double ba = la.bend_at((u - la.u0) / t1x), bb = t > 0 ? lb.bend_at((u - lb.u0) / t1x) : 0.0;
-      h[e] = (1 - t) * normal_depth(ra, ba) + t * normal_depth(rb, bb);
-      gain[e] = (1 - t) * normal_depth_slope(ra, ba) + t * normal_depth_slope(rb, bb);
+    const double* ha = line_at(a);
+    const double* hb = t > 0 ? line_at(b) : nullptr;
+    double* hj = h.data() + static_cast<std::size_t>(grid.index(0, j));
+    double* gj = gain.data() + static_cast<std::size_t>(grid.index(0, j));
+    // Without a second line its terms are t times normal_depth(0, 0) = 0 and normal_depth_slope(0, 0) = 1.
+    for (std::size_t i = 0; i < nx; ++i) {
+      hj[i] = (1 - t) * ha[i] + t * (hb ? hb[i] : 0.0);
+      gj[i] = (1 - t) * ha[nx + i] + t * (hb ? hb[nx + i] : 1.0);
     }
   }
   return h;

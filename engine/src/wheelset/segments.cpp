@@ -66,13 +66,6 @@ void section_correction(const WheelCones& w, const Segment& s, const WheelSurfac
 
 }  // namespace
 
-double SegmentInfo::knot_lerp(std::size_t k, double x) const {
-  const std::size_t m = knots.size();
-  const double xa = k == 0 ? xm - 0.5 * L : knots[k - 1].x, ha = k == 0 ? 0.0 : knots[k - 1].h;
-  const double xb = k == m ? xm + 0.5 * L : knots[k].x, hb = k == m ? 0.0 : knots[k].h;
-  return ha + (hb - ha) * (x - xa) / (xb - xa);
-}
-
 double SegmentInfo::correction(double x) const {
   if (knots.empty() || !(x > xm - 0.5 * L && x < xm + 0.5 * L)) return 0;
   const auto after = std::upper_bound(knots.begin(), knots.end(), x, [](double v, const Knot& k) { return v < k.x; });
@@ -229,14 +222,42 @@ void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo
     lp.bends.push_back({s.xm + f[k] * s.L, lp.bend + (k == 2 ? 0.0 : w * (at(Y[k]) - mid))});
 }
 
-double LineProfile::bend_at(double x) const {
-  if (bends.empty()) return bend;
-  const auto after =
-      std::upper_bound(bends.begin(), bends.end(), x, [](double v, const SegmentInfo::Knot& k) { return v < k.x; });
-  if (after == bends.begin()) return bends.begin()->h;
-  if (after == bends.end()) return (after - 1)->h;
-  const SegmentInfo::Knot& a = *(after - 1);
-  return a.h + (after->h - a.h) * (x - a.x) / (after->x - a.x);
+// Interval by interval between each segment's knots and between the bend's samples (x ascends, as bent_heights), each x
+// in the formulas a single x meets (SegmentInfo::height: the arc plus the correction, knot_lerp inside the segment; the
+// line between two samples, held beyond them), so the same numbers bit for bit without a search per x.
+void LineProfile::walked_heights(const double* x, std::size_t n, double* out, double* slope) const {
+  if (arcs.empty()) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = radial(x[i]);
+  } else {
+    std::fill_n(out, n, -INFINITY);
+    for (const SegmentInfo* s : arcs) {
+      const double xt = s->xm - 0.5 * s->L, xl = s->xm + 0.5 * s->L;  // as correction's
+      const std::size_t m = s->knots.size();
+      std::size_t i = 0;
+      if (m > 0) {
+        for (; i < n && !(x[i] > xt); ++i) out[i] = std::max(out[i], s->arc(x[i]) + 0.0);  // correction 0
+        for (std::size_t k = 0; k <= m; ++k) {
+          const double end = k < m ? std::min(s->knots[k].x, xl) : xl;
+          for (; i < n && x[i] < end; ++i) out[i] = std::max(out[i], s->arc(x[i]) + s->knot_lerp(k, x[i]));
+        }
+      }
+      for (; i < n; ++i) out[i] = std::max(out[i], s->arc(x[i]) + 0.0);
+    }
+  }
+  std::size_t i = 0;
+  const auto run = [&](double end, double ha, double hb, double xa, double xb) {  // the bend ha .. hb over xa .. xb
+    for (; i < n && x[i] < end; ++i) {
+      const double bi = xa == xb ? ha : ha + (hb - ha) * (x[i] - xa) / (xb - xa);
+      slope[i] = normal_depth_slope(out[i], bi);
+      out[i] = normal_depth(out[i], bi);
+    }
+  };
+  const SegmentInfo::Knot* b = bends.begin();
+  const std::size_t m = bends.size();
+  if (m == 0) return run(INFINITY, bend, bend, 0, 0);
+  run(b[0].x, b[0].h, b[0].h, 0, 0);
+  for (std::size_t k = 1; k < m; ++k) run(b[k].x, b[k - 1].h, b[k].h, b[k - 1].x, b[k].x);
+  run(INFINITY, b[m - 1].h, b[m - 1].h, 0, 0);
 }
 
 // Interval by interval between the samples (x ascends), so that each inner loop is a straight line.

@@ -72,7 +72,13 @@ struct SegmentInfo {
   Knots knots;
   double arc(double x) const { return arc_height(R, x - xm) - (R - rim); }
   double correction(double x) const;
-  double knot_lerp(std::size_t k, double x) const;  // the correction between knots k - 1 and k (the ends: 0)
+  // The correction between knots k - 1 and k (the ends: 0); inline, so that a loop over x at one k keeps the ends.
+  double knot_lerp(std::size_t k, double x) const {
+    const std::size_t m = knots.size();
+    const double xa = k == 0 ? xm - 0.5 * L : knots[k - 1].x, ha = k == 0 ? 0.0 : knots[k - 1].h;
+    const double xb = k == m ? xm + 0.5 * L : knots[k].x, hb = k == m ? 0.0 : knots[k].h;
+    return ha + (hb - ha) * (x - xa) / (xb - xa);
+  }
   double height(double x) const { return arc(x) + correction(x); }
 };
 
@@ -132,7 +138,6 @@ struct LineProfile {
   // normal_depth's bend as a function of x along a line with segments: (x, bend) ascending, linear between, constant
   // beyond (fit_bend says why). Empty: `bend` everywhere.
   SegmentInfo::Knots bends;
-  double bend_at(double x) const;
   // The radial depth turned onto the normal (before normal_depth).
   double radial(double x) const {
     if (arcs.empty()) return apex + arc_height(R, x - x_apex) - R;
@@ -140,9 +145,12 @@ struct LineProfile {
     for (const SegmentInfo* s : arcs) h = std::max(h, s->height(x));
     return h;
   }
-  double height(double x) const { return normal_depth(radial(x), bend_at(x)); }
-  // height at x[0 .. n) into out, the same numbers computed arc by arc (a loop the compiler vectorises); with `slope`,
-  // normal_depth_slope there too.
+  // normal_depth(radial(x), the bend at x) at ascending x[0 .. n) into out and its normal_depth_slope into slope, each
+  // x's numbers as a single x gives them, the corrections' knots and the bend's samples walked along instead of
+  // searched for each x (the planar surface's columns).
+  void walked_heights(const double* x, std::size_t n, double* out, double* slope) const;
+  // h at x[0 .. n) into out computed arc by arc and interval by interval between the knots and samples (a loop the
+  // compiler vectorises; the same as walked_heights but for rounding); with `slope`, normal_depth_slope there too.
   void heights(const double* x, std::size_t n, double* out, double* slope = nullptr) const {
     radials(x, n, out);
     if (!bends.empty()) return bent_heights(x, n, out, slope);
@@ -156,7 +164,8 @@ struct LineProfile {
       out[i] *= 1 - u;
     }
   }
-  // normal_depth with bend_at at ascending x[0 .. n) of the radial depths in out (and its slope).
+  // normal_depth with the bend linear between its samples at ascending x[0 .. n) of the radial depths in out (and its
+  // slope).
   void bent_heights(const double* x, std::size_t n, double* out, double* slope) const;
   void radials(const double* x, std::size_t n, double* out) const {
     if (arcs.empty()) {
