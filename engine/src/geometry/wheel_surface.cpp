@@ -135,21 +135,28 @@ Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame,
   return inward_normal_at(frame, meridian_of(q), {s.normal_y, s.normal_r});
 }
 
-Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+WheelNormalFoot wheel_normal_foot(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
   const Eigen::Vector3d q = frame.to_wheelset(p);
-  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z()));
-  return inward_normal_at(frame, meridian_of(q), normal_on(w, foot.cone, foot.t));
+  return wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z()));
+}
+
+Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                  const WheelNormalFoot& foot) {
+  return inward_normal_at(frame, meridian_of(frame.to_wheelset(p)), normal_on(w, foot.cone, foot.t));
+}
+
+Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  return wheel_foot_normal(w, frame, p, wheel_normal_foot(w, frame, p));
 }
 
 WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
-                                       const Eigen::Vector3d& v) {
+                                       const WheelNormalFoot& foot, const Eigen::Vector3d& v) {
   const Eigen::Matrix3d A = frame.matrix();
   const Eigen::Vector3d q = frame.to_wheelset(p), dq = A.transpose() * v;
   const Meridian m = meridian_of(q);
   const double rho = m.rho, se = m.se, ce = m.ce;
   // The point's meridian coordinates move by drho and deps (q_x = rho sin eps, q_z = -rho cos eps).
   const double drho = se * dq.x() - ce * dq.z(), deps = rho > 0 ? (ce * dq.x() + se * dq.z()) / rho : 0.0;
-  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), rho);
   const int c = foot.cone;
   Eigen::Vector2d dn_dY;
   const Eigen::Vector2d n = normal_on(w, c, foot.t, &dn_dY);
@@ -164,6 +171,11 @@ WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& fra
   const Eigen::Vector2d dn = dn_dY * (g.x() * ds);
   const Eigen::Vector3d doutward(dn.y() * se + n.y() * ce * deps, dn.x(), -dn.y() * ce + n.y() * se * deps);
   return {inward_normal_at(frame, m, n), -(A * doutward)};
+}
+
+WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                       const Eigen::Vector3d& v) {
+  return wheel_foot_normal_rate(w, frame, p, wheel_normal_foot(w, frame, p), v);
 }
 
 LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r, double floor) {

@@ -52,7 +52,7 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
     const SegmentInfo* deepest = lp.arcs.front();
     for (const SegmentInfo* s : lp.arcs)
       if (s->sagitta > deepest->sagitta) deepest = s;
-    fit_bend(wheel, st.frame(), *deepest, lp);
+    fit_bend(wheel, st.frame(), *deepest, wheel_normal_foot(wheel, st.frame(), deepest->mid), lp);
   }
   // The projected lines must be ordered across the plane (they are, unless the plane is far off the rail).
   std::stable_sort(lines.begin(), lines.end(), [](const LineProfile& a, const LineProfile& b) { return a.v < b.v; });
