@@ -128,16 +128,17 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
 
 namespace {
 
-// The plane through the segments' weighted mid-point with their weighted normals normal(s).
+// The plane through the segments' weighted mid-point with their weighted normals normal(k) (k: the segment's index).
 template <class Normal>
 Plane weighted_plane(const std::vector<SegmentInfo>& infos, const Patch& fallback, const Normal& normal) {
   Plane pl;
   double W = 0;
   Eigen::Vector3d O = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
-  for (const auto& s : infos) {
+  for (std::size_t k = 0; k < infos.size(); ++k) {
+    const SegmentInfo& s = infos[k];
     W += s.weight;
     O += s.weight * s.mid;
-    if (s.weight > 0) n += s.weight * normal(s);
+    if (s.weight > 0) n += s.weight * normal(k);
   }
   if (W > 0 && n.norm() > 0) {
     pl.O = O / W;
@@ -156,12 +157,21 @@ Plane weighted_plane(const std::vector<SegmentInfo>& infos, const Patch& fallbac
 }  // namespace
 
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
-  return weighted_plane(infos, fallback, [](const SegmentInfo& s) { return s.normal; });
+  return weighted_plane(infos, fallback, [&](std::size_t k) { return infos[k].normal; });
 }
 
 Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
-                    const Patch& fallback) {
-  return weighted_plane(infos, fallback, [&](const SegmentInfo& s) { return wheel_foot_normal(wheel, frame, s.mid); });
+                    const std::vector<WheelNormalFoot>& feet, const Patch& fallback) {
+  return weighted_plane(infos, fallback,
+                        [&](std::size_t k) { return wheel_foot_normal(wheel, frame, infos[k].mid, feet[k]); });
+}
+
+std::vector<WheelNormalFoot> mid_feet(const WheelCones& wheel, const PoseFrame& frame,
+                                      const std::vector<SegmentInfo>& infos) {
+  std::vector<WheelNormalFoot> feet;
+  feet.reserve(infos.size());
+  for (const auto& s : infos) feet.push_back(wheel_normal_foot(wheel, frame, s.mid));
+  return feet;
 }
 
 Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) {

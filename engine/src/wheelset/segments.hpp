@@ -92,9 +92,12 @@ struct Plane {
 // sizing their grids).
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback);
 // The same with each mid-point's normal at its normal foot (wheel_foot_normal: the direction of its depth, turned
-// from `normal` by kappa d tan(delta) inside a curved profile): the planar surface's plane.
+// from `normal` by kappa d tan(delta) inside a curved profile): the planar surface's plane. feet: mid_feet's.
 Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
-                    const Patch& fallback);
+                    const std::vector<WheelNormalFoot>& feet, const Patch& fallback);
+// The normal foot of each segment's mid-point (wheel_normal_foot), in the order of infos.
+std::vector<WheelNormalFoot> mid_feet(const WheelCones& wheel, const PoseFrame& frame,
+                                      const std::vector<SegmentInfo>& infos);
 
 // The rectangle of a plane's coordinates (u along t1, v along t2) that holds the segments' end points.
 struct Bounds {
