@@ -121,10 +121,10 @@ void line_normal(const WheelCones& wheel, const PoseFrame& f, const Eigen::Vecto
 // (as far as the rail goes), each with its arc length, normal and h(x): the arcs of its segments (the deepest one
 // gives the wheel's normal), or the arc through its deepest point. Kept out of line: inlined into lay_out, it made
 // lay_out's own code dearer, by 0.025 % of a trajectory's instructions (bench_online section 6 at 0.2 mm).
-[[gnu::noinline]] std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationState& st, int side,
-                                                         const std::vector<double>& arc,
-                                                         const std::vector<SegmentInfo>& all, double s_first,
-                                                         double s_last) {
+[[gnu::noinline]]
+std::vector<SurfaceLine> surface_lines(const GeometryModel& g, const LocationState& st, int side,
+                                       const std::vector<double>& arc, const std::vector<SegmentInfo>& all,
+                                       double s_first, double s_last) {
   const WheelCones& wheel = g.side[side].wheel;
   const RailLines& rail = g.side[side].rail;
   int rlo = rail.count(), rhi = -1;
