@@ -111,13 +111,19 @@ WheelSurfacePoint wheel_surface_at(const WheelCones& w, double Y) {
 
 namespace {
 
-// The inward normal of the wheel surface of meridian normal (n_y, n_r) in the meridian plane of the wheelset-frame
-// point q.
-Eigen::Vector3d inward_normal_at(const PoseFrame& frame, const Eigen::Vector3d& q, const Eigen::Vector2d& n) {
+// The meridian plane of the wheelset-frame point q: its distance rho to the axle and the angle eps about the axle.
+struct Meridian {
+  double rho, se, ce;  // rho (m), sin eps, cos eps
+};
+Meridian meridian_of(const Eigen::Vector3d& q) {
   // eq. (1): q = (-Z sin eps, Y, Z cos eps) with Z = -rho, so q_x = rho sin eps, q_z = -rho cos eps.
   const double rho = std::hypot(q.x(), q.z());
-  const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
-  const Eigen::Vector3d outward(n.y() * se, n.x(), -n.y() * ce);
+  return {rho, rho > 0 ? q.x() / rho : 0.0, rho > 0 ? -q.z() / rho : 1.0};
+}
+
+// The inward normal of the wheel surface of meridian normal (n_y, n_r) in meridian plane m.
+Eigen::Vector3d inward_normal_at(const PoseFrame& frame, const Meridian& m, const Eigen::Vector2d& n) {
+  const Eigen::Vector3d outward(n.y() * m.se, n.x(), -n.y() * m.ce);
   return -(frame.matrix() * outward);
 }
 
@@ -126,24 +132,31 @@ Eigen::Vector3d inward_normal_at(const PoseFrame& frame, const Eigen::Vector3d& 
 Eigen::Vector3d wheel_inward_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
   const Eigen::Vector3d q = frame.to_wheelset(p);
   const WheelSurfacePoint s = wheel_surface_at(w, q.y());
-  return inward_normal_at(frame, q, {s.normal_y, s.normal_r});
+  return inward_normal_at(frame, meridian_of(q), {s.normal_y, s.normal_r});
+}
+
+WheelNormalFoot wheel_normal_foot(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = frame.to_wheelset(p);
+  return wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z()));
+}
+
+Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                  const WheelNormalFoot& foot) {
+  return inward_normal_at(frame, meridian_of(frame.to_wheelset(p)), normal_on(w, foot.cone, foot.t));
 }
 
 Eigen::Vector3d wheel_foot_normal(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d q = frame.to_wheelset(p);
-  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), std::hypot(q.x(), q.z()));
-  return inward_normal_at(frame, q, normal_on(w, foot.cone, foot.t));
+  return wheel_foot_normal(w, frame, p, wheel_normal_foot(w, frame, p));
 }
 
 WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
-                                       const Eigen::Vector3d& v) {
+                                       const WheelNormalFoot& foot, const Eigen::Vector3d& v) {
   const Eigen::Matrix3d A = frame.matrix();
   const Eigen::Vector3d q = frame.to_wheelset(p), dq = A.transpose() * v;
-  const double rho = std::hypot(q.x(), q.z());
-  const double se = rho > 0 ? q.x() / rho : 0.0, ce = rho > 0 ? -q.z() / rho : 1.0;
+  const Meridian m = meridian_of(q);
+  const double rho = m.rho, se = m.se, ce = m.ce;
   // The point's meridian coordinates move by drho and deps (q_x = rho sin eps, q_z = -rho cos eps).
   const double drho = se * dq.x() - ce * dq.z(), deps = rho > 0 ? (ce * dq.x() + se * dq.z()) / rho : 0.0;
-  const WheelNormalFoot foot = wheel_normal_foot(w, q.y(), rho);
   const int c = foot.cone;
   Eigen::Vector2d dn_dY;
   const Eigen::Vector2d n = normal_on(w, c, foot.t, &dn_dY);
@@ -156,9 +169,13 @@ WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& fra
   const double kappa = g.dot(dn_dY) * g.x();
   const double ds = g.dot(Eigen::Vector2d(dq.y(), drho)) / std::max(1 - kappa * foot.depth, 0.5);
   const Eigen::Vector2d dn = dn_dY * (g.x() * ds);
-  const Eigen::Vector3d outward(n.y() * se, n.x(), -n.y() * ce);
   const Eigen::Vector3d doutward(dn.y() * se + n.y() * ce * deps, dn.x(), -dn.y() * ce + n.y() * se * deps);
-  return {-(A * outward), -(A * doutward)};
+  return {inward_normal_at(frame, m, n), -(A * doutward)};
+}
+
+WheelFootNormal wheel_foot_normal_rate(const WheelCones& w, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                       const Eigen::Vector3d& v) {
+  return wheel_foot_normal_rate(w, frame, p, wheel_normal_foot(w, frame, p), v);
 }
 
 LineApproach line_approach(const WheelCones& w, const PoseFrame& f, double y_r, double z_r, double floor) {

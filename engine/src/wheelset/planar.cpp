@@ -25,7 +25,8 @@ halfspace::Grid area_grid(const ContactOptions& opt, const std::vector<SegmentIn
 // The rail lines across the grid's lateral range (one beyond each side when the rail has it), projected on the
 // plane and ordered across it, each with its h(x): the arcs of its segments, or the arc through its deepest point.
 std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationState& st, int side,
-                                       const std::vector<SegmentInfo>& all, const Plane& pl, const halfspace::Grid& grid) {
+                                       const std::vector<SegmentInfo>& all, const std::vector<WheelNormalFoot>& feet,
+                                       const Plane& pl, const halfspace::Grid& grid) {
   const WheelCones& wheel = g.side[side].wheel;
   const RailLines& rail = g.side[side].rail;
   int rmin = rail.count(), rmax = -1;
@@ -54,7 +55,7 @@ std::vector<LineProfile> line_profiles(const GeometryModel& g, const LocationSta
     const SegmentInfo* deepest = lp.arcs.front();
     for (const SegmentInfo* s : lp.arcs)
       if (s->sagitta > deepest->sagitta) deepest = s;
-    fit_bend(wheel, st.frame(), *deepest, lp);
+    fit_bend(wheel, st.frame(), *deepest, feet[static_cast<std::size_t>(deepest - all.data())], lp);
   }
   // The projected lines must be ordered across the plane (they are, unless the plane is far off the rail).
   std::stable_sort(lines.begin(), lines.end(), [](const LineProfile& a, const LineProfile& b) { return a.v < b.v; });
@@ -132,14 +133,16 @@ class PlanarAreaSurface final : public AreaSurface {
   const char* name() const override { return "planar"; }
 
   AreaLayout lay_out(const AreaInput& in, PatchContact& pc) const override {
-    const Plane pl = foot_plane_of(in.model.geometry().side[in.side].wheel, in.located.frame(), in.segments, in.first);
+    const WheelCones& wheel = in.model.geometry().side[in.side].wheel;
+    const auto feet = mid_feet(wheel, in.located.frame(), in.segments);  // for the plane and the lines' bends
+    const Plane pl = foot_plane_of(wheel, in.located.frame(), in.segments, feet, in.first);
     pc.origin = pl.O;
     pc.normal = pl.n;
     pc.t1 = pl.t1;
     pc.t2 = pl.t2;
     AreaLayout l;
     l.grid = area_grid(in.model.options(), in.segments, pl, in.side, in.located.pose());
-    const auto lines = line_profiles(in.model.geometry(), in.located, in.side, in.segments, pl, l.grid);
+    const auto lines = line_profiles(in.model.geometry(), in.located, in.side, in.segments, feet, pl, l.grid);
     pc.h = undeformed_distance(lines, pl, l.grid, pc.h_gain);
     l.frame = pl;
     l.vertical.assign(static_cast<std::size_t>(l.grid.ny), pl.n.z());  // one normal: h deepens by its z part

@@ -121,16 +121,17 @@ void collect_segments(const GeometryModel& g, const LocationState& st, int side,
 
 namespace {
 
-// The plane through the segments' weighted mid-point with their weighted normals normal(s).
+// The plane through the segments' weighted mid-point with their weighted normals normal(k) (k: the segment's index).
 template <class Normal>
 Plane weighted_plane(const std::vector<SegmentInfo>& infos, const Patch& fallback, const Normal& normal) {
   Plane pl;
   double W = 0;
   Eigen::Vector3d O = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
-  for (const auto& s : infos) {
+  for (std::size_t k = 0; k < infos.size(); ++k) {
+    const SegmentInfo& s = infos[k];
     W += s.weight;
     O += s.weight * s.mid;
-    if (s.weight > 0) n += s.weight * normal(s);
+    if (s.weight > 0) n += s.weight * normal(k);
   }
   if (W > 0 && n.norm() > 0) {
     pl.O = O / W;
@@ -149,12 +150,21 @@ Plane weighted_plane(const std::vector<SegmentInfo>& infos, const Patch& fallbac
 }  // namespace
 
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback) {
-  return weighted_plane(infos, fallback, [](const SegmentInfo& s) { return s.normal; });
+  return weighted_plane(infos, fallback, [&](std::size_t k) { return infos[k].normal; });
 }
 
 Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
-                    const Patch& fallback) {
-  return weighted_plane(infos, fallback, [&](const SegmentInfo& s) { return wheel_foot_normal(wheel, frame, s.mid); });
+                    const std::vector<WheelNormalFoot>& feet, const Patch& fallback) {
+  return weighted_plane(infos, fallback,
+                        [&](std::size_t k) { return wheel_foot_normal(wheel, frame, infos[k].mid, feet[k]); });
+}
+
+std::vector<WheelNormalFoot> mid_feet(const WheelCones& wheel, const PoseFrame& frame,
+                                      const std::vector<SegmentInfo>& infos) {
+  std::vector<WheelNormalFoot> feet;
+  feet.reserve(infos.size());
+  for (const auto& s : infos) feet.push_back(wheel_normal_foot(wheel, frame, s.mid));
+  return feet;
 }
 
 Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) {
@@ -170,22 +180,32 @@ Bounds projected_bounds(const std::vector<SegmentInfo>& infos, const Plane& pl) 
   return b;
 }
 
-// normal_depth's bend for a line whose radial depth (turned onto the normal) is `radial` at the wheelset-frame point
-// q: for a line inside the wheel, fitted to the exact depth there (wheel_normal_depth), so that h is exact at the
-// line's deepest point whatever the profile does between the point's radial and normal feet (on S1002 a curvature
-// jump lies between them at the flange root); for a line that barely reaches the wheel or stays outside it (the
-// margin: only the sign of its h counts, and the exact search would go as far as the gap), the profile's own
-// kappa tan^2(delta) / 2 (curvature from the smooth normal's turning dtheta/dY n_r, tan(delta) = n_y / n_r, n_r
-// floored as in arc_radius).
-double depth_bend(const WheelCones& wheel, const Eigen::Vector3d& q, double radial) {
+namespace {
+
+// normal_depth's bend for a line whose radial depth (turned onto the normal) is `radial` at wheelset-frame lateral
+// position Y: for a line inside the wheel, fitted to the exact depth there (exact(): wheel_normal_depth, asked for
+// only then), so that h is exact at the line's deepest point whatever the profile does between the point's radial and
+// normal feet (on S1002 a curvature jump lies between them at the flange root); for a line that barely reaches the
+// wheel or stays outside it (the margin: only the sign of its h counts, and the exact search would go as far as the
+// gap), the profile's own kappa tan^2(delta) / 2 (curvature from the smooth normal's turning dtheta/dY n_r,
+// tan(delta) = n_y / n_r, n_r floored as in arc_radius).
+template <class ExactDepth>
+double depth_bend(const WheelCones& wheel, double Y, double radial, const ExactDepth& exact) {
   if (radial > 1e-6) {
-    const double exact = wheel_normal_depth(wheel, q.y(), std::hypot(q.x(), q.z()));
-    return std::clamp((radial - exact) / (radial * radial), -0.25 / radial, 0.25 / radial);
+    const double d = exact();
+    return std::clamp((radial - d) / (radial * radial), -0.25 / radial, 0.25 / radial);
   }
-  const WheelSurfacePoint s = wheel_surface_at(wheel, q.y());
+  const WheelSurfacePoint s = wheel_surface_at(wheel, Y);
   const double nr = std::max(s.normal_r, 0.05);
-  return 0.5 * wheel_normal_turning(wheel, q.y()) * s.normal_y * s.normal_y / nr;
+  return 0.5 * wheel_normal_turning(wheel, Y) * s.normal_y * s.normal_y / nr;
 }
+
+// The same at the wheelset-frame point q, its exact depth searched.
+double depth_bend(const WheelCones& wheel, const Eigen::Vector3d& q, double radial) {
+  return depth_bend(wheel, q.y(), radial, [&] { return wheel_normal_depth(wheel, q.y(), std::hypot(q.x(), q.z())); });
+}
+
+}  // namespace
 
 // Under yaw a line runs across the profile (0.7 mm over a 40 mm segment at 1 deg; at the S1002 flange root across the
 // rounding, whose curvature and slope change along it), so the bend fitted at the deepest point alone left elements
@@ -199,8 +219,10 @@ double depth_bend(const WheelCones& wheel, const Eigen::Vector3d& q, double radi
 // middle (a yawed cylinder's h stays symmetric). At yaw 0 the changes are zero: h is as it was.
 constexpr double kBendTravel = 0.1e-3;  // m
 
-void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo& s, LineProfile& lp) {
-  lp.bend = depth_bend(wheel, frame.to_wheelset(s.mid), s.sagitta);
+void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo& s, const WheelNormalFoot& foot,
+              LineProfile& lp) {
+  const double Y_mid = frame.to_wheelset(s.mid).y();
+  lp.bend = depth_bend(wheel, Y_mid, s.sagitta, [&] { return foot.depth; });
   lp.bends = {};
   // The bend at lateral position Y for the depth of the deepest point, fitted at the meridian point of that depth.
   const auto at = [&](double Y) {
@@ -209,7 +231,7 @@ void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo
   };
   constexpr std::array<double, 5> f{-0.25, -0.125, 0.0, 0.125, 0.25};
   std::array<double, f.size()> Y{};
-  Y[2] = frame.to_wheelset(s.mid).y();
+  Y[2] = Y_mid;
   const double dY = frame.to_wheelset({s.xm + f[4] * s.L, s.y, s.z}).y() - Y[2];  // Y is linear in x
   // Phased in over a lateral travel (4 dY) of 0.1 .. 0.2 mm: below it the bend changes little along the line (every
   // element within 0.9 % of the deepest h on the S1002 rounding at 0.1 deg without the samples, 0.7 % with them), and

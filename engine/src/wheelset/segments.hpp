@@ -98,9 +98,12 @@ struct Plane {
 // sizing their grids).
 Plane plane_of(const std::vector<SegmentInfo>& infos, const Patch& fallback);
 // The same with each mid-point's normal at its normal foot (wheel_foot_normal: the direction of its depth, turned
-// from `normal` by kappa d tan(delta) inside a curved profile): the planar surface's plane.
+// from `normal` by kappa d tan(delta) inside a curved profile): the planar surface's plane. feet: mid_feet's.
 Plane foot_plane_of(const WheelCones& wheel, const PoseFrame& frame, const std::vector<SegmentInfo>& infos,
-                    const Patch& fallback);
+                    const std::vector<WheelNormalFoot>& feet, const Patch& fallback);
+// The normal foot of each segment's mid-point (wheel_normal_foot), in the order of infos.
+std::vector<WheelNormalFoot> mid_feet(const WheelCones& wheel, const PoseFrame& frame,
+                                      const std::vector<SegmentInfo>& infos);
 
 // The rectangle of a plane's coordinates (u along t1, v along t2) that holds the segments' end points.
 struct Bounds {
@@ -123,10 +126,6 @@ inline double normal_depth_slope(double d, double bend) {
   const double u = bend * d;
   return u > 0.25 ? 0.75 : u < -0.25 ? 1.25 : 1 - 2 * u;
 }
-
-// `bend` of normal_depth (1/m) for a line with the radial depth `radial` (m, turned onto the normal) at the
-// wheelset-frame point q (segments.cpp says how).
-double depth_bend(const WheelCones& wheel, const Eigen::Vector3d& q, double radial);
 
 // h along one rail line as a function of x: the arcs of its segments, or the arc through its deepest point, as depths
 // along the wheel's normal (normal_depth with the line's `bend`, the wheel's at the line's deepest point).
@@ -186,8 +185,10 @@ struct LineProfile {
   static void corrected_heights(const SegmentInfo& s, const double* x, std::size_t n, double* out);
 };
 
-// LineProfile's bend along a line whose deepest segment is s, fitted at a few points of s (segments.cpp says why).
-void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo& s, LineProfile& lp);
+// LineProfile's bend along a line whose deepest segment is s, fitted at a few points of s (segments.cpp says why); foot:
+// the normal foot of s's mid-point (wheel_normal_foot), whose depth the bend at that point is fitted to.
+void fit_bend(const WheelCones& wheel, const PoseFrame& frame, const SegmentInfo& s, const WheelNormalFoot& foot,
+              LineProfile& lp);
 
 // h along the rail line (y, z) that has no segment: the arc through the line's deepest point, whose (negative) height
 // is the exact radial gap times cos(conicity), so that h is continuous when the line starts to penetrate. Sets lp's

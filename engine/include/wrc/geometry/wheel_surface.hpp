@@ -42,6 +42,9 @@ struct WheelNormalFoot {
   double t = 0;
 };
 WheelNormalFoot wheel_normal_foot(const WheelCones& wheel, double Y, double rho);
+// The same for the track-frame point p (at its wheelset-frame meridian point): the foot wheel_foot_normal and
+// wheel_foot_normal_rate take, for a caller that needs it more than once at the same point to search it once.
+WheelNormalFoot wheel_normal_foot(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p);
 // How fast the smooth normal of wheel_surface_at turns with Y there: d(atan2(n_y, n_r)) / dY (rad/m), constant on a
 // cone (the normal is linear between the vertex normals). > 0 where the profile is convex (the radius falls ever
 // faster away from a crown), < 0 in a throat.
@@ -58,6 +61,9 @@ Eigen::Vector3d wheel_inward_normal(const WheelCones& wheel, const PoseFrame& fr
 // at its lateral position: the direction along which its depth d is measured. Inside a profile of curvature kappa
 // and slope delta the two differ by kappa d tan(delta) (0.9 deg at 70 deg, 40 um deep in a 4 mm circle).
 Eigen::Vector3d wheel_foot_normal(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p);
+// The same at p's foot found already (wheel_normal_foot(wheel, frame, p)).
+Eigen::Vector3d wheel_foot_normal(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                  const WheelNormalFoot& foot);
 // wheel_foot_normal and how it turns as the point moves relative to the wheel: d(normal)/ds at p + s v (track-frame
 // direction v, m; 1/m). The foot slides along the smooth surface (the normals interpolated between the vertices, of
 // curvature kappa) by the point's tangential motion / (1 - kappa d), d its depth, the normal turning with the foot's
@@ -68,6 +74,9 @@ struct WheelFootNormal {
 };
 WheelFootNormal wheel_foot_normal_rate(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p,
                                        const Eigen::Vector3d& v);
+// The same at p's foot found already (wheel_normal_foot(wheel, frame, p)).
+WheelFootNormal wheel_foot_normal_rate(const WheelCones& wheel, const PoseFrame& frame, const Eigen::Vector3d& p,
+                                       const WheelNormalFoot& foot, const Eigen::Vector3d& v);
 
 // The deepest point of the rail line (y_r, z_r) (track frame, m) relative to the wheel: the maximum over x of
 // overlap(x) = wheel radius at the line point's lateral position - the point's distance to the axle, which is
