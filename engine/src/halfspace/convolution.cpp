@@ -77,11 +77,11 @@ std::vector<LengthCost> candidates(int least) {
   return out;
 }
 
-// The table's column cost of a length, or NaN when it has none.
+// The table's column cost of a length, or NaN when it has none (the table ascends by length).
 double column_cost(int length) {
-  for (const LengthCost& c : kLengthCosts)
-    if (c.length == length) return c.column;
-  return NAN;
+  const auto* c = std::lower_bound(std::begin(kLengthCosts), std::end(kLengthCosts), length,
+                                   [](const LengthCost& e, int n) { return e.length < n; });
+  return c != std::end(kLengthCosts) && c->length == length ? c->column : NAN;
 }
 
 // The cost of a column's two transforms split in two of half the length (PrunedFft::forward, backward): theirs and
@@ -97,13 +97,15 @@ FftShape fft_shape(int min_x, int min_y, bool pruned) {
   const std::vector<LengthCost> xs = candidates(min_x), ys = candidates(min_y);
   FftShape best{xs.front().length, ys.front().length};
   double least = INFINITY;
-  for (const LengthCost& x : xs)
-    for (const LengthCost& y : ys) {
-      const double rows = pruned ? y.length / 2 + 1 : y.length, columns = x.length / 2 + 1;
-      const double column = pruned && split_columns(y.length, y.length / 2 + 1) ? split_cost(y.length) : y.column;
+  for (const LengthCost& y : ys) {
+    const double rows = pruned ? y.length / 2 + 1 : y.length;
+    const double column = pruned && split_columns(y.length, y.length / 2 + 1) ? split_cost(y.length) : y.column;
+    for (const LengthCost& x : xs) {
+      const double columns = x.length / 2 + 1;
       const double cost = rows * x.row + columns * column + kPointCost * columns * y.length;
-      if (cost < least) least = cost, best = {x.length, y.length};
+      if (cost < least || (cost == least && x.length < best.Mx)) least = cost, best = {x.length, y.length};
     }
+  }
   return best;
 }
 
