@@ -27,8 +27,9 @@ namespace wrc::halfspace {
 int fft_size(int n);
 // The periodic size of the normal solver's FFT products: Mx >= min_x and My >= min_y that cost least by FFTW's
 // measured speed per length (the table in convolution.cpp, from bench_fft_sizes): rows(My) row transforms of length
-// Mx and Mx/2 + 1 column transforms of length My, with rows(My) = My/2 + 1 when the rows beyond are pruned (the
-// linear product), else My. Deterministic (a fixed table), so results do not depend on the machine's timing.
+// Mx and Mx/2 + 1 column transforms of length My (pruned and cheaper so: two of length My/2, split_columns), with
+// rows(My) = My/2 + 1 when the rows beyond are pruned (the linear product), else My. Deterministic (a fixed table), so
+// results do not depend on the machine's timing.
 struct FftShape {
   int Mx, My;
 };
