@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 namespace wrc::halfspace {
 int fft_size(int n) {
@@ -76,19 +77,35 @@ std::vector<LengthCost> candidates(int least) {
   return out;
 }
 
+// The table's column cost of a length, or NaN when it has none (the table ascends by length).
+double column_cost(int length) {
+  const auto* c = std::lower_bound(std::begin(kLengthCosts), std::end(kLengthCosts), length,
+                                   [](const LengthCost& e, int n) { return e.length < n; });
+  return c != std::end(kLengthCosts) && c->length == length ? c->column : NAN;
+}
+
+// The cost of a column's two transforms split in two of half the length (PrunedFft::forward, backward): theirs and
+// the hand-made stage's pass over the column each way; NaN when the table lacks the half length.
+double split_cost(int length) { return length % 2 ? NAN : 2 * column_cost(length / 2) + 2 * kPointCost * length; }
+
 }  // namespace
+
+bool split_columns(int My, int rows) { return rows < My && split_cost(My) < column_cost(My); }  // NaN: no
 
 FftShape fft_shape(int min_x, int min_y, bool pruned) {
   if (min_x < 1 || min_y < 1) fail("fft_shape: least size {} x {}, expected at least 1 x 1", min_x, min_y);
   const std::vector<LengthCost> xs = candidates(min_x), ys = candidates(min_y);
   FftShape best{xs.front().length, ys.front().length};
   double least = INFINITY;
-  for (const LengthCost& x : xs)
-    for (const LengthCost& y : ys) {
-      const double rows = pruned ? y.length / 2 + 1 : y.length, columns = x.length / 2 + 1;
-      const double cost = rows * x.row + columns * y.column + kPointCost * columns * y.length;
-      if (cost < least) least = cost, best = {x.length, y.length};
+  for (const LengthCost& y : ys) {
+    const double rows = pruned ? y.length / 2 + 1 : y.length;
+    const double column = pruned && split_columns(y.length, y.length / 2 + 1) ? split_cost(y.length) : y.column;
+    for (const LengthCost& x : xs) {
+      const double columns = x.length / 2 + 1;
+      const double cost = rows * x.row + columns * column + kPointCost * columns * y.length;
+      if (cost < least || (cost == least && x.length < best.Mx)) least = cost, best = {x.length, y.length};
     }
+  }
   return best;
 }
 
@@ -100,6 +117,8 @@ std::mutex& fftw_planner_mutex() {
 // A set of FFTW plans; destroyed under the planner lock.
 struct FftPlans {
   fftw_plan plan[4] = {nullptr, nullptr, nullptr, nullptr};
+  // Split columns (split_columns): exp(-i pi n / m) for n < m = My / 2, as (cos, sin) pairs; empty otherwise.
+  std::vector<double> twiddle;
   FftPlans() = default;
   FftPlans(const FftPlans&) = delete;
   FftPlans& operator=(const FftPlans&) = delete;
@@ -119,17 +138,32 @@ using PlanKey = std::tuple<int, int, int, int>;  // Mx, My, rows, planning
 // (length My, stride H) of all H columns, in place in the complex buffer. FFTW's new-array execution needs arrays
 // aligned as the plan's: if the rows do not all start so (an odd Mx with FFTW's 16-byte SIMD alignment), the row
 // plans are made unaligned. Called under the planner lock.
-void plan_pruned(FftPlans& p, int Mx, int My, unsigned flags, double* in, double* out, fftw_complex* spec) {
+void plan_pruned(FftPlans& p, int Mx, int My, int rows, unsigned flags, double* in, double* out,
+                 fftw_complex* spec) {
   const int H = Mx / 2 + 1;
   const bool rows_aligned = fftw_alignment_of(in + Mx) == fftw_alignment_of(in) &&
                             fftw_alignment_of(out + Mx) == fftw_alignment_of(out) &&
                             fftw_alignment_of(spec[H]) == fftw_alignment_of(spec[0]);
   const unsigned row_flags = flags | (rows_aligned ? 0u : FFTW_UNALIGNED);
-  int ny = My;
   p.plan[0] = fftw_plan_dft_r2c_1d(Mx, in, spec, row_flags);
-  p.plan[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
-  p.plan[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
   p.plan[3] = fftw_plan_dft_c2r_1d(Mx, spec, out, row_flags);
+  if (!split_columns(My, rows)) {
+    int ny = My;
+    p.plan[1] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_FORWARD, flags);
+    p.plan[2] = fftw_plan_many_dft(1, &ny, H, spec, nullptr, H, 1, spec, nullptr, H, 1, FFTW_BACKWARD, flags);
+    return;
+  }
+  // Columns of length m in both halves of the buffer: H columns (stride H) in each of 2 blocks of m rows.
+  const int m = My / 2;
+  const fftw_iodim column{m, H, H}, loops[2] = {{2, m * H, m * H}, {H, 1, 1}};
+  p.plan[1] = fftw_plan_guru_dft(1, &column, 2, loops, spec, spec, FFTW_FORWARD, flags);
+  p.plan[2] = fftw_plan_guru_dft(1, &column, 2, loops, spec, spec, FFTW_BACKWARD, flags);
+  p.twiddle.resize(2 * static_cast<std::size_t>(m));
+  for (int n = 0; n < m; ++n) {
+    const double angle = std::numbers::pi * n / m;
+    p.twiddle[2 * static_cast<std::size_t>(n)] = std::cos(angle);
+    p.twiddle[2 * static_cast<std::size_t>(n) + 1] = -std::sin(angle);
+  }
 }
 
 // Builds a plan set on scratch buffers allocated as the workspaces' (fftw_alloc: FFTW's SIMD alignment).
@@ -146,7 +180,7 @@ std::shared_ptr<const FftPlans> build_plans(const PlanKey& key, const char* who)
     std::lock_guard lock(fftw_planner_mutex());
     const unsigned flags = planning == static_cast<int>(FftPlanning::measure) ? FFTW_MEASURE : FFTW_ESTIMATE;
     if (rows > 0) {
-      plan_pruned(*plans, Mx, My, flags, in, out, spec);
+      plan_pruned(*plans, Mx, My, rows, flags, in, out, spec);
       planned = plans->plan[0] && plans->plan[1] && plans->plan[2] && plans->plan[3];
     } else {
       plans->plan[0] = fftw_plan_dft_r2c_2d(My, Mx, in, spec, flags);
@@ -226,14 +260,43 @@ int PrunedFft::row_count(int rows) const {
   return rows;
 }
 
+bool PrunedFft::split() const { return !plans_->twiddle.empty(); }
+
 void PrunedFft::forward(double* in, void* spectrum, int rows) const {
   rows = row_count(rows);
   auto* spec = static_cast<fftw_complex*>(spectrum);
   const std::size_t H = Mx_ / 2 + 1;
   const fftw_plan r2c = plans_->plan[0];
   for (int j = 0; j < rows; ++j) fftw_execute_dft_r2c(r2c, in + static_cast<std::size_t>(Mx_) * j, spec + H * j);
-  // The other rows of the input are zero, so are their row transforms.
-  std::memset(static_cast<void*>(spec + H * rows), 0, sizeof(fftw_complex) * H * (My_ - rows));
+  if (!split()) {
+    // The other rows of the input are zero, so are their row transforms.
+    std::memset(static_cast<void*>(spec + H * rows), 0, sizeof(fftw_complex) * H * (My_ - rows));
+    fftw_execute_dft(plans_->plan[1], spec, spec);
+    return;
+  }
+  // The first radix-2 stage by hand: rows n and n + m become x_n + x_{n+m} and (x_n - x_{n+m}) w^n, whose length-m
+  // transforms are the even and the odd frequencies; rows from `rows` on are zero.
+  const int m = My_ / 2;
+  const double* t = plans_->twiddle.data();
+  for (int n = 0; n < std::min(rows, m); ++n) {
+    fftw_complex* a = spec + H * static_cast<std::size_t>(n);
+    fftw_complex* b = a + H * static_cast<std::size_t>(m);
+    const double c = t[2 * n], s = t[2 * n + 1];
+    if (n + m < rows) {
+      for (std::size_t q = 0; q < H; ++q) {
+        const double dr = a[q][0] - b[q][0], di = a[q][1] - b[q][1];
+        a[q][0] += b[q][0], a[q][1] += b[q][1];
+        b[q][0] = dr * c - di * s, b[q][1] = dr * s + di * c;
+      }
+    } else {
+      for (std::size_t q = 0; q < H; ++q) b[q][0] = a[q][0] * c - a[q][1] * s, b[q][1] = a[q][0] * s + a[q][1] * c;
+    }
+  }
+  if (rows < m) {
+    const std::size_t zero = sizeof(fftw_complex) * H * static_cast<std::size_t>(m - rows);
+    std::memset(static_cast<void*>(spec + H * rows), 0, zero);
+    std::memset(static_cast<void*>(spec + H * static_cast<std::size_t>(m + rows)), 0, zero);
+  }
   fftw_execute_dft(plans_->plan[1], spec, spec);
 }
 
@@ -242,8 +305,33 @@ void PrunedFft::backward(void* spectrum, double* out, int rows) const {
   auto* spec = static_cast<fftw_complex*>(spectrum);
   const std::size_t H = Mx_ / 2 + 1;
   fftw_execute_dft(plans_->plan[2], spec, spec);
+  if (split()) {  // the last stage: rows n and n + m are e_n + w^-n o_n and e_n - w^-n o_n (those needed)
+    const int m = My_ / 2;
+    const double* t = plans_->twiddle.data();
+    for (int n = 0; n < std::min(rows, m); ++n) {
+      fftw_complex* a = spec + H * static_cast<std::size_t>(n);
+      fftw_complex* b = a + H * static_cast<std::size_t>(m);
+      const double c = t[2 * n], s = t[2 * n + 1];
+      const bool both = n + m < rows;
+      for (std::size_t q = 0; q < H; ++q) {
+        const double br = b[q][0] * c + b[q][1] * s, bi = b[q][1] * c - b[q][0] * s;
+        if (both) b[q][0] = a[q][0] - br, b[q][1] = a[q][1] - bi;
+        a[q][0] += br, a[q][1] += bi;
+      }
+    }
+  }
   const fftw_plan c2r = plans_->plan[3];
   for (int j = 0; j < rows; ++j) fftw_execute_dft_c2r(c2r, spec + H * j, out + static_cast<std::size_t>(Mx_) * j);
+}
+
+void PrunedFft::arrange(std::vector<double>& spectrum) const {
+  if (!split()) return;
+  const std::size_t H = Mx_ / 2 + 1, m = My_ / 2;
+  if (spectrum.size() != H * My_) fail("PrunedFft: a spectrum of {} values for {} x {}", spectrum.size(), H, My_);
+  std::vector<double> natural = spectrum;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(My_); ++k)  // frequency k to row k / 2 (even), m + k / 2 (odd)
+    std::copy_n(natural.begin() + static_cast<std::ptrdiff_t>(H * k), H,
+                spectrum.begin() + static_cast<std::ptrdiff_t>(H * (k % 2 ? m + k / 2 : k / 2)));
 }
 
 InfluenceSpectrum::InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, int My, FftPlanning planning)
@@ -258,7 +346,8 @@ InfluenceSpectrum::InfluenceSpectrum(Kind kind, double dx, double dy, int Mx, in
     const int n = std::min(l, My - l);
     for (int k = 0; k < Mx; ++k) kernel[k + static_cast<std::size_t>(Mx) * l] = table(std::min(k, Mx - k), n);
   }
-  const std::vector<double> spectrum = real_spectrum(kernel, Mx, My);
+  std::vector<double> spectrum = real_spectrum(kernel, Mx, My);
+  fft_.arrange(spectrum);
   const double scale = 1.0 / static_cast<double>(nreal);
   eigen_.resize(ncomplex);
   inverse_.resize(ncomplex);

@@ -42,6 +42,7 @@ ShearSpectrum::ShearSpectrum(Kind kind, const Material& material, double dx, dou
   xx_ = real_spectrum(embed(table, Mx, My, 0), Mx, My);
   xy_ = real_spectrum(embed(table, Mx, My, 1), Mx, My);
   yy_ = real_spectrum(embed(table, Mx, My, 2), Mx, My);
+  for (auto* v : {&xx_, &xy_, &yy_}) fft_.arrange(*v);
   const double scale = 1.0 / (static_cast<double>(Mx) * My);
   if (kind == Kind::linear) {
     for (auto* v : {&xx_, &xy_, &yy_})

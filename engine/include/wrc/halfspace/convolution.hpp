@@ -27,12 +27,18 @@ namespace wrc::halfspace {
 int fft_size(int n);
 // The periodic size of the normal solver's FFT products: Mx >= min_x and My >= min_y that cost least by FFTW's
 // measured speed per length (the table in convolution.cpp, from bench_fft_sizes): rows(My) row transforms of length
-// Mx and Mx/2 + 1 column transforms of length My, with rows(My) = My/2 + 1 when the rows beyond are pruned (the
-// linear product), else My. Deterministic (a fixed table), so results do not depend on the machine's timing.
+// Mx and Mx/2 + 1 column transforms of length My (pruned and cheaper so: two of length My/2, split_columns), with
+// rows(My) = My/2 + 1 when the rows beyond are pruned (the linear product), else My. Deterministic (a fixed table), so
+// results do not depend on the machine's timing.
 struct FftShape {
   int Mx, My;
 };
 FftShape fft_shape(int min_x, int min_y, bool pruned);
+// Whether a PrunedFft of My rows, `rows` of them holding data, runs its columns as two transforms of length My / 2
+// (the first radix-2 stage by hand, which the zero rows make cheaper) instead of one of length My: My even, the
+// transform pruned (rows < My), and the two shorter ones cheaper by the table of fft_shape (FFTW's cost per length is
+// far from smooth: two 128-point columns cost less than half a 256-point one).
+bool split_columns(int My, int rows);
 
 // How hard FFTW's planner works: `measure` times candidate algorithms once per size (slower to build,
 // faster to run), `estimate` picks one by heuristics.
@@ -60,6 +66,10 @@ class PrunedFft {
   // (unnormalised; the output rows from `rows` on are left undefined); rows <= rows(), -1 for rows().
   void forward(double* in, void* spectrum, int rows = -1) const;
   void backward(void* spectrum, double* out, int rows = -1) const;
+  // Split columns (split_columns): the spectrum's rows hold the even frequencies (row k: frequency 2k) and then the
+  // odd ones (row m + k: 2k + 1, m = My / 2). arrange puts a spectrum in FFTW's order (real_spectrum's) into this one.
+  bool split() const;
+  void arrange(std::vector<double>& spectrum) const;
   // Whether both run the same FFTW plans (the cache's sharing, for the tests).
   bool shares_plans(const PrunedFft& other) const { return plans_ == other.plans_; }
 
