@@ -22,10 +22,10 @@ local function solve(opts)
   opts.wheel, opts.rail, opts.grid = wheel, rail, 0.4e-3
   local ws = wrc.wheelset(opts)
   local w = ws:wheel{side = "left", y = y, yaw = yaw, roll = 0, Fz = Fz}
-  return ws:contact{y = y, z = w.z, roll = 0, yaw = yaw}.left, ws
+  return ws:contact{y = y, z = w.z, roll = 0, yaw = yaw}.left, ws, w.z
 end
-local coupled, ws_c = solve{}
-local apart, ws_a = solve{merge_angle = 0.26}
+local coupled, ws_c, z_c = solve{}
+local apart, ws_a, z_a = solve{merge_angle = 0.26}
 local planar, ws_p = solve{surface = "planar"}
 check.near(ws_c.params.merge_angle, 1.2, 0, "conformal wheelset: merge_angle 1.2")
 check.near(ws_a.params.merge_angle, 0.26, 0, "merge_angle given: honoured")
@@ -71,6 +71,9 @@ check.ok(flat_c ~= steep_c, "each zone of the coupled area matches one area apar
 print(("coupled: root %.2f kN (apart %.2f), flank %.2f kN (apart %.2f); Fy %.3f kN (apart %.3f)"):format(
       flat_c.load / 1e3, flat_a.normal_force / 1e3, steep_c.load / 1e3, steep_a.normal_force / 1e3,
       coupled.force.y / 1e3, apart.force.y / 1e3))
+-- With friction (xi = 1e-3, mu = 0.3 at the same z), the coupling's effect on the longitudinal creep force (printed).
+local function Fx(ws, z) return ws:contact{y = y, z = z, roll = 0, yaw = yaw, creepage = {xi = 1e-3}, mu = 0.3}.left.force.x end
+print(("xi = 1e-3, mu = 0.3: Fx %.3f kN coupled (apart %.3f)"):format(Fx(ws_c, z_c) / 1e3, Fx(ws_a, z_a) / 1e3))
 local light_c, light_a = flat_c, flat_a
 if flat_a.normal_force > steep_a.normal_force then light_c, light_a = steep_c, steep_a end
 check.ok(light_c.load < light_a.normal_force, "coupled, the lighter zone carries less than apart")

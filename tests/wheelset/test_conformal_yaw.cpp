@@ -1,19 +1,13 @@
 // The conformal surface's undeformed distance h under yaw against brute force, at the S1002 flange root on 60E1
 // (the paper's wheelset) where a yawed rail line runs across the steep, curved part of the profile.
-#include "wheelset/exact_depth.hpp"
-#include "wheelset/paper_profiles.hpp"
-#include "wrc/equilibrium/equilibrium.hpp"
+#include "wheelset/yaw_depth_check.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
-#include "wrc/wheelset/wheelset.hpp"
 
 #include <doctest/doctest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <numbers>
 
-using wrc::test::exact_depth;
-using wrc::test::paper_profiles;
+using wrc::test::ElementPoint;
 using namespace wrc;
 
 // h is the depth along the wheel's normal: the radial depth turned onto it, n_r (r(Y) - distance to the axle) (n_r the
@@ -29,45 +23,12 @@ using namespace wrc;
 // alone it left elements up to 2.6 % off, the line passing under the rounding's changing curvature. At 0.2 deg the
 // samples are phased in (fit_bend): within 0.8 % there.
 TEST_CASE("conformal h under yaw: every element and every row against the brute-force depth") {
-  const auto wheelset = build_wheelset(paper_profiles(), {});
-  const ContactModel& model = wheelset->contact_model();
-  const auto work = wheelset->make_workspace();
-  const WheelCones& wheel = model.geometry().side[kLeft].wheel;
-  for (double yaw_deg : {0.0, 0.2, 1.0})
-    for (double y : {6.6e-3, 6.8e-3, 7.0e-3}) {
-      CAPTURE(yaw_deg);
-      CAPTURE(y);
-      const double yaw = yaw_deg * std::numbers::pi / 180;
-      const WheelResult w = solve_wheel(model, {kLeft, y, yaw, 0.0, 100e3}, *work);
-      REQUIRE(w.converged);
-      const Pose pose{y, w.z, 0.0, yaw};
-      ContactRequest left;
-      left.only_side = kLeft;
-      const ContactResult c = evaluate_contact(model, pose, *work, left);
-      const PoseFrame f(pose);
-      int steep_rows = 0;
-      for (const PatchContact& pc : c.wheel[kLeft].patches) {
-        REQUIRE(pc.conformal);
-        const ConformalSurface& s = *pc.conformal;
-        const halfspace::Grid& g = pc.solution.grid;
-        const double hmax = *std::max_element(pc.h.begin(), pc.h.end());
-        for (int j = 0; j < g.ny; ++j) {
-          double row_h = -INFINITY, row_d = -INFINITY, worst = 0;
-          for (int i = 0; i < g.nx; ++i) {
-            const Eigen::Vector3d q = f.to_wheelset({s.x0 + g.x(i), s.y[j], s.z[j]});
-            const double rho = std::hypot(q.x(), q.z());
-            const double h = pc.h[static_cast<std::size_t>(g.index(i, j))], exact = exact_depth(wheel, q.y(), rho);
-            if (h > 0 || exact > 0) worst = std::max(worst, std::abs(h - exact));
-            row_h = std::max(row_h, h);
-            row_d = std::max(row_d, exact);
-          }
-          CAPTURE(j);
-          CHECK(worst <= 0.01 * hmax);
-          if (row_d < 0.02e-3) continue;
-          CHECK(std::abs(row_h - row_d) <= 0.01 * row_d);
-          if (std::atan2(-s.normal_y[j], s.normal_z[j]) > 60 * std::numbers::pi / 180) ++steep_rows;
-        }
-      }
-      CHECK(steep_rows >= 5);  // the check reached the flank
-    }
+  // The element's own 3-D point on the area's rows; its slope the row's normal's.
+  test::check_h_under_yaw(ContactSurface::conformal, [](const RailLines&, const PatchContact& pc, int j) {
+    const ConformalSurface& s = *pc.conformal;
+    const double slope = std::atan2(-s.normal_y[j], s.normal_z[j]);
+    return [&s, &g = pc.solution.grid, j, slope](int i) {
+      return ElementPoint{{s.x0 + g.x(i), s.y[j], s.z[j]}, slope};
+    };
+  });
 }

@@ -1,23 +1,17 @@
 // The planar surface's undeformed distance h under yaw against brute force, at the S1002 flange root on 60E1 (the
 // paper's wheelset), the twin of test_conformal_yaw.cpp: the same poses, the same rail lines and their h, laid out on
 // one plane per area instead of along the rail's profile.
-#include "wheelset/exact_depth.hpp"
-#include "wheelset/paper_profiles.hpp"
-#include "wrc/equilibrium/equilibrium.hpp"
-#include "wrc/wheelset/wheelset.hpp"
+#include "wheelset/yaw_depth_check.hpp"
 
 #include <doctest/doctest.h>
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <utility>
 #include <vector>
 
-using wrc::test::exact_depth;
-using wrc::test::paper_profiles;
+using wrc::test::ElementPoint;
 using namespace wrc;
 
 namespace {
@@ -68,56 +62,13 @@ struct RailUnderRow {
 // worst element at 1 deg is 2.6 %, with the samples on the wrong side of the deepest point 3.4 %, and without the bend
 // (h the radial depth turned onto the normal) 3.7 % of the deepest h and rows 4.3 % deep at yaw 0 already.
 TEST_CASE("planar h under yaw: every element and every row against the brute-force depth") {
-  WheelsetParams params;
-  params.contact.surface = ContactSurface::planar;
-  const auto wheelset = build_wheelset(paper_profiles(), params);
-  const ContactModel& model = wheelset->contact_model();
-  const auto work = wheelset->make_workspace();
-  const WheelCones& wheel = model.geometry().side[kLeft].wheel;
-  const RailLines& rail = model.geometry().side[kLeft].rail;
-  fmt::print("planar h under yaw against the brute-force depth: worst element / deepest h, worst row / its depth\n");
-  for (double yaw_deg : {0.0, 0.2, 1.0})
-    for (double y : {6.6e-3, 6.8e-3, 7.0e-3}) {
-      CAPTURE(yaw_deg);
-      CAPTURE(y);
-      const double yaw = yaw_deg * std::numbers::pi / 180;
-      const WheelResult w = solve_wheel(model, {kLeft, y, yaw, 0.0, 100e3}, *work);
-      REQUIRE(w.converged);
-      const Pose pose{y, w.z, 0.0, yaw};
-      ContactRequest left;
-      left.only_side = kLeft;
-      const ContactResult c = evaluate_contact(model, pose, *work, left);
-      const PoseFrame f(pose);
-      int steep_rows = 0;
-      double worst_element = 0, worst_row = 0;
-      for (const PatchContact& pc : c.wheel[kLeft].patches) {
-        REQUIRE(!pc.conformal);
-        const halfspace::Grid& g = pc.solution.grid;
-        const double hmax = *std::max_element(pc.h.begin(), pc.h.end());
-        for (int j = 0; j < g.ny; ++j) {
-          const RailUnderRow under(rail, pc, g.y(j));
-          double row_h = -INFINITY, row_d = -INFINITY, worst = 0, row_angle = 0;
-          for (int i = 0; i < g.nx; ++i) {
-            const auto p = under.under(g.x(i), g.y(j));
-            REQUIRE(p);
-            const Eigen::Vector3d q = f.to_wheelset(p->first);
-            const double h = pc.h[static_cast<std::size_t>(g.index(i, j))];
-            const double exact = exact_depth(wheel, q.y(), std::hypot(q.x(), q.z()));
-            if (h > 0 || exact > 0) worst = std::max(worst, std::abs(h - exact));
-            row_h = std::max(row_h, h);
-            if (exact > row_d) row_d = exact, row_angle = p->second;
-          }
-          CAPTURE(j);
-          CHECK(worst <= 0.01 * hmax);
-          worst_element = std::max(worst_element, worst / hmax);
-          if (row_d < 0.02e-3) continue;
-          CHECK(std::abs(row_h - row_d) <= 0.01 * row_d);
-          worst_row = std::max(worst_row, std::abs(row_h - row_d) / row_d);
-          steep_rows += row_angle > 60 * std::numbers::pi / 180;
-        }
-      }
-      fmt::print("  yaw {:3.1f} deg, y {:3.1f} mm: {:5.2f} %, {:5.2f} %\n", yaw_deg, y * 1e3, 100 * worst_element,
-                 100 * worst_row);
-      CHECK(steep_rows >= 5);  // the check reached the flank
-    }
+  // The rail point under each element along the plane's normal; its slope its chord's.
+  test::check_h_under_yaw(ContactSurface::planar, [](const RailLines& rail, const PatchContact& pc, int j) {
+    const halfspace::Grid& g = pc.solution.grid;
+    return [under = RailUnderRow(rail, pc, g.y(j)), &g, j](int i) {
+      const auto p = under.under(g.x(i), g.y(j));
+      REQUIRE(p);
+      return ElementPoint{p->first, p->second};
+    };
+  });
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <type_traits>
 
 namespace wrc::halfspace {
 int fft_size(int n) {
@@ -262,6 +263,28 @@ int PrunedFft::row_count(int rows) const {
 
 bool PrunedFft::split() const { return !plans_->twiddle.empty(); }
 
+namespace {
+
+// The hand-made radix-2 stage of split columns (split_columns), shared by forward and backward: rows n < m = My / 2
+// that hold data (forward) or are needed (backward), each with row n + m; butterfly(a, b, c, s, both) on each element
+// pair (a of row n, b of row n + m) with the twiddle w^n = c + i s. both is std::true_type where row n + m holds data
+// or is needed too, else std::false_type: each case its own loop, without a test per element.
+template <class Butterfly>
+void row_pairs(fftw_complex* spec, std::size_t H, int m, int rows, const double* twiddle, Butterfly butterfly) {
+  for (int n = 0; n < std::min(rows, m); ++n) {
+    fftw_complex* a = spec + H * static_cast<std::size_t>(n);
+    fftw_complex* b = a + H * static_cast<std::size_t>(m);
+    const double c = twiddle[2 * n], s = twiddle[2 * n + 1];
+    if (n + m < rows) {
+      for (std::size_t q = 0; q < H; ++q) butterfly(a[q], b[q], c, s, std::true_type{});
+    } else {
+      for (std::size_t q = 0; q < H; ++q) butterfly(a[q], b[q], c, s, std::false_type{});
+    }
+  }
+}
+
+}  // namespace
+
 void PrunedFft::forward(double* in, void* spectrum, int rows) const {
   rows = row_count(rows);
   auto* spec = static_cast<fftw_complex*>(spectrum);
@@ -277,21 +300,15 @@ void PrunedFft::forward(double* in, void* spectrum, int rows) const {
   // The first radix-2 stage by hand: rows n and n + m become x_n + x_{n+m} and (x_n - x_{n+m}) w^n, whose length-m
   // transforms are the even and the odd frequencies; rows from `rows` on are zero.
   const int m = My_ / 2;
-  const double* t = plans_->twiddle.data();
-  for (int n = 0; n < std::min(rows, m); ++n) {
-    fftw_complex* a = spec + H * static_cast<std::size_t>(n);
-    fftw_complex* b = a + H * static_cast<std::size_t>(m);
-    const double c = t[2 * n], s = t[2 * n + 1];
-    if (n + m < rows) {
-      for (std::size_t q = 0; q < H; ++q) {
-        const double dr = a[q][0] - b[q][0], di = a[q][1] - b[q][1];
-        a[q][0] += b[q][0], a[q][1] += b[q][1];
-        b[q][0] = dr * c - di * s, b[q][1] = dr * s + di * c;
-      }
+  row_pairs(spec, H, m, rows, plans_->twiddle.data(), [](double* a, double* b, double c, double s, auto both) {
+    if constexpr (decltype(both)::value) {
+      const double dr = a[0] - b[0], di = a[1] - b[1];
+      a[0] += b[0], a[1] += b[1];
+      b[0] = dr * c - di * s, b[1] = dr * s + di * c;
     } else {
-      for (std::size_t q = 0; q < H; ++q) b[q][0] = a[q][0] * c - a[q][1] * s, b[q][1] = a[q][0] * s + a[q][1] * c;
+      b[0] = a[0] * c - a[1] * s, b[1] = a[0] * s + a[1] * c;
     }
-  }
+  });
   if (rows < m) {
     const std::size_t zero = sizeof(fftw_complex) * H * static_cast<std::size_t>(m - rows);
     std::memset(static_cast<void*>(spec + H * rows), 0, zero);
@@ -306,19 +323,11 @@ void PrunedFft::backward(void* spectrum, double* out, int rows) const {
   const std::size_t H = Mx_ / 2 + 1;
   fftw_execute_dft(plans_->plan[2], spec, spec);
   if (split()) {  // the last stage: rows n and n + m are e_n + w^-n o_n and e_n - w^-n o_n (those needed)
-    const int m = My_ / 2;
-    const double* t = plans_->twiddle.data();
-    for (int n = 0; n < std::min(rows, m); ++n) {
-      fftw_complex* a = spec + H * static_cast<std::size_t>(n);
-      fftw_complex* b = a + H * static_cast<std::size_t>(m);
-      const double c = t[2 * n], s = t[2 * n + 1];
-      const bool both = n + m < rows;
-      for (std::size_t q = 0; q < H; ++q) {
-        const double br = b[q][0] * c + b[q][1] * s, bi = b[q][1] * c - b[q][0] * s;
-        if (both) b[q][0] = a[q][0] - br, b[q][1] = a[q][1] - bi;
-        a[q][0] += br, a[q][1] += bi;
-      }
-    }
+    row_pairs(spec, H, My_ / 2, rows, plans_->twiddle.data(), [](double* a, double* b, double c, double s, auto both) {
+      const double br = b[0] * c + b[1] * s, bi = b[1] * c - b[0] * s;
+      if constexpr (decltype(both)::value) b[0] = a[0] - br, b[1] = a[1] - bi;
+      a[0] += br, a[1] += bi;
+    });
   }
   const fftw_plan c2r = plans_->plan[3];
   for (int j = 0; j < rows; ++j) fftw_execute_dft_c2r(c2r, spec + H * j, out + static_cast<std::size_t>(Mx_) * j);
