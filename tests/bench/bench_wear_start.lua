@@ -1,9 +1,10 @@
 -- The starts of a Heun step's second rate evaluation (scripts/wear_loop.lua, docs/guide/wear.md "Where a step's CPU
--- goes"): the exact tangential solver's products of each rate evaluation of the steps after the first, the second
--- started from the first's tractions (the step before's extrapolation off: its `first_starts` dropped) and from their
--- linear extrapolation with the first evaluation's of the step before (the loop's), and what a perfect start would
--- leave: the second evaluation's cases (an Euler step's profiles) solved again from their own solution. The
--- example's default cases (90 on tangent track, 10 curving) at 0.2 mm, S1002/60E1, exact rolling, Archard/KTH.
+-- goes"): the exact tangential solver's products of the second evaluation (at the Euler step's profiles P + D) of the
+-- steps after the first, started from the first's tractions T(P) (as the loop starts it), from their linear
+-- extrapolation with the first evaluation's of the step before (sweep starts.contact_before), from the tractions half
+-- a step away T(P + D/2) and extrapolated from there, 2 T(P + D/2) - T(P) (what a linear start within the step would
+-- give), and from its own solution (what a perfect start would leave: a product per area). The example's default
+-- cases (90 on tangent track, 10 curving) at 0.2 mm, S1002/60E1, exact rolling, Archard/KTH.
 --   build/wrc run tests/bench/bench_wear_start.lua [grid_mm=0.2] [steps=4] [threads=2] [tangent=90]
 local loop = require "wrc.wear_loop"
 local grid = (tonumber(arg.grid_mm) or 0.2) * 1e-3
@@ -20,26 +21,35 @@ local function cases(state, early)
 end
 local o = {step = 0.1e-3, smooth = 1e-3, wear = {}, threads = tonumber(arg.threads) or 2}
 local euler = setmetatable({scheme = "euler"}, {__index = o})
-local function line(what, first, second, c)
-  print(("%-44s first %6d   second %6d   cpu %6.2f s"):format(what, first, second, os.clock() - c))
+local half = setmetatable({scheme = "euler", step = o.step / 2}, {__index = o})  -- the same rates, half the distance
+-- The products of the cases solved at `state` (its profiles) from `starts` (the loop's by case).
+local function solved_from(state, starts)
+  state.starts = starts
+  local _, info = loop.step(state, cases, euler)
+  return info.products
 end
 local st = loop.step(loop.initial{wheel = wrc.profile.load("profiles/s1002.lua"),
                                   rail = wrc.profile.load("profiles/60e1.lua"), wheelset = {grid = grid}}, cases, o)
 for k = 2, steps do
-  print(("step %d (from %.3f km)"):format(k, st.km))
-  local earlier, c = st.first_starts, os.clock()
+  local earlier = st.first_starts
   st.first_starts = nil
-  local _, a = loop.step(st, cases, o)
-  line("  second from the first's tractions", a.products - a.second_products, a.second_products, c)
-  st.first_starts, c = earlier, os.clock()
-  local predicted, b = loop.step(st, cases, euler)  -- the second evaluation's profiles, the first's starts
-  local solved, s = loop.step(predicted, cases, euler)
-  line("  the second alone (an Euler step at them)", b.products, s.products, c)
-  predicted.starts, predicted.previous_cases, c = solved.starts, solved.previous_cases, os.clock()
-  local _, own = loop.step(predicted, cases, euler)
-  line("  the second from its own solution", b.products, own.products, c)
-  c = os.clock()
-  local nxt, h = loop.step(st, cases, o)
-  line("  second extrapolated (the loop's)", h.products - h.second_products, h.second_products, c)
-  st = nxt
+  local predicted, first = loop.step(st, cases, euler)  -- P + D, its starts T(P)
+  local T0 = predicted.starts
+  local mid = loop.step(st, cases, half)                -- P + D/2 (from T(P))
+  local at_mid = loop.step(mid, cases, half)            -- its starts: T(P + D/2)
+  local at_end = loop.step(predicted, cases, euler)     -- its starts: T(P + D)
+  local Th, T1 = at_mid.starts, at_end.starts
+  local function with_before(last, before)
+    local s = {}
+    for key, v in pairs(last) do s[key] = {z = v.z, roll = v.roll, contact = v.contact, before = before[key] and before[key].contact} end
+    return s
+  end
+  print(("step %d (from %.3f km): the first evaluation %d products; the second"):format(k, st.km, first.products))
+  print(("  from T(P), the loop's start                %6d"):format(solved_from(predicted, T0)))
+  print(("  from 2 T(P) - (the step before's first)    %6d"):format(solved_from(predicted, with_before(T0, earlier))))
+  print(("  from T(P + D/2)                            %6d"):format(solved_from(predicted, Th)))
+  print(("  from 2 T(P + D/2) - T(P)                   %6d"):format(solved_from(predicted, with_before(Th, T0))))
+  print(("  from T(P + D), its own solution            %6d"):format(solved_from(predicted, T1)))
+  st.first_starts = earlier
+  st = loop.step(st, cases, o)
 end
