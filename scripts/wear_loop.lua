@@ -311,14 +311,13 @@ local function solver(ws, o, starts)
         local keys = sweep_keys(ws, g, o, starts ~= nil)
         keys.contact_starts = o.warm ~= false and o.warm ~= "equilibrium"
         if starts then
-          local z, roll, contact, before = {}, {}, {}, {}
+          local z, roll, contact = {}, {}, {}
           for k, y in ipairs(g.ys) do
             local s = starts[start_key(cases[g.members[("%.17g"):format(y)][1]])]
             z[k], roll[k] = s and s.z or 0 / 0, s and s.roll or 0 / 0
             contact[k] = keys.contact_starts and s and s.contact or false
-            before[k] = contact[k] and s.before or false
           end
-          keys.starts = {z = z, roll = roll, contact = contact, contact_before = before}
+          keys.starts = {z = z, roll = roll, contact = contact}
         end
         jobs[key] = ws:sweep_start(keys)
       end
@@ -537,19 +536,6 @@ local function largest_difference(a, b)
 end
 local MAX_RETRIES = 8
 
--- The starts of a Heun step's second rate evaluation: each case's from the first (`first`, at the step's profiles),
--- its tractions extrapolated linearly with those it ended with in the first evaluation of the step before (`earlier`,
--- a step's wear before: a step wears about the same depth as the one before it).
-local function extrapolated_starts(first, earlier)
-  if not earlier then return first end
-  local out = {}
-  for key, s in pairs(first) do
-    local e = earlier[key]
-    out[key] = {z = s.z, roll = s.roll, contact = s.contact, before = e and e.contact}
-  end
-  return out
-end
-
 local function mean_rate(a, b)
   local m = {}
   for _, name in ipairs(M.BODIES) do
@@ -582,8 +568,7 @@ end
 -- Heun's mean rates reach deeper or the control shortens it. Returns the new state
 -- and what the step did: the distance (m), the largest depth per body (m), the wheels' Archard volumes over the step
 -- (m^3), the cases and failed cases, the times the control shortened it (retries), the contact evaluations of the
--- cases' equilibria (evaluations) and the exact tangential solver's products on the areas' grids (products; those of
--- the second rate evaluation alone: second_products).
+-- cases' equilibria (evaluations) and the exact tangential solver's products on the areas' grids (products).
 function M.step(st, cases, o)
   if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
     error("wear step: tolerance = " .. tostring(o.tolerance) .. " must be a depth > 0 (m) or nil", 0)
@@ -606,7 +591,7 @@ function M.step(st, cases, o)
   if (o.scheme or "heun") == "heun" then
     while true do
       local predicted = advance(st, r0.rate, distance, o, km)
-      predicted.previous_cases, predicted.starts = cases0, extrapolated_starts(r0.starts, st.first_starts)
+      predicted.previous_cases, predicted.starts = cases0, r0.starts
       r1, cases1 = rates(predicted, cases, o)
       evaluations, products = evaluations + r1.evaluations, products + r1.products
       -- Heun's depth minus Euler's: the local error of the Euler step, an upper bound of Heun's.
@@ -635,10 +620,9 @@ function M.step(st, cases, o)
   end
   local new, depth = advance(st, rate, distance, o, km)
   new.previous_cases, new.starts = cases1 or cases0, r1 and r1.starts or r0.starts
-  new.first_starts = r1 and r0.starts or nil
   return new, {folds = new.folds or 0, distance = distance, depth = depth, archard = {left = archard.left * distance,
                right = archard.right * distance}, cases = r0.cases, failed = failed, errors = errors, retries = retries,
-               evaluations = evaluations, products = products, second_products = r1 and r1.products or 0}
+               evaluations = evaluations, products = products}
 end
 
 ----------------------------------------------------------------------------------------------------------------

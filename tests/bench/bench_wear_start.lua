@@ -1,10 +1,9 @@
--- The starts of a Heun step's second rate evaluation (scripts/wear_loop.lua, docs/guide/wear.md "Where a step's CPU
--- goes"): the exact tangential solver's products of the second evaluation (at the Euler step's profiles P + D) of the
--- steps after the first, started from the first's tractions T(P) (as the loop starts it), from their linear
--- extrapolation with the first evaluation's of the step before (sweep starts.contact_before), from the tractions half
--- a step away T(P + D/2) and extrapolated from there, 2 T(P + D/2) - T(P) (what a linear start within the step would
--- give), and from its own solution (what a perfect start would leave: a product per area). The example's default
--- cases (90 on tangent track, 10 curving) at 0.2 mm, S1002/60E1, exact rolling, Archard/KTH.
+-- The starts of a Heun step's second rate evaluation (scripts/wear_loop.lua; docs/guide/wear.md "Speed", where a
+-- step's CPU goes): the exact tangential solver's products of the second evaluation (at the Euler step's profiles
+-- P + D) of the steps after the first, started from the first's tractions T(P) (as the loop starts it), from the
+-- tractions half a step away T(P + D/2), and from its own solution (what a perfect start would leave: a product per
+-- area). The example's default cases (90 on tangent track, 10 curving) at 0.2 mm, S1002/60E1, exact rolling,
+-- Archard/KTH.
 --   build/wrc run tests/bench/bench_wear_start.lua [grid_mm=0.2] [steps=4] [threads=2] [tangent=90]
 local loop = require "wrc.wear_loop"
 local grid = (tonumber(arg.grid_mm) or 0.2) * 1e-3
@@ -31,25 +30,13 @@ end
 local st = loop.step(loop.initial{wheel = wrc.profile.load("profiles/s1002.lua"),
                                   rail = wrc.profile.load("profiles/60e1.lua"), wheelset = {grid = grid}}, cases, o)
 for k = 2, steps do
-  local earlier = st.first_starts
-  st.first_starts = nil
   local predicted, first = loop.step(st, cases, euler)  -- P + D, its starts T(P)
-  local T0 = predicted.starts
   local mid = loop.step(st, cases, half)                -- P + D/2 (from T(P))
   local at_mid = loop.step(mid, cases, half)            -- its starts: T(P + D/2)
-  local at_end = loop.step(predicted, cases, euler)     -- its starts: T(P + D)
-  local Th, T1 = at_mid.starts, at_end.starts
-  local function with_before(last, before)
-    local s = {}
-    for key, v in pairs(last) do s[key] = {z = v.z, roll = v.roll, contact = v.contact, before = before[key] and before[key].contact} end
-    return s
-  end
+  local at_end, loops = loop.step(predicted, cases, euler)  -- from T(P), as the loop solves it; its starts T(P + D)
   print(("step %d (from %.3f km): the first evaluation %d products; the second"):format(k, st.km, first.products))
-  print(("  from T(P), the loop's start                %6d"):format(solved_from(predicted, T0)))
-  print(("  from 2 T(P) - (the step before's first)    %6d"):format(solved_from(predicted, with_before(T0, earlier))))
-  print(("  from T(P + D/2)                            %6d"):format(solved_from(predicted, Th)))
-  print(("  from 2 T(P + D/2) - T(P)                   %6d"):format(solved_from(predicted, with_before(Th, T0))))
-  print(("  from T(P + D), its own solution            %6d"):format(solved_from(predicted, T1)))
-  st.first_starts = earlier
+  print(("  from T(P), the loop's start                %6d"):format(loops.products))
+  print(("  from T(P + D/2)                            %6d"):format(solved_from(predicted, at_mid.starts)))
+  print(("  from T(P + D), its own solution            %6d"):format(solved_from(predicted, at_end.starts)))
   st = loop.step(st, cases, o)
 end

@@ -202,15 +202,14 @@ SweepPlan read_sweep_plan(OptionReader& r) {
 
 namespace {
 
-// starts.contact = {start or false, ...} (or starts.contact_before): per case, a wrc.ContactStart (a sweep result's
-// contact_start) or none.
-std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReader& s, std::size_t cases, const char* key,
-                                                                     const char* doc) {
+// starts.contact = {start or false, ...}: per case, a wrc.ContactStart (a sweep result's contact_start) or none.
+std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReader& s, std::size_t cases) {
   std::vector<std::shared_ptr<const ContactStart>> out;
-  const OptionValue* v = s.value(key, "array", {"-", doc});
+  const OptionValue* v = s.value("contact", "array", {"-", "per case: the contact_start of a sweep (contact_starts = "
+                                 "true) whose pressures and tractions start its solves, or false: none"});
   if (!v || s.documenting()) return out;
   if (v->type != OptionValue::Type::array || v->array.size() != cases)
-    fail("{}: starts.{} must be an array of {} entries (one per start), got a {} of {}", s.context(), key, cases,
+    fail("{}: starts.contact must be an array of {} entries (one per start), got a {} of {}", s.context(), cases,
          v->type_name(), v->array.size());
   for (std::size_t k = 0; k < cases; ++k) {
     const OptionValue& e = v->array[k];
@@ -219,7 +218,7 @@ std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReade
     } else if (e.type == OptionValue::Type::object && e.string == ContactStart::kTypeName) {
       out.push_back(std::static_pointer_cast<const ContactStart>(e.object));
     } else {
-      fail("{}: starts.{}[{}] must be a {} or false, got a {}", s.context(), key, k + 1, ContactStart::kTypeName,
+      fail("{}: starts.contact[{}] must be a {} or false, got a {}", s.context(), k + 1, ContactStart::kTypeName,
            e.type_name());
     }
   }
@@ -230,16 +229,11 @@ std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReade
 // (SweepOptions::starts, contact_starts).
 void read_sweep_starts(OptionReader& r, SweepOptions& o) {
   auto s = r.table("starts", {"-", "per case of the plan (yaw major, then y): {z = {m, ...}, roll = {rad, ...}, "
-                                   "contact = {...}, contact_before = {...}} tried first; NaN in both z and roll: none"});
+                                   "contact = {...}} tried first; NaN in both z and roll: none"});
   if (!s) return;
   const auto z = s->numbers("z", {"m", "heights of the wheelset centre to start from"}, false);
   const auto roll = s->numbers("roll", {"rad", "rolls to start from"}, false);
-  const std::size_t cases = z ? z->size() : 0;
-  auto contact = read_contact_starts(*s, cases, "contact", "per case: the contact_start of a sweep (contact_starts = "
-                                     "true) whose pressures and tractions start its solves, or false: none");
-  auto before = read_contact_starts(*s, cases, "contact_before", "per case with a contact start: the same case's "
-                                    "contact_start a step before that one, with which its tractions are extrapolated "
-                                    "linearly (2 p_contact - p_before), or false: none");
+  auto contact = read_contact_starts(*s, z ? z->size() : 0);
   s->finish();
   if (s->documenting()) return;
   if (!z || !roll || z->size() != roll->size())
@@ -252,7 +246,6 @@ void read_sweep_starts(OptionReader& r, SweepOptions& o) {
     o.starts.push_back(std::isnan(zk) ? std::nullopt : std::optional<Start>(Start{zk, rk, std::nullopt, false}));
   }
   o.contact_starts = std::move(contact);
-  o.contact_before = std::move(before);
 }
 
 }  // namespace

@@ -34,11 +34,6 @@ void add_chain(std::vector<SweepChunk>& chunks, const std::vector<int>& report, 
   }
 }
 
-// Case c's entry of per-case contact starts (SweepOptions::contact_starts, contact_before), or none.
-const ContactStart* start_of(const std::vector<std::shared_ptr<const ContactStart>>& starts, int c) {
-  return starts.empty() ? nullptr : starts[static_cast<std::size_t>(c)].get();
-}
-
 // A converged case of a continuation chain.
 struct ChainPoint {
   double y, z, roll;
@@ -111,14 +106,12 @@ class SweepRun {
       ContactRequest req;
       const bool rolling = opt_.rolling.has_value() && reported;
       req.keep_grids = (opt_.keep_grids || rolling) && reported;  // the tangential step needs the pressure
-      const ContactStart* given = start_of(opt_.contact_starts, c);
+      const ContactStart* given = opt_.contact_starts.empty() ? nullptr : opt_.contact_starts[static_cast<std::size_t>(c)].get();
       if (given) given->adopt_normal(ws);
       e = solve_equilibrium(model_, {sc.y, sc.yaw, opt_.Q}, ws, opt_.equilibrium, starts, req);
       ok = e.converged;
       if (ok && rolling) {  // creep forces at the (frictionless) equilibrium's pose
         if (given) given->adopt_tangential(ws);
-        const ContactStart* before = given ? start_of(opt_.contact_before, c) : nullptr;
-        if (before) ws.tangential_before = before->tangential;  // the tractions' start extrapolated with it
         add_rolling(model_, e.contact, *opt_.rolling, ws);
         if (!opt_.keep_grids) drop_grids(e.contact, opt_.keep_rows);  // rows: a wear loop's input, a hundredth of the numbers
       }
@@ -183,9 +176,6 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
   if (!opt.contact_starts.empty() && opt.contact_starts.size() != plan.cases.size())
     fail("sweep: starts has {} contact entries; the plan has {} cases (one per y and yaw)", opt.contact_starts.size(),
          plan.cases.size());
-  if (!opt.contact_before.empty() && opt.contact_before.size() != plan.cases.size())
-    fail("sweep: starts has {} contact_before entries; the plan has {} cases (one per y and yaw)",
-         opt.contact_before.size(), plan.cases.size());
   for (std::size_t k = 0; k < opt.starts.size(); ++k)
     if (opt.starts[k] && (!std::isfinite(opt.starts[k]->z) || !std::isfinite(opt.starts[k]->roll)))
       fail("sweep: starts of case {}: z = {} m, roll = {} rad must be finite", k + 1, opt.starts[k]->z, opt.starts[k]->roll);

@@ -66,10 +66,6 @@ struct SweepOptions {
   // solutions the case's solves start from (e.g. its own on profiles worn a little less) instead of the chain's
   // previous case's. A start changes a result only within the solvers' tolerances.
   std::vector<std::shared_ptr<const ContactStart>> contact_starts;
-  // Per case (empty, or null entries: none; with contact_starts): the same case's ContactStart one step earlier still
-  // (e.g. on profiles worn a step less than contact_starts'), whose exact tangential solution extrapolates the start's
-  // tractions linearly, 2 p_start - p_before, where both were in contact (ContactWorkspace::tangential_before).
-  std::vector<std::shared_ptr<const ContactStart>> contact_before;
   // Keep each converged case's ContactStart (SweepResult::contact_starts), to start a later sweep's.
   bool keep_starts = false;
   // Why the sweep must run on the calling thread alone ("": it need not), e.g. a strategy bound to one Lua state.
