@@ -144,6 +144,9 @@ void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double 
   std::vector<double> t[3];
   int evaluations[3] = {0, 0, 0}, failed[3] = {0, 0, 0};
   double creep_iterations = 0, creep_linear = 0, creep_products = 0;
+  // The results summed over the steps, to compare builds: the height and the wheel's force (creep forces included).
+  double sum_z[3] = {0, 0, 0};
+  Eigen::Vector3d sum_force[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   for (int k = 0; k < steps; ++k) {
     const double w = 2 * std::numbers::pi * 1.5, time = k * 1e-3, A = 5e-3;
     const double y = A * std::sin(w * time), vy = A * w * std::cos(w * time), yaw = -vy / V;
@@ -161,6 +164,8 @@ void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double 
       t[v].push_back(thread_cpu() - c0);
       evaluations[v] += r.iterations;
       failed[v] += !r.converged;
+      sum_z[v] += r.z;
+      sum_force[v] += r.wheel.force;
       if (v == 2)
         for (const auto& pc : r.wheel.patches)
           if (pc.rolling) {
@@ -175,6 +180,9 @@ void rolling_steps_table(const std::shared_ptr<const wrc::Wheelset>& ws, double 
   for (int v = 0; v < variants; ++v)
     fmt::print("  {:<12}: {:7.3f} ms per step ({:.2f}x the frictionless), {:.2f} evaluations per step, {} failed\n",
                names[v], 1e3 * median(t[v]), median(t[v]) / base, double(evaluations[v]) / steps, failed[v]);
+  for (int v = 0; v < variants; ++v)
+    fmt::print("  {:<12}: summed over the steps z {:.17g} m, force ({:.17g}, {:.17g}, {:.17g}) N\n", names[v],
+               sum_z[v], sum_force[v].x(), sum_force[v].y(), sum_force[v].z());
   for (int v = 0; v < variants; ++v)
     print_times(fmt::format("{}, per evaluation (normal part)", names[v]).c_str(), traj[static_cast<std::size_t>(v)].workspace().times,
                 traj[static_cast<std::size_t>(v)].workspace().times.evaluations);

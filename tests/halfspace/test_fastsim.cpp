@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <string>
 
 using wrc::test::within_rel;
 using namespace wrc::halfspace;
@@ -97,6 +98,92 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
   for (int k = 0; k < g.size(); ++k) square[k] -= disc[k];
   pb.pressure = square;
   CHECK(fd + solve_fastsim(kSteel, pb).fx == within_rel(s.fx, 1e-12));
+}
+
+TEST_CASE("FASTSIM with the regions given: their ellipses and labels are the layers it marches") {
+  // The half-disc and the square above, their ellipses counted here, passed with the problem (in the reverse of
+  // equivalent_ellipses' order, the labels to match): the closed-form strip sums with each given ellipse's L1, also
+  // for an ellipse that is not the region's own (the square's given twice as long: L1 grows, its share falls).
+  const double e = 0.1e-3, R = 3e-3;
+  Grid g = Grid::square(120, 90, e, 1e-3, 0);
+  std::vector<double> p(g.size(), 0.0);
+  std::vector<int> label(g.size(), -1);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double x = g.x(i), y = g.y(j);
+      const bool disc = x > 0 && x * x + y * y < R * R, square = x > -5e-3 && x < -3e-3 && std::abs(y) < 1e-3;
+      if (disc || square) p[g.index(i, j)] = 5e8, label[g.index(i, j)] = disc ? 1 : 0;
+    }
+  std::vector<EquivalentEllipse> regions(2);
+  double strips[2] = {0, 0};
+  for (int region = 0; region < 2; ++region) {
+    double xmin = 1, xmax = -1, ymin = 1, ymax = -1, count = 0;
+    for (int j = 0; j < g.ny; ++j) {
+      int len = 0;
+      for (int i = 0; i < g.nx; ++i) {
+        if (label[g.index(i, j)] != region) continue;
+        ++len;
+        xmin = std::min(xmin, g.x(i)), xmax = std::max(xmax, g.x(i));
+        ymin = std::min(ymin, g.y(j)), ymax = std::max(ymax, g.y(j));
+        count += 1;
+      }
+      strips[region] += 0.5 * (len * e) * (len * e) * e;
+    }
+    const double aspect = (xmax - xmin + e) / (ymax - ymin + e), area = count * e * e;
+    regions[region] = {std::sqrt(area * aspect / std::numbers::pi), std::sqrt(area / (std::numbers::pi * aspect)),
+                       count * e * e * 5e8};
+  }
+  TangentialProblem pb;
+  pb.grid = g;
+  pb.pressure = p;
+  pb.creepages = {1e-8, 0, 0};
+  pb.friction = Friction::coulomb(0.3);
+  pb.regions = regions;
+  pb.region_label = label;
+  const auto expected = [&] {
+    double f = 0;
+    for (int r = 0; r < 2; ++r) f += -1e-8 * strips[r] / kalker_flexibilities(regions[r].a, regions[r].b, kSteel).x;
+    return f;
+  };
+  const TangentialSolution given = solve_fastsim(kSteel, pb);
+  CHECK(given.fx == within_rel(expected(), 1e-9));
+  // found by FASTSIM itself: the same ellipses (uniform pressure: no edge weights), the same traction everywhere
+  pb.regions = {}, pb.region_label = {};
+  const TangentialSolution found = solve_fastsim(kSteel, pb);
+  CHECK(found.fx == within_rel(expected(), 1e-9));
+  for (int k = 0; k < g.size(); ++k) CHECK(given.px[k] == within_rel(found.px[k], 1e-12));
+  regions[0].a *= 2, regions[0].b /= 2;  // the square's area, twice its length
+  pb.regions = regions, pb.region_label = label;
+  const double longer = solve_fastsim(kSteel, pb).fx;
+  CHECK(longer == within_rel(expected(), 1e-9));
+  CHECK(std::abs(longer) < std::abs(given.fx));
+  // refused: a contact element naming no region, labels without regions or of the wrong size
+  label[g.index(60, 45)] = 2;
+  CHECK(p[g.index(60, 45)] > 0);
+  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb), doctest::Contains("region label 2"), wrc::Error);
+  pb.regions = {};
+  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb), doctest::Contains("both or neither"), wrc::Error);
+  pb.regions = regions, pb.region_label = std::span<const int>(label).first(label.size() - 1);
+  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb), doctest::Contains("both or neither"), wrc::Error);
+}
+
+TEST_CASE("FASTSIM checking the sizes alone: a rigid slip that is not finite still throws, naming the element") {
+  const wrc::test::HertzPatch h = hertz_patch(4e-3, 4e-3, 1e9, 12);
+  TangentialProblem pb = rolling_problem(h, {1e-3, 0, 0}, 0.3);
+  std::vector<double> ex(h.pressure.size(), 0.0), ey = ex;
+  pb.extra_x = ex, pb.extra_y = ey;
+  const TangentialSolution all = solve_fastsim(kSteel, pb), sizes = solve_fastsim(kSteel, pb, ProblemCheck::sizes);
+  CHECK(sizes.fx == all.fx);
+  const auto k = static_cast<std::size_t>(h.grid.index(h.grid.nx / 2, h.grid.ny / 2));
+  CHECK(h.pressure[k] > 0);
+  ey[k] = NAN;
+  const std::string named = "not finite at element " + std::to_string(k);
+  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb, ProblemCheck::sizes), doctest::Contains(named.c_str()), wrc::Error);
+  ey[k] = 0;
+  ex.pop_back();  // sizes are still checked
+  pb.extra_x = ex;
+  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb, ProblemCheck::sizes), doctest::Contains("extra rigid slip"),
+                       wrc::Error);
 }
 
 TEST_CASE("FASTSIM in partial slip: every slipping element's traction opposes its slip and sits on the bound") {

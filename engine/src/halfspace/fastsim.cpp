@@ -32,14 +32,39 @@
 namespace wrc::halfspace {
 namespace {
 
-// The flexibilities of each 8-connected region of the contact (p > 0) from its equivalent ellipse (ellipse.hpp);
-// `label` gets the region of every element (-1 outside).
-std::vector<Flexibilities> region_flexibilities(const Material& m, const Grid& g, std::span<const double> p,
-                                                std::vector<int>& label) {
-  std::vector<Flexibilities> L;
-  for (const EquivalentEllipse& e : equivalent_ellipses(g, p, label)) L.push_back(kalker_flexibilities(e.a, e.b, m));
-  return L;
-}
+// The contact regions (8-connected, p > 0) of the problem's pressure with their equivalent ellipses (ellipse.hpp), and
+// each element's region: the problem's when it brings them (found with the pressure's other results), else found here.
+class Regions {
+ public:
+  explicit Regions(const TangentialProblem& pb) {
+    if (!pb.regions.empty()) {
+      ellipses_ = pb.regions, label_ = pb.region_label;
+      return;
+    }
+    found_ = equivalent_ellipses(pb.grid, pb.pressure, found_label_);
+    ellipses_ = found_, label_ = found_label_;
+  }
+  Regions(const Regions&) = delete;
+  Regions& operator=(const Regions&) = delete;
+  std::span<const EquivalentEllipse> ellipses() const { return ellipses_; }
+  // The region of contact element k (an index into ellipses()); throws on a given label that names none.
+  std::size_t of(std::size_t k) const {
+    const auto r = static_cast<std::size_t>(label_[k]);
+    if (r >= ellipses_.size()) [[unlikely]]
+      bad_label(k);
+    return r;
+  }
+
+ private:
+  [[noreturn, gnu::cold, gnu::noinline]] void bad_label(std::size_t k) const {
+    fail("FASTSIM: contact element {} has region label {}, expected 0 .. {} (the regions given with the problem)", k,
+         label_[k], ellipses_.size() - 1);
+  }
+  std::vector<EquivalentEllipse> found_;
+  std::vector<int> found_label_;
+  std::span<const EquivalentEllipse> ellipses_;
+  std::span<const int> label_;
+};
 
 // The traction of magnitude g nearest to q in the norm (p - q)' diag(lx, ly) (p - q) (|q| > g): p_i = l_i q_i / (l_i +
 // lambda) with lambda > 0 from |p| = g. Newton on 1 / |p(lambda)| - 1 / g, which is linear in lambda for an isotropic
@@ -100,14 +125,15 @@ struct FallingSlip {
 
 }  // namespace
 
-TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& pb) {
+TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& pb, ProblemCheck check) {
   TangentialSolution out;
-  solve_fastsim(material, pb, out);
+  solve_fastsim(material, pb, out, check);
   return out;
 }
 
-void solve_fastsim(const Material& material, const TangentialProblem& pb, TangentialSolution& out) {
-  validate(pb, "solve_fastsim");
+void solve_fastsim(const Material& material, const TangentialProblem& pb, TangentialSolution& out,
+                   ProblemCheck check) {
+  validate(pb, "solve_fastsim", check);
   validate(material, "solve_fastsim");
   const Grid& g = pb.grid;
   const auto n = static_cast<std::size_t>(g.size());
@@ -115,14 +141,16 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
                            std::move(out.state)};
   for (auto* v : {&out.px, &out.py, &out.sx, &out.sy}) v->resize(n);  // every element is written below
   out.state.resize(n);
-  std::vector<int> label;
-  // Per region: the layer's flexibilities and their inverses, and the spin scaled per axis.
+  const Regions regions(pb);
+  // Per region: the layer's flexibilities (its equivalent ellipse's) and their inverses, and the spin scaled per axis.
   struct Layer {
     double lx, ly, inv_lx, inv_ly, spin_x, spin_y;
   };
   std::vector<Layer> layers;
-  for (const Flexibilities& L : region_flexibilities(material, g, pb.pressure, label))
+  for (const EquivalentEllipse& e : regions.ellipses()) {
+    const Flexibilities L = kalker_flexibilities(e.a, e.b, material);
     layers.push_back({L.x, L.y, 1 / L.x, 1 / L.y, pb.creepages.phi * L.x / L.spin, pb.creepages.phi * L.y / L.spin});
+  }
   const Creepages& c = pb.creepages;
   const double mus = pb.friction.static_coefficient, muk = pb.friction.kinetic_coefficient, dA = g.element_area();
   const double half = 0.5 * g.dx, inv_dx = 1 / g.dx;
@@ -148,7 +176,7 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
         st = Strip{};
         return;
       }
-      const Layer& L = layers[static_cast<std::size_t>(label[k])];
+      const Layer& L = layers[regions.of(k)];
       const double y = g.y(j) - pb.ref_y;
       // The layer's rigid slip: translational creepages and the extra slip as they are, the spin scaled per axis.
       const double wx = c.xi - L.spin_x * y + (extra ? pb.extra_x[k] : 0.0);
@@ -210,6 +238,10 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
       mz += x * py - y * px;
     }
   }
+  if (!(std::isfinite(fx) && std::isfinite(fy) && std::isfinite(mz) && std::isfinite(power))) [[unlikely]] {
+    validate(pb, "solve_fastsim");  // (with ProblemCheck::sizes the grids' values were not checked: the culprit named)
+    fail("solve_fastsim: the tangential forces are not finite (Fx = {}, Fy = {}, Mz = {})", fx * dA, fy * dA, mz * dA);
+  }
   out.fx = fx * dA;
   out.fy = fy * dA;
   out.mz = mz * dA;
@@ -254,10 +286,9 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
   detail::check_linearisation(pb, sol, changes, "linearise_fastsim");
   validate(material, "linearise_fastsim");
   const Grid& g = pb.grid;
-  std::vector<int> label;
-  const std::vector<EquivalentEllipse> regions = equivalent_ellipses(g, pb.pressure, label);
+  const Regions regions(pb);
   std::vector<Flexibilities> flex;
-  for (const EquivalentEllipse& e : regions) flex.push_back(kalker_flexibilities(e.a, e.b, material));
+  for (const EquivalentEllipse& e : regions.ellipses()) flex.push_back(kalker_flexibilities(e.a, e.b, material));
   const Creepages& c = pb.creepages;
   const double half = 0.5 * g.dx, muk = pb.friction.kinetic_coefficient;
   std::vector<TangentialDerivative> out;
@@ -271,7 +302,8 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
     std::vector<Flexibilities> dflex(flex.size(), Flexibilities{0, 0, 0});
     if (!ch.pressure.empty()) {
       const std::vector<EllipseChange> de = ellipse_changes(g, pb.pressure, ch.pressure);
-      for (std::size_t r = 0; r < flex.size(); ++r) dflex[r] = flexibility_change(regions[r], de[r], material);
+      for (std::size_t r = 0; r < flex.size(); ++r)
+        dflex[r] = flexibility_change(regions.ellipses()[r], de[r], material);
     }
     for (int j = 0; j < g.ny; ++j) {
       const double y = g.y(j) - pb.ref_y;
@@ -284,7 +316,7 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
           ux = uy = wxu = wyu = dux = duy = dwxu = dwyu = 0;
           continue;
         }
-        const auto r = static_cast<std::size_t>(label[k]);
+        const std::size_t r = regions.of(k);
         const Flexibilities &L = flex[r], &dL = dflex[r];
         const double x = g.x(i) - pb.ref_x, sx = L.x / L.spin, sy = L.y / L.spin;
         const double dsx = (dL.x - sx * dL.spin) / L.spin, dsy = (dL.y - sy * dL.spin) / L.spin;

@@ -9,13 +9,14 @@
 
 namespace wrc::halfspace {
 
-void validate(const TangentialProblem& pb, std::string_view context) {
+void validate(const TangentialProblem& pb, std::string_view context, ProblemCheck check) {
   validate(pb.grid, context);
   const auto n = static_cast<std::size_t>(pb.grid.size());
   if (pb.pressure.size() != n)
     fail("{}: pressure has {} values for a {} x {} grid ({} elements)", context, pb.pressure.size(), pb.grid.nx,
          pb.grid.ny, n);
-  for (std::size_t k = 0; k < n; ++k)
+  const bool values = check == ProblemCheck::values;
+  for (std::size_t k = 0; values && k < n; ++k)
     if (!std::isfinite(pb.pressure[k]) || pb.pressure[k] < 0)
       fail("{}: pressure at element {} (i = {}, j = {}) is {} Pa, expected a finite value >= 0", context, k,
            k % pb.grid.nx, k / pb.grid.nx, pb.pressure[k]);
@@ -27,7 +28,7 @@ void validate(const TangentialProblem& pb, std::string_view context) {
   if (pb.extra_x.size() != pb.extra_y.size() || (!pb.extra_x.empty() && pb.extra_x.size() != n))
     fail("{}: the extra rigid slip has {} and {} values for {} elements", context, pb.extra_x.size(),
          pb.extra_y.size(), n);
-  for (std::size_t k = 0; k < pb.extra_x.size(); ++k)
+  for (std::size_t k = 0; values && k < pb.extra_x.size(); ++k)
     if (!std::isfinite(pb.extra_x[k]) || !std::isfinite(pb.extra_y[k]))
       fail("{}: the extra rigid slip is not finite at element {}", context, k);
   validate(pb.friction, context);
@@ -42,6 +43,9 @@ void validate(const TangentialProblem& pb, std::string_view context) {
            k % pb.grid.nx, k / pb.grid.nx, pb.friction_scale[k]);
   if (pb.direction != 1 && pb.direction != -1)
     fail("{}: rolling direction {} must be +1 (toward +x) or -1", context, pb.direction);
+  if (pb.regions.empty() != pb.region_label.empty() || (!pb.region_label.empty() && pb.region_label.size() != n))
+    fail("{}: {} contact regions with {} region labels for {} elements (both or neither)", context,
+         pb.regions.size(), pb.region_label.size(), n);
 }
 
 void rigid_slip(const TangentialProblem& pb, std::vector<double>& wx, std::vector<double>& wy) {

@@ -118,16 +118,19 @@ bool turn_rows(const AreaSolve& how, double tolerance, AreaLayout& l, PatchConta
 namespace {
 
 // The contact regions of a solution carrying >= 0.1 % of its force, and FASTSIM's ellipse of the one carrying the
-// most (halfspace/ellipse.hpp): one pass over the contact.
+// most (halfspace/ellipse.hpp): one pass over the contact. `all`, `label`: every region's ellipse and each element's
+// region, as equivalent_ellipses gives them.
 struct Regions {
   int count = 0;
   std::optional<halfspace::EquivalentEllipse> largest;
+  std::vector<halfspace::EquivalentEllipse> all;
+  std::vector<int> label;
 };
 Regions find_regions(const halfspace::NormalSolution& sol) {
   Regions r;
   if (sol.pressure.empty() || !(sol.force > 0)) return r;
-  std::vector<int> label;
-  for (const halfspace::EquivalentEllipse& e : halfspace::equivalent_ellipses(sol.grid, sol.pressure, label)) {
+  r.all = halfspace::equivalent_ellipses(sol.grid, sol.pressure, r.label);
+  for (const halfspace::EquivalentEllipse& e : r.all) {
     r.count += e.force >= 1e-3 * sol.force;
     if (!r.largest || e.force > r.largest->force) r.largest = e;
   }
@@ -174,8 +177,10 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
     copy_located(in, pc);
     surface.resultant(f, pc);
     pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
-    const Regions regions = find_regions(pc.solution);
+    Regions regions = find_regions(pc.solution);
     pc.regions = regions.count;
+    pc.region_ellipses = std::move(regions.all);
+    pc.region_label = std::move(regions.label);
     const double wheel_y = f.to_wheelset(pc.point).y();
     pc.rolling_radius = wheel_surface_at(in.model.geometry().side[in.side].wheel, wheel_y).radius;
     add_ellipses(in.model, wheel_y, pc);

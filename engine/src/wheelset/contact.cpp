@@ -352,6 +352,8 @@ void drop_grids(ContactResult& result, bool keep_rows) {
     for (PatchContact& pc : wc.patches) {
       pc.h = {};
       pc.h_gain = {};
+      pc.region_ellipses = {};
+      pc.region_label = {};
       pc.solution.pressure = {};
       pc.solution.gap = {};
       pc.solution.displacement = {};  // moved to the workspace already; kept empty whatever the path

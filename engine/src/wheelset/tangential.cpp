@@ -271,6 +271,7 @@ halfspace::TangentialProblem area_problem(const PatchContact& pc, const AreaSlip
   pb.direction = slip.V > 0 ? 1 : -1;
   pb.friction = rq.friction;
   pb.speed = std::abs(slip.V);
+  if (!pc.region_label.empty()) pb.regions = pc.region_ellipses, pb.region_label = pc.region_label;  // found with p
   return pb;
 }
 
@@ -372,7 +373,8 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   r.V = slip.V;
   r.creepage = slip.creepages;
   if (rq.method == RollingMethod::fastsim) {
-    r.solution = halfspace::solve_fastsim(model.material(), pb);
+    // (the pressure a normal solution's, the extra slip from checked kinematics on a checked pose: their sizes alone)
+    r.solution = halfspace::solve_fastsim(model.material(), pb, halfspace::ProblemCheck::sizes);
   } else {
     halfspace::TangentialOptions opt;
     opt.tolerance = rq.tolerance;

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "wrc/halfspace/creep.hpp"
+#include "wrc/halfspace/ellipse.hpp"
 #include "wrc/halfspace/friction.hpp"
 #include "wrc/halfspace/grid.hpp"
 #include "wrc/halfspace/shear.hpp"
@@ -49,6 +50,11 @@ struct TangentialProblem {
   // Optional, per element (> 0): the factor of the friction law there (every coefficient of the law scaled by it),
   // e.g. friction varying across the rail's profile. Empty: 1.
   std::span<const double> friction_scale = {};
+  // Optional, FASTSIM only: the pressure's contact regions as equivalent_ellipses gives them (ellipse.hpp) and each
+  // element's region (-1 outside), when the caller has found them on this pressure (the wheelset's areas do, for
+  // their results); both or neither. Empty: FASTSIM finds them.
+  std::span<const EquivalentEllipse> regions = {};
+  std::span<const int> region_label = {};
 };
 
 struct TangentialOptions {
@@ -156,6 +162,12 @@ class RollingSolver {
   ShearCache cache_;
 };
 
+// How much of a problem FASTSIM checks (validate): every value (the default), or the pressure's and the extra rigid
+// slip's sizes alone, for grids the engine has just made from checked inputs (the wheelset's areas: a normal
+// solution's pressure, the rigid slip of checked kinematics on a checked pose). A result that is not finite then
+// throws, after the full check has named an input if one is at fault.
+enum class ProblemCheck { values, sizes };
+
 // FASTSIM (Kalker, Vehicle System Dynamics 11, 1982) on the same grid and pressure, strip by strip: every run of
 // contact elements along a grid row starts from zero traction at its leading edge and integrates the simplified
 // theory's u = L p toward the trailing edge, with the traction bound mu p_n of the actual pressure, so that it
@@ -165,9 +177,11 @@ class RollingSolver {
 // Fx, Fy for any creepages; in slip the predicted traction is projected onto the bound in the layer's energy norm,
 // so that the traction opposes the slip of that layer (for L1 = L2 Kalker's radial scaling) and full sliding gives
 // |F| = mu N opposite to the translational slip. Mz is not matched to C33 (a known limit of the simplified theory).
-TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& problem);
+TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& problem,
+                                 ProblemCheck check = ProblemCheck::values);
 // The same into `solution`, reusing its grids' storage (a dynamics code calling it at every step).
-void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution);
+void solve_fastsim(const Material& material, const TangentialProblem& problem, TangentialSolution& solution,
+                   ProblemCheck check = ProblemCheck::values);
 
 // FASTSIM's derivative for each change: the strip march differentiated with each element's state (adhesion, slip)
 // held, the slip elements' projection onto the bound differentiated exactly, the regions' flexibilities changing with
@@ -180,8 +194,9 @@ std::vector<TangentialDerivative> linearise_fastsim(const Material& material, co
 // Throws wrc::Error naming `context` on a bad problem: grid, sizes, non-finite or negative pressure, non-finite
 // creepages or rigid slip, friction coefficients outside [kFrictionMin, kFrictionMax] or kinetic > static, a bad
 // falling law (friction.hpp), a slip-dependent law without a speed > 0, a friction scale of the wrong size or not
-// > 0, direction not +-1.
-void validate(const TangentialProblem& problem, std::string_view context);
+// > 0, direction not +-1, regions without labels or labels of the wrong size. ProblemCheck::sizes: the pressure's and
+// the extra slip's values unchecked.
+void validate(const TangentialProblem& problem, std::string_view context, ProblemCheck check = ProblemCheck::values);
 
 // The rigid slip per |V| of the problem at every element (x and y components).
 void rigid_slip(const TangentialProblem& problem, std::vector<double>& wx, std::vector<double>& wy);

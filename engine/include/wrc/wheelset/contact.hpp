@@ -140,6 +140,11 @@ struct PatchContact {
   // force; Hertz's ellipse for normal_force and the curvatures at the centre of pressure (the wheel's rolling radius
   // and profile curvature, the rail's profile curvature) with Kalker's coefficients for it, when both are convex.
   halfspace::ContactEllipses ellipses;
+  // Every contact region's equivalent ellipse (halfspace::equivalent_ellipses of the pressure; `regions` counts those
+  // with >= 0.1 % of the force) and each element's region (-1 outside): FASTSIM's layers, found once with `regions`
+  // (dropped with the grids).
+  std::vector<halfspace::EquivalentEllipse> region_ellipses;
+  std::vector<int> region_label;
   Sensitivity sensitivity = Sensitivity::Zero();  // d(force, moment)/d(z, roll) of the normal problem, when asked for
   std::optional<PatchRolling> rolling;  // the tangential solution, when the call gave kinematics or creepages
   double nu = 0;                        // Poisson's ratio of the bodies (the model's material): what the stresses
