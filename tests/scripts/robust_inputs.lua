@@ -8,6 +8,8 @@
 --    the spline's own points (p:resample along the arc); the wheelset is refused naming the spline, and the
 --    polyline through the same points (smooth = false) solves that equilibrium.
 -- 2. p:resample with a step as long as the arc returned 2 points, a profile no later step accepts.
+-- 3. Points at +-1.7e308 m were a profile, whose arc length (their distance, computed here) overflows to inf; a
+--    shift of 1e300 m made every point's z the same number. Points are bounded (1 km), however they are given.
 local check = require "wrc.check"
 local tmp = (arg.tmp or ".") .. "/robust_inputs_"
 wrc.fs.mkdir(arg.tmp or ".")
@@ -60,4 +62,18 @@ check.fails(function() return s1002:resample{step = 1.01 * width, along = "y"} e
             "a step beyond the width")
 check.ok(#s1002:resample{step = 0.99 * arc} == 3, "a step just shorter than the arc gives 3 points")
 check.ok(#s1002:resample{step = 0.99 * width, along = "y"} == 3, "a step just shorter than the width gives 3 points")
+
+-- ---- 3. coordinates bounded ----
+local far = 1.7e308
+check.ok(far - (-far) == math.huge, "the distance between the points overflows")
+check.fails(function() return wrc.profile.points{kind = "wheel", y = {-far, 0, far}, z = {0, 0, 0}} end,
+            "are the coordinates in metres", "points at +-1.7e308 m")
+check.fails(function() return wrc.profile.points{kind = "wheel", y = {-0.01, 0, 1001}, z = {0, 0, 0}} end,
+            "more than 1000 m", "a point 1001 m out")
+check.ok(#wrc.profile.points{kind = "wheel", y = {-0.01, 0, 999}, z = {0, 0, 0}} == 3, "999 m is accepted")
+local cone = write(tmp .. "cone.txt", "-70 1.75\n0 0\n60 -1.5\n")
+check.fails(function() return wrc.profile.load(cone, {kind = "wheel", shift = {z = 1e300}}) end,
+            "are the coordinates in metres", "a shift of 1e300 m")
+check.fails(function() return wrc.profile.load(cone, {kind = "wheel", units = 1e300}) end,
+            "are the coordinates in metres", "units of 1e300 m")
 print("robust_inputs: ok")

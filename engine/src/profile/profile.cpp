@@ -39,6 +39,9 @@ Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double
   for (std::size_t i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i]) || !std::isfinite(z[i]))
       fail("{}: coordinate is not a finite number (y = {}, z = {})", where(source, lines, i), y[i], z[i]);
+    if (std::max(std::abs(y[i]), std::abs(z[i])) > kMaxProfileCoordinate)
+      fail("{}: the point (y = {:.6g} m, z = {:.6g} m) lies more than {:g} m from the origin, no wheel or rail profile "
+           "does: are the coordinates in metres?", where(source, lines, i), y[i], z[i], kMaxProfileCoordinate);
   }
   // Drop consecutive duplicates, remembering the source line of each kept point.
   Profile p;
