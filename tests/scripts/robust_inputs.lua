@@ -10,6 +10,8 @@
 -- 2. p:resample with a step as long as the arc returned 2 points, a profile no later step accepts.
 -- 3. Points at +-1.7e308 m were a profile, whose arc length (their distance, computed here) overflows to inf; a
 --    shift of 1e300 m made every point's z the same number. Points are bounded (1 km), however they are given.
+-- 4. ws:conicity{yhat = 1} (an amplitude in mm given as metres) built its table first and failed there, naming a
+--    table row y[1] = -1.501 m the user never gave; the amplitude is checked as it is read.
 local check = require "wrc.check"
 local tmp = (arg.tmp or ".") .. "/robust_inputs_"
 wrc.fs.mkdir(arg.tmp or ".")
@@ -76,4 +78,8 @@ check.fails(function() return wrc.profile.load(cone, {kind = "wheel", shift = {z
             "are the coordinates in metres", "a shift of 1e300 m")
 check.fails(function() return wrc.profile.load(cone, {kind = "wheel", units = 1e300}) end,
             "are the coordinates in metres", "units of 1e300 m")
+
+-- ---- 4. an amplitude checked before the table is built ----
+err = check.fails(function() return ws:conicity{yhat = 1} end, "the amplitude yhat = 1 m", "yhat = 1 m")
+check.ok(not err:find("y[1]", 1, true), "the message names the amplitude, not a table row: " .. err)
 print("robust_inputs: ok")
