@@ -32,6 +32,9 @@ def test_nan_and_ranges(ws):
         ws.equilibrium(y=0, Q=1e5, on_failure="ignore")
     with pytest.raises(wrc.OptionError, match="finite"):
         ws.sweep(y=[0, float("nan")], Q=1e5)
+    # An int beyond a double's range is named with its key (the cast said "Unable to cast Python instance to C++ type").
+    with pytest.raises(wrc.OptionError, match=r"'Q': 1000.*beyond the range of a number"):
+        ws.equilibrium(y=0, Q=10**400)
 
 
 def test_wrong_python_types(ws, s1002):

@@ -209,6 +209,27 @@ void finish_wheel(WheelCones& w) {
   }
 }
 
+// The lateral positions y of a discretised profile placed on its side (ordered by increasing y) must not decrease:
+// the searches bisect them (a wheel whose y turned back sent them past its cones). A face within kVerticalRounding
+// of vertical rounds to vertical. A larger turn is a fold: from the cant, or from a spline through points with a
+// step or sharp corner (an interpolating cubic overshoots there by a fraction of the step, although the points are
+// monotone).
+void require_monotone(std::vector<double>& y, const Profile& p, int side, const char* what) {
+  for (std::size_t i = 1; i < y.size(); ++i) {
+    if (y[i] < y[i - 1] && y[i] > y[i - 1] - kVerticalRounding) y[i] = y[i - 1];  // a vertical face
+    if (!(y[i] >= y[i - 1])) {
+      const std::size_t k = side == kLeft ? i : y.size() - 1 - i;  // the point's index in the profile
+      fail("wrc.wheelset: the {} {} ({}) as discretised is not monotone in y: at y = {:.4f} mm, z = {:.4f} mm (profile "
+           "frame) it turns back by {:.4g} mm{}",
+           side_name(side), what, p.source, p.y[k] * 1e3, p.z[k] * 1e3, (y[i - 1] - y[i]) * 1e3,
+           p.spline ? fmt::format("; the profile's spline (smooth = {:g}) turns back there, as a cubic spline does "
+                                  "through a step or sharp corner: load it with smooth = false (the polyline through "
+                                  "its points) or a larger smoothing length", p.spline->smoothing)
+                    : std::string(what) == "rail" ? "; the cant turns one of its faces over" : "");
+    }
+  }
+}
+
 // The wheel profile placed in the wheelset frame, ordered by increasing y, closed by two points on the axle.
 WheelCones place_wheel(const Profile& p, const SidePlacement& pl, int side, const char* what) {
   const std::size_t n = p.size();
@@ -222,6 +243,7 @@ WheelCones place_wheel(const Profile& p, const SidePlacement& pl, int side, cons
       fail("wrc.wheelset: the {} {} ({}) point {} (s = {} m) has radius {} m; a wheel radius must be positive",
            side_name(side), what, p.source, i + 1, p.y[i], -q.y());
   }
+  require_monotone(y, p, side, what);
   WheelCones w;
   w.y.reserve(n + 2);
   w.z.reserve(n + 2);
@@ -246,12 +268,7 @@ RailLines place_rail(const Profile& p, const SidePlacement& pl, int side) {
     r.y[j] = q.x();
     r.z[j] = q.y();
   }
-  for (std::size_t i = 1; i < n; ++i) {
-    if (r.y[i] < r.y[i - 1] && r.y[i] > r.y[i - 1] - kVerticalRounding) r.y[i] = r.y[i - 1];  // a vertical face
-    if (r.y[i] < r.y[i - 1])
-      fail("wrc.wheelset: the {} rail ({}) is not monotone in y once canted (near point {})", side_name(side), p.source,
-           i + 1);
-  }
+  require_monotone(r.y, p, side, "rail");
   return r;
 }
 

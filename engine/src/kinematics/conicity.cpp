@@ -15,6 +15,12 @@ namespace {
 
 constexpr const char* kCtx = "wrc.conicity";
 
+// An amplitude of the lateral motion: positive, at most 50 mm (a flange's reach; beyond, the flange limits it).
+void check_amplitude(double a) {
+  if (!(a > 0) || !std::isfinite(a) || a > 0.05)
+    fail("{}: the amplitude yhat = {} m must be a positive number of metres (up to 0.05)", kCtx, a);
+}
+
 // 8-point Gauss-Legendre nodes and weights on [-1, 1].
 constexpr std::array<double, 8> kNodes{-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
                                         -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
@@ -278,8 +284,7 @@ ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOption
                          "(an infinite wavelength; EN 15302) for amplitudes up to {:.4f} mm",
                          t.flat_lo() * 1e3, t.flat_hi() * 1e3, flat_half * 1e3);
   for (double a : o.yhat) {
-    if (!(a > 0) || !std::isfinite(a) || a > 0.05)
-      fail("{}: the amplitude yhat = {} m must be a positive number of metres (up to 0.05)", kCtx, a);
+    check_amplitude(a);
     double lo = r.centre - a, hi = r.centre + a, tg = 0;
     if (a <= flat_half * (1 + 1e-12)) {
       // The wheelset moves freely inside the flat zone: Δr = 0 over the whole motion, every method gives 0.
@@ -307,6 +312,7 @@ ConicityOptions read_conicity_options(OptionReader& r, ConicityOptions o) {
   const auto yhat = r.numbers("yhat", {"m", "amplitude(s) of the lateral motion (required)"});
   if (!yhat && !r.documenting()) fail("{}: 'yhat' is required: an amplitude or an array of amplitudes (m)", r.context());
   if (yhat) o.yhat = *yhat;
+  for (double a : o.yhat) check_amplitude(a);  // before ws:conicity builds a table as wide as the largest
   const std::string m = r.choice("method", {"integral", "harmonic", "regression", "simple"},
                                  {"-", "how tan(gamma_e) is made of the Δr table (EN 15302)"}, to_string(o.method));
   o.method = m == "integral"   ? ConicityMethod::integral

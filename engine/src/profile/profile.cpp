@@ -39,6 +39,9 @@ Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double
   for (std::size_t i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i]) || !std::isfinite(z[i]))
       fail("{}: coordinate is not a finite number (y = {}, z = {})", where(source, lines, i), y[i], z[i]);
+    if (std::max(std::abs(y[i]), std::abs(z[i])) > kMaxProfileCoordinate)
+      fail("{}: the point (y = {:.6g} m, z = {:.6g} m) lies more than {:g} m from the origin, no wheel or rail profile "
+           "does: are the coordinates in metres?", where(source, lines, i), y[i], z[i], kMaxProfileCoordinate);
   }
   // Drop consecutive duplicates, remembering the source line of each kept point.
   Profile p;
@@ -114,6 +117,18 @@ Profile resampled_copy(const Profile& p, std::vector<double> y, std::vector<doub
   return r;
 }
 
+// The intervals of a resampling every `step` over `length` of arc (rounded up), checked before the points are made:
+// at most kMaxProfilePoints points, and at least 3, the fewest a profile has (a step as long as the arc gave 2,
+// which no later step accepts).
+std::size_t arc_intervals(double length, double step) {
+  const double intervals = std::max(1.0, std::ceil(length / step - 1e-9));
+  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, length));
+  if (intervals < 2)
+    fail("resample: step {:.6g} m over {:.6g} m of arc gives 2 points; a profile needs at least 3 (a step shorter "
+         "than the arc; is the step in metres?)", step, length);
+  return static_cast<std::size_t>(intervals);
+}
+
 // Points every `step` of arc along the profile's spline between its first and last points (end points kept).
 Profile resample_spline_arc(const Profile& p, double step) {
   const ProfileSpline& c = *p.spline;
@@ -136,9 +151,7 @@ Profile resample_spline_arc(const Profile& p, double step) {
       prev = q;
     }
   const double L = len.back();
-  const double intervals = std::max(1.0, std::ceil(L / step - 1e-9));
-  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, L));
-  const auto m = static_cast<std::size_t>(intervals);
+  const std::size_t m = arc_intervals(L, step);
   std::vector<double> y(m + 1), z(m + 1);
   std::size_t k = 0;
   for (std::size_t j = 0; j <= m; ++j) {
@@ -166,9 +179,7 @@ Profile resample_arc(const Profile& p, double step) {
   std::vector<double> s(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(p.y[i] - p.y[i - 1], p.z[i] - p.z[i - 1]);
   const double L = s.back();
-  const double intervals = std::max(1.0, std::ceil(L / step - 1e-9));
-  check_point_count(intervals + 1, fmt::format("resample: step {:.6g} m over {:.6g} m of arc", step, L));
-  const auto m = static_cast<std::size_t>(intervals);
+  const std::size_t m = arc_intervals(L, step);
   std::vector<double> y(m + 1), z(m + 1);
   std::size_t k = 0;
   for (std::size_t j = 0; j <= m; ++j) {
@@ -216,6 +227,9 @@ Profile resample_y(const Profile& p, double step) {
     y.push_back(y1);
     z.push_back(p.z.back());
   }
+  if (y.size() < 3)
+    fail("resample: step {:.6g} m over {:.6g} m of y gives {} points; a profile needs at least 3 (a step shorter "
+         "than its width; is the step in metres?)", step, y1 - y0, y.size());
   return resampled_copy(p, std::move(y), std::move(z),
                         fmt::format("resampled along {}y every {:.6g} m", p.spline ? "the spline in " : "", step));
 }

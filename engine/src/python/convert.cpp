@@ -24,6 +24,19 @@ const py::object& abc(const char* name) {
 
 bool is_instance(py::handle v, const py::object& cls) { return PyObject_IsInstance(v.ptr(), cls.ptr()) == 1; }
 
+// A Python real as a double; an int beyond a double's range (10**400) is named, where the cast said only "Unable to
+// cast Python instance to C++ type".
+double real_number(py::handle v, const std::string& context) {
+  const double x = PyFloat_AsDouble(v.ptr());
+  if (x == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    const std::string r = py::repr(v).cast<std::string>();
+    throw OptionFailure(fmt::format("{}: {} is beyond the range of a number (a double, up to about 1.8e308)", context,
+                                    r.size() <= 24 ? r : fmt::format("{}... ({} characters)", r.substr(0, 12), r.size())));
+  }
+  return x;
+}
+
 OptionValue array_option(py::handle value, const std::string& context, int depth) {
   py::array a = py::module_::import("numpy").attr("asarray")(value);
   if (a.ndim() != 1)
@@ -64,7 +77,7 @@ OptionValue to_option(py::handle v, const std::string& context, int depth) {
     if (py::array(py::reinterpret_borrow<py::array>(v)).ndim() == 0) return to_option(v.attr("item")(), context, depth);
     return array_option(v, context, depth);
   }
-  if (is_instance(v, abc("Real"))) return OptionValue::of(v.cast<double>());
+  if (is_instance(v, abc("Real"))) return OptionValue::of(real_number(v, context));
   if (is_instance(v, abc("Mapping"))) return OptionValue::of(mapping_options(v, context, depth + 1));
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::hasattr(v, "__array__")) {
     if (py::hasattr(v, "__array__")) return array_option(v, context, depth);  // a pandas Series

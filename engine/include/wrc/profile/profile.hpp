@@ -45,10 +45,16 @@ struct Profile {
 inline constexpr std::size_t kMaxProfilePoints = 1'000'000;
 void check_point_count(double n, std::string_view what);
 
+// The largest coordinate (m, either sign) of a profile's point. A wheel or rail profile spans a few dozen mm (a test
+// body or a scale model a few metres at most); a kilometre is a number in the wrong unit, and bounding the points
+// keeps every sum and square of them finite (points at +-1.7e308 m were accepted, and their arc length was inf).
+inline constexpr double kMaxProfileCoordinate = 1e3;
+
 // Points closer than this (m) to their predecessor are duplicates.
 inline constexpr double kDuplicateTolerance = 1e-9;
 
-// Builds a validated profile. Checks: at least 3 and at most kMaxProfilePoints points, all finite, consecutive duplicates dropped and
+// Builds a validated profile. Checks: at least 3 and at most kMaxProfilePoints points, all finite and within
+// +-kMaxProfileCoordinate, consecutive duplicates dropped and
 // counted, no fold-back: y must be monotone along the profile (vertical runs allowed, but a vertical run
 // must keep one z direction). A profile given in decreasing y is reversed (noted in `transforms`).
 // `lines` (optional, one per point) are source line numbers used in messages ("file:line: ...").
