@@ -12,6 +12,10 @@
 --    shift of 1e300 m made every point's z the same number. Points are bounded (1 km), however they are given.
 -- 4. ws:conicity{yhat = 1} (an amplitude in mm given as metres) built its table first and failed there, naming a
 --    table row y[1] = -1.501 m the user never gave; the amplitude is checked as it is read.
+-- 5. A wheel with a 2 mm hollow (a parabola over 50 mm of tread) at 10 kN, y = 3 mm, on 60E1 at 0.1 mm: continuation
+--    from y = 0 left a wheel lifted, where both residuals come from one wheel and Newton turned the wheelset about
+--    that contact the wrong way, 1-2 % down a step, until the 400 evaluations were spent before the rigid start was
+--    tried (no equilibrium). Checked by a contact evaluation at the pose found and by Newton from the rigid start.
 local check = require "wrc.check"
 local tmp = (arg.tmp or ".") .. "/robust_inputs_"
 wrc.fs.mkdir(arg.tmp or ".")
@@ -82,4 +86,24 @@ check.fails(function() return wrc.profile.load(cone, {kind = "wheel", units = 1e
 -- ---- 4. an amplitude checked before the table is built ----
 err = check.fails(function() return ws:conicity{yhat = 1} end, "the amplitude yhat = 1 m", "yhat = 1 m")
 check.ok(not err:find("y[1]", 1, true), "the message names the amplitude, not a table row: " .. err)
+
+-- ---- 5. an equilibrium reached past a lifted wheel ----
+local hy, hz = s1002:points()
+for i = 1, #hy do
+  local d = (hy[i] + 0.005) / 0.025
+  if math.abs(d) < 1 then hz[i] = hz[i] + 2e-3 * (1 - d * d) end
+end
+local hw = wrc.wheelset{wheel = wrc.profile.points{kind = "wheel", y = hy, z = hz},
+                        rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua", {step = 0.1e-3}), grid = 0.5e-3}
+local Q, yh = 10e3, 3e-3
+e = hw:equilibrium{y = yh, yaw = 0, Q = Q, on_failure = "return"}
+check.ok(e.converged, "the hollow wheel's equilibrium is found (" .. tostring(e.message) .. ")")
+local c = hw:contact{y = yh, z = e.z, roll = e.roll}
+check.ok(math.abs(c.force.z - Q) < 1e-5 * Q and math.abs(c.moment.x) < 1e-5 * Q,
+         ("the pose carries Q with no roll moment (Fz = %.6f N, Mx = %.3g N m)"):format(c.force.z, c.moment.x))
+check.ok(c.left.force.z > 0.3 * Q and c.right.force.z > 0.3 * Q, "both wheels carry load")
+local g = hw:rigid{y = yh, Q = Q}
+local r = hw:equilibrium{y = yh, yaw = 0, Q = Q, start = {z = g.z - 1e-6, roll = g.roll}}
+check.ok(math.abs(r.z - e.z) < 1e-8 and math.abs(r.roll - e.roll) < 1e-8,
+         ("the same pose as Newton from the rigid start (dz = %.3g m, droll = %.3g rad)"):format(r.z - e.z, r.roll - e.roll))
 print("robust_inputs: ok")
