@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Runs the examples of the documentation as a reader pastes them, so that they cannot rot.
+
+  lua WRC PAGE --marker=MARKER [--expect REGEX] --tmp DIR [--args K=V ...]
+      The ```lua block of PAGE whose first line starts with MARKER (`-- first.lua`) is written to a fresh folder
+      DIR/<its name> and run there by `WRC run <name> K=V ...`. It must exit 0, its output must match REGEX, and where
+      the page shows what it prints -- a ```text block whose first line is the command, `$ ... wrc run <name> ...` --
+      the output must be that block: the same words, and each number the same to within one unit of its last printed
+      digit (a build's rounding may move a solver's last bits, never a printed figure by more).
+  python INTERPRETER PAGE ... --tmp DIR
+      Every ```python block of the pages runs on its own, in a fresh folder, with INTERPRETER (PYTHONPATH from the
+      environment); each must exit 0.
+
+Prints what ran and why it failed; exits 1 on the first failure.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def blocks(text, language):
+    """(line, content) of every fenced block of the language."""
+    found, lines, i = [], text.split("\n"), 0
+    while i < len(lines):
+        if lines[i].strip() == "```" + language:
+            start, body = i + 1, []
+            i += 1
+            while i < len(lines) and not lines[i].startswith("```"):
+                body.append(lines[i])
+                i += 1
+            found.append((start, "\n".join(body) + "\n"))
+        i += 1
+    return found
+
+
+def fresh(folder):
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    return folder
+
+
+def same_figures(shown, printed):
+    """'' when the printed lines are the shown ones (numbers within one unit of the last shown digit), else why not."""
+    want, got = shown.strip().split("\n"), printed.strip().split("\n")
+    if len(want) != len(got):
+        return f"{len(got)} lines printed, the page shows {len(want)}"
+    for k, (w, g) in enumerate(zip(want, got), 1):
+        if NUMBER.sub("#", w).split() != NUMBER.sub("#", g).split():
+            return f"line {k}: printed '{g}', the page shows '{w}'"
+        for a, b in zip(NUMBER.findall(w), NUMBER.findall(g)):
+            mantissa = re.split(r"[eE]", a)[0]
+            unit = 10.0 ** -(len(mantissa.split(".")[1]) if "." in mantissa else 0)
+            if "e" in a.lower():
+                unit *= 10.0 ** int(re.split(r"[eE]", a)[1])
+            if abs(float(a) - float(b)) > unit * 1.0000001:
+                return f"line {k}: printed {b} where the page shows {a}: '{g}'"
+    return ""
+
+
+def run_lua(args):
+    text = open(args.page, encoding="utf-8").read()
+    found = [b for _, b in blocks(text, "lua") if b.startswith(args.marker)]
+    if not found:
+        sys.exit(f"{args.page} has no ```lua block starting with '{args.marker}'")
+    name = re.search(r"[A-Za-z0-9_]+\.lua", args.marker).group(0)
+    folder = fresh(os.path.join(args.tmp, name[:-4]))
+    with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
+        f.write(found[0])
+    run = subprocess.run([args.wrc, "run", name] + args.args, cwd=folder, capture_output=True, text=True)
+    print(run.stdout + run.stderr)
+    if run.returncode != 0:
+        sys.exit(f"{name} from {args.page} failed ({run.returncode})")
+    if args.expect and not re.search(args.expect, run.stdout + run.stderr, flags=re.S):
+        sys.exit(f"{name} from {args.page} ran, but its output does not match '{args.expect}'")
+    for line, shown in blocks(text, "text"):
+        first, _, rest = shown.partition("\n")
+        if first.startswith("$ ") and re.search(r"\bwrc run " + re.escape(name) + r"\b", first):
+            why = same_figures(rest, run.stdout)
+            if why:
+                sys.exit(f"{args.page}:{line}: {name} no longer prints what the page shows: {why}")
+            print(f"{args.page}:{line}: printed as shown")
+
+
+def run_python(args):
+    count = 0
+    for page in args.pages:
+        for line, code in blocks(open(page, encoding="utf-8").read(), "python"):
+            folder = fresh(os.path.join(args.tmp, f"{os.path.basename(page)[:-3]}_{line}"))
+            run = subprocess.run([args.interpreter, "-c", code], cwd=folder, capture_output=True, text=True)
+            print(f"{page}:{line}:\n{run.stdout}{run.stderr}")
+            if run.returncode != 0:
+                sys.exit(f"{page}:{line}: the Python example fails ({run.returncode})")
+            count += 1
+    print(f"{count} Python examples ran")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="kind", required=True)
+    lua = sub.add_parser("lua")
+    lua.add_argument("wrc")
+    lua.add_argument("page")
+    lua.add_argument("--marker", required=True)  # given as --marker=..., it starts with "--"
+    lua.add_argument("--args", nargs="*", default=[])
+    lua.add_argument("--expect", default="")
+    lua.add_argument("--tmp", required=True)
+    py = sub.add_parser("python")
+    py.add_argument("interpreter")
+    py.add_argument("pages", nargs="+")
+    py.add_argument("--tmp", required=True)
+    args = parser.parse_args()
+    run_lua(args) if args.kind == "lua" else run_python(args)
+
+
+if __name__ == "__main__":
+    main()
