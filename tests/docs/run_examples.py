@@ -10,6 +10,10 @@
   python INTERPRETER PAGE ... --tmp DIR
       Every ```python block of the pages runs on its own, in a fresh folder, with INTERPRETER (PYTHONPATH from the
       environment); each must exit 0.
+  keys ROOT
+      Every key of a call in the ```lua blocks of README.md and docs/ (`ws:contact{y = ..., mu = ...}`,
+      `wrc.wheelset{...}`, `tr:wheel{...}`) is a key the call takes: the engine's own list of each call's options,
+      `wrc.operations()` (run with the package on PYTHONPATH), so that a misspelt or renamed key in an example fails.
 
 Prints what ran and why it failed; exits 1 on the first failure.
 """
@@ -24,11 +28,11 @@ NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 def blocks(text, language):
-    """(line, content) of every fenced block of the language."""
+    """(line, content) of every fenced block of the language; line: the 1-based line of its first line of content."""
     found, lines, i = [], text.split("\n"), 0
     while i < len(lines):
         if lines[i].strip() == "```" + language:
-            start, body = i + 1, []
+            start, body = i + 2, []
             i += 1
             while i < len(lines) and not lines[i].startswith("```"):
                 body.append(lines[i])
@@ -99,6 +103,49 @@ def run_python(args):
     print(f"{count} Python examples ran")
 
 
+# The receivers the examples give each kind of object (ws = wrc.wheelset{...}, wp the planar one, tr a trajectory).
+RECEIVERS = {"ws": "wheelset", "wp": "wheelset", "tr": "trajectory"}
+# Keys a call reads outside its options list: the profiles of a wheelset.
+PROFILE_KEYS = {"wheel", "rail", "left_wheel", "right_wheel", "left_rail", "right_rail"}
+
+
+def top_level_keys(code, start):
+    """The `key =` names of the table that opens at code[start - 1] == '{', nested tables left out."""
+    depth, flat, i = 1, [], start
+    while i < len(code) and depth:
+        depth += {"{": 1, "}": -1}.get(code[i], 0)
+        if depth == 1 and code[i] != "}":
+            flat.append(code[i])
+        i += 1
+    return re.findall(r"(?:^|[,\s])([A-Za-z_]\w*)\s*=(?!=)", "".join(flat))
+
+
+def check_keys(args):
+    import glob
+    import wrc
+    calls = {o["lua"]: {opt["key"].split(".")[0] for opt in o["options"]} for o in wrc.operations()}
+    calls["wrc.wheelset"] |= PROFILE_KEYS
+    pages = [os.path.join(args.root, "README.md")] + sorted(glob.glob(os.path.join(args.root, "docs/**/*.md"),
+                                                                        recursive=True))
+    bad, count = [], 0
+    for page in pages:
+        for line, code in blocks(open(page, encoding="utf-8").read(), "lua"):
+            code = re.sub(r"--[^\n]*", "", code)                                   # comments
+            code = re.sub(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', '""', code)   # strings
+            for m in re.finditer(r"\b(wrc|ws|wp|tr)([:.])(\w+)\s*\{", code):
+                receiver, sep, method = m.groups()
+                call = f"wrc.{method}" if receiver == "wrc" else f"{RECEIVERS[receiver]}:{method}"
+                if call not in calls or sep != (":" if receiver != "wrc" else "."):
+                    continue
+                count += 1
+                at = line + code[:m.start()].count("\n")
+                bad += [f"{page}:{at}: {call} takes no key '{k}'" for k in top_level_keys(code, m.end())
+                        if k not in calls[call]]
+    print("\n".join(bad) or f"{count} calls of the Lua examples checked: every key exists")
+    if bad:
+        sys.exit(1)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="kind", required=True)
@@ -113,8 +160,10 @@ def main():
     py.add_argument("interpreter")
     py.add_argument("pages", nargs="+")
     py.add_argument("--tmp", required=True)
+    keys = sub.add_parser("keys")
+    keys.add_argument("root")
     args = parser.parse_args()
-    run_lua(args) if args.kind == "lua" else run_python(args)
+    {"lua": run_lua, "python": run_python, "keys": check_keys}[args.kind](args)
 
 
 if __name__ == "__main__":
