@@ -75,7 +75,8 @@ def run_lua(args):
     folder = fresh(os.path.join(args.tmp, name[:-4]))
     with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
         f.write(found[0])
-    run = subprocess.run([args.wrc, "run", name] + args.args, cwd=folder, capture_output=True, text=True)
+    wrc = os.path.abspath(args.wrc) if os.sep in args.wrc else args.wrc   # it runs in the example's folder
+    run = subprocess.run([wrc, "run", name] + args.args, cwd=folder, capture_output=True, text=True)
     print(run.stdout + run.stderr)
     if run.returncode != 0:
         sys.exit(f"{name} from {args.page} failed ({run.returncode})")
