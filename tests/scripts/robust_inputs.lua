@@ -16,6 +16,8 @@
 --    from y = 0 left a wheel lifted, where both residuals come from one wheel and Newton turned the wheelset about
 --    that contact the wrong way, 1-2 % down a step, until the 400 evaluations were spent before the rigid start was
 --    tried (no equilibrium). Checked by a contact evaluation at the pose found and by Newton from the rigid start.
+--    With a budget that ends on continuation's path, the result was the pose z = 0, roll = 0, evaluated at y and
+--    reported as the last iterate; it is now the rigid position there, and the error says that no attempt reached y.
 local check = require "wrc.check"
 local tmp = (arg.tmp or ".") .. "/robust_inputs_"
 wrc.fs.mkdir(arg.tmp or ".")
@@ -106,4 +108,7 @@ local g = hw:rigid{y = yh, Q = Q}
 local r = hw:equilibrium{y = yh, yaw = 0, Q = Q, start = {z = g.z - 1e-6, roll = g.roll}}
 check.ok(math.abs(r.z - e.z) < 1e-8 and math.abs(r.roll - e.roll) < 1e-8,
          ("the same pose as Newton from the rigid start (dz = %.3g m, droll = %.3g rad)"):format(r.z - e.z, r.roll - e.roll))
+local cut = hw:equilibrium{y = yh, yaw = 0, Q = Q, max_evaluations = 30, on_failure = "return"}
+check.ok(not cut.converged and cut.error:find("no attempt reached y", 1, true), "the error says so: " .. cut.error)
+check.ok(cut.z == g.z and cut.roll == g.roll, "the result holds the rigid position at y")
 print("robust_inputs: ok")

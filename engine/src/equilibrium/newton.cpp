@@ -438,6 +438,28 @@ void NewtonOptions::validate(std::string_view context) const {
     fail("{}: initial_approach = {} m must be in [0, 0.01] m", context, initial_approach);
 }
 
+namespace {
+
+// A solve stopped before any attempt reached the case's y (continuation's path, the first attempt farther out;
+// every attempt at y leaves its iterate there): its result is the rigid position at y, evaluated, and says so.
+void last_at_case(const ContactModel& model, EquilibriumSolver& solver, double y, double yaw, double Q, Iterate& cur,
+                  std::vector<std::string>& why) {
+  if (cur.contact.pose.y == y) return;
+  std::optional<RigidResult> r;
+  try {
+    r = solve_rigid(model.geometry(), y, yaw, Q);
+  } catch (const Error&) {
+  }
+  const bool rigid = r && r->message.empty();
+  const double z = rigid ? r->z : 0.0, roll = rigid ? r->roll : 0.0;
+  why.push_back(fmt::format("no attempt reached y = {:.4f} mm: the result holds the {} (z = {:.6f} mm, roll = {:.6f} "
+                            "mrad) evaluated there, not an iterate", y * 1e3, rigid ? "rigid position" : "centred pose",
+                            z * 1e3, roll * 1e3));
+  cur = solver.evaluate_unbudgeted(y, z, roll);
+}
+
+}  // namespace
+
 EquilibriumResult solve_equilibrium(const ContactModel& model, const EquilibriumCase& c, ContactWorkspace& ws,
                                     const NewtonOptions& opt, const std::vector<Start>& starts,
                                     const ContactRequest& frictional) {
@@ -474,10 +496,10 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, const Equilibrium
     }
   } catch (const EvaluationBudget& e) {
     why.push_back(e.what());
-    if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
+    last_at_case(model, solver, y, yaw, Q, cur, why);
   } catch (const UnreachableLoad& e) {
     why.assign(1, e.what());
-    if (cur.contact.pose.y != y) cur = solver.evaluate_unbudgeted(y, cur.z, cur.roll);
+    last_at_case(model, solver, y, yaw, Q, cur, why);
   }
   finish_result(model, ws, request, opt, ok, why, solver, cur, res);
   return res;
