@@ -18,10 +18,11 @@
 namespace wrc {
 namespace {
 
-// Steps in a row that may leave a wheel lifted and the merit above kSlowMerit of the step before, before Newton
-// gives up. Equilibria on one wheel (a flange climbed: the paper study at y = 7.5 mm, yaw 1 deg) take up to 10
-// lifted steps and come out the same bits with this limit (8 lifted steps of any speed cut them); a wheel with a 2 mm
-// hollow took 50 slow ones, each 1-2 % down (tests/scripts/robust_inputs.lua).
+// Iterations in a row that may leave a wheel lifted and the merit above kSlowMerit of the iteration before, before
+// Newton gives up (a Jacobian computed afresh without a step counts too: counting steps alone let the hollow wheel
+// below run out of budget at y = 5 mm). Equilibria on one wheel (a flange climbed: the paper study at y = 7.5 mm,
+// yaw 1 deg) take up to 10 lifted steps and come out the same bits with this limit (8 lifted steps of any speed cut
+// them); a wheel with a 2 mm hollow took 50 slow ones, each 1-2 % down (tests/scripts/robust_inputs.lua).
 constexpr int kSlowLiftedSteps = 5;
 constexpr double kSlowMerit = 0.9;
 
@@ -79,7 +80,7 @@ class EquilibriumSolver {
     std::optional<Eigen::Matrix2d> J;
     bool J_lifted = cur.lifted;  // the regime the Jacobian belongs to
     if (J0 && J0_lifted == cur.lifted) J = J0;
-    int slow_lifted = 0;  // accepted steps in a row that left a wheel lifted and the merit above kSlowMerit of its last
+    int slow_lifted = 0;  // iterations in a row with a wheel lifted and the merit above kSlowMerit of the last
     double last_merit = cur.merit;
     for (int k = 0;; ++k) {
       if (opt_.trace) opt_.trace(k, cur.z, cur.roll, cur.contact);
@@ -99,8 +100,8 @@ class EquilibriumSolver {
       slow_lifted = cur.lifted && k > 0 && cur.merit > kSlowMerit * last_merit ? slow_lifted + 1 : 0;
       last_merit = cur.merit;
       if (slow_lifted > kSlowLiftedSteps) {
-        why = fmt::format("Newton: a wheel still lifted after {} slow steps (at z = {:.6f} mm, roll = {:.6f} mrad)",
-                          kSlowLiftedSteps, cur.z * 1e3, cur.roll * 1e3);
+        why = fmt::format("Newton: a wheel still lifted after {} slow iterations (at z = {:.6f} mm, roll = {:.6f} "
+                          "mrad)", slow_lifted, cur.z * 1e3, cur.roll * 1e3);
         return false;
       }
       if (cur.contact.wheel[kLeft].patches.empty() && cur.contact.wheel[kRight].patches.empty()) {
