@@ -9,15 +9,7 @@ local loop = require "wrc.wear_loop"
 local grid = (tonumber(arg.grid_mm) or 0.2) * 1e-3
 local steps = tonumber(arg.steps) or 4
 local tangent = tonumber(arg.tangent) or 90
-local Q = 200e3
-local function cases(state, early)
-  local ws = loop.wheelset(state, {grid = math.max(grid, 0.5e-3)})  -- as the example places them
-  return loop.generated_cases{Q = Q, V = 100 / 3.6, mu = 0.3, tangent = tangent, sigma = 1.5e-3,
-                              curves = {{radius = 300, yaw = 2.5e-3, share = 0.05}, {radius = -300, yaw = 2.5e-3,
-                              share = 0.05}}, forces = {60e3, 70e3, 80e3, 90e3, 100e3},
-                              y_for_force = function(sign, Y, yaw, from, hint) return loop.y_for_force(ws, sign, Y, yaw, Q, from, hint) end,
-                              previous = state.previous_cases, early = early}
-end
+local cases = dofile((arg[0]:match("(.*/)") or "./") .. "wear_cases.lua")(grid, tangent)
 local o = {step = 0.1e-3, smooth = 1e-3, wear = {}, threads = tonumber(arg.threads) or 2}
 local euler = setmetatable({scheme = "euler"}, {__index = o})
 local half = setmetatable({scheme = "euler", step = o.step / 2}, {__index = o})  -- the same rates, half the distance

@@ -16,15 +16,7 @@ local function wall()
 end
 local st = loop.initial{wheel = wrc.profile.load("profiles/s1002.lua"), rail = wrc.profile.load("profiles/60e1.lua"),
                         wheelset = {grid = grid}}
-local Q = 200e3
-local function cases(state, early)
-  local ws = loop.wheelset(state, {grid = math.max(grid, 0.5e-3)})  -- as the example places them
-  return loop.generated_cases{Q = Q, V = 100 / 3.6, mu = 0.3, tangent = tangent, sigma = 1.5e-3,
-                              curves = {{radius = 300, yaw = 2.5e-3, share = 0.05}, {radius = -300, yaw = 2.5e-3,
-                              share = 0.05}}, forces = {60e3, 70e3, 80e3, 90e3, 100e3},
-                              y_for_force = function(sign, Y, yaw, from, hint) return loop.y_for_force(ws, sign, Y, yaw, Q, from, hint) end,
-                              previous = state.previous_cases, early = early}
-end
+local cases = dofile((arg[0]:match("(.*/)") or "./") .. "wear_cases.lua")(grid, tangent)
 local function timed(what, f)
   local c, w = os.clock(), wall()
   local r = f()

@@ -19,15 +19,9 @@
 --    With a budget that ends on continuation's path, the result was the pose z = 0, roll = 0, evaluated at y and
 --    reported as the last iterate; it is now the rigid position there, and the error says that no attempt reached y.
 local check = require "wrc.check"
+local write = dofile((arg[0]:match("(.*/)") or "./") .. "../data/profile/helpers.lua").write
 local tmp = (arg.tmp or ".") .. "/robust_inputs_"
 wrc.fs.mkdir(arg.tmp or ".")
-
-local function write(path, text)
-  local f = assert(io.open(path, "w"))
-  f:write(text)
-  f:close()
-  return path
-end
 
 local s1002 = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua", {step = 0.5e-3})
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua", {step = 0.5e-3})
