@@ -78,3 +78,10 @@ local light_c, light_a = flat_c, flat_a
 if flat_a.normal_force > steep_a.normal_force then light_c, light_a = steep_c, steep_a end
 check.ok(light_c.load < light_a.normal_force, "coupled, the lighter zone carries less than apart")
 check.near(coupled.force.z, apart.force.z, 1e-6 * Fz, "the same vertical load")
+
+-- 4. An angle between normals is at most pi: a larger merge_angle is refused, naming the value in radians if it was
+-- meant in degrees; a negative one too.
+local function with(angle) return function() wrc.wheelset{wheel = wheel, rail = rail, merge_angle = angle} end end
+check.fails(with(40), "merge_angle = 40 must be in [0, pi] rad (the angle between two contact normals); 40 degrees would be 0.6981 rad", "merge_angle in degrees")
+check.fails(with(-0.1), "merge_angle = -0.1 must be in [0, pi] rad", "a negative merge_angle")
+check.ok(pcall(with(math.pi)), "merge_angle = pi: every area merged, accepted")

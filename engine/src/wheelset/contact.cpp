@@ -18,6 +18,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <optional>
 
@@ -68,8 +69,10 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     fail("contact model: merge_tolerance must be > 0, got {}", options.merge_tolerance);
   if (!(options.normal.tolerance >= 1e-14 && options.normal.tolerance < 1e-2))
     fail("contact model: the normal solver's tolerance must be in [1e-14, 1e-2[, got {}", options.normal.tolerance);
-  if (const double a = merge_angle_of(options); !(a >= 0) || !std::isfinite(a))
-    fail("contact model: merge_angle must be >= 0 rad, got {}", a);
+  // The angle between two normals is at most pi: a larger value is no stronger, and most likely degrees.
+  if (const double a = merge_angle_of(options); !(a >= 0 && a <= std::numbers::pi))
+    fail("contact model: merge_angle = {} must be in [0, pi] rad (the angle between two contact normals){}", a,
+         a > std::numbers::pi ? fmt::format("; {} degrees would be {:.4g} rad", a, a * std::numbers::pi / 180) : "");
 }
 
 ContactWorkspace::ContactWorkspace(const ContactModel& model) : locator(model.geometry_ptr()) {}
