@@ -35,6 +35,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -608,6 +609,32 @@ static int out_close(Out* o) {
   return 0;
 }
 
+/* The output folder made (with its parents) and checked writable before any run, so that a long study does not
+   end in "cannot write"; 0 on success. */
+static int out_ready(const char* dir) {
+  char path[4096];
+  if (snprintf(path, sizeof path, "%s", dir) >= (int)sizeof path) {
+    fprintf(stderr, "hunting: out=%s: path too long\n", dir);
+    return 1;
+  }
+  for (char* c = path + 1;; ++c) {
+    const char end = *c;
+    if (end != '/' && end != '\0') continue;
+    *c = '\0';
+    if (mkdir(path, 0777) != 0 && errno != EEXIST) {
+      fprintf(stderr, "hunting: out=%s: cannot make %s: %s\n", dir, path, strerror(errno));
+      return 1;
+    }
+    *c = end;
+    if (end == '\0') break;
+  }
+  if (access(dir, W_OK) != 0) {
+    fprintf(stderr, "hunting: out=%s: cannot write there: %s\n", dir, strerror(errno));
+    return 1;
+  }
+  return 0;
+}
+
 /* y(t) of some runs, one column each: t_s, then y_mm at each run's speed. */
 static int write_runs(const char* dir, const char* name, const Run* runs, int n, double dt) {
   Out o;
@@ -825,6 +852,7 @@ int main(int argc, char** argv) {
     fprintf(stderr, "hunting: %s\n", why);
     return 1;
   }
+  if (p.out && out_ready(p.out)) return 1;
   if (wrc_abi_version() != WRC_ABI_VERSION) {
     fprintf(stderr, "hunting: libwrc ABI %d, this program was built for %d\n", wrc_abi_version(), WRC_ABI_VERSION);
     return 1;
