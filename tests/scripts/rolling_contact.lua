@@ -323,6 +323,16 @@ do
   check.fails(with{V = V, mu = 1e-300}, "mu = 1e-300 must be in [0.0001, 1e+12]", "mu = 1e-300")
   check.fails(with{V = V, mu_static = 1e300, mu_kinetic = 0.3}, "mu_static = 1e+300 must be in", "mu_static = 1e300")
   check.fails(with{V = V, mu = 0 / 0}, "'mu' must be finite", "mu NaN")
+  -- A percentage, or a coefficient no steel pair has, solved as given would be near the no-slip limit: refused
+  -- unless the wheelset's check_setup is off (the no-slip limit asked for on purpose).
+  check.fails(with{V = V, mu = 30}, "mu = 30 is implausible for a wheel-rail friction coefficient (0.01 .. 1)", "mu = 30")
+  check.fails(with{V = V, friction = {law = "polach", mu0 = 40, A = 0.4, B = 0.6}}, "mu(0) = 40 is implausible",
+              "Polach's mu0 = 40")
+  check.fails(with{V = V, mu = 0.3, friction_profile = {y = {-0.02, 0.02}, mu = {0.3, 15}}},
+              "friction_profile's mu = 15 is implausible", "friction profile in per cent")
+  local free = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3, check_setup = false}
+  local t = pose(e0, {V = V, mu = 1e9})
+  check.ok(pcall(function() return free:contact(t) end), "check_setup = false: mu = 1e9 (the no-slip limit) accepted")
   check.fails(with{V = 0, mu = 0.3}, "V = 0", "V = 0 with kinematics")
   check.fails(with{V = V}, "'mu'", "no mu")
   check.fails(with{mu = 0.3}, "neither V", "mu without kinematics")

@@ -107,8 +107,9 @@ void check_flangeway(const Track& t) {
 
 void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& r) {
   if (!std::isfinite(value) || (std::abs(value) >= r.lo && std::abs(value) <= r.hi)) return;  // NaN: the range checks
-  fail("{}: {} = {:.6g} {} is implausible for {} ({:.3g} .. {:.3g} {}): is it in another unit? wrc takes SI units ({}); "
-       "check_setup = false on the wheelset accepts it", context, key, value, r.unit, r.what, r.lo, r.hi, r.unit, r.hint);
+  const std::string unit = *r.unit ? fmt::format(" {}", r.unit) : "";  // a friction coefficient has none
+  fail("{}: {} = {:.6g}{} is implausible for {} ({:.3g} .. {:.3g}{}): is it in another unit? wrc takes SI units ({}); "
+       "check_setup = false on the wheelset accepts it", context, key, value, unit, r.what, r.lo, r.hi, unit, r.hint);
 }
 
 void check_plausible(const TrackParams& track, const halfspace::Material& material) {

@@ -697,7 +697,13 @@ halfspace::Friction read_friction(OptionReader& r) {
 }  // namespace
 
 void RollingRequest::validate(std::string_view context, bool plausible) const {
-  if (plausible) check_plausible(context, "V", kinematics ? kinematics->V : V, kTrainSpeed);
+  if (!plausible) return;
+  check_plausible(context, "V", kinematics ? kinematics->V : V, kTrainSpeed);
+  check_plausible(context, friction.law == halfspace::FrictionLaw::coulomb ? "mu" : "mu(0)",
+                  friction.static_coefficient, kFrictionCoefficient);
+  for (const auto& side : friction_profile)
+    if (side)
+      for (double mu : side->mu) check_plausible(context, "friction_profile's mu", mu, kFrictionCoefficient);
 }
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {

@@ -34,6 +34,9 @@ inline constexpr Plausible kSteelModulus{"Young's modulus of wheel and rail stee
                                          "210 GPa is E = 2.1e11"};
 inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 1.5, "450 mm is radius = 0.45"};
 inline constexpr Plausible kTrainSpeed{"a train's speed", "m/s", 0, 160, "300 km/h is V = 83.3"};
+// Wheel on rail: 0.02-0.1 with leaves or a greased gauge face, 0.3-0.6 dry or sanded; 30 is a percentage. The
+// no-slip limit (a huge coefficient: Kalker's linear theory) needs check_setup = false.
+inline constexpr Plausible kFrictionCoefficient{"a wheel-rail friction coefficient", "", 0.01, 1.0, "30 % is mu = 0.3"};
 void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range);
 
 // The wheelset's parameters (wrc.wheelset{}): radius and E.
