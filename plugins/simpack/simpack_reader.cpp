@@ -219,6 +219,9 @@ void drop_close_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
       if (kept.empty() || std::hypot(p.y - kept.back().y, p.z - kept.back().z) >= dmin) kept.push_back(p);
     out.transform(fmt::format("1 {}: {} points closer than that to their predecessor dropped", sk.where("point.dist.min"),
                               pts.size() - kept.size()));
+    if (kept.size() < 3)
+      fail_at(sk.find("point.dist.min")->line, "point.dist.min = {} leaves {} of the {} points; a profile needs at least 3",
+              quoted(sk.find("point.dist.min")->text), kept.size(), pts.size());
     pts = std::move(kept);
   }
 }
@@ -279,7 +282,9 @@ void bound_points(const Keys& sk, const char* kmin, const char* kmax, bool on_y,
   pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { const double v = on_y ? p.y : p.z; return v < lo || v > hi; }),
             pts.end());
   out.transform(fmt::format("4 {}, {}: {} points outside dropped", sk.where(kmin), sk.where(kmax), before - pts.size()));
-  if (pts.empty()) fail_at(vmin->line, "no point lies within {} .. {} = {} .. {}", kmin, kmax, lo, hi);
+  if (pts.size() < 3)
+    fail_at(vmin->line, "{} of the {} points lie within {} .. {} = {} .. {}; a profile needs at least 3", pts.size(), before,
+            kmin, kmax, lo, hi);
 }
 
 // 5: mirror, 6: inversion of the point order.

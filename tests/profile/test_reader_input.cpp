@@ -367,7 +367,7 @@ TEST_CASE("every reader given another format's file names the reader that reads 
     }
 }
 
-TEST_CASE("Simpack reader: a shift beyond any profile is named, not blamed on the unit") {
+TEST_CASE("Simpack reader: a processing key that leaves no profile is named with its line") {
   const std::string keys_then = "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n units.len.f = 1000\n";
   for (const char* shift : {"1e308", "-2e6"}) {  // mm: 1e305 m, 2 km
     INFO(shift);
@@ -378,4 +378,10 @@ TEST_CASE("Simpack reader: a shift beyond any profile is named, not blamed on th
   // A shift within the bound (999 m) is a shift.
   const std::string km = keys_then + " shift.z = 999000\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n";
   CHECK(error_of(write("km_shift.prr", km)) == "(no error)");
+  // The arc's rows are 1 mm apart in y (-15 .. 15): a minimum distance of 100 mm keeps the first only; bounds
+  // 0 .. 1 mm keep 2.
+  check_error("sparse.prr", keys_then + " point.dist.min = 100\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n", 7,
+              "point.dist.min = '100' leaves 1 of the 31 points; a profile needs at least 3");
+  check_error("narrow.prr", keys_then + " bound.y.min = 0\n bound.y.max = 1\n point.begin\n" + arc_rows(" ") +
+              " point.end\nspline.end\n", 7, "2 of the 31 points lie within bound.y.min .. bound.y.max = 0 .. 1");
 }

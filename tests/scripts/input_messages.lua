@@ -72,6 +72,15 @@ check.ok(err:find(far .. ":" .. shift_line .. ":", 1, true) and err:find("out of
 err = check.fails(function() return wrc.profile.load(H.write_simpack(tmp .. "km.prw", s1002, {shift_z = -2e6})) end,
                   "shift.z", "shift.z = 2 km")
 check.ok(err:find("out of range", 1, true), err)
+-- The same for the loader's own shift option (2000 given as metres, meant as mm), and a Simpack point.dist.min that
+-- leaves fewer than 3 points is named, not the count of points read.
+err = check.fails(function() return wrc.profile.load(prw, {shift = {z = 2000}}) end, "shift.z = 2000 m is out of range",
+                  "shift = {z = 2000}")
+check.ok(not err:find("are the coordinates", 1, true), "the shift, not the points' unit: " .. err)
+local sparse = H.write(tmp .. "sparse.prw", (io.open(prw):read("a"):gsub("point.dist.min = 0", "point.dist.min = 1e300")))
+err = check.fails(function() return wrc.profile.load(sparse) end, "point.dist.min = '1e300' leaves 1 of the",
+                  "point.dist.min = 1e300")
+check.ok(err:find(sparse .. ":" .. line_of(sparse, "point.dist.min") .. ":", 1, true), "its line: " .. err)
 
 -- ---- 3. underflow and overflow ----
 local function cone_with(z)
