@@ -113,10 +113,12 @@ for _, file in ipairs(wrc.fs.list(wrc.paths.scripts .. "/strategies")) do
                 "the unlisted module '" .. name .. "'")
   end
 end
--- A misspelt option, a misspelt name inside a composition, an option out of range: messages without traceback.
+-- A misspelt option, a misspelt name inside a composition, options out of range (checked by the strategy's assert,
+-- and by the engine function it calls): messages without traceback.
 for _, case in ipairs{{{"fast", stpe = 1e-4}, "strategy option 'stpe' is not used by fast"},
                       {{"constant_slope", "coarse", "topolgy"}, "unknown strategy 'topolgy'"},
-                      {{"uniform", step = -1}, "uniform: step must be a positive number"}} do
+                      {{"uniform", step = -1}, "uniform: step must be a positive number"},
+                      {{"fast", slope_step = -1}, "slope_step must be a positive angle"}} do
   err = check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, strategy = case[1]} end, case[2], case[2])
   check.ok(not err:find("traceback", 1, true), "no traceback: " .. err)
 end

@@ -36,20 +36,27 @@ int traceback_handler(lua_State* L) {
 
 namespace {
 
-// A string raised by `error` or `assert` (the function at level 1 of the stack, the handler being level 0) is a
-// message the code meant to say; anything else (a runtime error, a failed binding call) may be a bug, and its
-// traceback shows where.
+// Messages pass as they are: a string raised by `error` or `assert` (the function at level 1 of the stack, the handler
+// being level 0), or by an engine function checking its input (a C function whose message starts with its caller's
+// "file:line: ", as `guarded` writes it). A runtime error of Lua code, or a C function's error that does not say
+// where (a library's "bad argument"), may be a bug: its traceback shows where.
 int plain_errors_handler(lua_State* L) {
   lua_Debug ar;
-  if (lua_type(L, 1) == LUA_TSTRING && lua_getstack(L, 1, &ar) && lua_getinfo(L, "f", &ar)) {
-    bool raised = false;
+  if (lua_type(L, 1) == LUA_TSTRING && lua_getstack(L, 1, &ar) && lua_getinfo(L, "fS", &ar)) {
+    bool message = false;
     for (const char* name : {"error", "assert"}) {
       lua_getglobal(L, name);
-      raised = raised || lua_rawequal(L, -1, -2);
+      message = message || lua_rawequal(L, -1, -2);
       lua_pop(L, 1);
     }
-    lua_pop(L, 1);
-    if (raised) return 1;
+    lua_pop(L, 1);  // the function
+    if (!message && std::strcmp(ar.what, "C") == 0) {
+      luaL_where(L, 2);
+      const char* where = lua_tostring(L, -1);
+      message = *where != '\0' && std::strncmp(lua_tostring(L, 1), where, std::strlen(where)) == 0;
+      lua_pop(L, 1);
+    }
+    if (message) return 1;
   }
   return traceback_handler(L);
 }
