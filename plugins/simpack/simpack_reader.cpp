@@ -183,7 +183,9 @@ State read_in_section(State st, std::string_view s, int line, File& f, Out& out)
 // At the end of the file: every section closed, and points read.
 void check_complete(const File& f, State st, const std::vector<Line>& lines) {
   const int last = lines.empty() ? 0 : lines.back().number;
-  if (lines.empty() || (!f.seen_header && !f.spline.begin_line)) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
+  if (lines.empty()) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
+  if (!f.seen_header && !f.spline.begin_line)
+    fail_at(0, "no header.begin, no spline.begin: the file holds only comments and blank lines");
   if (st == State::header) fail_at(last, "the file ends inside header.begin (line {}): no header.end", f.header.begin_line);
   if (st == State::points) fail_at(last, "the file ends inside point.begin (line {}): no point.end", f.points_begin);
   if (st == State::spline) fail_at(last, "the file ends inside spline.begin (line {}): no spline.end", f.spline.begin_line);

@@ -175,7 +175,7 @@ function M.resolve(spec)
     elseif k == "name" then names[1] = v
     else opt[k] = v end
   end
-  if spec.name ~= nil and #spec > 0 then error("strategy: give either name = ... or a list of names, not both", 0) end
+  if spec.name ~= nil and #spec > 0 then error("a strategy table gives either name = ... or a list of names, not both", 0) end
   if #names == 0 then error("strategy table: give a list of names, name = ..., or locate = function", 0) end
   return build(names, opt)
 end

@@ -138,7 +138,7 @@ TEST_CASE("text reader: bad input") {
 
 TEST_CASE("Simpack reader: bad input") {
   check_error("empty.prr", "", 0, "the file is empty");
-  check_error("comments.prr", "! nothing but a comment\n", 0, "the file is empty");
+  check_error("comments.prr", "! nothing but a comment\n", 0, "the file holds only comments and blank lines");
   check_error("header_only.prr", "header.begin\n version = 1\n type = 0\nheader.end\n", 4, "no spline.begin");
   check_error("no_points.prr", simpack(""), 8, "no points between point.begin (line 7) and point.end");
   check_error("open.prr", "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n point.begin\n0 0\n", 7,
