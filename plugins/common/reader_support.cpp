@@ -1,11 +1,13 @@
 #include "reader_support.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <new>
 
 namespace wrc::plugin {
@@ -64,13 +66,43 @@ std::vector<std::string_view> split_fields(std::string_view s, char separator) {
   return out;
 }
 
+namespace {
+
+// The power of ten of the leading digit of a well-formed decimal number (digits, an optional '.', an optional exponent;
+// no sign): "1e400" -> 400, "0.012e-400" -> -402. from_chars leaves a number out of range unread; this says which way.
+long leading_power(std::string_view s) {
+  const auto e = std::min(s.find_first_of("eE"), s.size());
+  long exponent = 0;
+  if (e < s.size()) {
+    std::string_view x = s.substr(e + 1);
+    const bool negative = !x.empty() && x.front() == '-';
+    if (!x.empty() && (x.front() == '-' || x.front() == '+')) x.remove_prefix(1);
+    for (const char c : x) exponent = std::min(10 * exponent + (c - '0'), 1'000'000'000L);  // saturates: far out either way
+    if (negative) exponent = -exponent;
+  }
+  const std::string_view mantissa = s.substr(0, e);
+  const auto point = std::min(mantissa.find('.'), mantissa.size());
+  const auto first = mantissa.find_first_of("123456789");  // exists: a zero mantissa is never out of range
+  const long digit = static_cast<long>(first) - (first > point ? 1 : 0);  // its index among the digits
+  return exponent + static_cast<long>(point) - 1 - digit;
+}
+
+}  // namespace
+
 std::optional<double> parse_double(std::string_view s) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   if (s.empty() || s.front() == '+') return std::nullopt;
   double v = 0;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   if (r.ptr != s.data() + s.size()) return std::nullopt;
-  if (r.ec == std::errc::result_out_of_range) return std::nullopt;
+  if (r.ec == std::errc::result_out_of_range) {
+    // Beyond the doubles (|v| < 2.5e-324 or > 1.8e308): an underflow is 0 to any precision a profile has; an overflow
+    // reads as +-inf, which `number` refuses as out of range.
+    const bool negative = s.front() == '-';
+    if (negative) s.remove_prefix(1);
+    const double magnitude = leading_power(s) < 0 ? 0.0 : std::numeric_limits<double>::infinity();
+    return negative ? -magnitude : magnitude;
+  }
   if (r.ec != std::errc()) return std::nullopt;
   return v;
 }
@@ -119,8 +151,48 @@ double number(std::string_view field, int line, std::string_view what) {
     fail_at(line, "{} must be a number, got {}: a decimal comma? wrc reads a decimal point ({})", what, quoted(field),
             quoted(with_points(field)));
   if (!v) fail_at(line, "{} must be a number, got {}", what, quoted(field));
+  if (std::isinf(*v) && field.find_first_of("nN") == std::string_view::npos)  // digits, not "inf"
+    fail_at(line, "{} = {} is out of range: a number's magnitude must be below {:.2g}", what, quoted(field),
+            std::numeric_limits<double>::max());
   if (!std::isfinite(*v)) fail_at(line, "{} must be a finite number, got {}", what, quoted(field));
   return *v;
+}
+
+namespace {
+
+struct Format {
+  const char *name, *id, *extensions;
+};
+
+// The format a file's first content line begins, or null.
+const Format* format_begun_by(std::string_view s) {
+  static const Format simpack{"Simpack", "simpack", ".prr (rail) or .prw (wheel)"};
+  static const Format miniprof{"MiniProf", "miniprof", ".ban (rail) or .whl (wheel)"};
+  static const Format vampire{"VAMPIRE", "vampire", ".rai (rail) or .whe (wheel)"};
+  static const Format text{"plain text", "text", ".txt, .csv or .dat"};
+  std::string u(s);
+  for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const bool one_field = s.find_first_of(" \t,;") == std::string_view::npos;
+  if (s == "header.begin" || s == "spline.begin") return &simpack;
+  if (u == "MINIPROF" || (one_field && s.find('=') != std::string_view::npos)) return &miniprof;
+  if (u == "WHEELPROFILE" || u == "RAILPROFILE") return &vampire;
+  const auto fields = split_fields(s, s.find(',') != std::string_view::npos ? ',' : s.find(';') != std::string_view::npos ? ';' : ' ');
+  if (fields.size() >= 2 && all_numbers(fields)) return &text;
+  return nullptr;
+}
+
+}  // namespace
+
+void refuse_other_format(const std::vector<Line>& lines, std::string_view self, std::string_view self_reads) {
+  for (const Line& ln : lines) {
+    const std::string_view s = trim(strip_comment(ln.text, "!%#"));
+    if (s.empty()) continue;
+    const Format* f = format_begun_by(s);
+    if (f && f->id != self)
+      fail_at(ln.number, "{} begins a {} profile, not {}: read it with reader = \"{}\", or give the file the extension {}",
+              quoted(s), f->name, self_reads, f->id, f->extensions);
+    return;
+  }
 }
 
 const std::string* Request::option(std::string_view key) const {

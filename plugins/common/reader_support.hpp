@@ -43,15 +43,22 @@ std::string_view strip_comment(std::string_view s, std::string_view comment_char
 std::vector<std::string_view> split_fields(std::string_view s, char separator);
 
 // Strict number: optional sign, digits, '.', exponent; nothing else. NaN and Inf are parsed so that
-// the caller can say so; use `number` below for the checked version.
+// the caller can say so; use `number` below for the checked version. A number too small for a double
+// (1e-400) reads as 0 with its sign (a denormal such as 1e-310 as itself); one too large (1e400) as +-inf.
 std::optional<double> parse_double(std::string_view s);
-// A finite number or a ParseError naming the line, the field and what it is.
+// A finite number or a ParseError naming the line, the field and what it is (not a number, out of range, NaN/Inf).
 double number(std::string_view field, int line, std::string_view what);
 // Printable form of a field for messages (quoted, shortened, control bytes escaped).
 std::string quoted(std::string_view s);
 // A ParseError when a data row looks written with decimal commas ("1,5;2,3", "1,5 2,3"): read with decimal points
 // it splits (on ';' or blanks) into two or more numbers, while split on its commas it does not.
 void reject_decimal_commas(std::string_view row, int line);
+
+// Where a file fails to begin as the reader `self` reads it: when its first line that is not blank or a comment (`!`,
+// `%`, `#`) begins a file of another format the project reads (Simpack header.begin or spline.begin; MiniProf MINIPROF
+// or a Key=Value line without blanks; VAMPIRE WHEELPROFILE or RAILPROFILE; plain text a row of two or more numbers),
+// a ParseError at that line naming the reader to use and its extensions. Returns when it begins no other format.
+void refuse_other_format(const std::vector<Line>& lines, std::string_view self, std::string_view self_reads);
 
 // The request as the parser sees it.
 struct Request {

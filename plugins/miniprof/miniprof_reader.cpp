@@ -124,6 +124,7 @@ Header read_header(const std::vector<Line>& lines, std::size_t& i, Out& out) {
     const auto eq = s.find('=');
     if (eq == std::string_view::npos) {
       if (is_point_row(s)) break;  // no empty line before the data: a numeric row ends the header too
+      if (h.last_header_line == 0) refuse_other_format(lines, "miniprof", "a MiniProf profile");
       fail_at(ln.number, "expected a `Key=Value` header line, got {}", quoted(s));
     }
     const std::string key(trim(s.substr(0, eq)));

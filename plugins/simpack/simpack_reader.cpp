@@ -2,8 +2,10 @@
 // (1) and type (0 rail, 1 wheel); spline.begin/end holds the processing keys and point.begin/end the
 // points `y z [weight]` with z positive DOWN. The file's processing steps are applied in their numbered
 // order: 1 point.dist.min, 2 shift.y/z, 3 rotate, 4 bound.y/z.min/max (ignored when min > max),
-// 5 mirror.y/z, 6 inversion, 7 units.len.f (= file units per metre). Then z -> -z (engine z up).
+// 5 mirror.y/z, 6 inversion, 7 units.len.f (= file units per metre). Then z -> -z (engine z up). A shift that moves
+// the points beyond the host's bound on a point is refused here, naming its key and line.
 #include "reader_support.hpp"
+#include "wrc/profile/profile.hpp"  // kMaxProfileCoordinate, the host's bound on a point
 
 #include <algorithm>
 #include <cmath>
@@ -181,7 +183,9 @@ State read_in_section(State st, std::string_view s, int line, File& f, Out& out)
 // At the end of the file: every section closed, and points read.
 void check_complete(const File& f, State st, const std::vector<Line>& lines) {
   const int last = lines.empty() ? 0 : lines.back().number;
-  if (lines.empty() || (!f.seen_header && !f.spline.begin_line)) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
+  if (lines.empty()) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
+  if (!f.seen_header && !f.spline.begin_line)
+    fail_at(0, "no header.begin, no spline.begin: the file holds only comments and blank lines");
   if (st == State::header) fail_at(last, "the file ends inside header.begin (line {}): no header.end", f.header.begin_line);
   if (st == State::points) fail_at(last, "the file ends inside point.begin (line {}): no point.end", f.points_begin);
   if (st == State::spline) fail_at(last, "the file ends inside spline.begin (line {}): no spline.end", f.spline.begin_line);
@@ -199,6 +203,8 @@ File read_sections(std::string_view data, Out& out) {
   for (const Line& ln : lines) {
     const std::string_view s = trim(strip_bang(ln.text));
     if (s.empty()) continue;
+    if (!f.seen_header && !f.spline.begin_line && s != "header.begin" && s != "spline.begin")
+      refuse_other_format(lines, "simpack", "a Simpack profile");
     st = st == State::top || st == State::done ? begin_section(s, ln.number, f) : read_in_section(st, s, ln.number, f, out);
   }
   check_complete(f, st, lines);
@@ -215,13 +221,36 @@ void drop_close_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
       if (kept.empty() || std::hypot(p.y - kept.back().y, p.z - kept.back().z) >= dmin) kept.push_back(p);
     out.transform(fmt::format("1 {}: {} points closer than that to their predecessor dropped", sk.where("point.dist.min"),
                               pts.size() - kept.size()));
+    if (kept.size() < 3)
+      fail_at(sk.find("point.dist.min")->line, "point.dist.min = {} leaves {} of the {} points; a profile needs at least 3",
+              quoted(sk.find("point.dist.min")->text), kept.size(), pts.size());
     pts = std::move(kept);
   }
 }
 
+// 7: units.len.f = file units per metre; without it the host's default, millimetres.
+double file_unit(const Keys& sk) {
+  const Value* u = sk.find("units.len.f");
+  if (!u) return 1e-3;
+  const double f = number(u->text, u->line, "units.len.f");
+  if (!(f > 0)) fail_at(u->line, "units.len.f must be positive (file units per metre), got {}", quoted(u->text));
+  return 1.0 / f;
+}
+
+// A shift that moves every point beyond the host's bound on a point is named here, with its line: the host sees only
+// the shifted points, and would suspect their unit.
+double shift(const Keys& sk, std::string_view key, double unit) {
+  const double s = sk.num(key, 0);
+  if (std::abs(s) * unit > kMaxProfileCoordinate)
+    fail_at(sk.find(key)->line, "{} = {} is out of range: it moves every point {:.3g} m (at {} m per file unit), and "
+            "no profile lies more than {:g} m from the origin", key, quoted(sk.find(key)->text), std::abs(s) * unit,
+            unit, kMaxProfileCoordinate);
+  return s;
+}
+
 // 2: shift.
-void shift_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
-  const double sy = sk.num("shift.y", 0), sz = sk.num("shift.z", 0);
+void shift_points(const Keys& sk, double unit, std::vector<Point>& pts, Out& out) {
+  const double sy = shift(sk, "shift.y", unit), sz = shift(sk, "shift.z", unit);
   if (sy != 0 || sz != 0) {
     for (Point& p : pts) p.y += sy, p.z += sz;
     out.transform(fmt::format("2 {}, {}: y += {}, z += {}", sk.where("shift.y"), sk.where("shift.z"), sy, sz));
@@ -255,7 +284,9 @@ void bound_points(const Keys& sk, const char* kmin, const char* kmax, bool on_y,
   pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Point& p) { const double v = on_y ? p.y : p.z; return v < lo || v > hi; }),
             pts.end());
   out.transform(fmt::format("4 {}, {}: {} points outside dropped", sk.where(kmin), sk.where(kmax), before - pts.size()));
-  if (pts.empty()) fail_at(vmin->line, "no point lies within {} .. {} = {} .. {}", kmin, kmax, lo, hi);
+  if (pts.size() < 3)
+    fail_at(vmin->line, "{} of the {} points lie within {} .. {} = {} .. {}; a profile needs at least 3", pts.size(), before,
+            kmin, kmax, lo, hi);
 }
 
 // 5: mirror, 6: inversion of the point order.
@@ -274,13 +305,9 @@ void mirror_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
   }
 }
 
-// 7: units.len.f = file units per metre.
-void set_units(const Keys& sk, Out& out) {
-  if (const Value* u = sk.find("units.len.f")) {
-    const double f = number(u->text, u->line, "units.len.f");
-    if (!(f > 0)) fail_at(u->line, "units.len.f must be positive (file units per metre), got {}", quoted(u->text));
-    out.units(1.0 / f, fmt::format("units.len.f = {} (line {})", u->text, u->line));
-  }
+// 7: the file's unit, declared to the host when the file gives it.
+void set_units(const Keys& sk, double unit, Out& out) {
+  if (const Value* u = sk.find("units.len.f")) out.units(unit, fmt::format("units.len.f = {} (line {})", u->text, u->line));
 }
 
 // The spline section's keys become metadata; its processing steps are applied in their numbered order.
@@ -289,13 +316,14 @@ void process(const Section& spline, std::vector<Point>& pts, Out& out) {
   for (const auto& [k, v] : spline.keys) out.metadata(k, v.text);
   if (const Value* sm = sk.find("approx.smooth"); sm && number(sm->text, sm->line, "approx.smooth") != 0)
     out.transform(fmt::format("{}: smoothing not applied (the points are used as given)", sk.where("approx.smooth")));
+  const double unit = file_unit(sk);
   drop_close_points(sk, pts, out);
-  shift_points(sk, pts, out);
+  shift_points(sk, unit, pts, out);
   rotate_points(sk, pts, out);
   bound_points(sk, "bound.y.min", "bound.y.max", true, pts, out);
   bound_points(sk, "bound.z.min", "bound.z.max", false, pts, out);
   mirror_points(sk, pts, out);
-  set_units(sk, out);
+  set_units(sk, unit, out);
 }
 
 void parse(std::string_view data, const Request&, Out& out) {

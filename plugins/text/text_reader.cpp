@@ -1,8 +1,11 @@
 // Plain text / CSV profiles: two columns `y z` (or the columns chosen by the `columns` option), in the
 // engine orientation (left-side frame, y toward the field side, z up), millimetres unless the header
 // names the unit (y_mm / y_m, as wrc's own CSV tables do) or the user passes `units`.
-// `#` starts a comment; one optional header line before the data; fields separated by commas,
-// semicolons, or blanks (spaces/tabs), the same on every line.
+// `#` starts a comment, and so does `!` or `%` as a line's first character (the comment lines other programs
+// write: Simpack, MiniProf, VAMPIRE, MATLAB); one optional header line before the data; fields separated by
+// commas, semicolons, or blanks (spaces/tabs), the same on every line. A first line that begins another
+// format the engine reads (header.begin, MINIPROF, WHEELPROFILE, ...) is refused naming that format's reader:
+// each of those lines is one field, and a header of one field never matches data of two or more.
 #include "reader_support.hpp"
 
 #include <algorithm>
@@ -38,6 +41,12 @@ std::pair<std::size_t, std::size_t> parse_columns(const Request& rq) {
   return {cy, cz};
 }
 
+// The line without its comment: from `#` on, or all of it when it starts with `!` or `%`.
+std::string_view content(std::string_view line) {
+  const std::string_view s = trim(strip_comment(line, "#"));
+  return !s.empty() && (s.front() == '!' || s.front() == '%') ? std::string_view() : s;
+}
+
 // Unit named by a header field ("y_mm", "z [m]"), or 0 when none.
 double header_unit(std::string_view h) {
   std::string s(h);
@@ -56,7 +65,7 @@ void parse(std::string_view data, const Request& rq, Out& out) {
   std::size_t fields_per_line = 0;
   std::vector<std::string_view> header;
   for (const Line& ln : lines) {
-    const std::string_view s = trim(strip_comment(ln.text, "#"));
+    const std::string_view s = content(ln.text);
     if (s.empty()) continue;
     reject_decimal_commas(s, ln.number);
     if (sep == 0) {
@@ -65,6 +74,7 @@ void parse(std::string_view data, const Request& rq, Out& out) {
       const char guess = detect_separator(s);
       const auto f = split_fields(s, guess);
       if (header_line == 0 && !parse_double(f[0])) {
+        refuse_other_format(lines, "text", "columns of numbers");
         header_line = ln.number;
         header = f;
         out.metadata("header", std::string(s));
@@ -96,7 +106,8 @@ void parse(std::string_view data, const Request& rq, Out& out) {
     const double z = number(f[cz], ln.number, fmt::format("z (column {})", cz + 1));
     out.point(y, z, ln.number);
   }
-  if (lines.empty() || (header_line == 0 && sep == 0)) fail_at(0, "the file is empty (no data lines)");
+  if (lines.empty()) fail_at(0, "the file is empty (no data lines)");
+  if (header_line == 0 && sep == 0) fail_at(0, "no data lines: the file holds only comments and blank lines");
   if (sep == 0) fail_at(header_line, "a header line but no data lines after it");
   if (fields_per_line != 2 || cy != 0 || cz != 1)
     out.transform(fmt::format("columns {} and {} of {} taken as y and z", cy + 1, cz + 1, fields_per_line));

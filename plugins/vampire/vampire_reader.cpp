@@ -44,10 +44,13 @@ std::string extension(const std::string& path) {
 }
 
 // Line 1 gives the kind; the extension, when it is one of the format's, must agree.
-bool read_kind(const Line& first, const Request& rq) {
+bool read_kind(const std::vector<Line>& lines, const Request& rq) {
+  const Line& first = lines.front();
   const std::string s = upper(trim(first.text));
-  if (s != "WHEELPROFILE" && s != "RAILPROFILE")
+  if (s != "WHEELPROFILE" && s != "RAILPROFILE") {
+    refuse_other_format(lines, "vampire", "a VAMPIRE profile");
     fail_at(first.number, "a VAMPIRE profile starts with WHEELPROFILE or RAILPROFILE, got {}", quoted(trim(first.text)));
+  }
   const bool wheel = s == "WHEELPROFILE";
   const std::string ext = extension(rq.path);
   if ((ext == ".whe" && !wheel) || (ext == ".rai" && wheel))
@@ -120,8 +123,8 @@ void parse(std::string_view data, const Request& rq, Out& out) {
   const bool right = side && *side == "right";
   const auto lines = split_lines(data);
   if (lines.empty()) fail_at(0, "the file is empty");
+  const bool wheel = read_kind(lines, rq);
   if (lines.size() < 4) fail_at(lines.back().number, "the file ends within the 4 header lines (kind, title, datum, spacing)");
-  const bool wheel = read_kind(lines[0], rq);
   out.kind(wheel ? WRC_KIND_WHEEL : WRC_KIND_RAIL);
   out.metadata("title", std::string(trim(lines[1].text)));
   std::string datum_text;

@@ -26,6 +26,42 @@
 -- In a composition the discretise functions run in order; the last `scan` wins (default "test").
 local M = {}
 
+-- A module is a component if it does something itself; a pure alias (only `uses`) always expands. A component
+-- that also has `uses` expands only when it is named alone (coarse alone means uniform + coarse; inside a
+-- composition it is just the coarse step).
+local function is_component(mod)
+  return mod.discretise ~= nil or mod.windows ~= nil or mod.scan ~= nil or mod.locate ~= nil
+end
+
+-- The strategies of scripts/strategies/, for a message: its modules that are components or aliases (not this file).
+local function strategy_names()
+  local names = {}
+  for _, file in ipairs(wrc.fs.list(wrc.paths.scripts .. "/strategies")) do
+    local name = file:match("^([%w_]+)%.lua$")
+    if name then
+      local ok, mod = pcall(require, "wrc.strategies." .. name)
+      if ok and type(mod) == "table" and (mod.uses or is_component(mod)) then names[#names + 1] = name end
+    end
+  end
+  return table.concat(names, ", ")
+end
+
+-- The fields a module gives, of the types this composer uses them as; and at least one that makes it a strategy.
+local field_types = {description = "string", defaults = "table", uses = "table", discretise = "function",
+                     locate = "function", windows = "boolean", scan = "string"}
+local function checked(label, mod)
+  for key, want in pairs(field_types) do
+    if mod[key] ~= nil and type(mod[key]) ~= want then
+      error(("%s: %s must be a %s, got a %s"):format(label, key, want, type(mod[key])), 0)
+    end
+  end
+  if not (mod.uses or is_component(mod)) then
+    error(("%s is not a strategy: it gives none of discretise, windows, scan, locate, uses (strategies: %s)"):format(
+          label, strategy_names()), 0)
+  end
+  return mod
+end
+
 local function load_module(name)
   if type(name) ~= "string" then error("strategy component names must be strings, got " .. type(name), 0) end
   if name:find("%.lua$") or name:find("/", 1, true) then
@@ -34,25 +70,21 @@ local function load_module(name)
     local ok, mod = pcall(chunk)
     if not ok then error(("strategy file '%s': %s"):format(name, mod), 0) end
     if type(mod) ~= "table" then error(("strategy file '%s' must return a table"):format(name), 0) end
-    return mod
+    return checked(("strategy file '%s'"):format(name), mod)
   end
-  if not name:match("^[%w_]+$") then error(("unknown strategy '%s' (a name of scripts/strategies/ or a .lua path)"):format(name), 0) end
+  if not name:match("^[%w_]+$") then
+    error(("unknown strategy '%s' (a name of scripts/strategies/: %s; or a .lua path)"):format(name, strategy_names()), 0)
+  end
   local ok, mod = pcall(require, "wrc.strategies." .. name)
   if not ok then
     if tostring(mod):find("module 'wrc.strategies." .. name .. "' not found", 1, true) then
-      error(("unknown strategy '%s': no file scripts/strategies/%s.lua"):format(name, name), 0)
+      error(("unknown strategy '%s': no file scripts/strategies/%s.lua (strategies: %s)"):format(name, name,
+            strategy_names()), 0)
     end
     error(("strategy '%s': %s"):format(name, mod), 0)
   end
   if type(mod) ~= "table" then error(("strategy module '%s' must return a table"):format(name), 0) end
-  return mod
-end
-
--- A module is a component if it does something itself; a pure alias (only `uses`) always expands. A component
--- that also has `uses` expands only when it is named alone (coarse alone means uniform + coarse; inside a
--- composition it is just the coarse step).
-local function is_component(mod)
-  return mod.discretise ~= nil or mod.windows ~= nil or mod.scan ~= nil or mod.locate ~= nil
+  return checked(("strategy '%s' (scripts/strategies/%s.lua)"):format(name, name), mod)
 end
 
 local function expand(names, out, depth, alone)
@@ -143,7 +175,7 @@ function M.resolve(spec)
     elseif k == "name" then names[1] = v
     else opt[k] = v end
   end
-  if spec.name ~= nil and #spec > 0 then error("strategy: give either name = ... or a list of names, not both", 0) end
+  if spec.name ~= nil and #spec > 0 then error("a strategy table gives either name = ... or a list of names, not both", 0) end
   if #names == 0 then error("strategy table: give a list of names, name = ..., or locate = function", 0) end
   return build(names, opt)
 end

@@ -114,7 +114,7 @@ TEST_CASE("text reader: bad input") {
   LoadOptions rail;
   rail.kind = ProfileKind::rail;
   check_error("empty.txt", "", 0, "the file is empty", rail);
-  check_error("blank.txt", "\n  \n# only a comment\n", 0, "the file is empty", rail);
+  check_error("blank.txt", "\n  \n# only a comment\n", 0, "no data lines: the file holds only comments and blank lines", rail);
   check_error("header_only.csv", "y_mm,z_mm\n", 1, "a header line but no data lines", rail);
   check_error("nonnumeric.txt", "0 0\n1 0.1\n2 abc\n3 0.3\n", 3, "z (column 2) must be a number, got 'abc'", rail);
   check_error("nan.txt", "0 0\n1 nan\n2 0\n", 2, "must be a finite number, got 'nan'", rail);
@@ -138,7 +138,7 @@ TEST_CASE("text reader: bad input") {
 
 TEST_CASE("Simpack reader: bad input") {
   check_error("empty.prr", "", 0, "the file is empty");
-  check_error("comments.prr", "! nothing but a comment\n", 0, "the file is empty");
+  check_error("comments.prr", "! nothing but a comment\n", 0, "the file holds only comments and blank lines");
   check_error("header_only.prr", "header.begin\n version = 1\n type = 0\nheader.end\n", 4, "no spline.begin");
   check_error("no_points.prr", simpack(""), 8, "no points between point.begin (line 7) and point.end");
   check_error("open.prr", "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n point.begin\n0 0\n", 7,
@@ -285,4 +285,103 @@ TEST_CASE("every reader: decimal commas are named as such") {
   // Commas as separators with blanks after them are no decimal commas.
   CHECK(error_of(write("comma_blank.csv", arc_rows(", ")), rail) == "(no error)");
   CHECK(error_of(write("integers.csv", "0, 0\n10, -1\n20, -4\n30, -9\n"), rail) == "(no error)");
+}
+
+TEST_CASE("every reader: a number beyond the doubles, an underflow read as 0 and an overflow out of range") {
+  // The arc's middle row (the 16th) is y = 0, z = 0 (its top); the same file with that z written as an underflow
+  // (below the least denormal, 4.9e-324) must give exactly the same points, in every reader.
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  const std::string rows = arc_rows(" ");
+  std::size_t middle = 0;
+  for (int i = 0; i < 15; ++i) middle = rows.find('\n', middle) + 1;
+  const std::size_t after = rows.find('\n', middle) + 1;
+  REQUIRE(rows.substr(middle, after - middle) == "0.000000 0.000000\n");
+  auto with_middle = [&](const std::string& z) { return rows.substr(0, middle) + "0 " + z + "\n" + rows.substr(after); };
+  struct Case {
+    const char* ext;
+    std::string (*file)(const std::string& rows);
+    int first_row;
+    LoadOptions options;
+  };
+  const Case cases[] = {{".txt", [](const std::string& r) { return r; }, 1, rail},
+                        {".prr", [](const std::string& r) { return simpack(r); }, kSimpackFirstPoint, {}},
+                        {".ban", [](const std::string& r) { return miniprof(r, 31); }, kMiniprofFirstRow, {}},
+                        {".rai", [](const std::string& r) { return vampire(r); }, kVampireFirstRow, {}}};
+  for (const Case& c : cases) {
+    INFO(c.ext);
+    const Profile zero = load(std::string("zero") + c.ext, c.file(rows), c.options);
+    for (const char* tiny : {"1e-400", "-1e-400", "0.0000001e-330", "2e-324"}) {
+      INFO(tiny);
+      const Profile under = load(std::string("underflow") + c.ext, c.file(with_middle(tiny)), c.options);
+      CHECK(under.y == zero.y);
+      CHECK(under.z == zero.z);
+    }
+    const int line = c.first_row + 15;
+    check_error(std::string("overflow") + c.ext, c.file(with_middle("1e400")), line, "= '1e400' is out of range", c.options);
+    check_error(std::string("overflow_neg") + c.ext, c.file(with_middle("-2e308")), line, "= '-2e308' is out of range", c.options);
+    CHECK(error_of(write(std::string("overflow") + c.ext, c.file(with_middle("1e400"))), c.options).find("must be a number") ==
+          std::string::npos);
+  }
+  // A denormal is itself: 1e-310 mm, the text's z = 1e-313 m, not 0.
+  const Profile denormal = load("denormal.txt", with_middle("1e-310"), rail);
+  CHECK(denormal.z[15] > 0);
+  CHECK(denormal.z[15] < 1e-312);
+  // A key's value is read by the same rule.
+  check_error("overflow_key.prr", simpack(rows, "1e999"), 6, "units.len.f = '1e999' is out of range");
+}
+
+TEST_CASE("text reader: comment lines of other programs (`!`, `%`) are skipped, not taken as a header") {
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  const Profile plain = load("plain_arc.txt", arc_rows(" "), rail);
+  const Profile commented = load("commented_arc.txt", "! ****\n  ! a Simpack-style comment\n% a MATLAB comment\n" + arc_rows(" "), rail);
+  CHECK(commented.y == plain.y);
+  CHECK(commented.z == plain.z);
+  CHECK_FALSE(has_transform(commented, "header"));
+  check_error("only_comments.txt", "! one\n% two\n# three\n\n", 0, "no data lines: the file holds only comments", rail);
+}
+
+TEST_CASE("every reader given another format's file names the reader that reads it") {
+  // One file of each format (the samples above) given to each of the other readers, by their extension.
+  const std::string rows = arc_rows(" ");
+  struct Format {
+    const char* id;
+    const char* ext;
+    std::string text;
+    int first_line;  // the line that begins the format (after comments)
+  };
+  const Format formats[] = {{"text", ".txt", rows, 1},
+                            {"simpack", ".prr", "! ****\n! exported\n" + simpack(rows), 3},
+                            {"miniprof", ".ban", "MINIPROF\n" + miniprof(rows, 31), 1},
+                            {"vampire", ".rai", vampire(rows), 1}};
+  for (const Format& file : formats)
+    for (const Format& reader : formats) {
+      const std::string f = file.id, r = reader.id;
+      if (f == r || (f == "text" && r == "miniprof")) continue;  // MiniProf reads bare rows too
+      INFO(file.id << " file given to the " << reader.id << " reader");
+      LoadOptions o;
+      o.kind = ProfileKind::rail;
+      check_error(std::string(file.id) + "_as" + reader.ext, file.text, file.first_line,
+                  fmt::format("read it with reader = \"{}\"", file.id), o);
+    }
+}
+
+TEST_CASE("Simpack reader: a processing key that leaves no profile is named with its line") {
+  const std::string keys_then = "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n units.len.f = 1000\n";
+  for (const char* shift : {"1e308", "-2e6"}) {  // mm: 1e305 m, 2 km
+    INFO(shift);
+    const std::string text = keys_then + " shift.y = " + shift + "\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n";
+    check_error("far_shift.prr", text, 7, fmt::format("shift.y = '{}' is out of range", shift));
+    CHECK(error_of(write("far_shift.prr", text)).find("metres?") == std::string::npos);
+  }
+  // A shift within the bound (999 m) is a shift.
+  const std::string km = keys_then + " shift.z = 999000\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n";
+  CHECK(error_of(write("km_shift.prr", km)) == "(no error)");
+  // The arc's rows are 1 mm apart in y (-15 .. 15): a minimum distance of 100 mm keeps the first only; bounds
+  // 0 .. 1 mm keep 2.
+  check_error("sparse.prr", keys_then + " point.dist.min = 100\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n", 7,
+              "point.dist.min = '100' leaves 1 of the 31 points; a profile needs at least 3");
+  check_error("narrow.prr", keys_then + " bound.y.min = 0\n bound.y.max = 1\n point.begin\n" + arc_rows(" ") +
+              " point.end\nspline.end\n", 7, "2 of the 31 points lie within bound.y.min .. bound.y.max = 0 .. 1");
 }

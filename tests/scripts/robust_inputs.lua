@@ -9,7 +9,8 @@
 --    polyline through the same points (smooth = false) solves that equilibrium.
 -- 2. p:resample with a step as long as the arc returned 2 points, a profile no later step accepts.
 -- 3. Points at +-1.7e308 m were a profile, whose arc length (their distance, computed here) overflows to inf; a
---    shift of 1e300 m made every point's z the same number. Points are bounded (1 km), however they are given.
+--    shift of 1e300 m made every point's z the same number. Points are bounded (1 km), however they are given; a
+--    shift beyond the bound is named as such.
 -- 4. ws:conicity{yhat = 1} (an amplitude in mm given as metres) built its table first and failed there, naming a
 --    table row y[1] = -1.501 m the user never gave; the amplitude is checked as it is read.
 -- 5. A wheel with a 2 mm hollow (a parabola over 50 mm of tread) at 10 kN, y = 3 mm, on 60E1 at 0.1 mm: continuation
@@ -75,7 +76,7 @@ check.fails(function() return wrc.profile.points{kind = "wheel", y = {-0.01, 0, 
 check.ok(#wrc.profile.points{kind = "wheel", y = {-0.01, 0, 999}, z = {0, 0, 0}} == 3, "999 m is accepted")
 local cone = write(tmp .. "cone.txt", "-70 1.75\n0 0\n60 -1.5\n")
 check.fails(function() return wrc.profile.load(cone, {kind = "wheel", shift = {z = 1e300}}) end,
-            "are the coordinates in metres", "a shift of 1e300 m")
+            "shift.z = 1e+300 m is out of range", "a shift of 1e300 m (named, not taken for a unit)")
 check.fails(function() return wrc.profile.load(cone, {kind = "wheel", units = 1e300}) end,
             "are the coordinates in metres", "units of 1e300 m")
 

@@ -25,4 +25,9 @@ int traceback_handler(lua_State* L);
 // lua_pcall with traceback_handler; on error leaves the message (with traceback) on the stack.
 int pcall_traceback(lua_State* L, int nargs, int nresults);
 
+// lua_pcall for strategy code, whose deliberate errors are messages to the user (compose.lua's checks of a strategy
+// value, a strategy's checks of its options): a string raised by `error`, `assert` or an engine function checking its
+// input is left on the stack as it is; a runtime error of Lua code (a bug) with its traceback.
+int pcall_plain_errors(lua_State* L, int nargs, int nresults);
+
 }  // namespace wrc::lua

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -33,14 +34,47 @@ int traceback_handler(lua_State* L) {
   return 1;
 }
 
-int pcall_traceback(lua_State* L, int nargs, int nresults) {
+namespace {
+
+// Messages pass as they are: a string raised by `error` or `assert` (the function at level 1 of the stack, the handler
+// being level 0), or by an engine function checking its input (a C function whose message starts with its caller's
+// "file:line: ", as `guarded` writes it). A runtime error of Lua code, or a C function's error that does not say
+// where (a library's "bad argument"), may be a bug: its traceback shows where.
+int plain_errors_handler(lua_State* L) {
+  lua_Debug ar;
+  if (lua_type(L, 1) == LUA_TSTRING && lua_getstack(L, 1, &ar) && lua_getinfo(L, "fS", &ar)) {
+    bool message = false;
+    for (const char* name : {"error", "assert"}) {
+      lua_getglobal(L, name);
+      message = message || lua_rawequal(L, -1, -2);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);  // the function
+    if (!message && std::strcmp(ar.what, "C") == 0) {
+      luaL_where(L, 2);
+      const char* where = lua_tostring(L, -1);
+      message = *where != '\0' && std::strncmp(lua_tostring(L, 1), where, std::strlen(where)) == 0;
+      lua_pop(L, 1);
+    }
+    if (message) return 1;
+  }
+  return traceback_handler(L);
+}
+
+int pcall_with(lua_State* L, lua_CFunction handler, int nargs, int nresults) {
   const int base = lua_gettop(L) - nargs;  // function index
-  lua_pushcfunction(L, traceback_handler);
+  lua_pushcfunction(L, handler);
   lua_insert(L, base);
   const int status = lua_pcall(L, nargs, nresults, base);
   lua_remove(L, base);
   return status;
 }
+
+}  // namespace
+
+int pcall_traceback(lua_State* L, int nargs, int nresults) { return pcall_with(L, traceback_handler, nargs, nresults); }
+
+int pcall_plain_errors(lua_State* L, int nargs, int nresults) { return pcall_with(L, plain_errors_handler, nargs, nresults); }
 
 namespace {
 

@@ -167,7 +167,7 @@ void call_resolve(lua_State* L, int idx) {
   lua_getfield(L, -1, "resolve");
   lua_remove(L, -2);
   lua_pushvalue(L, idx);
-  if (pcall_traceback(L, 1, 1) != LUA_OK) fail("wrc.wheelset: strategy: {}", pop_message(L));
+  if (pcall_plain_errors(L, 1, 1) != LUA_OK) fail("wrc.wheelset: strategy: {}", pop_message(L));
   if (!lua_istable(L, -1)) {
     lua_pop(L, 1);
     fail("wrc.wheelset: the strategy composer did not return a table");
@@ -213,7 +213,7 @@ void LuaSearch::search(SearchContext& ctx, int side) {
   auto* box = static_cast<ContextBox*>(lua_touserdata(L, -1));
   box->ctx = &ctx;
   lua_pushstring(L, side_name(side));
-  const int status = pcall_traceback(L, 2, 0);
+  const int status = pcall_plain_errors(L, 2, 0);
   box->ctx = nullptr;
   if (status != LUA_OK) {
     std::string msg = pop_message(L);
@@ -304,7 +304,7 @@ SideDiscretisation LuaStrategy::discretise(int side, const Profile& wheel, const
   lua_setfield(L, -2, "wheel");
   push_profile(L, std::make_shared<const Profile>(rail));
   lua_setfield(L, -2, "rail");
-  if (pcall_traceback(L, 1, 1) != LUA_OK) fail("{}: {}", ctx, pop_message(L));
+  if (pcall_plain_errors(L, 1, 1) != LUA_OK) fail("{}: {}", ctx, pop_message(L));
   if (!lua_istable(L, -1)) {
     lua_pop(L, 1);
     fail("{}: must return a table {{wheel =, rail =, coarse =}}", ctx);

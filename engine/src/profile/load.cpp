@@ -11,7 +11,9 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <system_error>
+#include <utility>
 
 namespace wrc {
 
@@ -195,6 +197,11 @@ LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
     o.shift_y = shift->number("y", {"m", "lateral shift"}, o.shift_y);
     o.shift_z = shift->number("z", {"m", "vertical shift"}, o.shift_z);
     shift->finish();
+    // Named here: past the bound on a point, the shifted points alone would be taken for a wrong unit.
+    for (const auto& [axis, v] : {std::pair{"y", o.shift_y}, std::pair{"z", o.shift_z}})
+      if (std::abs(v) > kMaxProfileCoordinate)
+        fail("{}: shift.{} = {:g} m is out of range: it moves every point that far, and no profile lies more than {:g} m "
+             "from the origin (is the shift in metres?)", r.context(), axis, v, kMaxProfileCoordinate);
   }
   if (auto crop = r.table("crop", {"m", "{y = {min, max}, z = {min, max}}: keep only the points inside"}))
     o.crop = read_crop(*crop);

@@ -1,0 +1,140 @@
+-- Wrong inputs whose error once named the wrong thing, each synthesised here (a small file in the test's temporary
+-- folder), the message checked for what it must name, against what the test itself knows of the file it wrote.
+--
+-- 1. A Simpack file (comment lines `! ...`, then header.begin) read as plain text (renamed .txt, or reader = "text"):
+--    the text reader took the first `!` line as a header of 2 columns and failed on the next line's field count. `!`
+--    and `%` lines are comments to it now, and a file that begins another format's file is refused naming the reader
+--    that reads it (the same file read as Simpack gives the same points as its .prw).
+-- 2. shift.y = 1e308 in a Simpack file was blamed on the file's unit ("are the coordinates in metres?", at a point's
+--    line); the shift's key and line are named as out of range.
+-- 3. 1e-400 in a profile file was "must be a number" (from_chars' underflow); it reads as 0 (the file with 0 there
+--    gives the same profile), while 1e400 is "out of range", not "not a number".
+-- 4. An unknown strategy gave its message followed by a Lua traceback inside the message, even under pcall; the
+--    message has no traceback and lists the strategies of scripts/strategies (each listed one builds a wheelset, and
+--    the one module not listed, the composer, is refused as not a strategy). A runtime error inside a strategy file
+--    keeps its traceback: that is a bug in the file, and the traceback says where.
+local check = require "wrc.check"
+local H = dofile((arg[0]:match("(.*/)") or "./") .. "../data/profile/helpers.lua")
+local tmp = (arg.tmp or ".") .. "/input_messages_"
+wrc.fs.mkdir(arg.tmp or ".")
+
+local s1002 = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua", {step = 1e-3})
+local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua", {step = 1e-3})
+
+-- The line of a file that holds `text` (plain), counted here.
+local function line_of(path, text)
+  local n = 0
+  for line in io.lines(path) do
+    n = n + 1
+    if line:find(text, 1, true) then return n end
+  end
+end
+
+-- ---- 1. a Simpack file given to the text reader ----
+local prw = H.write_simpack(tmp .. "wheel.prw", s1002)
+local txt = H.write(tmp .. "wheel.txt", io.open(prw):read("a"))
+local begin = line_of(txt, "header.begin")
+check.ok(begin > 1, "the file starts with comment lines before header.begin (line " .. begin .. ")")
+for _, try in ipairs{{txt, {kind = "wheel"}}, {prw, {reader = "text", kind = "wheel"}}} do
+  local err = check.fails(function() return wrc.profile.load(try[1], try[2]) end, "Simpack", "a Simpack file read as text")
+  check.ok(err:find(try[1] .. ":" .. begin .. ":", 1, true) and err:find('reader = "simpack"', 1, true)
+           and err:find(".prw", 1, true) and not err:find("fields", 1, true),
+           "the message names header.begin's line and the reader to use: " .. err)
+end
+local as_simpack = wrc.profile.load(txt, {reader = "simpack"})
+local py, pz = wrc.profile.load(prw):points()
+local ty, tz = as_simpack:points()
+check.ok(#ty == #py and ty[1] == py[1] and tz[#tz] == pz[#pz], "read as Simpack, the .txt gives the .prw's points")
+-- `!` and `%` lines are comments to the text reader: the same points as the file without them.
+local plain = H.write_text(tmp .. "plain.txt", s1002)
+local commented = H.write(tmp .. "commented.txt", "! ****\n! exported by a program that writes ! comments\n% and %\n"
+                          .. io.open(plain):read("a"))
+local ay, az = wrc.profile.load(plain, {kind = "wheel"}):points()
+local by, bz = wrc.profile.load(commented, {kind = "wheel"}):points()
+local same = #ay == #by
+for i = 1, #ay do same = same and ay[i] == by[i] and az[i] == bz[i] end
+check.ok(same, "comment lines change no point")
+check.fails(function() return wrc.profile.load(H.write(tmp .. "comments.txt", "! a\n% b\n# c\n\n"), {kind = "wheel"}) end,
+            "only comments and blank lines", "a file of only comments")
+-- The other formats given to the text reader, and a text file given to the Simpack reader.
+check.fails(function() return wrc.profile.load(H.write_miniprof(tmp .. "wheel.whl", s1002), {reader = "text"}) end,
+            'reader = "miniprof"', "a MiniProf file read as text")
+check.fails(function() return wrc.profile.load(plain, {reader = "simpack"}) end, 'reader = "text"',
+            "a text file read as Simpack")
+
+-- ---- 2. a shift out of range ----
+local far = H.write_simpack(tmp .. "far.prw", s1002, {shift_y = 1e308})
+local shift_line = line_of(far, "shift.y")
+local err = check.fails(function() return wrc.profile.load(far) end, "shift.y", "shift.y = 1e308")
+check.ok(err:find(far .. ":" .. shift_line .. ":", 1, true) and err:find("out of range", 1, true)
+         and not err:find("metres?", 1, true), "the shift's line, out of range, not the unit: " .. err)
+-- 2 km in the file's mm: refused the same way.
+err = check.fails(function() return wrc.profile.load(H.write_simpack(tmp .. "km.prw", s1002, {shift_z = -2e6})) end,
+                  "shift.z", "shift.z = 2 km")
+check.ok(err:find("out of range", 1, true), err)
+-- The same for the loader's own shift option (2000 given as metres, meant as mm), and a Simpack point.dist.min that
+-- leaves fewer than 3 points is named, not the count of points read.
+err = check.fails(function() return wrc.profile.load(prw, {shift = {z = 2000}}) end, "shift.z = 2000 m is out of range",
+                  "shift = {z = 2000}")
+check.ok(not err:find("are the coordinates", 1, true), "the shift, not the points' unit: " .. err)
+local sparse = H.write(tmp .. "sparse.prw", (io.open(prw):read("a"):gsub("point.dist.min = 0", "point.dist.min = 1e300")))
+err = check.fails(function() return wrc.profile.load(sparse) end, "point.dist.min = '1e300' leaves 1 of the",
+                  "point.dist.min = 1e300")
+check.ok(err:find(sparse .. ":" .. line_of(sparse, "point.dist.min") .. ":", 1, true), "its line: " .. err)
+
+-- ---- 3. underflow and overflow ----
+local function cone_with(z)
+  return H.write(tmp .. "cone.txt", ("-70 1.75\n0 %s\n60 -1.5\n"):format(z))
+end
+local zy, zz = wrc.profile.load(cone_with("0"), {kind = "wheel"}):points()
+for _, tiny in ipairs{"1e-400", "-1e-400", "2.4e-324"} do
+  local uy, uz = wrc.profile.load(cone_with(tiny), {kind = "wheel"}):points()
+  check.ok(uy[2] == zy[2] and uz[2] == zz[2] and uz[2] == 0, tiny .. " reads as 0")
+end
+err = check.fails(function() return wrc.profile.load(cone_with("1e400"), {kind = "wheel"}) end, "out of range", "1e400")
+check.ok(err:find(":2:", 1, true) and not err:find("must be a number", 1, true), "the line, not 'not a number': " .. err)
+
+-- ---- 4. strategy messages ----
+err = check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, strategy = "nonexistent"} end,
+                  "unknown strategy 'nonexistent'", "an unknown strategy")
+check.ok(not err:find("traceback", 1, true), "no traceback in the message: " .. err)
+local listed = err:match("%(strategies: ([%w_, ]+)%)")
+check.ok(listed ~= nil, "the message lists the strategies: " .. err)
+local names = {}
+for name in listed:gmatch("[%w_]+") do
+  names[name] = true
+  local ws = wrc.wheelset{wheel = s1002, rail = rail, strategy = name}
+  check.ok(ws.strategy.name == name, "listed strategy '" .. name .. "' builds a wheelset")
+end
+for _, file in ipairs(wrc.fs.list(wrc.paths.scripts .. "/strategies")) do
+  local name = file:match("^(.+)%.lua$")
+  if name and not names[name] then
+    check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, strategy = name} end, "is not a strategy",
+                "the unlisted module '" .. name .. "'")
+  end
+end
+-- A misspelt option, a misspelt name inside a composition, options out of range (checked by the strategy's assert,
+-- and by the engine function it calls): messages without traceback.
+for _, case in ipairs{{{"fast", stpe = 1e-4}, "strategy option 'stpe' is not used by fast"},
+                      {{"constant_slope", "coarse", "topolgy"}, "unknown strategy 'topolgy'"},
+                      {{"uniform", step = -1}, "uniform: step must be a positive number"},
+                      {{"fast", slope_step = -1}, "slope_step must be a positive angle"}} do
+  err = check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, strategy = case[1]} end, case[2], case[2])
+  check.ok(not err:find("traceback", 1, true), "no traceback: " .. err)
+end
+-- A strategy file with a bug that runs while the strategy is resolved (its defaults' __pairs indexes nil): the
+-- traceback stays, and it names the file's line.
+local buggy = H.write(tmp .. "buggy_strategy.lua", [[
+return {
+  defaults = setmetatable({}, {__pairs = function(t)
+    local missing
+    return missing.next
+  end}),
+  scan = "test",
+}
+]])
+err = check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, strategy = buggy} end,
+                  "attempt to index", "a bug in a strategy file")
+check.ok(err:find("stack traceback", 1, true) and err:find("buggy_strategy.lua:4:", 1, true),
+         "the bug keeps its traceback, with the file's line: " .. err)
+print("input_messages: ok")
