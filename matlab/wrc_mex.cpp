@@ -709,6 +709,8 @@ void dispatch(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   if (wrc_abi_version() != WRC_ABI_VERSION)
     fail("wrc:abi", "libwrc has ABI version " + std::to_string(wrc_abi_version()) + ", wrc_mex was built for " +
                         std::to_string(WRC_ABI_VERSION));
+  // The engine's messages about option types in MATLAB's words (struct, numeric array), on the thread that calls.
+  check(wrc_set_option_dialect("matlab"));
   if (nrhs < 1) fail("wrc:usage", "wrc_mex(command, ...): the +wrc package calls it (see docs/matlab.md)");
   const std::string name = text_of(prhs[0], "wrc_mex's command");
   for (const Command& cmd : commands)

@@ -722,3 +722,38 @@ TEST_CASE("the C API reads its arguments and options as one request: search, arg
   wrc_result_free(a);
   wrc_result_free(b);
 }
+
+TEST_CASE("option types in the C API's words (MATLAB's when its gateway asks), positions as ordinals") {
+  Fixture f;
+  const auto npos = std::string::npos;
+  wrc_result* c = nullptr;
+  // creepage is a table (creepage.xi=...): a number there is named in the words of option text.
+  CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage=0.001 mu=0.3", &c) == WRC_ERROR);
+  CHECK(c == nullptr);
+  CHECK(last().find("'creepage' must be a table (dotted keys: key.name=value), got number") != npos);
+  // MATLAB's words, on the calling thread only: another thread keeps the C API's.
+  REQUIRE(wrc_set_option_dialect("matlab") == WRC_OK);
+  CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage=0.001 mu=0.3", &c) == WRC_ERROR);
+  CHECK(last().find("'creepage' must be a struct, got number") != npos);
+  std::string other;
+  std::thread([&] {
+    wrc_result* r = nullptr;
+    wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage=0.001 mu=0.3", &r);
+    other = wrc_last_error();
+  }).join();
+  CHECK(other.find("must be a table (dotted keys") != npos);
+  REQUIRE(wrc_set_option_dialect("c") == WRC_OK);
+  CHECK(wrc_set_option_dialect("python") == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("\"c\" or \"matlab\"") != npos);
+  CHECK(wrc_set_option_dialect(nullptr) == WRC_INVALID_ARGUMENT);
+  // A C array counts from 0: the NaN planted at dr[bad] is named by its ordinal, the (bad + 1)th point.
+  std::vector<double> y, dr;
+  for (int i = -10; i <= 10; ++i) {
+    y.push_back(i * 1e-3);
+    dr.push_back(0.04 * i * 1e-3);
+  }
+  const std::size_t bad = 2;
+  dr[bad] = NAN;
+  CHECK(wrc_conicity(y.data(), dr.data(), y.size(), "yhat=2e-3", &c) == WRC_ERROR);
+  CHECK(last().find("the 3rd point is not a finite number") != npos);
+}

@@ -9,8 +9,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace wrc;
@@ -199,4 +201,63 @@ TEST_CASE("option docs: documented getters read values, fallbacks and errors as 
   CHECK(error_reading("radius=1").find("'Q' is required") != std::string::npos);
   CHECK(error_reading("Q=-1").find("'Q' must be > 0") != std::string::npos);
   CHECK(error_reading("Q=1 raduis=1").find("did you mean 'radius'") != std::string::npos);
+}
+
+TEST_CASE("positions in messages: ordinals by the rules of English, from a 0-based index") {
+  // English: 1st 2nd 3rd, then th; 11th 12th 13th whatever their tens; 21st 22nd 23rd again, and so in each hundred.
+  const std::pair<std::size_t, const char*> cases[] = {{1, "1st"},     {2, "2nd"},     {3, "3rd"},     {4, "4th"},
+                                                       {10, "10th"},   {11, "11th"},   {12, "12th"},   {13, "13th"},
+                                                       {21, "21st"},   {22, "22nd"},   {23, "23rd"},   {101, "101st"},
+                                                       {111, "111th"}, {112, "112th"}, {1002, "1002nd"}};
+  for (const auto& [n, text] : cases) CHECK(ordinal(n) == text);
+  CHECK(value_at(0, "'y'") == "the 1st value of 'y'");
+  CHECK(value_at(1, "mu") == "the 2nd value of mu");
+}
+
+namespace {
+
+// The message of reading `key` from `t` as a table (and its key 'inner' as a table) or as numbers ("" when it reads).
+std::string reading_error(const OptionTable& t, bool table, const char* key) {
+  try {
+    OptionReader r(t, "call");
+    if (table) {
+      auto sub = r.table(key);
+      if (sub) sub->table("inner");
+    } else {
+      r.numbers(key);
+    }
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("option types in the words of the front end that built the options, positions the same from all") {
+  // 'creepage' given as an array where a table is read, and 'y' holding NaN as its 2nd of three values.
+  OptionTable t;
+  t.set("creepage", OptionValue::of(std::vector<OptionValue>{OptionValue::of(1e-3)}));
+  t.set("y", OptionValue::of(std::vector<OptionValue>{OptionValue::of(0.0), OptionValue::of(std::nan("")),
+                                                      OptionValue::of(1.0)}));
+  OptionTable holder;  // a table nested in it, built by C++ code (no dialect of its own): its reader keeps the root's
+  holder.set("inner", OptionValue::of(true));
+  t.set("outer", OptionValue::of(holder));
+  const std::pair<OptionDialect, const char*> dialects[] = {{OptionDialect::lua, "must be a table, got array"},
+                                                            {OptionDialect::python, "must be a dict, got list"},
+                                                            {OptionDialect::matlab, "must be a struct, got numeric array"},
+                                                            {OptionDialect::c, "must be a table (dotted keys"}};
+  for (const auto& [dialect, words] : dialects) {
+    CAPTURE(words);
+    t.dialect = dialect;
+    CHECK(reading_error(t, true, "creepage").find(std::string("'creepage' ") + words) != std::string::npos);
+    CHECK(reading_error(t, false, "y") == "call: the 2nd value of 'y' must be finite, got nan");
+    const std::string nested = reading_error(t, true, "outer");
+    CHECK(nested.find(std::string("call: 'outer': 'inner' must be ") + option_words(dialect).a_table + ", got " +
+                      option_words(dialect).boolean) != std::string::npos);
+  }
+  // The C API's text: its tables, nested ones too, carry the dialect it is parsed with.
+  const OptionTable m = parse_option_text("creepage=0.001 outer.inner=true", "ctx", OptionDialect::matlab);
+  CHECK(reading_error(m, true, "creepage").find("'creepage' must be a struct, got number") != std::string::npos);
+  CHECK(reading_error(m, true, "outer").find("'inner' must be a struct, got logical") != std::string::npos);
 }

@@ -184,10 +184,10 @@ TEST_CASE("compute_damage refuses bad fields, naming them") {
   f.px = std::span<const double>(s.px).first(3);
   CHECK(message(f).find("px has 3 values") != std::string::npos);
   s.sy[5] = NAN;
-  CHECK(message(s.fields(10)).find("sy[5] = nan") != std::string::npos);
+  CHECK(message(s.fields(10)).find("the 6th value of sy (= nan) must be finite") != std::string::npos);
   s.sy[5] = 0;
   s.h.pressure[7] = -1;
-  CHECK(message(s.fields(10)).find("pressure[7] = -1 (must be finite and >= 0)") != std::string::npos);
+  CHECK(message(s.fields(10)).find("the 8th value of pressure (= -1) must be finite and >= 0") != std::string::npos);
   s.h.pressure[7] = 0;
   CHECK(message(s.fields(0)).find("V = 0 m/s") != std::string::npos);
   // No contact: zeros, no FI_surf, nothing not finite.

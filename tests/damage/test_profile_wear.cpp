@@ -210,10 +210,10 @@ TEST_CASE("wear kernels: worn area deposited, smoothed and removed along the nor
 TEST_CASE("wear kernels: bad input names what is wrong") {
   const std::vector<double> a = {0, 1e-3}, b = {0}, bad = {0, NAN};
   CHECK_THROWS_WITH_AS(arc_length(a, b), "arc_length: y has 2 points, z 1", Error);
-  CHECK_THROWS_WITH_AS(smooth_depths(a, bad, 1e-3), "smooth_depths: depth[2] is not finite", Error);
+  CHECK_THROWS_WITH_AS(smooth_depths(a, bad, 1e-3), "smooth_depths: the 2nd value of depth is not finite", Error);
   CHECK_THROWS_WITH_AS(smooth_depths(a, a, -1), "smooth_depths: length = -1 must be >= 0 (m)", Error);
-  CHECK_THROWS_WITH_AS(cell_lengths(std::vector<double>{0, 0}), "cell_lengths: arc must increase, arc[2] = 0 after 0",
-                       Error);
+  CHECK_THROWS_WITH_AS(cell_lengths(std::vector<double>{0, 0}),
+                       "cell_lengths: arc must increase: the 2nd value of arc (= 0) after 0", Error);
   CHECK_THROWS_WITH_AS(deposit_strips(a, a, std::vector<double>{1e-3, 0}, a),
-                       "deposit_strips: width[2] = 0 must be > 0", Error);
+                       "deposit_strips: the 2nd value of width (= 0) must be > 0", Error);
 }

@@ -536,11 +536,11 @@ TEST_CASE("subsurface: bad input names what is wrong") {
   CHECK(message({g, p, bad}, rq).find("traction px of element 5") != std::string::npos);
   SubsurfaceRequest r2 = rq;
   r2.z = {1e-4, 0};
-  CHECK(message({g, p}, r2).find("depth z[2] = 0") != std::string::npos);
+  CHECK(message({g, p}, r2).find("the 2nd value of z (= 0) must be a finite depth > 0") != std::string::npos);
   r2.z = {};
   CHECK(message({g, p}, r2).find("no depth") != std::string::npos);
   r2.z = {INFINITY};
-  CHECK(message({g, p}, r2).find("depth z[1] = inf") != std::string::npos);
+  CHECK(message({g, p}, r2).find("the 1st value of z (= inf)") != std::string::npos);
   r2 = rq;
   r2.shear_yield = 0;
   CHECK(message({g, p}, r2).find("shear_yield = 0") != std::string::npos);

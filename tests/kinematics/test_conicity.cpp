@@ -164,7 +164,7 @@ TEST_CASE("bad Δr tables and amplitudes are errors that say what is wrong") {
   };
   const ConicityOptions o = amplitudes({2e-3});
   CHECK(error_of(with([](DeltaRFunction& d) { std::swap(d.y[3], d.y[4]); }), o).find("y must increase strictly") != std::string::npos);
-  CHECK(error_of(with([](DeltaRFunction& d) { d.dr[5] = std::nan(""); }), o).find("point 6 is not a finite number") != std::string::npos);
+  CHECK(error_of(with([](DeltaRFunction& d) { d.dr[5] = std::nan(""); }), o).find("the 6th point is not a finite number") != std::string::npos);
   CHECK(error_of(with([](DeltaRFunction& d) { for (double& v : d.y) v *= 1e3; }), o).find("mm given?") != std::string::npos);
   CHECK(error_of(with([](DeltaRFunction& d) { for (double& v : d.dr) v *= 1e3; }), o).find("mm given?") != std::string::npos);
   CHECK(error_of(with([](DeltaRFunction& d) { for (double& v : d.dr) v = -v; }), o).find("not self-centring") != std::string::npos);

@@ -29,6 +29,13 @@ expect_error(@() wrc.profile_points('kind', 'wheel', 'y', [0 NaN 2] * 1e-3, 'z',
 expect_error(@() wrc.geometry_table(ws, 'y', struct('from', -1e-3, 'to', 1e-3, 'step', NaN)), 'wrc:error', ...
              '''step'' must be finite', 'NaN in a nested struct option');
 
+% The engine's messages in MATLAB's words: creepage is a struct (creepage.xi), and a position an ordinal, which reads
+% the same from every front end: y(2) of MATLAB is the 2nd value (Python's y[1], Lua's y[2]).
+expect_error(@() wrc.contact(ws, pose{:}, 'creepage', 1e-3, 'mu', 0.3), 'wrc:error', ...
+             '''creepage'' must be a struct, got number', 'a number for a struct');
+expect_error(@() wrc.geometry_table(ws, 'y', [-1e-3 NaN 1e-3]), 'wrc:error', ...
+             'the 2nd value of ''y'' must be finite', 'NaN at y(2)');
+
 % Files and values the engine refuses.
 expect_error(@() wrc.profile_load('no/such/file.txt'), 'wrc:error', 'no/such/file.txt: no such file', 'missing file');
 expect_error(@() wrc.contact(ws, 'y', 0, 'z', -5e-3, 'roll', 0, 'yaw', 0), 'wrc:error', ...

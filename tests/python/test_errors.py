@@ -55,6 +55,39 @@ def test_wrong_python_types(ws, s1002):
         wrc.wheelset(wheel=s1002)
 
 
+def ordinal(n):
+    """English ordinals, written out here independently of the engine: 1st 2nd 3rd 4th .. 11th 12th 13th .. 21st."""
+    if n % 100 in (11, 12, 13):
+        return f"{n}th"
+    return f"{n}" + {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+
+
+def test_positions_are_ordinals_not_lua_indices(ws):
+    # Python counts from 0: the NaN planted at y[bad] is the (bad + 1)th value. A message printing "'y'[2]" would send
+    # a Python user to the wrong element.
+    for bad in (1, 2):
+        y = np.array([0, 1e-3, 2e-3, 3e-3])
+        y[bad] = np.nan
+        with pytest.raises(wrc.OptionError) as e:
+            ws.sweep(y=y, Q=200e3)
+        assert f"the {ordinal(bad + 1)} value of 'y' must be finite, got nan" in str(e.value)
+        assert "[" not in str(e.value)
+    with pytest.raises(wrc.OptionError, match="the 3rd value of 'yhat' must be finite"):
+        ws.conicity(yhat=[1e-3, 2e-3, math.inf])
+
+
+def test_option_types_are_named_as_python_names_them(ws):
+    # creepage is a mapping (creepage={"xi": ...}); Lua's "table" and "array" mean nothing to a Python user.
+    with pytest.raises(wrc.OptionError) as e:
+        ws.contact(y=0, z=-1e-4, creepage=[1e-3], mu=0.3)
+    assert "'creepage' must be a dict, got list" in str(e.value)
+    with pytest.raises(wrc.OptionError, match="'y' must be a number, got dict"):
+        ws.contact(y={"from": 0}, z=-1e-4)
+    with pytest.raises(wrc.OptionError, match=r"'y' must be a number, a list or 1-D numpy array of numbers or "
+                                              r"dict\(from=, to=, step=\), got str"):
+        ws.sweep(y="0..1", Q=200e3)
+
+
 def test_numpy_scalars_and_none(ws):
     a = ws.contact(y=np.float64(2e-3), z=np.float32(-20e-6))
     b = ws.contact(y=2e-3, z=float(np.float32(-20e-6)), roll=None)  # None: not given (the default)

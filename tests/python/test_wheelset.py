@@ -171,7 +171,7 @@ def test_conicity_of_a_table():
     assert wrc.conicity(y=y, dr=0.2 * y, yhat=2e-3).tan_gamma[0] == pytest.approx(0.1, abs=1e-12)  # one table
     dr = 0.2 * y
     dr[9] = np.nan
-    with pytest.raises(wrc.Error, match="point 10 is not a finite number"):
+    with pytest.raises(wrc.Error, match="the 10th point is not a finite number"):
         wrc.conicity({"y": y, "dr": dr}, yhat=2e-3)
     with pytest.raises(wrc.Error, match="leaves the"):
         wrc.conicity({"y": y, "dr": 0.2 * y}, yhat=6e-3)

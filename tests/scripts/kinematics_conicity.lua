@@ -47,7 +47,7 @@ local y, dr = {}, {}
 for i = -50, 50 do y[#y + 1], dr[#dr + 1] = i * 0.1e-3, 0.2 * i * 0.1e-3 end
 check.near(wrc.conicity({y = y, dr = dr}, {yhat = 2e-3})[1], 0.1, 1e-12, "a single amplitude")
 dr[10] = 0 / 0
-check.fails(function() wrc.conicity({y = y, dr = dr}, {yhat = 2e-3}) end, "point 10 is not a finite number", "NaN")
+check.fails(function() wrc.conicity({y = y, dr = dr}, {yhat = 2e-3}) end, "the 10th point is not a finite number", "NaN")
 dr[10] = 0.2 * -41 * 0.1e-3
 y[5], y[6] = y[6], y[5]
 check.fails(function() wrc.conicity({y = y, dr = dr}, {yhat = 2e-3}) end, "y must increase strictly", "unsorted y")

@@ -345,4 +345,18 @@ do
   check.fails(with{V = V, mu = 0.3, rolling_tolerance = 0}, "rolling_tolerance", "tolerance")
   check.ok(p ~= nil, "bad input refused")
 end
+
+-- Messages speak the same from every front end: a position is an ordinal (Lua counts from 1, Python and C from 0, so
+-- "y[2]" would name different elements), a type is named in Lua's words when Lua built the options.
+do
+  for _, bad in ipairs{2, 3} do
+    local y = {0, 1e-3, 2e-3, 3e-3}
+    y[bad] = 0 / 0
+    local err = check.fails(function() return ws:sweep{y = y, Q = 200e3} end, "must be finite, got", "NaN in y")
+    local nth = ({"1st", "2nd", "3rd"})[bad]  -- Lua's y[bad] is the bad-th value
+    check.ok(tostring(err):find("the " .. nth .. " value of 'y'", 1, true), "the NaN named by its ordinal: " .. tostring(err))
+  end
+  check.fails(function() return ws:contact{y = 0, z = -1e-4, creepage = {1e-3}, mu = 0.3} end,
+              "'creepage' must be a table, got array", "creepage as an array")
+end
 print("rolling contact: ok")

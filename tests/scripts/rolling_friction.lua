@@ -118,7 +118,7 @@ do
               "profile y decreasing")
   check.fails(with{V = 30, mu = 0.3, friction_profile = {y = {0, 0.01}, mu = {0.3}}}, "'y' has 2 values and 'mu' 1",
               "profile sizes")
-  check.fails(with{V = 30, mu = 0.3, friction_profile = {y = {0, 0.01}, mu = {0.3, 0}}}, "mu[2] = 0 must be in",
+  check.fails(with{V = 30, mu = 0.3, friction_profile = {y = {0, 0.01}, mu = {0.3, 0}}}, "the 2nd value of mu (= 0) must be in",
               "profile mu = 0")
   check.fails(with{V = 30, mu = 0.3, friction_profile = function(y) return -1 end}, "friction_profile", "function < 0")
 end

@@ -34,5 +34,5 @@ check.fails(function() W.smooth{arc = {0, 1}, depth = {0, 0}} end, "wrc.wear.smo
 check.fails(function() W.cells{arc = {0, 1}, ark = 1} end, "wrc.wear.cells: unknown key 'ark'", "an unknown key")
 check.fails(function() W.normals{y = {0, 1}, z = {0, 0}, kind = "axle"} end,
             "wrc.wear.normals: 'kind' must be one of \"wheel\", \"rail\", got \"axle\"", "a bad kind")
-check.fails(function() W.arc_length{y = {0, 0 / 0}, z = {0, 1}} end, "wrc.wear.arc_length: 'y'[2] must be finite",
+check.fails(function() W.arc_length{y = {0, 0 / 0}, z = {0, 1}} end, "wrc.wear.arc_length: the 2nd value of 'y' must be finite",
             "a NaN point")

@@ -66,6 +66,10 @@ int wrc_abi_version(void);
 /* The message of the calling thread's last call that did not return WRC_OK ("" if none). The string is owned by the
  * library and valid until the calling thread's next wrc call. */
 const char* wrc_last_error(void);
+/* The words in which the calling thread's messages name option types: "c" (the default: a list "a,b,c", dotted keys
+ * for a table) or "matlab" (a numeric array, a struct: the MATLAB/Octave interface passes its name/value pairs and
+ * structs as option text). Positions in arrays are named by ordinals ("the 2nd value of 'y'"), whoever asks. */
+wrc_status wrc_set_option_dialect(const char* front_end);
 
 /* ---- profiles ---- */
 

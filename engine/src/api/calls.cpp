@@ -191,7 +191,7 @@ WheelResult TrajectoryWheelCall::run(Trajectory& trajectory) const {
 
 SweepPlan read_sweep_plan(OptionReader& r) {
   const auto ys = r.number_list("y", {"m", "lateral positions (required): an array or {from, to, step}"});
-  if (!ys && !r.documenting()) fail("{}: 'y' is required (an array, or {{from=, to=, step=}})", r.context());
+  if (!ys && !r.documenting()) fail("{}: 'y' is required ({} or {})", r.context(), r.words().numbers, r.words().range);
   const std::vector<double> yaws =
       r.number_list("yaw", {"rad", "yaw angles: a number, an array or {from, to, step}"})
           .value_or(std::vector<double>{EquilibriumCase{}.yaw});
@@ -208,9 +208,10 @@ std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReade
   const OptionValue* v = s.value("contact", "array", {"-", "per case: the contact_start of a sweep (contact_starts = "
                                  "true) whose pressures and tractions start its solves, or false: none"});
   if (!v || s.documenting()) return out;
-  if (v->type != OptionValue::Type::array || v->array.size() != cases)
-    fail("{}: starts.contact must be an array of {} entries (one per start), got a {} of {}", s.context(), cases,
-         v->type_name(), v->array.size());
+  if (v->type != OptionValue::Type::array)
+    fail("{}: starts.contact must hold one entry per start ({}), got {}", s.context(), cases, s.type_name(*v));
+  if (v->array.size() != cases)
+    fail("{}: starts.contact has {} entries, expected one per start ({})", s.context(), v->array.size(), cases);
   for (std::size_t k = 0; k < cases; ++k) {
     const OptionValue& e = v->array[k];
     if (e.type == OptionValue::Type::boolean && !e.boolean) {
@@ -218,8 +219,8 @@ std::vector<std::shared_ptr<const ContactStart>> read_contact_starts(OptionReade
     } else if (e.type == OptionValue::Type::object && e.string == ContactStart::kTypeName) {
       out.push_back(std::static_pointer_cast<const ContactStart>(e.object));
     } else {
-      fail("{}: starts.contact[{}] must be a {} or false, got a {}", s.context(), k + 1, ContactStart::kTypeName,
-           e.type_name());
+      fail("{}: {} must be a {} or false, got {}", s.context(), value_at(k, "starts.contact"), ContactStart::kTypeName,
+           s.type_name(e));
     }
   }
   return out;
@@ -241,8 +242,8 @@ void read_sweep_starts(OptionReader& r, SweepOptions& o) {
   for (std::size_t k = 0; k < z->size(); ++k) {
     const double zk = (*z)[k], rk = (*roll)[k];
     if (std::isnan(zk) != std::isnan(rk))
-      fail("{}: starts of case {}: z = {} m and roll = {} rad must both be NaN (none) or numbers", r.context(), k + 1,
-           zk, rk);
+      fail("{}: {} and of starts.roll: z = {} m and roll = {} rad must both be NaN (none) or numbers", r.context(),
+           value_at(k, "starts.z"), zk, rk);
     o.starts.push_back(std::isnan(zk) ? std::nullopt : std::optional<Start>(Start{zk, rk, std::nullopt, false}));
   }
   o.contact_starts = std::move(contact);

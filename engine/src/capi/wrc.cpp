@@ -55,6 +55,8 @@ struct wrc_result {
 namespace {
 
 thread_local std::string last_error;
+// The words of this thread's messages about option types (wrc_set_option_dialect).
+thread_local wrc::OptionDialect option_dialect = wrc::OptionDialect::c;
 
 // A status with its message, thrown inside an entry point.
 struct Failure {
@@ -163,7 +165,10 @@ void check_count(std::size_t n, const char* what) {
 }
 
 wrc::OptionTable options_of(const char* text, const char* context) {
-  return text ? wrc::parse_option_text(text, context) : wrc::OptionTable{};
+  if (text) return wrc::parse_option_text(text, context, option_dialect);
+  wrc::OptionTable none;
+  none.dialect = option_dialect;  // the call's numbers join it, and their messages speak the same words
+  return none;
 }
 
 // The options of a call: the caller's option text, and the numbers the call takes as arguments under the names Lua
@@ -301,6 +306,16 @@ int wrc_abi_version(void) { return WRC_ABI_VERSION; }
 
 const char* wrc_last_error(void) { return last_error.c_str(); }
 
+wrc_status wrc_set_option_dialect(const char* front_end) {
+  return guard("wrc_set_option_dialect", [&] {
+    const std::string_view f = front_end ? front_end : "(null)";
+    if (f == "c") option_dialect = wrc::OptionDialect::c;
+    else if (f == "matlab") option_dialect = wrc::OptionDialect::matlab;
+    else invalid(fmt::format("front_end = \"{}\" must be \"c\" or \"matlab\"", f));
+    return WRC_OK;
+  });
+}
+
 wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out) {
   return guard("wrc_profile_load", [&] {
     set_out(out, "profile");
@@ -377,7 +392,8 @@ wrc_status wrc_wheelset_new4(const wrc_profile* left_wheel, const wrc_profile* r
     const wrc::WheelsetParams params = read_wheelset_params(r);
     wrc::OptionTable strategy_options;
     if (const wrc::OptionValue* v = r.value("strategy_options")) {
-      if (v->type != wrc::OptionValue::Type::table) invalid("'strategy_options' must be a table (strategy_options.step=...)");
+      if (v->type != wrc::OptionValue::Type::table)
+        invalid(fmt::format("'strategy_options' must be {}, got {}", r.words().a_table, r.type_name(*v)));
       strategy_options = *v->table;
     }
     r.finish();

@@ -51,13 +51,35 @@ OptionValue OptionValue::of_object(std::shared_ptr<const void> p, std::string ty
   return o;
 }
 
-const char* OptionValue::type_name() const {
+const OptionWords& option_words(OptionDialect dialect) {
+  static const OptionWords lua{"boolean", "string", "array", "table",
+                               "a table", "an array of numbers", "an array of strings", "{from =, to =, step =}"};
+  static const OptionWords c{"boolean", "string", "list", "table (dotted keys)",
+                             "a table (dotted keys: key.name=value)", "a list of numbers (a,b,c)", "a list of strings",
+                             "key.from= key.to= key.step="};
+  static const OptionWords python{"bool", "str", "list", "dict",
+                                  "a dict", "a list or 1-D numpy array of numbers", "a list of str",
+                                  "dict(from=, to=, step=)"};
+  static const OptionWords matlab{"logical", "char array", "numeric array", "struct",
+                                  "a struct", "a numeric array", "a cell array of char arrays",
+                                  "struct('from', a, 'to', b, 'step', h)"};
+  switch (dialect) {
+    case OptionDialect::lua: return lua;
+    case OptionDialect::c: return c;
+    case OptionDialect::python: return python;
+    case OptionDialect::matlab: return matlab;
+  }
+  return lua;
+}
+
+const char* OptionValue::type_name(OptionDialect dialect) const {
+  const OptionWords& w = option_words(dialect);
   switch (type) {
     case Type::number: return "number";
-    case Type::boolean: return "boolean";
-    case Type::string: return "string";
-    case Type::array: return "array";
-    case Type::table: return "table";
+    case Type::boolean: return w.boolean;
+    case Type::string: return w.string;
+    case Type::array: return w.array;
+    case Type::table: return w.table;
     case Type::object: return string.c_str();
   }
   return "?";
@@ -129,11 +151,13 @@ struct TableBuilder {
   }
 
   // The finished table (recursion bounded by kMaxOptionDepth).
-  OptionTable finish() {
+  OptionTable finish(OptionDialect dialect) {
     OptionTable t;
+    t.dialect = dialect;
     t.entries.reserve(keys.size());
     for (std::size_t i = 0; i < keys.size(); ++i)
-      t.entries.emplace_back(std::move(keys[i]), tables[i] ? OptionValue::of(tables[i]->finish()) : std::move(values[i]));
+      t.entries.emplace_back(std::move(keys[i]),
+                             tables[i] ? OptionValue::of(tables[i]->finish(dialect)) : std::move(values[i]));
     return t;
   }
 };
@@ -162,7 +186,7 @@ void set_path(TableBuilder& root, std::string_view key, OptionValue v, std::stri
 
 }  // namespace
 
-OptionTable parse_option_text(std::string_view text, std::string_view context) {
+OptionTable parse_option_text(std::string_view text, std::string_view context, OptionDialect dialect) {
   if (text.size() > kMaxOptionTextLength)
     fail("{}: the option text is {} bytes long (at most {})", context, text.size(), kMaxOptionTextLength);
   TableBuilder root;
@@ -179,7 +203,7 @@ OptionTable parse_option_text(std::string_view text, std::string_view context) {
     set_path(root, pair.substr(0, eq), parse_scalar_or_list(pair.substr(eq + 1)), context);
     i = j;
   }
-  return root.finish();
+  return root.finish(dialect);
 }
 
 std::string closest_name(std::string_view key, const std::vector<std::string>& known) {
@@ -210,7 +234,13 @@ std::string closest_name(std::string_view key, const std::vector<std::string>& k
 }
 
 OptionReader::OptionReader(const OptionTable& table, std::string context)
-    : table_(table), context_(std::move(context)) {}
+    : table_(table), context_(std::move(context)), dialect_(table.dialect) {}
+
+OptionReader OptionReader::nested(const OptionTable& table, std::string context) const {
+  OptionReader r(table, std::move(context));
+  r.dialect_ = dialect_;
+  return r;
+}
 
 OptionReader OptionReader::documenting(std::string context, std::vector<OptionInfo>& out) {
   static const OptionTable nothing;
@@ -266,7 +296,7 @@ void OptionReader::allow(std::initializer_list<std::string_view> keys) {
 }
 
 void OptionReader::type_error(std::string_view key, const OptionValue& v, std::string_view expected) const {
-  fail("{}: '{}' must be {}, got {}", context_, key, expected, v.type_name());
+  fail("{}: '{}' must be {}, got {}", context_, key, expected, type_name(v));
 }
 
 std::optional<double> OptionReader::number(std::string_view key, OptionDoc doc) {
@@ -365,14 +395,14 @@ std::optional<std::vector<double>> OptionReader::numbers(std::string_view key, O
   if (!v) return std::nullopt;
   if (v->type == OptionValue::Type::number && !finite) return std::vector<double>{v->number};
   if (v->type == OptionValue::Type::number) return std::vector<double>{*number(key)};
-  if (v->type != OptionValue::Type::array) type_error(key, *v, "an array of numbers");
+  if (v->type != OptionValue::Type::array) type_error(key, *v, words().numbers);
   std::vector<double> out;
   out.reserve(v->array.size());
   for (std::size_t i = 0; i < v->array.size(); ++i) {
     const OptionValue& e = v->array[i];
-    if (e.type != OptionValue::Type::number)
-      fail("{}: '{}'[{}] must be a number, got {}", context_, key, i + 1, e.type_name());
-    if (finite && !std::isfinite(e.number)) fail("{}: '{}'[{}] must be finite, got {}", context_, key, i + 1, e.number);
+    const auto at = [&] { return value_at(i, fmt::format("'{}'", key)); };
+    if (e.type != OptionValue::Type::number) fail("{}: {} must be a number, got {}", context_, at(), type_name(e));
+    if (finite && !std::isfinite(e.number)) fail("{}: {} must be finite, got {}", context_, at(), e.number);
     out.push_back(e.number);
   }
   return out;
@@ -382,11 +412,11 @@ std::optional<std::vector<std::string>> OptionReader::strings(std::string_view k
   if (doc_) note(key, "strings", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
-  if (v->type != OptionValue::Type::array) type_error(key, *v, "an array of strings");
+  if (v->type != OptionValue::Type::array) type_error(key, *v, words().strings);
   std::vector<std::string> out;
   for (std::size_t i = 0; i < v->array.size(); ++i) {
     if (v->array[i].type != OptionValue::Type::string)
-      fail("{}: '{}'[{}] must be a string, got {}", context_, key, i + 1, v->array[i].type_name());
+      fail("{}: {} must be a string, got {}", context_, value_at(i, fmt::format("'{}'", key)), type_name(v->array[i]));
     out.push_back(v->array[i].string);
   }
   return out;
@@ -402,7 +432,7 @@ std::optional<std::vector<double>> OptionReader::number_list(std::string_view ke
   if (!v) return std::nullopt;
   std::vector<double> out;
   if (v->type == OptionValue::Type::table) {
-    OptionReader r(*v->table, fmt::format("{}: '{}' ({{from =, to =, step =}})", context_, key));
+    OptionReader r = nested(*v->table, fmt::format("{}: '{}' ({})", context_, key, words().range));
     const double from = r.need_number("from"), to = r.need_number("to"), step = r.need_number("step");
     r.finish();
     if (!(step > 0)) fail("{}: '{}.step' must be > 0, got {}", context_, key, step);
@@ -414,7 +444,7 @@ std::optional<std::vector<double>> OptionReader::number_list(std::string_view ke
     out = *numbers(key);
     if (out.size() > max_count) fail("{}: '{}' has {} values (at most {})", context_, key, out.size(), max_count);
   } else {
-    type_error(key, *v, "a number, an array of numbers or {from =, to =, step =}");
+    type_error(key, *v, fmt::format("a number, {} or {}", words().numbers, words().range));
   }
   if (out.empty()) fail("{}: '{}' is empty", context_, key);
   return out;
@@ -429,8 +459,8 @@ std::optional<OptionReader> OptionReader::table(std::string_view key, OptionDoc 
   }
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
-  if (v->type != OptionValue::Type::table) type_error(key, *v, "a table");
-  return OptionReader(*v->table, fmt::format("{}: '{}'", context_, key));
+  if (v->type != OptionValue::Type::table) type_error(key, *v, words().a_table);
+  return nested(*v->table, fmt::format("{}: '{}'", context_, key));
 }
 
 std::shared_ptr<const void> OptionReader::object(std::string_view key, std::string_view type, OptionDoc doc) {

@@ -47,7 +47,7 @@ void check(const AreaFields& f, FieldCheck how) {
     if (all_valid(v, pressure)) continue;
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(v[k]) || (pressure && v[k] < 0))
-        fail("damage: {}[{}] = {} (must be finite{})", name, k, v[k], pressure ? " and >= 0" : "");
+        fail("damage: {} (= {}) must be finite{}", value_at(k, name), v[k], pressure ? " and >= 0" : "");
   }
   if (!(std::isfinite(f.V) && f.V != 0)) fail("damage: V = {} m/s must be finite and != 0", f.V);
   for (auto [name, v] : {std::pair{"xi", f.creepage.xi}, {"eta", f.creepage.eta}, {"phi", f.creepage.phi},

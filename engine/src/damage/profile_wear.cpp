@@ -12,7 +12,7 @@ void check_polyline(std::span<const double> y, std::span<const double> z, const 
   if (y.size() != z.size()) fail("{}: y has {} points, z {}", what, y.size(), z.size());
   if (y.size() < 2) fail("{}: a polyline needs at least 2 points, got {}", what, y.size());
   for (std::size_t i = 0; i < y.size(); ++i) {
-    if (!std::isfinite(y[i]) || !std::isfinite(z[i])) fail("{}: point {} is not finite", what, i + 1);
+    if (!std::isfinite(y[i]) || !std::isfinite(z[i])) fail("{}: the {} point is not finite", what, ordinal(i + 1));
   }
 }
 
@@ -22,7 +22,7 @@ void check_sizes(std::size_t n, std::size_t m, const char* what, const char* fie
 
 void check_finite(std::span<const double> v, const char* what, const char* field) {
   for (std::size_t i = 0; i < v.size(); ++i) {
-    if (!std::isfinite(v[i])) fail("{}: {}[{}] is not finite", what, field, i + 1);
+    if (!std::isfinite(v[i])) fail("{}: {} is not finite", what, value_at(i, field));
   }
 }
 
@@ -31,7 +31,8 @@ void check_arc(std::span<const double> arc, const char* what) {
   if (arc.size() < 2) fail("{}: needs at least 2 points, got {}", what, arc.size());
   check_finite(arc, what, "arc");
   for (std::size_t i = 1; i < arc.size(); ++i) {
-    if (!(arc[i] > arc[i - 1])) fail("{}: arc must increase, arc[{}] = {} after {}", what, i + 1, arc[i], arc[i - 1]);
+    if (!(arc[i] > arc[i - 1]))
+      fail("{}: arc must increase: {} (= {}) after {}", what, value_at(i, "arc"), arc[i], arc[i - 1]);
   }
 }
 
@@ -131,7 +132,8 @@ Deposit deposit_strips(std::span<const double> arc, std::span<const double> cent
   for (std::size_t i = 1; i < n; ++i) edge[i] = (arc[i - 1] + arc[i]) / 2;
   Deposit out{std::vector<double>(n, 0.0), 0.0};
   for (std::size_t k = 0; k < centre.size(); ++k) {
-    if (!(width[k] > 0) || !std::isfinite(width[k])) fail("{}: width[{}] = {} must be > 0", what, k + 1, width[k]);
+    if (!(width[k] > 0) || !std::isfinite(width[k]))
+      fail("{}: {} (= {}) must be > 0", what, value_at(k, "width"), width[k]);
     const double a = centre[k] - width[k] / 2, b = centre[k] + width[k] / 2, density = area[k] / width[k];
     out.outside += density * (std::max(0.0, std::min(b, edge[0]) - a) + std::max(0.0, b - std::max(a, edge[n])));
     // The first cell whose right edge is past a.

@@ -482,7 +482,7 @@ EquilibriumResult solve_equilibrium(const ContactModel& model, const Equilibrium
     for (std::size_t k = 0; k < starts.size() && !ok; ++k) {
       std::string w;
       ok = solver.newton(y, starts[k].z, starts[k].roll, starts[k].jacobian, starts[k].jacobian_lifted, cur, w);
-      if (!ok) why.push_back(fmt::format("from start {}: {}", k + 1, w));
+      if (!ok) why.push_back(fmt::format("from the {} start: {}", ordinal(k + 1), w));
     }
     // 2. Near the centre, the rigid position pressed in a little; farther out, continuation first.
     const bool near_centre = std::abs(y) <= 2e-3;

@@ -178,7 +178,8 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
          plan.cases.size());
   for (std::size_t k = 0; k < opt.starts.size(); ++k)
     if (opt.starts[k] && (!std::isfinite(opt.starts[k]->z) || !std::isfinite(opt.starts[k]->roll)))
-      fail("sweep: starts of case {}: z = {} m, roll = {} rad must be finite", k + 1, opt.starts[k]->z, opt.starts[k]->roll);
+      fail("sweep: {} and of starts.roll: z = {} m, roll = {} rad must be finite", value_at(k, "starts.z"),
+           opt.starts[k]->z, opt.starts[k]->roll);
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult out;
   std::vector<bool> taken(plan.chunks.size(), false);

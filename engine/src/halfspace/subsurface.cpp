@@ -333,7 +333,7 @@ void check_input(const Material& material, const SurfaceLoad& load, const Subsur
     fail("subsurface: {} depths, at most {} per call", r.z.size(), kMaxSubsurfaceDepths);
   for (std::size_t d = 0; d < r.z.size(); ++d)
     if (!(std::isfinite(r.z[d]) && r.z[d] > 0))
-      fail("subsurface: depth z[{}] = {} (expected a finite depth > 0 below the surface, m)", d + 1, r.z[d]);
+      fail("subsurface: {} (= {}) must be a finite depth > 0 below the surface (m)", value_at(d, "z"), r.z[d]);
   if (r.fields && static_cast<double>(r.z.size()) * static_cast<double>(N) * 11 > kMaxSubsurfaceFieldValues)
     fail("subsurface: {} depths of {} elements make {} field values, more than {} (ask for fields = false: the "
          "maxima only)", r.z.size(), N, r.z.size() * N * 11, kMaxSubsurfaceFieldValues);

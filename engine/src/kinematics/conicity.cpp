@@ -245,14 +245,16 @@ void check_input(const DeltaRFunction& d) {
   if (!d.flange.empty() && d.flange.size() != n) fail("{}: flange has {} values for {} points", kCtx, d.flange.size(), n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(d.y[i]) || !std::isfinite(d.dr[i]))
-      fail("{}: point {} is not a finite number (y = {}, dr = {})", kCtx, i + 1, d.y[i], d.dr[i]);
+      fail("{}: the {} point is not a finite number (y = {}, dr = {})", kCtx, ordinal(i + 1), d.y[i], d.dr[i]);
     if (std::abs(d.y[i]) > 0.1)
-      fail("{}: y[{}] = {} m lies beyond +-0.1 m: y is the lateral displacement in metres (mm given?)", kCtx, i + 1, d.y[i]);
+      fail("{}: {} (= {} m) lies beyond +-0.1 m: y is the lateral displacement in metres (mm given?)", kCtx,
+           value_at(i, "y"), d.y[i]);
     if (std::abs(d.dr[i]) > 0.05)
-      fail("{}: dr[{}] = {} m: Δr is a rolling radius difference in metres, a few mm at most (mm given?)", kCtx, i + 1,
+      fail("{}: {} (= {} m): Δr is a rolling radius difference in metres, a few mm at most (mm given?)", kCtx,
+           value_at(i, "dr"),
            d.dr[i]);
     if (i > 0 && !(d.y[i] > d.y[i - 1]))
-      fail("{}: y must increase strictly: y[{}] = {} m after y[{}] = {} m", kCtx, i + 1, d.y[i], i, d.y[i - 1]);
+      fail("{}: y must increase strictly: {} (= {} m) after {} m", kCtx, value_at(i, "y"), d.y[i], d.y[i - 1]);
   }
 }
 
@@ -338,11 +340,13 @@ DeltaRFunction read_delta_r(OptionReader& r) {
   d.y = std::move(*y);
   d.dr = std::move(*dr);
   if (const OptionValue* f = r.value("flange")) {
-    if (f->type != OptionValue::Type::array) fail("{}: 'flange' must be an array of booleans", r.context());
-    for (const OptionValue& v : f->array) {
+    if (f->type != OptionValue::Type::array)
+      fail("{}: 'flange' must be booleans (or 0/1), one per value of 'y', got {}", r.context(), r.type_name(*f));
+    for (std::size_t i = 0; i < f->array.size(); ++i) {
+      const OptionValue& v = f->array[i];
       if (v.type == OptionValue::Type::boolean) d.flange.push_back(v.boolean);
       else if (v.type == OptionValue::Type::number && (v.number == 0 || v.number == 1)) d.flange.push_back(v.number == 1);
-      else fail("{}: 'flange' must be an array of booleans (or 0/1), got a {}", r.context(), v.type_name());
+      else fail("{}: {} must be a boolean (or 0/1), got {}", r.context(), value_at(i, "'flange'"), r.type_name(v));
     }
   }
   return d;

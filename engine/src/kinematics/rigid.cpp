@@ -510,7 +510,7 @@ RigidOptions read_rigid_options(OptionReader& r, RigidOptions o) {
       o.roll_mode = v->string == "free" ? RollMode::free : RollMode::fixed;
     } else {
       fail("{}: 'roll' must be \"free\" (both wheels touch), \"fixed\" (held at 0) or a number (held there, rad), "
-           "got {}", r.context(), v->type == OptionValue::Type::string ? "\"" + v->string + "\"" : v->type_name());
+           "got {}", r.context(), v->type == OptionValue::Type::string ? "\"" + v->string + "\"" : r.type_name(*v));
     }
   }
   o.Q = r.number("Q", {"N", "the load the normal forces carry (roll free)"}, o.Q);

@@ -18,9 +18,9 @@ void check_options(const GeometryTableOptions& o) {
   if (o.y.empty()) fail("geometry table: 'y' needs at least one lateral position (m)");
   for (std::size_t i = 0; i < o.y.size(); ++i) {
     if (!std::isfinite(o.y[i]) || std::abs(o.y[i]) > 0.1)
-      fail("geometry table: y[{}] = {} m must be finite and within +-0.1 m", i + 1, o.y[i]);
+      fail("geometry table: {} (= {} m) must be finite and within +-0.1 m", value_at(i, "y"), o.y[i]);
     if (i > 0 && !(o.y[i] > o.y[i - 1]))
-      fail("geometry table: y must increase strictly: y[{}] = {} m after {} m", i + 1, o.y[i], o.y[i - 1]);
+      fail("geometry table: y must increase strictly: {} (= {} m) after {} m", value_at(i, "y"), o.y[i], o.y[i - 1]);
   }
   if (!(o.jump_threshold > 0)) fail("geometry table: jump_threshold = {} m must be positive", o.jump_threshold);
 }
@@ -126,7 +126,8 @@ GeometryTable run_geometry_table(const GeometryModel& g, const GeometryTableOpti
 GeometryTableOptions read_geometry_table_options(OptionReader& r) {
   GeometryTableOptions o;
   const auto ys = r.number_list("y", {"m", "lateral positions (required): an array or {from, to, step}"});
-  if (!ys && !r.documenting()) fail("{}: 'y' is required (an array, or {{from =, to =, step =}}, m)", r.context());
+  if (!ys && !r.documenting())
+    fail("{}: 'y' is required ({} or {}, m)", r.context(), r.words().numbers, r.words().range);
   if (ys) o.y = *ys;
   o.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, o.yaw);
   o.rigid = read_rigid_options(r, o.rigid);

@@ -67,6 +67,7 @@ OptionValue table_option(lua_State* L, int idx, std::string_view context, int de
   if (depth > kMaxOptionDepth) fail("{}: tables nested more than {} levels deep", context, kMaxOptionDepth);
   std::vector<OptionValue> array;
   OptionTable table;
+  table.dialect = OptionDialect::lua;
   // Raw access only: a metamethod that raised would longjmp past the C++ objects being built here.
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, idx));
   lua_pushnil(L);

@@ -155,12 +155,12 @@ void apply_shift(std::vector<double>& y, std::vector<double>& z, const LoadOptio
 namespace {
 
 // A reader option as the text the reader receives.
-std::string option_text(const std::string& key, const OptionValue& v, const std::string& context) {
+std::string option_text(const std::string& key, const OptionValue& v, const OptionReader& r) {
   switch (v.type) {
     case OptionValue::Type::boolean: return v.boolean ? "true" : "false";
     case OptionValue::Type::number: return fmt::format("{}", v.number);  // shortest exact representation
     case OptionValue::Type::string: return v.string;
-    default: fail("{}: option '{}' must be a string, number or boolean, got {}", context, key, v.type_name());
+    default: fail("{}: option '{}' must be a string, number or boolean, got {}", r.context(), key, r.type_name(v));
   }
 }
 
@@ -224,11 +224,11 @@ LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
                                      {"-", "the file's length unit: mm (default), cm, m, in, or metres per file unit"})) {
     if (u->type != OptionValue::Type::number && u->type != OptionValue::Type::string)
       fail("{}: 'units' must be \"mm\", \"cm\", \"m\", \"in\" or a number (metres per file unit), got {}", r.context(),
-           u->type_name());
-    o.units_text = option_text("units", *u, r.context());
+           r.type_name(*u));
+    o.units_text = option_text("units", *u, r);
     o.metres_per_unit = parse_units(o.units_text, r.context());
   }
-  for (const auto* e : r.rest()) o.reader_options.emplace_back(e->first, option_text(e->first, e->second, r.context()));
+  for (const auto* e : r.rest()) o.reader_options.emplace_back(e->first, option_text(e->first, e->second, r));
   return o;
 }
 
@@ -250,7 +250,7 @@ RawProfile read_raw_profile(OptionReader& r) {
       raw.units_declared_by = fmt::format("units = \"{}\" (reader)", u->string);
       raw.metres_per_unit = parse_units(u->string, r.context());
     } else {
-      fail("{}: 'units' must be \"mm\", \"m\" or a number, got {}", r.context(), u->type_name());
+      fail("{}: 'units' must be \"mm\", \"m\" or a number, got {}", r.context(), r.type_name(*u));
     }
   }
   raw.name = r.string("name").value_or("");

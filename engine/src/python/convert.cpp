@@ -91,6 +91,7 @@ OptionValue to_option(py::handle v, const std::string& context, int depth) {
 
 OptionTable mapping_options(py::handle mapping, const std::string& context, int depth) {
   OptionTable t;
+  t.dialect = OptionDialect::python;  // the engine's messages name a dict, a list
   for (py::handle key : mapping.attr("keys")()) {
     if (!py::isinstance<py::str>(key)) type_error(context, key, "option keys must be str");
     const std::string k = key.cast<std::string>();

@@ -75,7 +75,8 @@ PyWheelset* make_wheelset(const py::kwargs& given) {
     r.allow({"wheel", "rail", "left_wheel", "right_wheel", "left_rail", "right_rail"});
     params = read_wheelset_params(r);
     if (const OptionValue* v = r.value("strategy_options")) {
-      if (v->type != OptionValue::Type::table) fail("{}: 'strategy_options' must be a mapping, got {}", ctx, v->type_name());
+      if (v->type != OptionValue::Type::table)
+        fail("{}: 'strategy_options' must be a mapping, got {}", ctx, r.type_name(*v));
       strategy_options = *v->table;
     }
     r.finish();  // a misspelt key first: it may be why a profile seems missing

@@ -638,9 +638,10 @@ FrictionProfile read_profile(OptionReader& t) {
     fail("{}: 'y' has {} values and 'mu' {}: expected equal, non-empty lists", t.context(), y->size(), mu->size());
   for (std::size_t i = 0; i < y->size(); ++i) {
     if (i > 0 && !((*y)[i] > (*y)[i - 1]))
-      fail("{}: y[{}] = {} m does not increase from y[{}] = {} m", t.context(), i + 1, (*y)[i], i, (*y)[i - 1]);
+      fail("{}: {} (= {} m) does not increase from the one before ({} m)", t.context(), value_at(i, "y"), (*y)[i],
+           (*y)[i - 1]);
     if (!((*mu)[i] >= halfspace::kFrictionMin && (*mu)[i] <= halfspace::kFrictionMax))
-      fail("{}: mu[{}] = {} must be in [{:g}, {:g}]", t.context(), i + 1, (*mu)[i], halfspace::kFrictionMin,
+      fail("{}: {} (= {}) must be in [{:g}, {:g}]", t.context(), value_at(i, "mu"), (*mu)[i], halfspace::kFrictionMin,
            halfspace::kFrictionMax);
   }
   p.y = std::move(*y);

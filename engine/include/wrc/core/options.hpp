@@ -1,6 +1,6 @@
 // Named options as the engine reads them, whoever supplies them: a Lua table (the binding converts it), a C
 // string "key=value key2=value2" (the C API), or C++ code building them. One reader checks every key, type and
-// range and names what is wrong, so the same call gets the same message from Lua, C and Python.
+// range and names what is wrong: the same message from every front end, types in its words (OptionDialect).
 #pragma once
 
 #include "wrc/core/error.hpp"
@@ -16,6 +16,27 @@
 namespace wrc {
 
 struct OptionTable;
+
+// The words of the front end that built an option tree, for messages about option types: a Python user passes a
+// dict where Lua takes a table, a MATLAB user a struct, a C API user dotted keys. The front end sets its dialect on
+// the tables it builds (OptionTable::dialect); a reader of a nested table keeps its parent reader's, so that a table
+// C++ code put into a front end's options speaks the front end's words too. The default is Lua's, the
+// language the options are documented in (and the words of C++ code building options).
+enum class OptionDialect { lua, c, python, matlab };
+
+struct OptionWords {
+  // A value's type, as a message names what it got ("got list"); a number is "number" in every dialect.
+  const char* boolean;
+  const char* string;
+  const char* array;
+  const char* table;
+  // What a message asks for: a nested table ("a dict"), an array of numbers, of strings, and a range of numbers.
+  const char* a_table;
+  const char* numbers;
+  const char* strings;
+  const char* range;
+};
+const OptionWords& option_words(OptionDialect dialect);
 
 // One value: a number, a boolean, a string, an array (of values), a table (named values) or an engine object
 // (e.g. a profile) with the name of its type.
@@ -35,12 +56,14 @@ struct OptionValue {
   static OptionValue of(std::vector<OptionValue> v);
   static OptionValue of(OptionTable t);
   static OptionValue of_object(std::shared_ptr<const void> p, std::string type);
-  const char* type_name() const;  // "number", "boolean", "string", "array", "table" or the object's type
+  // "number", the dialect's word for a boolean, string, array or table, or the object's type ("wrc.Profile").
+  const char* type_name(OptionDialect dialect) const;
 };
 
 // Named values in the order given.
 struct OptionTable {
   std::vector<std::pair<std::string, OptionValue>> entries;
+  OptionDialect dialect = OptionDialect::lua;  // of the front end that built it
   const OptionValue* find(std::string_view key) const;
   OptionTable& set(std::string key, OptionValue v);  // replaces an entry of the same key
   bool empty() const { return entries.empty(); }
@@ -56,8 +79,10 @@ inline constexpr std::size_t kMaxOptionTextLength = std::size_t{32} << 20;
 // Parses "key=value key2=value2" (blanks or ';' between pairs; a value is a number, true/false, a list of numbers
 // "a,b,c", or a string; dotted keys "shift.y=1e-3" make nested tables), in time linear in the text. A key given
 // twice, a name that is both a value and a table, an empty name ("a..b") and input past the bounds above are errors
-// that name `context` and the key.
-OptionTable parse_option_text(std::string_view text, std::string_view context);
+// that name `context` and the key. The table's dialect is `dialect`: the C API's, or MATLAB's, whose name/value pairs
+// and structs its gateway passes as this text.
+OptionTable parse_option_text(std::string_view text, std::string_view context,
+                              OptionDialect dialect = OptionDialect::c);
 
 // What a key means, beside its name and the default its options struct holds: the unit ("m", "N", "Pa", "rad",
 // "m/s"; "-" for pure numbers, strings, booleans and tables) and one line of help. Readers pass it with every
@@ -97,6 +122,9 @@ class OptionReader {
   static OptionReader documenting(std::string context, std::vector<OptionInfo>& out);
   bool documenting() const { return doc_ != nullptr; }
   const std::string& context() const { return context_; }
+  // The words of the front end that built the options (OptionDialect), for messages.
+  const OptionWords& words() const { return option_words(dialect_); }
+  const char* type_name(const OptionValue& v) const { return v.type_name(dialect_); }
   bool has(std::string_view key);  // present (and counted as known)
   const OptionValue* value(std::string_view key);  // nullptr when absent
   // value() of a key that its reader checks itself (e.g. one of several types): a documenting reader records it with
@@ -148,8 +176,11 @@ class OptionReader {
   // While documenting: records the key (once; a later call fills what an earlier one left empty).
   void note(std::string_view key, std::string_view type, OptionDoc doc, std::string fallback = {},
             bool required = false, std::vector<std::string> choices = {});
+  // A reader of a table nested in this one's: the same dialect.
+  OptionReader nested(const OptionTable& table, std::string context) const;
   const OptionTable& table_;
   std::string context_;
+  OptionDialect dialect_;
   std::vector<std::string> known_;
   std::vector<OptionInfo>* doc_ = nullptr;  // documenting: where keys are recorded
   std::string prefix_;                      // documenting a nested table: "<key>."
