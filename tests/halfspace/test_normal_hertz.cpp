@@ -130,6 +130,39 @@ TEST_CASE("Hertz: the dense reference solver too") {
   CHECK(std::abs(e.b_elements) <= 1.0);
 }
 
+TEST_CASE("Hertz: the dense solver on three sizes, against Hertz and the fast solver, cold and warm") {
+  // Contacts of ~100, ~300 and ~700 elements (B/A = 3): Hertz's force within the discretisation error the fast
+  // solver's Hertz cases allow at these sizes, the fast solver's solution to its tolerance, and a warm start (the
+  // shallower pose's pressure, as an equilibrium's next evaluation passes it) lands on the cold solve.
+  const double element = 0.2e-3, A = 1 / (2 * 0.45);
+  const NormalSolver fast(steel);
+  for (double semi_axis : {4.0, 7.0, 10.0}) {  // elements on the minor semi-axis
+    CAPTURE(semi_axis);
+    const double delta = approach_for(A, 3 * A, element, semi_axis);
+    const HertzContact hz = hertz_from_approach(A, 3 * A, steel.combined_modulus(), delta);
+    const NormalCase c = paraboloid_case(A, 3 * A, delta, element);
+    const NormalSolution d = solve_normal_dense(steel, c.grid, c.h, NormalLoad::penetration());
+    const HertzErrors e = compare(c, d, hz);
+    CHECK(std::abs(e.force) < 0.005);  // measured 0.1 % at 4 elements on b, less on finer grids
+    CHECK(std::abs(e.a_elements) <= 1.0);
+    CHECK(std::abs(e.b_elements) <= 1.0);
+    const NormalSolution f = fast.solve(c.grid, c.h, NormalLoad::penetration());
+    for (int k = 0; k < c.grid.size(); ++k) {
+      CHECK((d.pressure[k] > 0) == (f.pressure[k] > 0));
+      CHECK(std::abs(d.pressure[k] - f.pressure[k]) < 1e-6 * d.max_pressure);
+    }
+    NormalCase shallower = c;
+    for (double& h : shallower.h) h -= 0.05 * delta;
+    const NormalSolution before = solve_normal_dense(steel, shallower.grid, shallower.h, NormalLoad::penetration());
+    NormalOptions warm;
+    warm.initial_pressure = before.pressure;
+    const NormalSolution w = solve_normal_dense(steel, c.grid, c.h, NormalLoad::penetration(), warm);
+    for (int k = 0; k < c.grid.size(); ++k) CHECK(std::abs(w.pressure[k] - d.pressure[k]) < 1e-9 * d.max_pressure);
+    MESSAGE(fmt::format("dense Hertz, b = {} elements: {} in contact, {} iterations cold, {} warm; force {:+.3f} %",
+                        semi_axis, d.elements_in_contact, d.iterations, w.iterations, 100 * e.force));
+  }
+}
+
 TEST_CASE("Hertz: the error shrinks as the grid is refined") {
   const NormalSolver solver(steel);
   NormalWorkspace ws;

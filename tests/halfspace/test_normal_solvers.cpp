@@ -392,6 +392,29 @@ TEST_CASE("no contact, zero force, and touching bodies give clean zero solutions
   CHECK(s1.max_pressure == within_rel(expected, 1e-12));
 }
 
+TEST_CASE("dense solver: an active set beyond kDenseMaxElements is refused before its matrix is allocated") {
+  // 200,000 elements in {h > 0}: a matrix of 8 bytes x 200,000^2 = 320 GB, which no test machine holds: the error
+  // comes before the allocation (else std::bad_alloc, or the machine's memory exhausted), and names the active set,
+  // the memory and the way out.
+  const Grid huge = Grid::square(500, 400, 0.05e-3);
+  const std::vector<double> flat(huge.size(), 1e-6);
+  const std::string m = message_of([&] { solve_normal_dense(steel, huge, flat, NormalLoad::penetration()); });
+  CHECK(m.find("solve_normal_dense: 200000 elements in the active set") != std::string::npos);
+  CHECK(m.find("320000 MB") != std::string::npos);
+  CHECK(m.find("solver = \"fast\"") != std::string::npos);
+  // One row beyond the limit, the linearised response: a flat punch presses every element (p > 0 everywhere, from the
+  // fast solver), 10,100 elements, 8 x 10,100^2 bytes = 816 MB.
+  REQUIRE(kDenseMaxElements == 10'000);
+  const Grid punch = Grid::square(101, 100, 0.2e-3);
+  const std::vector<double> h(punch.size(), 1e-6);
+  const NormalSolution s = NormalSolver(steel).solve(punch, h, NormalLoad::penetration());
+  REQUIRE(s.elements_in_contact == punch.size());
+  const std::string r = message_of([&] { normal_response_dense(steel, s, h); });
+  CHECK(r.find("normal_response_dense: 10100 elements in the active set") != std::string::npos);
+  CHECK(r.find("816 MB") != std::string::npos);
+  CHECK(r.find("solver = \"fast\"") != std::string::npos);
+}
+
 TEST_CASE("bad input: a wrc::Error that names the problem") {
   const NormalSolver solver(steel);
   const Grid g = Grid::square(4, 3, 0.2e-3);

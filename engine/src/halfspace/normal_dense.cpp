@@ -10,40 +10,60 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <string_view>
 
 namespace wrc::halfspace {
 namespace {
 
-// The active block 2 D_AA, factorised (Cholesky; LDLT should rounding make it fail).
+// The active block 2 D_AA, factorised in place (Cholesky; LDLT should rounding make it fail): one m x m matrix, 8 m^2
+// bytes, refused beyond kDenseMaxElements before it is allocated.
 class ActiveBlock {
  public:
-  ActiveBlock(const InfluenceTable& table, double factor, const Grid& grid, const std::vector<int>& active) {
+  ActiveBlock(const InfluenceTable& table, double factor, const Grid& grid, const std::vector<int>& active,
+              std::string_view context) {
     const int m = static_cast<int>(active.size());
-    Eigen::MatrixXd K(m, m);
+    if (m > kDenseMaxElements)
+      fail("{}: {} elements in the active set would need a dense {} x {} matrix of {:.0f} MB (8 bytes each) and about "
+           "{:.0f} s per Cholesky factorisation; the dense reference solver takes at most {} ({:.0f} MB): use the "
+           "fast solver (solver = \"fast\", the default; NormalSolver in C++) or a coarser grid",
+           context, m, m, m, dense_block_bytes(m) / 1e6, dense_factorisation_seconds(m), kDenseMaxElements,
+           dense_block_bytes(kDenseMaxElements) / 1e6);
+    K_.resize(m, m);
+    fill(table, factor, grid, active);
+    llt_.emplace(K_);
+    if (llt_->info() != Eigen::Success) {
+      llt_.reset();
+      fill(table, factor, grid, active);  // the failed factorisation overwrote it
+      ldlt_.emplace(K_);
+      if (ldlt_->info() != Eigen::Success)
+        fail("{}: the influence matrix of {} active elements could not be factorised", context, m);
+    }
+  }
+  ActiveBlock(const ActiveBlock&) = delete;  // the factorisations refer to K_
+  ActiveBlock& operator=(const ActiveBlock&) = delete;
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
+    if (ldlt_) return ldlt_->solve(rhs);
+    return llt_->solve(rhs);
+  }
+
+ private:
+  // The lower triangle of 2 D_AA (the factorisations read no other).
+  void fill(const InfluenceTable& table, double factor, const Grid& grid, const std::vector<int>& active) {
+    const int m = static_cast<int>(active.size());
     for (int b = 0; b < m; ++b) {
       const int ib = active[b] % grid.nx, jb = active[b] / grid.nx;
       for (int a = b; a < m; ++a) {
         const int ia = active[a] % grid.nx, ja = active[a] / grid.nx;
-        K(a, b) = factor * table(ia - ib, ja - jb);
+        K_(a, b) = factor * table(ia - ib, ja - jb);
       }
     }
-    llt_.compute(K);
-    if (llt_.info() != Eigen::Success) {
-      use_ldlt_ = true;
-      ldlt_.compute(K);
-      if (ldlt_.info() != Eigen::Success)
-        fail("solve_normal_dense: the influence matrix of {} active elements could not be factorised", m);
-    }
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
-    if (use_ldlt_) return ldlt_.solve(rhs);
-    return llt_.solve(rhs);
   }
 
- private:
-  Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> llt_;
-  Eigen::LDLT<Eigen::MatrixXd, Eigen::Lower> ldlt_;
-  bool use_ldlt_ = false;
+  Eigen::MatrixXd K_;
+  std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> llt_;
+  std::optional<Eigen::LDLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> ldlt_;
 };
 
 // u = 2 D p on the whole grid, p non-zero on `active` only.
@@ -87,6 +107,7 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
   s.load = load;
   s.pressure.assign(n, 0.0);
   std::vector<int> active;
+  std::vector<std::vector<int>> visited;  // the active set of each iteration
   for (int it = 1;; ++it) {
     if (it > max_iterations)
       fail("solve_normal_dense: the active set did not settle in {} iterations ({} x {} grid)", max_iterations,
@@ -96,8 +117,14 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
       if (in[k]) active.push_back(k);
     if (active.empty())
       fail("solve_normal_dense: the active set became empty (internal error for h with max {} m)", hmax);
+    // Each set determines the next: one met before would repeat the same iterations up to max_iterations.
+    const auto seen = std::find(visited.begin(), visited.end(), active);
+    if (seen != visited.end())
+      fail("solve_normal_dense: the active set cycles: iteration {} has the {} elements of iteration {} ({} x {} grid); "
+           "use the fast solver (solver = \"fast\")", it, active.size(), seen - visited.begin() + 1, grid.nx, grid.ny);
+    visited.push_back(active);
     const int m = static_cast<int>(active.size());
-    const ActiveBlock block(table, factor, grid, active);
+    const ActiveBlock block(table, factor, grid, active, "solve_normal_dense");
     Eigen::VectorXd rhs(m);
     for (int a = 0; a < m; ++a) rhs[a] = h[active[a]];
     Eigen::VectorXd pa = block.solve(rhs);
@@ -154,7 +181,7 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
   }
   const double factor = material.pair_compliance();
   const InfluenceTable table(grid.dx, grid.dy, grid.nx, grid.ny);
-  const ActiveBlock block(table, factor, grid, active);
+  const ActiveBlock block(table, factor, grid, active, "normal_response_dense");
   const int m = static_cast<int>(active.size());
   Eigen::VectorXd rhs(m);
   for (int a = 0; a < m; ++a) rhs[a] = dh[active[a]];
