@@ -122,6 +122,13 @@ class AreaGeometry {
   if (!(norm2 > 0)) return v.dot(f.t1);
   return (v.dot(f.t1) * std::sqrt(norm2) + 0.5 * tn * v.dot(f.n)) / std::sqrt(norm2 + 0.25 * tn * tn);
 }
+// The same on a conformal row, whose t1 is e_x: its dot products are the vectors' x (the same numbers).
+[[gnu::always_inline]] inline double rolling_slip_x(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
+                                                    const Eigen::Vector3d& n) {
+  const double norm2 = tw.squaredNorm(), tn = tw.x() < 0 ? -tw.dot(n) : tw.dot(n);
+  if (!(norm2 > 0)) return v.x();
+  return (v.x() * std::sqrt(norm2) + 0.5 * tn * v.dot(n)) / std::sqrt(norm2 + 0.25 * tn * tn);
+}
 [[gnu::always_inline]] inline double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X,
                                                   const Eigen::Vector3d& v, const ElementFrame& f) {
   return rolling_slip(field.axle.cross(X - field.c), v, f);
@@ -166,10 +173,11 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   a.extra_x.assign(static_cast<std::size_t>(g.size()), 0.0);
   a.extra_y.assign(a.extra_x.size(), 0.0);
   if (rigid) a.rigid_x.assign(a.extra_x.size(), 0.0), a.rigid_y.assign(a.extra_x.size(), 0.0);
-  const halfspace::Creepages& c = a.creepages;
-  const double inv_speed = 1 / speed;
+  const halfspace::Creepages c = a.creepages;  // (a copy: the grids' stores cannot alias it, nor g's below)
+  const double inv_speed = 1 / speed, x0 = g.x0, dx = g.dx;
   for (int j = 0; j < g.ny; ++j) {
     const ElementFrame f = geo.frame(j);
+    const double row_x = c.xi - c.phi * g.y(j);  // the creepages' field along x, the same along the row
     // On a conformal area a row's contact points are affine in the element's index and h (along the row's normal),
     // and so are v and axle x (X - c): per element two sums instead of the point and two cross products.
     Eigen::Vector3d v0 = Eigen::Vector3d::Zero(), vi = v0, vh = v0, t0 = v0, ti = v0, th = v0;
@@ -179,24 +187,28 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
       v0 = field.at(X0), vi = field.omega.cross(Xi), vh = field.omega.cross(Xh);
       t0 = field.axle.cross(X0 - field.c), ti = field.axle.cross(Xi), th = field.axle.cross(Xh);
     }
+    const std::size_t row = static_cast<std::size_t>(g.index(0, j));
+    const double* p = pc.solution.pressure.data() + row;
+    const double* hs = pc.h.data() + row;
+    double *ex = a.extra_x.data() + row, *ey = a.extra_y.data() + row;
     for (int i = 0; i < g.nx; ++i) {
-      const auto q = static_cast<std::size_t>(g.index(i, j));
-      if (!(pc.solution.pressure[q] > 0)) continue;  // the slip matters on the contact only
+      if (!(p[i] > 0)) continue;  // the slip matters on the contact only
       double sx, sy;
       if (pc.conformal) {
-        const double h = pc.h[q];
+        const double h = hs[i];
         const Eigen::Vector3d v = v0 + i * vi + h * vh;
-        sx = rolling_slip(t0 + i * ti + h * th, v, f), sy = v.dot(f.t2);
+        sx = rolling_slip_x(t0 + i * ti + h * th, v, f.n), sy = v.dot(f.t2);
       } else {
-        const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), v = field.at(X);
+        const Eigen::Vector3d X = geo.contact_point(i, j, hs[i]), v = field.at(X);
         sx = rolling_slip(field, X, v, f), sy = v.dot(f.t2);
       }
-      a.extra_x[q] = sx * inv_speed - (c.xi - c.phi * g.y(j));
-      a.extra_y[q] = sy * inv_speed - (c.eta + c.phi * g.x(i));
+      const double row_y = c.eta + c.phi * (x0 + i * dx);  // g.x(i)
+      ex[i] = sx * inv_speed - row_x;
+      ey[i] = sy * inv_speed - row_y;
       if (!rigid) continue;
       // halfspace::rigid_slip's sums (the reference point at the grid's origin), without its pass over the grid
-      a.rigid_x[q] = c.xi - c.phi * g.y(j) + a.extra_x[q];
-      a.rigid_y[q] = c.eta + c.phi * g.x(i) + a.extra_y[q];
+      a.rigid_x[row + static_cast<std::size_t>(i)] = row_x + ex[i];
+      a.rigid_y[row + static_cast<std::size_t>(i)] = row_y + ey[i];
     }
   }
   return a;
