@@ -61,11 +61,12 @@ VelocityField velocity_field(const Kinematics& k, double r0, const Pose& pose) {
 }
 
 // The tangential problem of an area: its pressure, the creepages at the plane's origin and, from kinematics, the
-// per-element difference of the rigid slip at the elements' contact points from the creepages' linear field; with
-// `rigid`, also the rigid slip itself (the result's, 0 outside the contact), as halfspace::rigid_slip sums it.
+// per-element difference of the rigid slip at the elements' contact points from the creepages' linear field (in the
+// workspace's scratch grids, 0 outside the contact); with `rigid`, also the rigid slip itself (the result's, 0 outside
+// the contact), as halfspace::rigid_slip sums it.
 struct AreaSlip {
   halfspace::Creepages creepages;
-  std::vector<double> extra_x, extra_y;
+  std::span<const double> extra_x, extra_y;
   std::vector<double> rigid_x, rigid_y;
   double V = 1;
 };
@@ -149,7 +150,7 @@ double rolling_slip_change(const VelocityField& field, const Eigen::Vector3d& X,
 }
 
 AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq,
-                   bool rigid = false) {
+                   ContactWorkspace& ws, bool rigid = false) {
   AreaSlip a;
   if (rq.creepage) {
     a.creepages = *rq.creepage;
@@ -170,9 +171,11 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   const ElementFrame f0 = geo.frame(std::clamp(j0, 0, g.ny - 1));
   const Eigen::Vector3d X0 = geo.contact_point(i0, j0, h0), v0 = field.at(X0);
   a.creepages = {rolling_slip(field, X0, v0, f0) / speed, v0.dot(f0.t2) / speed, field.omega.dot(f0.n) / speed};
-  a.extra_x.assign(static_cast<std::size_t>(g.size()), 0.0);
-  a.extra_y.assign(a.extra_x.size(), 0.0);
-  if (rigid) a.rigid_x.assign(a.extra_x.size(), 0.0), a.rigid_y.assign(a.extra_x.size(), 0.0);
+  const auto n = static_cast<std::size_t>(g.size());
+  ws.extra_x.resize(n);  // every element written below
+  ws.extra_y.resize(n);
+  a.extra_x = ws.extra_x, a.extra_y = ws.extra_y;
+  if (rigid) a.rigid_x.assign(n, 0.0), a.rigid_y.assign(n, 0.0);
   const halfspace::Creepages c = a.creepages;  // (a copy: the grids' stores cannot alias it, nor g's below)
   const double inv_speed = 1 / speed, x0 = g.x0, dx = g.dx;
   for (int j = 0; j < g.ny; ++j) {
@@ -190,9 +193,12 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
     const std::size_t row = static_cast<std::size_t>(g.index(0, j));
     const double* p = pc.solution.pressure.data() + row;
     const double* hs = pc.h.data() + row;
-    double *ex = a.extra_x.data() + row, *ey = a.extra_y.data() + row;
+    double *ex = ws.extra_x.data() + row, *ey = ws.extra_y.data() + row;
     for (int i = 0; i < g.nx; ++i) {
-      if (!(p[i] > 0)) continue;  // the slip matters on the contact only
+      if (!(p[i] > 0)) {  // the slip matters on the contact only
+        ex[i] = ey[i] = 0;
+        continue;
+      }
       double sx, sy;
       if (pc.conformal) {
         const double h = hs[i];
@@ -334,7 +340,7 @@ Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const Pat
   const PatchRolling& r = *pc.rolling;
   if (r.solution.px.empty() || pc.solution.pressure.empty())
     fail("contact sensitivity: the {} wheel's area has no traction grid (kept grids are needed)", side_name(pc.side));
-  const AreaSlip slip = area_slip(model, pose, pc, rq);
+  const AreaSlip slip = area_slip(model, pose, pc, rq, ws);
   halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
   pb.friction_scale = r.friction_scale;
   std::vector<halfspace::TangentialChange> changes(7);
@@ -373,7 +379,7 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   }
   if (pc.solution.pressure.empty() || pc.h.empty())
     fail("rolling contact: the {} wheel's area has no pressure grid (kept grids are needed)", side_name(pc.side));
-  AreaSlip slip = area_slip(model, pose, pc, rq, true);
+  AreaSlip slip = area_slip(model, pose, pc, rq, ws, true);
   halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
   PatchRolling r;
   if (const auto& profile = rq.friction_profile[static_cast<std::size_t>(pc.side)]) {
@@ -386,7 +392,8 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   r.creepage = slip.creepages;
   if (rq.method == RollingMethod::fastsim) {
     // (the pressure a normal solution's, the extra slip from checked kinematics on a checked pose: their sizes alone)
-    r.solution = halfspace::solve_fastsim(model.material(), pb, halfspace::ProblemCheck::sizes);
+    r.solution = std::move(ws.fastsim_grids);  // (every element is written: stale values do not matter)
+    halfspace::solve_fastsim(model.material(), pb, r.solution, halfspace::ProblemCheck::sizes);
   } else {
     halfspace::TangentialOptions opt;
     opt.tolerance = rq.tolerance;
@@ -421,6 +428,15 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   pc.moment += r.moment;
   pc.rolling = std::move(r);
   pc.rolling->damage = damage::compute_damage(area_fields(pc), rq.damage, damage::FieldCheck::sizes);
+}
+
+void recycle_tangential(ContactResult& result, ContactWorkspace& ws) {
+  for (WheelContact& wc : result.wheel)
+    for (PatchContact& pc : wc.patches)
+      if (pc.rolling && pc.rolling->method == RollingMethod::fastsim && !pc.rolling->solution.px.empty()) {
+        ws.fastsim_grids = std::move(pc.rolling->solution);
+        return;
+      }
 }
 
 damage::AreaFields area_fields(const PatchContact& area) {
