@@ -355,6 +355,47 @@ TEST_CASE("FASTSIM's rows are independent strips: empty rows added below the pat
       }
 }
 
+// A dynamics code solves into the last step's solution (and the wheelset's areas into a discarded one's grids), whose
+// storage is not zeroed first: every element must be written. Grids of another size full of NaN and wrong states
+// must give the same numbers, bit for bit, as a fresh solve: in partial slip, for constant and falling friction
+// (their own marches), rolling either way.
+TEST_CASE("FASTSIM into a used solution: stale grids of another problem change no element") {
+  const wrc::test::HertzPatch h = hertz_patch(3e-3, 1.2e-3, 1e9, 6);
+  for (int direction : {1, -1})
+    for (bool falling : {false, true}) {
+      TangentialProblem pb = rolling_problem(h, {0.4e-3, -0.5e-3, 0.6}, 0.3, direction);
+      if (falling) pb.friction = Friction::polach(0.4, 0.4, 0.6), pb.speed = 30;
+      const TangentialSolution ref = solve_fastsim(kSteel, pb);
+      const std::size_t n = ref.px.size();
+      int slipping = 0;
+      for (unsigned char st : ref.state) slipping += st == kSlip;
+      CAPTURE(direction);
+      CAPTURE(falling);
+      REQUIRE(slipping > 5);
+      REQUIRE(ref.adhesion_fraction() > 0.1);
+      for (std::size_t stale : {n / 2, n + 37}) {
+        TangentialSolution s;
+        for (auto* v : {&s.px, &s.py, &s.sx, &s.sy}) v->assign(stale, std::nan(""));
+        s.state.assign(stale, kSlip);
+        s.fx = s.fy = s.mz = 1e9;
+        solve_fastsim(kSteel, pb, s);
+        CAPTURE(stale);
+        REQUIRE(s.px.size() == n);
+        REQUIRE(s.state.size() == n);
+        CHECK(s.px == ref.px);  // (exact: NaN compares unequal)
+        CHECK(s.py == ref.py);
+        CHECK(s.sx == ref.sx);
+        CHECK(s.sy == ref.sy);
+        CHECK(s.state == ref.state);
+        CHECK(s.fx == ref.fx);
+        CHECK(s.fy == ref.fy);
+        CHECK(s.mz == ref.mz);
+        CHECK(s.power_per_speed == ref.power_per_speed);
+        CHECK(s.adhesion_area == ref.adhesion_area);
+      }
+    }
+}
+
 // A change of the pressure changes FASTSIM's forces through the bound mu p of the slip elements and through the
 // flexibilities: the ellipse counts an edge element below 5 % of the peak pressure with a weight rising smoothly from 0
 // to 1 with its pressure (ellipse.hpp). linearise_fastsim against central differences of solve_fastsim over the

@@ -263,8 +263,10 @@ class WheelSolver {
       throw EvaluationBudget(
           fmt::format("gave up after {} contact evaluations (max_evaluations)", opt_.limits.max_evaluations));
     const Pose pose{c_.y, z_touch_ - a, c_.roll, c_.yaw};
-    cur_ = load ? areas::evaluate_vertical_load(model_, pose, ws_, req, *load)
-                : evaluate_contact(model_, pose, ws_, req);
+    ContactResult next = load ? areas::evaluate_vertical_load(model_, pose, ws_, req, *load)
+                              : evaluate_contact(model_, pose, ws_, req);
+    recycle_tangential(cur_, ws_);  // (after the evaluation: a throw leaves the last one whole)
+    cur_ = std::move(next);
     res_.z = z_touch_ - a;
     res_.approach = a;
   }

@@ -27,7 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <type_traits>
+#include <span>
 
 namespace wrc::halfspace {
 namespace {
@@ -123,105 +123,117 @@ struct FallingSlip {
   }
 };
 
-}  // namespace
+// Per contact region: the layer's flexibilities (its equivalent ellipse's), their inverses, and the spin creepage
+// scaled per axis (L1 / L3 in x, L2 / L3 in y).
+struct Layer {
+  double lx, ly, inv_lx, inv_ly, spin_x, spin_y;
+};
 
-TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& pb, ProblemCheck check) {
-  TangentialSolution out;
-  solve_fastsim(material, pb, out, check);
-  return out;
-}
-
-void solve_fastsim(const Material& material, const TangentialProblem& pb, TangentialSolution& out,
-                   ProblemCheck check) {
-  validate(pb, "solve_fastsim", check);
-  validate(material, "solve_fastsim");
-  const Grid& g = pb.grid;
-  const auto n = static_cast<std::size_t>(g.size());
-  out = TangentialSolution{g, std::move(out.px), std::move(out.py), std::move(out.sx), std::move(out.sy),
-                           std::move(out.state)};
-  for (auto* v : {&out.px, &out.py, &out.sx, &out.sy}) v->resize(n);  // every element is written below
-  out.state.resize(n);
-  const Regions regions(pb);
-  // Per region: the layer's flexibilities (its equivalent ellipse's) and their inverses, and the spin scaled per axis.
-  struct Layer {
-    double lx, ly, inv_lx, inv_ly, spin_x, spin_y;
-  };
+std::vector<Layer> region_layers(const Regions& regions, const Material& material, double phi) {
   std::vector<Layer> layers;
   for (const EquivalentEllipse& e : regions.ellipses()) {
     const Flexibilities L = kalker_flexibilities(e.a, e.b, material);
-    layers.push_back({L.x, L.y, 1 / L.x, 1 / L.y, pb.creepages.phi * L.x / L.spin, pb.creepages.phi * L.y / L.spin});
+    layers.push_back({L.x, L.y, 1 / L.x, 1 / L.y, phi * L.x / L.spin, phi * L.y / L.spin});
   }
-  const Creepages& c = pb.creepages;
-  const double mus = pb.friction.static_coefficient, muk = pb.friction.kinetic_coefficient, dA = g.element_area();
-  const double half = 0.5 * g.dx, inv_dx = 1 / g.dx;
-  const bool extra = !pb.extra_x.empty(), scaled = !pb.friction_scale.empty(), falling = pb.friction.slip_dependent();
-  // The rows, compiled apart for constant and slip-dependent friction (the latter's branch in the constant one's
-  // loop cost it 5 % more instructions). Each element hangs on its upstream neighbour (in slip through project()'s
+  return layers;
+}
+
+// What a row's march carries from one element to the next (all 0 outside the contact).
+struct Strip {
+  double ux = 0, uy = 0, wx_up = 0, wy_up = 0;  // upstream element's layer displacement and rigid slip
+  bool sliding = false;                          // the upstream element slipped
+};
+
+// The march along the rows from their upstream ends (the method on top), writing each element's traction, slip and
+// state into `out`, whose grids have the problem's size.
+class March {
+ public:
+  March(const TangentialProblem& pb, const Regions& regions, std::span<const Layer> layers, TangentialSolution& out)
+      : pb_(pb), g_(pb.grid), regions_(regions), layers_(layers), out_(out), half_(0.5 * g_.dx), inv_dx_(1 / g_.dx),
+        extra_(!pb.extra_x.empty()) {}
+
+  // All rows, compiled apart for constant and slip-dependent friction (the latter's branch in the constant one's loop
+  // cost it 5 % more instructions). Each element hangs on its upstream neighbour (in slip through project()'s
   // divisions and roots, whose latency the march waited on), the rows on nothing: kRows of them are marched in
   // lockstep, so that the processor overlaps their chains (a third less time at 0.2 mm; the same operations per
   // element, the same results).
-  constexpr int kRows = 4;
-  struct Strip {
-    double ux = 0, uy = 0, wx_up = 0, wy_up = 0;  // upstream element's layer displacement and slip (0 outside)
-    bool sliding = false;                          // the upstream element slipped
-  };
-  const auto march = [&](auto slip_dependent) {
-    const auto element = [&](int i, int j, double x, Strip& st) {
-      const auto k = static_cast<std::size_t>(g.index(i, j));
-      const double pn = pb.pressure[k];
-      out.sx[k] = out.sy[k] = 0;
-      if (!(pn > 0)) {
-        out.px[k] = out.py[k] = 0;
-        out.state[k] = kExterior;
-        st = Strip{};
-        return;
-      }
-      const Layer& L = layers[regions.of(k)];
-      const double y = g.y(j) - pb.ref_y;
-      // The layer's rigid slip: translational creepages and the extra slip as they are, the spin scaled per axis.
-      const double wx = c.xi - L.spin_x * y + (extra ? pb.extra_x[k] : 0.0);
-      const double wy = c.eta + L.spin_y * x + (extra ? pb.extra_y[k] : 0.0);
-      const double qx = (st.ux - half * (wx + st.wx_up)) * L.inv_lx, qy = (st.uy - half * (wy + st.wy_up)) * L.inv_ly;
-      double px = qx, py = qy, sx = 0, sy = 0;
-      const double gp = scaled ? pn * pb.friction_scale[k] : pn;
-      bool sliding = st.sliding;
-      if constexpr (decltype(slip_dependent)::value) {
-        const FallingSlip fs{L.lx, L.ly, inv_dx, pb.speed, pb.friction};
-        sliding = (sliding || qx * qx + qy * qy > mus * mus * gp * gp) && fs.solve(qx, qy, gp, px, py, sx, sy) > 0;
-        if (!sliding) px = qx, py = qy;
-      } else {
-        const double bound = (sliding ? muk : mus) * gp;
-        sliding = qx * qx + qy * qy > bound * bound;
-        if (sliding) {
-          project(L.lx, L.ly, qx, qy, muk * gp, px, py);
-          sx = L.lx * (px - qx) * inv_dx, sy = L.ly * (py - qy) * inv_dx;
-        }
-      }
-      out.state[k] = sliding ? kSlip : kAdhesion;
-      out.sx[k] = sx;
-      out.sy[k] = sy;
-      out.px[k] = px, out.py[k] = py;
-      st = {L.lx * px, L.ly * py, wx, wy, sliding};
-    };
-    for (int j0 = 0; j0 < g.ny; j0 += kRows) {
-      const int rows = std::min(kRows, g.ny - j0);
+  template <bool kFalling>
+  void rows() const {
+    constexpr int kRows = 4;
+    for (int j0 = 0; j0 < g_.ny; j0 += kRows) {
+      const int rows = std::min(kRows, g_.ny - j0);
       Strip st[kRows];
-      for (int step = 0; step < g.nx; ++step) {
-        const int i = pb.direction > 0 ? g.nx - 1 - step : step;
-        const double x = g.x(i) - pb.ref_x;
+      for (int step = 0; step < g_.nx; ++step) {
+        const int i = pb_.direction > 0 ? g_.nx - 1 - step : step;
+        const double x = g_.x(i) - pb_.ref_x;
         if (rows == kRows) {
 #pragma GCC unroll 4
-          for (int r = 0; r < kRows; ++r) element(i, j0 + r, x, st[r]);
+          for (int r = 0; r < kRows; ++r) element<kFalling>(i, j0 + r, x, st[r]);
         } else {
-          for (int r = 0; r < rows; ++r) element(i, j0 + r, x, st[r]);
+          for (int r = 0; r < rows; ++r) element<kFalling>(i, j0 + r, x, st[r]);
         }
       }
     }
-  };
-  if (falling) march(std::true_type{});
-  else march(std::false_type{});
-  // The sums, row by row along the rolling direction as the march went before its rows were interleaved (the same
-  // order of additions: the same bits).
+  }
+
+ private:
+  // Element (i, j) at x from the reference point, its row's march state st (the upstream element's, then its own).
+  template <bool kFalling>
+  [[gnu::always_inline]] void element(int i, int j, double x, Strip& st) const {
+    const auto k = static_cast<std::size_t>(g_.index(i, j));
+    const double pn = pb_.pressure[k];
+    out_.sx[k] = out_.sy[k] = 0;
+    if (!(pn > 0)) {
+      out_.px[k] = out_.py[k] = 0;
+      out_.state[k] = kExterior;
+      st = Strip{};
+      return;
+    }
+    const Layer& L = layers_[regions_.of(k)];
+    const Creepages& c = pb_.creepages;
+    const double y = g_.y(j) - pb_.ref_y;
+    // The layer's rigid slip: translational creepages and the extra slip as they are, the spin scaled per axis.
+    const double wx = c.xi - L.spin_x * y + (extra_ ? pb_.extra_x[k] : 0.0);
+    const double wy = c.eta + L.spin_y * x + (extra_ ? pb_.extra_y[k] : 0.0);
+    // The stick traction: the upstream displacement less the step's slip (trapezoidal), through the layer.
+    const double qx = (st.ux - half_ * (wx + st.wx_up)) * L.inv_lx, qy = (st.uy - half_ * (wy + st.wy_up)) * L.inv_ly;
+    double px = qx, py = qy, sx = 0, sy = 0;
+    const double gp = pb_.friction_scale.empty() ? pn : pn * pb_.friction_scale[k];
+    bool sliding = st.sliding;
+    if constexpr (kFalling) {
+      const double mus = pb_.friction.static_coefficient;
+      const FallingSlip fs{L.lx, L.ly, inv_dx_, pb_.speed, pb_.friction};
+      sliding = (sliding || qx * qx + qy * qy > mus * mus * gp * gp) && fs.solve(qx, qy, gp, px, py, sx, sy) > 0;
+      if (!sliding) px = qx, py = qy;
+    } else {  // a sliding upstream point slides on while its stick traction passes the kinetic bound
+      const double muk = pb_.friction.kinetic_coefficient;
+      const double bound = (sliding ? muk : pb_.friction.static_coefficient) * gp;
+      sliding = qx * qx + qy * qy > bound * bound;
+      if (sliding) {
+        project(L.lx, L.ly, qx, qy, muk * gp, px, py);
+        sx = L.lx * (px - qx) * inv_dx_, sy = L.ly * (py - qy) * inv_dx_;
+      }
+    }
+    out_.state[k] = sliding ? kSlip : kAdhesion;
+    out_.sx[k] = sx;
+    out_.sy[k] = sy;
+    out_.px[k] = px, out_.py[k] = py;
+    st = {L.lx * px, L.ly * py, wx, wy, sliding};
+  }
+
+  const TangentialProblem& pb_;
+  const Grid& g_;
+  const Regions& regions_;
+  std::span<const Layer> layers_;
+  TangentialSolution& out_;
+  double half_, inv_dx_;  // half an element's length along the rows, and the inverse of the length
+  bool extra_;            // the problem has the extra rigid slip
+};
+
+// The forces, moment, power and areas of the marched solution, row by row along the rolling direction as the march
+// went before its rows were interleaved (the same order of additions: the same bits).
+void sum_solution(const TangentialProblem& pb, TangentialSolution& out) {
+  const Grid& g = pb.grid;
   double fx = 0, fy = 0, mz = 0, power = 0, contact = 0, adhesion = 0;
   for (int j = 0; j < g.ny; ++j) {
     const double y = g.y(j) - pb.ref_y;
@@ -238,6 +250,7 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
       mz += x * py - y * px;
     }
   }
+  const double dA = g.element_area();
   if (!(std::isfinite(fx) && std::isfinite(fy) && std::isfinite(mz) && std::isfinite(power))) [[unlikely]] {
     validate(pb, "solve_fastsim");  // (with ProblemCheck::sizes the grids' values were not checked: the culprit named)
     fail("solve_fastsim: the tangential forces are not finite (Fx = {}, Fy = {}, Mz = {})", fx * dA, fy * dA, mz * dA);
@@ -250,6 +263,30 @@ void solve_fastsim(const Material& material, const TangentialProblem& pb, Tangen
   out.adhesion_area = adhesion * dA;
 }
 
+}  // namespace
+
+TangentialSolution solve_fastsim(const Material& material, const TangentialProblem& pb, ProblemCheck check) {
+  TangentialSolution out;
+  solve_fastsim(material, pb, out, check);
+  return out;
+}
+
+void solve_fastsim(const Material& material, const TangentialProblem& pb, TangentialSolution& out,
+                   ProblemCheck check) {
+  validate(pb, "solve_fastsim", check);
+  validate(material, "solve_fastsim");
+  const auto n = static_cast<std::size_t>(pb.grid.size());
+  out = TangentialSolution{pb.grid, std::move(out.px), std::move(out.py), std::move(out.sx), std::move(out.sy),
+                           std::move(out.state)};
+  for (auto* v : {&out.px, &out.py, &out.sx, &out.sy}) v->resize(n);  // every element is written by the march
+  out.state.resize(n);
+  const Regions regions(pb);
+  const std::vector<Layer> layers = region_layers(regions, material, pb.creepages.phi);
+  const March march(pb, regions, layers, out);
+  if (pb.friction.slip_dependent()) march.rows<true>();
+  else march.rows<false>();
+  sum_solution(pb, out);
+}
 
 namespace {
 

@@ -61,11 +61,12 @@ VelocityField velocity_field(const Kinematics& k, double r0, const Pose& pose) {
 }
 
 // The tangential problem of an area: its pressure, the creepages at the plane's origin and, from kinematics, the
-// per-element difference of the rigid slip at the elements' contact points from the creepages' linear field; with
-// `rigid`, also the rigid slip itself (the result's, 0 outside the contact), as halfspace::rigid_slip sums it.
+// per-element difference of the rigid slip at the elements' contact points from the creepages' linear field (in the
+// workspace's scratch grids, 0 outside the contact); with `rigid`, also the rigid slip itself (the result's, 0 outside
+// the contact), as halfspace::rigid_slip sums it.
 struct AreaSlip {
   halfspace::Creepages creepages;
-  std::vector<double> extra_x, extra_y;
+  std::span<const double> extra_x, extra_y;
   std::vector<double> rigid_x, rigid_y;
   double V = 1;
 };
@@ -122,6 +123,13 @@ class AreaGeometry {
   if (!(norm2 > 0)) return v.dot(f.t1);
   return (v.dot(f.t1) * std::sqrt(norm2) + 0.5 * tn * v.dot(f.n)) / std::sqrt(norm2 + 0.25 * tn * tn);
 }
+// The same on a conformal row, whose t1 is e_x: its dot products are the vectors' x (the same numbers).
+[[gnu::always_inline]] inline double rolling_slip_x(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
+                                                    const Eigen::Vector3d& n) {
+  const double norm2 = tw.squaredNorm(), tn = tw.x() < 0 ? -tw.dot(n) : tw.dot(n);
+  if (!(norm2 > 0)) return v.x();
+  return (v.x() * std::sqrt(norm2) + 0.5 * tn * v.dot(n)) / std::sqrt(norm2 + 0.25 * tn * tn);
+}
 [[gnu::always_inline]] inline double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X,
                                                   const Eigen::Vector3d& v, const ElementFrame& f) {
   return rolling_slip(field.axle.cross(X - field.c), v, f);
@@ -142,7 +150,7 @@ double rolling_slip_change(const VelocityField& field, const Eigen::Vector3d& X,
 }
 
 AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchContact& pc, const RollingRequest& rq,
-                   bool rigid = false) {
+                   ContactWorkspace& ws, bool rigid = false) {
   AreaSlip a;
   if (rq.creepage) {
     a.creepages = *rq.creepage;
@@ -163,13 +171,16 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
   const ElementFrame f0 = geo.frame(std::clamp(j0, 0, g.ny - 1));
   const Eigen::Vector3d X0 = geo.contact_point(i0, j0, h0), v0 = field.at(X0);
   a.creepages = {rolling_slip(field, X0, v0, f0) / speed, v0.dot(f0.t2) / speed, field.omega.dot(f0.n) / speed};
-  a.extra_x.assign(static_cast<std::size_t>(g.size()), 0.0);
-  a.extra_y.assign(a.extra_x.size(), 0.0);
-  if (rigid) a.rigid_x.assign(a.extra_x.size(), 0.0), a.rigid_y.assign(a.extra_x.size(), 0.0);
-  const halfspace::Creepages& c = a.creepages;
-  const double inv_speed = 1 / speed;
+  const auto n = static_cast<std::size_t>(g.size());
+  ws.extra_x.resize(n);  // every element written below
+  ws.extra_y.resize(n);
+  a.extra_x = ws.extra_x, a.extra_y = ws.extra_y;
+  if (rigid) a.rigid_x.assign(n, 0.0), a.rigid_y.assign(n, 0.0);
+  const halfspace::Creepages c = a.creepages;  // (a copy: the grids' stores cannot alias it, nor g's below)
+  const double inv_speed = 1 / speed, x0 = g.x0, dx = g.dx;
   for (int j = 0; j < g.ny; ++j) {
     const ElementFrame f = geo.frame(j);
+    const double row_x = c.xi - c.phi * g.y(j);  // the creepages' field along x, the same along the row
     // On a conformal area a row's contact points are affine in the element's index and h (along the row's normal),
     // and so are v and axle x (X - c): per element two sums instead of the point and two cross products.
     Eigen::Vector3d v0 = Eigen::Vector3d::Zero(), vi = v0, vh = v0, t0 = v0, ti = v0, th = v0;
@@ -179,24 +190,31 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
       v0 = field.at(X0), vi = field.omega.cross(Xi), vh = field.omega.cross(Xh);
       t0 = field.axle.cross(X0 - field.c), ti = field.axle.cross(Xi), th = field.axle.cross(Xh);
     }
+    const std::size_t row = static_cast<std::size_t>(g.index(0, j));
+    const double* p = pc.solution.pressure.data() + row;
+    const double* hs = pc.h.data() + row;
+    double *ex = ws.extra_x.data() + row, *ey = ws.extra_y.data() + row;
     for (int i = 0; i < g.nx; ++i) {
-      const auto q = static_cast<std::size_t>(g.index(i, j));
-      if (!(pc.solution.pressure[q] > 0)) continue;  // the slip matters on the contact only
+      if (!(p[i] > 0)) {  // the slip matters on the contact only
+        ex[i] = ey[i] = 0;
+        continue;
+      }
       double sx, sy;
       if (pc.conformal) {
-        const double h = pc.h[q];
+        const double h = hs[i];
         const Eigen::Vector3d v = v0 + i * vi + h * vh;
-        sx = rolling_slip(t0 + i * ti + h * th, v, f), sy = v.dot(f.t2);
+        sx = rolling_slip_x(t0 + i * ti + h * th, v, f.n), sy = v.dot(f.t2);
       } else {
-        const Eigen::Vector3d X = geo.contact_point(i, j, pc.h[q]), v = field.at(X);
+        const Eigen::Vector3d X = geo.contact_point(i, j, hs[i]), v = field.at(X);
         sx = rolling_slip(field, X, v, f), sy = v.dot(f.t2);
       }
-      a.extra_x[q] = sx * inv_speed - (c.xi - c.phi * g.y(j));
-      a.extra_y[q] = sy * inv_speed - (c.eta + c.phi * g.x(i));
+      const double row_y = c.eta + c.phi * (x0 + i * dx);  // g.x(i)
+      ex[i] = sx * inv_speed - row_x;
+      ey[i] = sy * inv_speed - row_y;
       if (!rigid) continue;
       // halfspace::rigid_slip's sums (the reference point at the grid's origin), without its pass over the grid
-      a.rigid_x[q] = c.xi - c.phi * g.y(j) + a.extra_x[q];
-      a.rigid_y[q] = c.eta + c.phi * g.x(i) + a.extra_y[q];
+      a.rigid_x[row + static_cast<std::size_t>(i)] = row_x + ex[i];
+      a.rigid_y[row + static_cast<std::size_t>(i)] = row_y + ey[i];
     }
   }
   return a;
@@ -322,7 +340,7 @@ Jacobian rolling_jacobian(const ContactModel& model, const Pose& pose, const Pat
   const PatchRolling& r = *pc.rolling;
   if (r.solution.px.empty() || pc.solution.pressure.empty())
     fail("contact sensitivity: the {} wheel's area has no traction grid (kept grids are needed)", side_name(pc.side));
-  const AreaSlip slip = area_slip(model, pose, pc, rq);
+  const AreaSlip slip = area_slip(model, pose, pc, rq, ws);
   halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
   pb.friction_scale = r.friction_scale;
   std::vector<halfspace::TangentialChange> changes(7);
@@ -361,7 +379,7 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   }
   if (pc.solution.pressure.empty() || pc.h.empty())
     fail("rolling contact: the {} wheel's area has no pressure grid (kept grids are needed)", side_name(pc.side));
-  AreaSlip slip = area_slip(model, pose, pc, rq, true);
+  AreaSlip slip = area_slip(model, pose, pc, rq, ws, true);
   halfspace::TangentialProblem pb = area_problem(pc, slip, rq);
   PatchRolling r;
   if (const auto& profile = rq.friction_profile[static_cast<std::size_t>(pc.side)]) {
@@ -374,7 +392,8 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   r.creepage = slip.creepages;
   if (rq.method == RollingMethod::fastsim) {
     // (the pressure a normal solution's, the extra slip from checked kinematics on a checked pose: their sizes alone)
-    r.solution = halfspace::solve_fastsim(model.material(), pb, halfspace::ProblemCheck::sizes);
+    r.solution = std::move(ws.fastsim_grids);  // (every element is written: stale values do not matter)
+    halfspace::solve_fastsim(model.material(), pb, r.solution, halfspace::ProblemCheck::sizes);
   } else {
     halfspace::TangentialOptions opt;
     opt.tolerance = rq.tolerance;
@@ -409,6 +428,15 @@ void solve_area_rolling(const ContactModel& model, const Pose& pose, PatchContac
   pc.moment += r.moment;
   pc.rolling = std::move(r);
   pc.rolling->damage = damage::compute_damage(area_fields(pc), rq.damage, damage::FieldCheck::sizes);
+}
+
+void recycle_tangential(ContactResult& result, ContactWorkspace& ws) {
+  for (WheelContact& wc : result.wheel)
+    for (PatchContact& pc : wc.patches)
+      if (pc.rolling && pc.rolling->method == RollingMethod::fastsim && !pc.rolling->solution.px.empty()) {
+        ws.fastsim_grids = std::move(pc.rolling->solution);
+        return;
+      }
 }
 
 damage::AreaFields area_fields(const PatchContact& area) {

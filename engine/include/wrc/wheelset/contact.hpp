@@ -251,6 +251,12 @@ class ContactWorkspace {
   // from which the next solve starts at 2 p_last - p_before; dropped when `tangential` changes otherwise, so that a
   // wheel step's later solves start from the last alone.
   std::array<std::vector<Previous>, 2> tangential_before;
+  // The extra rigid slip of the area whose tangential problem is being solved (scratch: each solve writes every
+  // element, so that two grids are neither allocated nor zeroed per solve).
+  std::vector<double> extra_x, extra_y;
+  // Grids of a discarded FASTSIM solution (recycle_tangential), which the next FASTSIM solve writes over instead of
+  // allocating and zeroing its own.
+  halfspace::TangentialSolution fastsim_grids;
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();
@@ -331,6 +337,9 @@ void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWo
 // adds the creep forces to the areas', wheels' and total forces and moments (replacing an earlier solution).
 void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
                  ContactWorkspace& workspace);
+// Before a result is discarded: its first FASTSIM tangential solution's grids go to workspace.fastsim_grids, whose
+// storage the next FASTSIM solve then fills instead of new zeroed grids (a wheel solve's evaluations in turn).
+void recycle_tangential(ContactResult& result, ContactWorkspace& workspace);
 // Fills every wheel's Jacobian of a result (its grids kept); `rolling`: the request its tangential problems were
 // solved for (none: frictionless, the creepage columns 0).
 void add_jacobian(const ContactModel& model, ContactResult& result, const std::optional<RollingRequest>& rolling,
