@@ -117,18 +117,16 @@ class AreaGeometry {
 // With tilt = tn / (2 |tw|), tn = tw . n: (v . t1 |tw| + tn v . n / 2) / sqrt(|tw|^2 + tn^2 / 4), one division
 // instead of two (it runs over every contact element, twice per time step of a wheel with friction).
 // `tw`: axle x (X - c), the wheel's circumferential direction at X (unnormalised).
+// `tw_t1`, `v_t1`: tw . t1 and v . t1, which on a conformal row (t1 = e_x) are the vectors' x without the products.
+[[gnu::always_inline]] inline double rolling_slip(const Eigen::Vector3d& tw, double tw_t1, const Eigen::Vector3d& v,
+                                                  double v_t1, const Eigen::Vector3d& n) {
+  const double norm2 = tw.squaredNorm(), tn = tw_t1 < 0 ? -tw.dot(n) : tw.dot(n);
+  if (!(norm2 > 0)) return v_t1;
+  return (v_t1 * std::sqrt(norm2) + 0.5 * tn * v.dot(n)) / std::sqrt(norm2 + 0.25 * tn * tn);
+}
 [[gnu::always_inline]] inline double rolling_slip(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
                                                   const ElementFrame& f) {
-  const double norm2 = tw.squaredNorm(), tn = tw.dot(f.t1) < 0 ? -tw.dot(f.n) : tw.dot(f.n);
-  if (!(norm2 > 0)) return v.dot(f.t1);
-  return (v.dot(f.t1) * std::sqrt(norm2) + 0.5 * tn * v.dot(f.n)) / std::sqrt(norm2 + 0.25 * tn * tn);
-}
-// The same on a conformal row, whose t1 is e_x: its dot products are the vectors' x (the same numbers).
-[[gnu::always_inline]] inline double rolling_slip_x(const Eigen::Vector3d& tw, const Eigen::Vector3d& v,
-                                                    const Eigen::Vector3d& n) {
-  const double norm2 = tw.squaredNorm(), tn = tw.x() < 0 ? -tw.dot(n) : tw.dot(n);
-  if (!(norm2 > 0)) return v.x();
-  return (v.x() * std::sqrt(norm2) + 0.5 * tn * v.dot(n)) / std::sqrt(norm2 + 0.25 * tn * tn);
+  return rolling_slip(tw, tw.dot(f.t1), v, v.dot(f.t1), f.n);
 }
 [[gnu::always_inline]] inline double rolling_slip(const VelocityField& field, const Eigen::Vector3d& X,
                                                   const Eigen::Vector3d& v, const ElementFrame& f) {
@@ -203,7 +201,8 @@ AreaSlip area_slip(const ContactModel& model, const Pose& pose, const PatchConta
       if (pc.conformal) {
         const double h = hs[i];
         const Eigen::Vector3d v = v0 + i * vi + h * vh;
-        sx = rolling_slip_x(t0 + i * ti + h * th, v, f.n), sy = v.dot(f.t2);
+        const Eigen::Vector3d tw = t0 + i * ti + h * th;
+        sx = rolling_slip(tw, tw.x(), v, v.x(), f.n), sy = v.dot(f.t2);
       } else {
         const Eigen::Vector3d X = geo.contact_point(i, j, hs[i]), v = field.at(X);
         sx = rolling_slip(field, X, v, f), sy = v.dot(f.t2);
