@@ -33,7 +33,7 @@ constexpr double kMaxJump = 2e-3, kMaxCreepJump = 0.1;
 // tolerance (with_friction), 0.7x misses as rarely as 0.5x (S1002/60E1 at 0.2 mm, 667 time steps: 2.03 evaluations
 // per step either way, 1.75 CG iterations in it against 1.99; 1x: 2.07 evaluations; docs/performance.md).
 constexpr double kMovedTolerance = 0.7;
-// The force change (N) below which a measured stiffness weighs less than the last one (measure_stiffness).
+// The force change (N) across a measured pair below which its stiffness weighs less than the last (measure_stiffness).
 constexpr double kStiffnessNoise = 1.0;
 
 // One solve_wheel call, on the approach a = z_touch - z (m, the wheel pressed below its touching height).
@@ -97,18 +97,20 @@ class WheelSolver {
 
   // From the evaluation just made, of the normal problem alone, and one at approach a carrying N: their secant, when
   // positive. Within a step the approach moves by nanometres, over which the normal force is linear, but the secant
-  // carries the evaluations' force noise (~0.01-0.05 N at 1e-6) over their difference dN, a few newtons: it moves the
-  // last stiffness (a step before: the stiffness changes by < 1 % per step) by dN^2 / (dN^2 + kStiffnessNoise^2) of
-  // the way (taken whole once dN > 1 N, it was 5-9 % off after a close pair, and the next step missed its load:
-  // S1002/60E1 at 0.2 mm, 667 time steps, 33 -> 18 evaluations after the moved one; docs/performance.md). Without a
-  // last stiffness, the secant when dN > kStiffnessNoise.
+  // carries the evaluations' force noise (~0.01-0.05 N at 1e-6) over their force change, a few newtons: it moves the
+  // last stiffness (a step before: the stiffness changes by < 1 % per step) by E^2 / (E^2 + kStiffnessNoise^2) of the
+  // way, E the change the last stiffness expects over da (taken whole once the change passed 1 N, it was 5-9 % off
+  // after a close pair, and the next step missed its load: S1002/60E1 at 0.2 mm, 667 time steps, 33 -> 21 evaluations
+  // after the moved one; docs/performance.md). Without a last stiffness, the secant when dN > kStiffnessNoise.
   void measure_stiffness(double a, double N) {
     const double dN = wheel_force() - N, da = res_.approach - a, k = dN / da;
     if (!(k > 0)) return;
-    if (stiffness_ > 0)
-      stiffness_ += dN * dN / (dN * dN + kStiffnessNoise * kStiffnessNoise) * (k - stiffness_);
-    else if (std::abs(dN) > kStiffnessNoise)
+    if (stiffness_ > 0) {
+      const double E = stiffness_ * da;
+      stiffness_ += E * E / (E * E + kStiffnessNoise * kStiffnessNoise) * (k - stiffness_);
+    } else if (std::abs(dN) > kStiffnessNoise) {
       stiffness_ = k;
+    }
   }
 
   // With friction the creep forces' vertical part C joins Fz (a tilted contact plane turns lateral creep forces partly
