@@ -22,7 +22,7 @@ DenseActiveFactor::DenseActiveFactor(const InfluenceTable& table, double factor,
     : table_(table), factor_(factor), grid_(grid), depth_(depth), context_(context), member_(grid.size(), 0) {}
 
 void DenseActiveFactor::factorise(const std::vector<char>& in) {
-  const int m = static_cast<int>(std::count(in.begin(), in.end(), 1));
+  const int m = static_cast<int>(std::count_if(in.begin(), in.end(), [](char c) { return c != 0; }));
   if (m == 0) fail("{}: the active set is empty (internal error)", context_);
   refuse_beyond_limit(m);
   int p = 0;  // leading elements kept, with their columns

@@ -2,14 +2,14 @@
 // public API).
 //
 // The active-set iteration solves K x = r, K = 2 D_AA, for a set A that changes from one iteration to the next: a
-// cold start from {h > 0} drops the rim of the set, a fifth or less of it per iteration, 5-8 times, and the check of
+// cold start from {h > 0} drops the rim of the set, a quarter or less of it per iteration, 5-8 times, and the check of
 // the deformed gap re-adds a few elements. The factor is kept in an order of its own, deepest h first, so that the
 // elements dropped (small h) come last. For a set A' the factor L' (K' = L' L'^T) then shares the old L's leading
 // columns up to the first element that leaves, P (the Cholesky factor of a leading block is the leading block of
 // the factor): L'_PP = L_PP, the kept later rows L'_TP = L_TP (moved up in place) and joining elements' rows, placed
 // last, L'_JP = K_JP L_PP^-T; only the trailing block is formed, as its Schur complement K_TT - L'_TP L'_TP^T, and
 // factorised. For p leading and t trailing elements that is t^2 p + t^3 / 3 flops against (p + t)^3 / 3 from
-// scratch (never more); on bench_dense's Hertz cases t is 5-15 % of the set after the first iteration, and a cold
+// scratch (never more); on bench_dense's Hertz cases t is 5-17 % of the set after the first iteration, and a cold
 // solve costs about its first factorisation.
 //
 // Memory: one m x m matrix (8 m^2 bytes, of which the factorisations use the lower triangle) for the largest set
