@@ -1,70 +1,20 @@
-// Reference normal solver: the paper's active-set iteration with a dense Cholesky solve (section 3).
+// Reference normal solver: the paper's active-set iteration with a dense Cholesky solve (section 3), the factor kept
+// from one iteration to the next where the sets share its leading columns (dense_factor.hpp).
+#include "dense_factor.hpp"
 #include "normal_internal.hpp"
 
 #include "wrc/halfspace/influence.hpp"
 #include "wrc/core/error.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
-#include <string_view>
+#include <span>
 
 namespace wrc::halfspace {
 namespace {
-
-// The active block 2 D_AA, factorised in place (Cholesky; LDLT should rounding make it fail): one m x m matrix, 8 m^2
-// bytes, refused beyond kDenseMaxElements before it is allocated.
-class ActiveBlock {
- public:
-  ActiveBlock(const InfluenceTable& table, double factor, const Grid& grid, const std::vector<int>& active,
-              std::string_view context) {
-    const int m = static_cast<int>(active.size());
-    if (m > kDenseMaxElements)
-      fail("{}: {} elements in the active set would need a dense {} x {} matrix of {:.0f} MB (8 bytes each) and about "
-           "{:.0f} s per Cholesky factorisation; the dense reference solver takes at most {} ({:.0f} MB): use the "
-           "fast solver (solver = \"fast\", the default; NormalSolver in C++) or a coarser grid",
-           context, m, m, m, dense_block_bytes(m) / 1e6, dense_factorisation_seconds(m), kDenseMaxElements,
-           dense_block_bytes(kDenseMaxElements) / 1e6);
-    K_.resize(m, m);
-    fill(table, factor, grid, active);
-    llt_.emplace(K_);
-    if (llt_->info() != Eigen::Success) {
-      llt_.reset();
-      fill(table, factor, grid, active);  // the failed factorisation overwrote it
-      ldlt_.emplace(K_);
-      if (ldlt_->info() != Eigen::Success)
-        fail("{}: the influence matrix of {} active elements could not be factorised", context, m);
-    }
-  }
-  ActiveBlock(const ActiveBlock&) = delete;  // the factorisations refer to K_
-  ActiveBlock& operator=(const ActiveBlock&) = delete;
-
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
-    if (ldlt_) return ldlt_->solve(rhs);
-    return llt_->solve(rhs);
-  }
-
- private:
-  // The lower triangle of 2 D_AA (the factorisations read no other).
-  void fill(const InfluenceTable& table, double factor, const Grid& grid, const std::vector<int>& active) {
-    const int m = static_cast<int>(active.size());
-    for (int b = 0; b < m; ++b) {
-      const int ib = active[b] % grid.nx, jb = active[b] / grid.nx;
-      for (int a = b; a < m; ++a) {
-        const int ia = active[a] % grid.nx, ja = active[a] / grid.nx;
-        K_(a, b) = factor * table(ia - ib, ja - jb);
-      }
-    }
-  }
-
-  Eigen::MatrixXd K_;
-  std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> llt_;
-  std::optional<Eigen::LDLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> ldlt_;
-};
 
 // u = 2 D p on the whole grid, p non-zero on `active` only.
 std::vector<double> displacement(const InfluenceTable& table, double factor, const Grid& grid,
@@ -108,6 +58,7 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
   s.pressure.assign(n, 0.0);
   std::vector<int> active;
   std::vector<std::vector<int>> visited;  // the active set of each iteration
+  detail::DenseActiveFactor block(table, factor, grid, h, "solve_normal_dense");
   for (int it = 1;; ++it) {
     if (it > max_iterations)
       fail("solve_normal_dense: the active set did not settle in {} iterations ({} x {} grid)", max_iterations,
@@ -124,14 +75,15 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
            "use the fast solver (solver = \"fast\")", it, active.size(), seen - visited.begin() + 1, grid.nx, grid.ny);
     visited.push_back(active);
     const int m = static_cast<int>(active.size());
-    const ActiveBlock block(table, factor, grid, active, "solve_normal_dense");
+    block.factorise(in);
+    const std::vector<int>& order = block.order();  // the set in the factor's order
     Eigen::VectorXd rhs(m);
-    for (int a = 0; a < m; ++a) rhs[a] = h[active[a]];
+    for (int a = 0; a < m; ++a) rhs[a] = h[order[a]];
     Eigen::VectorXd pa = block.solve(rhs);
     double approach = 0;
     if (force_control) {  // p = K^-1 (h + approach g), sum w p dA = F (g: the gap weights)
       Eigen::VectorXd w(m), g(m);
-      for (int a = 0; a < m; ++a) w[a] = load.weight(active[a]), g[a] = load.gap_weight(active[a]);
+      for (int a = 0; a < m; ++a) w[a] = load.weight(order[a]), g[a] = load.gap_weight(order[a]);
       const Eigen::VectorXd v = block.solve(g);
       approach = (load.force / dA - w.dot(pa)) / w.dot(v);
       pa += approach * v;
@@ -140,10 +92,10 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
     bool dropped = false;
     for (int a = 0; a < m; ++a) {
       if (pa[a] < 0) {  // tensile: leaves the contact set
-        in[active[a]] = 0;
+        in[order[a]] = 0;
         dropped = true;
       } else {
-        s.pressure[active[a]] = pa[a];
+        s.pressure[order[a]] = pa[a];
       }
     }
     if (dropped) continue;
@@ -172,16 +124,17 @@ NormalResponse normal_response_dense(const Material& material, const NormalSolut
   const Grid& grid = solution.grid;
   NormalResponse r;
   r.pressure.assign(grid.size(), 0.0);
-  std::vector<int> active;
-  for (int k = 0; k < grid.size(); ++k)
-    if (solution.pressure[k] > 0) active.push_back(k);
-  if (active.empty()) {
+  std::vector<char> in(grid.size(), 0);
+  for (int k = 0; k < grid.size(); ++k) in[k] = solution.pressure[k] > 0;
+  if (std::find(in.begin(), in.end(), 1) == in.end()) {
     detail::finish_response(r, grid);
     return r;
   }
   const double factor = material.pair_compliance();
   const InfluenceTable table(grid.dx, grid.dy, grid.nx, grid.ny);
-  const ActiveBlock block(table, factor, grid, active, "normal_response_dense");
+  detail::DenseActiveFactor block(table, factor, grid, {}, "normal_response_dense");
+  block.factorise(in);
+  const std::vector<int>& active = block.order();
   const int m = static_cast<int>(active.size());
   Eigen::VectorXd rhs(m);
   for (int a = 0; a < m; ++a) rhs[a] = dh[active[a]];

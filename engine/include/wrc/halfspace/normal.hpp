@@ -101,10 +101,11 @@ struct NormalSolution {
 };
 
 // The dense solver's largest active set (elements): its block takes dense_block_bytes (8 m^2: 0.8 GB at 10,000) and
-// one Cholesky factorisation m^3 / 3 flops, about dense_factorisation_seconds (30 s at 10,000 on one core), and a
-// cold solve factorises 5-8 shrinking blocks from {h > 0}, about twice the contact (bench_dense: 2,000 elements in
-// contact from a first block of 4,100 in 4.1 s, 4,000 from 8,100 in 33 s). Larger sets are refused, before the
-// block is allocated, with an error naming the fast solver.
+// one Cholesky factorisation m^3 / 3 flops, about dense_factorisation_seconds (30 s at 10,000 on one core); a cold
+// solve factorises the block of {h > 0}, about twice the contact, and of its 5-8 shrinking sets only the trailing
+// part the factor does not share (bench_dense: 2,000 elements in contact from a first block of 4,100 in 2.1 s,
+// 4,000 from 8,100 in 16 s). Larger sets are refused, before the block is allocated, with an error naming the fast
+// solver.
 inline constexpr int kDenseMaxElements = 10'000;
 inline constexpr double dense_block_bytes(int m) { return 8.0 * m * m; }
 // Measured: 11 Gflop/s for Eigen's blocked Cholesky on one core of a 2-core machine (bench_dense's responses).
@@ -112,7 +113,8 @@ inline constexpr double dense_factorisation_seconds(int m) { return static_cast<
 
 // Reference solver: the paper's active-set iteration (start from {h > 0}, drop elements with negative
 // pressure, repeat; then CONTACT's check that no element was wrongly removed, 2Dp - h < 0 outside, and
-// re-add those) with a dense Cholesky solve of the active block. Memory and time O(n_active^2) and
+// re-add those) with a dense Cholesky solve of the active block, its factor kept from one iteration to the next
+// where the sets share its leading columns (elements ordered deepest h first). Memory and time O(n_active^2) and
 // O(n_active^3): for tests and small grids (kDenseMaxElements). Throws wrc::Error on bad input, an active set
 // larger than kDenseMaxElements (before allocating it), or no convergence (max_iterations, default 200; or an
 // active set met before, which would repeat the same iterations).

@@ -1,0 +1,212 @@
+// The dense solver's Cholesky factor kept across active-set iterations (halfspace/dense_factor.hpp) against a fresh
+// factorisation of each set, and the solver through it against the active-set iteration with a fresh factorisation
+// at every step. Both references build the influence matrix from the closed form (rectangle_potential, no table) in
+// the elements' index order and factorise it with Eigen's LLT.
+#include "halfspace/dense_factor.hpp"
+#include "halfspace/normal_cases.hpp"
+#include "wrc/halfspace/influence.hpp"
+#include "wrc/halfspace/normal.hpp"
+#include "approx.hpp"
+
+#include <doctest/doctest.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+using wrc::test::within_rel;
+using namespace wrc::halfspace;
+using namespace wrc::test;
+
+namespace {
+
+const Material steel{2.1e11, 0.3};
+
+// 2 D between grid elements k and l (m/Pa), from the closed form.
+double influence(const Grid& g, int k, int l) {
+  return rectangle_potential(g.x(k % g.nx) - g.x(l % g.nx), g.y(k / g.nx) - g.y(l / g.nx), 0.5 * g.dx, 0.5 * g.dy) /
+         (std::numbers::pi * steel.combined_modulus());
+}
+
+// x = (2 D_AA)^-1 r_A by a fresh Cholesky factorisation, A in index order.
+Eigen::VectorXd fresh_solve(const Grid& g, const std::vector<int>& A, const Eigen::VectorXd& r) {
+  const int m = static_cast<int>(A.size());
+  Eigen::MatrixXd K(m, m);
+  for (int a = 0; a < m; ++a)
+    for (int b = 0; b < m; ++b) K(a, b) = influence(g, A[a], A[b]);
+  const Eigen::LLT<Eigen::MatrixXd> llt(K);
+  REQUIRE(llt.info() == Eigen::Success);
+  return llt.solve(r);
+}
+
+struct Reference {
+  std::vector<double> pressure;
+  double approach = 0, force = 0;
+  int iterations = 0;
+};
+
+// The paper's active-set iteration with CONTACT's check, as solve_normal_dense documents it (start {h > 0} or the
+// warm pressure's support, drop tensile elements, re-add elements with a negative deformed gap), each set
+// factorised afresh.
+Reference fresh_active_set(const NormalCase& c, const NormalLoad& load, const std::vector<double>& warm = {}) {
+  const Grid& g = c.grid;
+  const int n = g.size();
+  const bool force_control = load.control == NormalLoad::Control::force;
+  const double hmax = *std::max_element(c.h.begin(), c.h.end());
+  std::vector<char> in(n, 0);
+  for (int k = 0; k < n; ++k) in[k] = warm.empty() ? c.h[k] > 0 : warm[k] > 0;
+  Reference ref;
+  for (ref.iterations = 1; ref.iterations <= 200; ++ref.iterations) {
+    std::vector<int> A;
+    for (int k = 0; k < n; ++k)
+      if (in[k]) A.push_back(k);
+    const int m = static_cast<int>(A.size());
+    Eigen::VectorXd h(m), w(m);
+    for (int a = 0; a < m; ++a) h[a] = c.h[A[a]], w[a] = load.weight(A[a]);
+    Eigen::VectorXd p = fresh_solve(g, A, h);
+    ref.approach = 0;
+    if (force_control) {
+      const Eigen::VectorXd v = fresh_solve(g, A, w);
+      ref.approach = (load.force / g.element_area() - w.dot(p)) / w.dot(v);
+      p += ref.approach * v;
+    }
+    ref.pressure.assign(n, 0.0);
+    bool changed = false;
+    for (int a = 0; a < m; ++a) {
+      if (p[a] < 0) in[A[a]] = 0, changed = true;
+      else ref.pressure[A[a]] = p[a];
+    }
+    if (changed) continue;
+    for (int k = 0; k < n; ++k) {
+      if (in[k]) continue;
+      double u = 0;
+      for (int l : A) u += influence(g, k, l) * ref.pressure[l];
+      if (u - c.h[k] - ref.approach * load.weight(k) < -1e-12 * (hmax + ref.approach)) in[k] = 1, changed = true;
+    }
+    if (!changed) break;
+  }
+  ref.force = 0;
+  for (int k = 0; k < n; ++k) ref.force += load.weight(k) * ref.pressure[k] * g.element_area();
+  return ref;
+}
+
+// The solver's answer against the reference: the same contact set, iterations, pressures and force. Returns
+// max |dp| / pmax.
+double check_same(const NormalSolution& s, const Reference& ref) {
+  double pmax = 0, dp = 0;
+  int different = 0;
+  for (std::size_t k = 0; k < s.pressure.size(); ++k) {
+    pmax = std::max(pmax, ref.pressure[k]);
+    dp = std::max(dp, std::abs(s.pressure[k] - ref.pressure[k]));
+    different += (s.pressure[k] > 0) != (ref.pressure[k] > 0);
+  }
+  CHECK(different == 0);
+  CHECK(s.iterations == ref.iterations);
+  CHECK(dp <= 1e-10 * pmax);
+  CHECK(s.force == within_rel(ref.force, 1e-11));
+  if (ref.approach != 0) CHECK(s.approach == within_rel(ref.approach, 1e-10));
+  return dp / pmax;
+}
+
+}  // namespace
+
+TEST_CASE("dense factor kept across set changes = a fresh factorisation of each set") {
+  // A Hertz-like gap on 35 x 23 elements of 0.25 mm; the factor orders its elements deepest first.
+  const NormalCase c = paraboloid_case(1 / 0.9, 3 / 0.9, 15e-6, 0.25e-3);
+  const Grid& g = c.grid;
+  const InfluenceTable table(g.dx, g.dy, g.nx, g.ny);
+  const double factor = 1 / (std::numbers::pi * steel.combined_modulus());
+  detail::DenseActiveFactor L(table, factor, g, c.h, "test");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const auto set_of = [&](auto&& predicate) {
+    std::vector<char> in(g.size());
+    for (int k = 0; k < g.size(); ++k) in[k] = predicate(k);
+    return in;
+  };
+  const double hmax = *std::max_element(c.h.begin(), c.h.end());
+  const int deepest = static_cast<int>(std::max_element(c.h.begin(), c.h.end()) - c.h.begin());
+  struct Step {
+    const char* what;
+    std::vector<char> in;
+    bool kept, joined;  // expected: leading columns kept, rows appended
+  };
+  const std::vector<Step> steps = {
+      {"{h > 0}", set_of([&](int k) { return c.h[k] > 0; }), false, false},
+      {"its rim dropped", set_of([&](int k) { return c.h[k] > 0.3 * hmax; }), true, false},
+      {"more rim dropped, part of it back (x > 0)",
+       set_of([&](int k) { return c.h[k] > 0.5 * hmax || (c.h[k] > 0.2 * hmax && g.x(k % g.nx) > 0); }), true, true},
+      {"every 5th element of the rim dropped, the rest of the x < 0 half back",
+       set_of([&](int k) { return c.h[k] > 0.2 * hmax && (c.h[k] > 0.6 * hmax || k % 5 != 0); }), true, true},
+      {"the deepest element dropped", set_of([&](int k) { return c.h[k] > 0.2 * hmax && k != deepest; }), false,
+       false},
+      {"a ring beyond {h > 0} added (more than the matrix holds)", set_of([&](int k) { return c.h[k] > -0.2 * hmax; }),
+       false, false},
+      {"its outer half dropped", set_of([&](int k) { return c.h[k] > -0.1 * hmax; }), true, false},
+  };
+  for (const Step& step : steps) {
+    CAPTURE(step.what);
+    L.factorise(step.in);
+    const std::vector<int>& order = L.order();
+    std::vector<int> A;  // index order
+    for (int k = 0; k < g.size(); ++k)
+      if (step.in[k]) A.push_back(k);
+    const int m = static_cast<int>(A.size());
+    REQUIRE(static_cast<int>(order.size()) == m);
+    CHECK(std::is_permutation(order.begin(), order.end(), A.begin()));
+    CHECK((L.kept_columns() > 0) == step.kept);
+    CHECK((L.joined() > 0) == step.joined);
+    std::vector<double> r(g.size());
+    for (double& v : r) v = U(rng);
+    Eigen::VectorXd r_order(m), r_index(m);
+    for (int a = 0; a < m; ++a) r_order[a] = r[order[a]], r_index[a] = r[A[a]];
+    const Eigen::VectorXd x = L.solve(r_order), ref = fresh_solve(g, A, r_index);
+    std::vector<double> x_grid(g.size(), 0.0);
+    for (int a = 0; a < m; ++a) x_grid[order[a]] = x[a];
+    double dx = 0;
+    for (int a = 0; a < m; ++a) dx = std::max(dx, std::abs(x_grid[A[a]] - ref[a]));
+    CHECK(dx <= 1e-10 * ref.cwiseAbs().maxCoeff());
+  }
+}
+
+TEST_CASE("dense solver = the active-set iteration with a fresh factorisation at every step") {
+  SUBCASE("Hertz, B/A = 3, cold: the set shrinks 4 times or more, then settles") {
+    const NormalCase c = paraboloid_case(1 / 0.9, 3 / 0.9, 15e-6, 0.2e-3);
+    const Reference ref = fresh_active_set(c, NormalLoad::penetration());
+    REQUIRE(ref.iterations >= 5);
+    const double cold = check_same(solve_normal_dense(steel, c.grid, c.h, NormalLoad::penetration()), ref);
+    const NormalLoad load = NormalLoad::normal_force(1.3 * ref.force);  // the set grows beyond {h > 0}
+    const double force = check_same(solve_normal_dense(steel, c.grid, c.h, load), fresh_active_set(c, load));
+    MESSAGE("Hertz, ", ref.iterations, " iterations: max |dp| / pmax = ", cold, ", force control ", force);
+  }
+  SUBCASE("warm start from the solution shifted by 3 elements: elements dropped on one side, added on the other") {
+    const NormalCase c = paraboloid_case(1 / 0.9, 3 / 0.9, 15e-6, 0.2e-3);
+    const Reference cold = fresh_active_set(c, NormalLoad::penetration());
+    std::vector<double> shifted(c.grid.size(), 0.0);
+    for (int k = 0; k < c.grid.size(); ++k)
+      if (k % c.grid.nx >= 3) shifted[k] = cold.pressure[k - 3];
+    NormalOptions o;
+    o.initial_pressure = shifted;
+    const Reference ref = fresh_active_set(c, NormalLoad::penetration(), shifted);
+    REQUIRE(ref.iterations >= 3);
+    MESSAGE("shifted warm start, ", ref.iterations, " iterations: max |dp| / pmax = ",
+            check_same(solve_normal_dense(steel, c.grid, c.h, NormalLoad::penetration(), o), ref));
+  }
+  SUBCASE("40 random patches (one to three lobes), both controls") {
+    std::mt19937 rng(31);
+    double worst = 0;
+    for (int t = 0; t < 40; ++t) {
+      const NormalCase c = random_case(rng, 10, 24);
+      CAPTURE(t);
+      NormalLoad load = NormalLoad::penetration();
+      if (t % 2 == 1) load = NormalLoad::normal_force(fresh_active_set(c, load).force * (0.3 + 0.05 * t));
+      worst = std::max(worst, check_same(solve_normal_dense(steel, c.grid, c.h, load), fresh_active_set(c, load)));
+    }
+    MESSAGE("kept factor vs fresh factorisations on 40 random patches: max |dp| / pmax = ", worst);
+  }
+}
