@@ -108,6 +108,36 @@ check.fails(function() wrc.wheelset{wheel = wheel_m, rail = rail} end, "are its 
 check.ok(wrc.wheelset{wheel = wrc.profile.load(wheel_mm, {kind = "wheel"}), rail = wrc.profile.load(rail_mm, {kind = "rail"}),
                       grid = 2e-3}, "the same files in mm build")
 
+-- Mistakes of a set-up that gave plausible-looking numbers: a negative cant (rails tilted outward: the left wheel's
+-- rigid contact angle at y = 0 came out 5.2 deg instead of 1.4), a broad gauge with standard flange backs (1.520 m with
+-- 1.360 m: the rails under the wheels' field-side treads, s = +35 mm at y = 0), the diameter given as the radius, an
+-- upside-down wheel (anti-centring: conicity then blamed the sign of dr), a canted rail file canted again.
+local e_cant = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, cant = -1 / 40} end,
+                           "tilts the rails' heads outward", "cant < 0")
+check.ok(e_cant:find("cant = 0.025", 1, true) and e_cant:find("check_setup = false", 1, true), "it names 1:40: " .. e_cant)
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, cant = -1 / 40, grid = 2e-3, check_setup = false}, "unless unchecked")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, cant = 0, grid = 2e-3}, "cant = 0 (a canted file) builds")
+-- The play between flanges and rails, by hand: gauge - back_to_back - 2 Sd, with EN 13715's Sd = 32.5 mm of S1002.
+local play = (1.520 - 1.360 - 2 * 0.0325) * 1e3
+local e_play = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.520} end,
+                           "lateral play between its flanges and the rails", "1.520 m gauge with 1.360 m flange backs")
+check.ok(e_play:find(("%.1f mm"):format(play), 1, true), ("the play %.1f mm named: %s"):format(play, e_play))
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.520, back_to_back = 1.440, grid = 2e-3},
+         "1.520 m gauge with 1.440 m flange backs builds")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.470, back_to_back = 1.357, grid = 2e-3},
+         "the widest gauge in service with the narrowest flange backs builds (43 mm of play with S1002)")
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, radius = 0.92} end, "the radius, not the diameter",
+            "a wheel's diameter given as its radius")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, radius = 0.625, grid = 2e-3}, "a 1.25 m locomotive wheel builds")
+local upside_down = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua", {mirror_z = true})
+local e_up = check.fails(function() wrc.wheelset{wheel = upside_down, rail = rail} end, "Is the wheel upside down",
+                         "S1002 with z pointing down")
+check.ok(e_up:find("rises 28.0 mm above", 1, true), "the flange's 28 mm (EN 13715's Sh) named: " .. e_up)
+local canted = wrc.profile.load(samples .. "60e1_canted.prr")
+local e_twice = check.fails(function() wrc.wheelset{wheel = wheel, rail = canted} end, "already canted in its file",
+                            "a canted rail file canted again")
+check.ok(e_twice:find("the left rail profile '60e1_canted'", 1, true), "the message names the profile: " .. e_twice)
+
 -- ---- results ----
 local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
 local Q = 200e3
