@@ -61,6 +61,26 @@ refused(function() ws:geometry_table{y = {0, 1e-3}, hertz_load = 100, progress =
         "ws:geometry_table, hertz_load in kN")
 check.ok(free:rigid{y = 0, hertz_load = 100}.converged, "check_setup = false: hertz_load = 100 N reaches the ellipses")
 
+-- Friction in other units: a friction profile's y in mm (the lubricated gauge face of docs/guide/rolling.md, below
+-- y = -22 mm, given as -30, -22, -18, 40) put every point of the rail between -18 and 40 m, all at mu 0.35, the
+-- lubricant nowhere; CONTACT's falling laws take their slip velocities in mm/s, wrc in m/s (s1 = 100 made the law
+-- constant friction over any wheel-rail slip velocity).
+check.fails(function() ws:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35,
+                                   friction_profile = {y = {-30, -22, -18, 40}, mu = {0.1, 0.1, 0.35, 0.35}}} end,
+            "the 1st value of y (= -30 m) lies beyond +-0.1 m", "friction_profile's y in mm")
+check.fails(function() free:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35,
+                                     friction_profile = {left = {y = {-0.03, 0.22}, mu = {0.1, 0.35}}}} end,
+            "the 2nd value of y (= 0.22 m) lies beyond", "also unchecked: no rail head is 0.4 m wide")
+refused(function() ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "linear", mu_inf = 0.2, m1 = 0.1, s1 = 100}} end,
+        "s1", "100", "m/s", "a linear law's s1 in CONTACT's mm/s")
+refused(function() ws:wheel{side = "left", y = 0, Fz = 100e3, V = 30,
+                            friction = {law = "rational", mu_inf = 0.2, m1 = 0.05, s1 = 0.1, m2 = 0.05, s2 = 50}} end,
+        "s2", "50", "m/s", "a rational law's s2 in mm/s")
+check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35, friction_profile = {y = {-0.030, -0.022, -0.018, 0.040},
+                    mu = {0.10, 0.10, 0.35, 0.35}}, friction = nil}.left.force.z > 0, "the guide's gauge face in m passes")
+check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "linear", mu_inf = 0.2, m1 = 0.1, s1 = 0.1}}
+         .left.force.z > 0, "s1 = 0.1 m/s passes")
+
 -- Realistic values pass: a light tram axle (40 kN) and a heavy-haul one (350 kN), a worn small wheel and a large one,
 -- 300 km/h.
 check.ok(ws:equilibrium{y = 0, Q = 40e3}.converged, "Q = 40 kN")

@@ -138,6 +138,32 @@ local e_twice = check.fails(function() wrc.wheelset{wheel = wheel, rail = canted
                             "a canted rail file canted again")
 check.ok(e_twice:find("the left rail profile '60e1_canted'", 1, true), "the message names the profile: " .. e_twice)
 
+-- A wheel whose y is not measured from its tape circle: EN 13715 puts S1002's tape circle 70 mm from the flange back,
+-- so a file measured from the flange back (MiniProf's X) has its flange tip at y = +15 mm and every point 70 mm off.
+-- It was called "mirrored" (mirror_y = true would have made it worse); 5 mm off, it built and gave tan gamma_e 0.012
+-- for 0.174 and Sd 27.6 mm for 32.5.
+local from_back = tmp .. "/plausibility_s1002_from_back.txt"
+do
+  local y, z = wheel:points()
+  local f = assert(io.open(from_back, "w"))
+  for i = 1, #y, 2 do f:write(string.format("%.4f %.4f\n", (y[i] + 0.070) * 1e3, z[i] * 1e3)) end
+  f:close()
+end
+local fb = wrc.profile.load(from_back, {kind = "wheel"})
+check.ok(fb.warnings[1] and fb.warnings[1]:find("origin is not at the tape circle", 1, true)
+         and fb.warnings[1]:find("shift = {y = -0.0700}", 1, true), "the loader names the origin: " .. tostring(fb.warnings[1]))
+local e_fb = check.fails(function() wrc.wheelset{wheel = fb, rail = rail} end, "not measured from the tape circle",
+                         "a wheel measured from its flange back")
+check.ok(e_fb:find("shift = {y = -0.0700}", 1, true), "the shift named: " .. e_fb)
+local shifted = wrc.profile.load(from_back, {kind = "wheel", shift = {y = -0.070}})
+check.ok(#shifted.warnings == 0, "shifted by -70 mm it loads without a warning")
+check.ok(wrc.wheelset{wheel = shifted, rail = rail, grid = 2e-3}, "and builds")
+local off5 = wrc.profile.load(from_back, {kind = "wheel", shift = {y = -0.075}})
+local e_off = check.fails(function() wrc.wheelset{wheel = off5, rail = rail} end, "5.0 mm beyond its flange back",
+                          "a wheel whose origin is 5 mm off its tape circle")
+check.ok(e_off:find("y = -tape_offset = -70.0 mm", 1, true), "the flange back named: " .. e_off)
+check.ok(wrc.wheelset{wheel = off5, rail = rail, tape_offset = 0.075, grid = 2e-3}, "with its own tape_offset it builds")
+
 -- ---- results ----
 local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
 local Q = 200e3

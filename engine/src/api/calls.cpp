@@ -106,9 +106,9 @@ namespace {
 // (plausibility.hpp; hertz_load = 100 meant kN gave p0 = 78 MPa).
 RigidOptions with_material(RigidOptions o, const Wheelset& wheelset, std::string_view context) {
   o.material = wheelset.contact_model().material();
-  if (wheelset.contact_model().options().check_magnitudes) {
-    check_plausible(context, "Q", o.Q, kWheelsetLoad);
-    check_plausible(context, "hertz_load", o.hertz_load, kContactLoad);
+  if (wheelset.contact_model().options().check_magnitudes) {  // a load <= 0 is solve_rigid's error
+    if (o.Q > 0) check_plausible(context, "Q", o.Q, kWheelsetLoad);
+    if (o.hertz_load > 0) check_plausible(context, "hertz_load", o.hertz_load, kContactLoad);
   }
   return o;
 }

@@ -46,6 +46,10 @@ inline constexpr Plausible kLateralVelocity{"a wheelset's lateral velocity", "m/
 // The axle's angular velocity against pure rolling at r0, omega r0 / V: 1 - xi, within 0 (locked, xi = 1) .. 2 (the
 // wheel's surface twice as fast as the train, xi = -1). Given in rpm it is 9.55 times the rad/s.
 inline constexpr double kMaxSpinRatio = 2;
+// The slip velocities of CONTACT's falling friction laws (s1, s2): wheel-rail slip velocities are mm/s to a few m/s,
+// and CONTACT takes them in mm/s, where wrc takes m/s.
+inline constexpr Plausible kFrictionVelocity{"a friction law's slip velocity", "m/s", 0, 10,
+                                             "CONTACT's SABSH1 = 100 mm/s is s1 = 0.1"};
 // Wheel on rail: 0.02-0.1 with leaves or a greased gauge face, 0.3-0.6 dry or sanded; 30 is a percentage. The
 // no-slip limit (a huge coefficient: Kalker's linear theory) needs check_setup = false.
 inline constexpr Plausible kFrictionCoefficient{"a wheel-rail friction coefficient", "", 0.01, 1.0, "30 % is mu = 0.3"};
