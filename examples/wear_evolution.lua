@@ -31,6 +31,11 @@ local s = study.new{
   options = {
     {"wheel", "string", "profiles/s1002.lua", "wheel profile (a definition or a file)"},
     {"rail", "string", "profiles/60e1.lua", "rail profile (a definition or a file)"},
+    {"cant", "number", 1 / 40, "rail inclination (1/40 = 0.025; 0 for a rail already canted in its file)", min = 0,
+     max = 0.1},
+    {"gauge_mm", "number", 1435, "track gauge at 14 mm below the rail top (mm)", min = 1000, max = 1700},
+    {"back_to_back_mm", "number", 1360, "distance between the flange backs (mm)", min = 900, max = 1700},
+    {"radius_mm", "number", 450, "nominal wheel radius (mm)", min = 150, max = 650},
     {"cases", "string", "", "CSV of running cases (y_mm, Q_kN, V_kmh, mu, share, ...); empty: generated"},
     {"steps", "integer", 20, "wear steps", min = 1, max = 10000},
     {"step_mm", "number", 0.1, "largest wheel depth worn per step (mm)", min = 1e-4, max = 2},
@@ -70,7 +75,17 @@ if opt.cases == "" and opt.tangent > 0 and not opt.curve_forces_kN:match("^%s*$"
 end
 
 local wheel, rail = wrc.profile.load(opt.wheel, {kind = "wheel"}), wrc.profile.load(opt.rail, {kind = "rail"})
-local wheelset = {grid = opt.grid_mm * 1e-3}
+local wheelset = {grid = opt.grid_mm * 1e-3, cant = opt.cant, gauge = opt.gauge_mm * 1e-3,
+                  back_to_back = opt.back_to_back_mm * 1e-3, radius = opt.radius_mm * 1e-3}
+-- The set-up checked once, on a coarse grid, before any step: a wheelset that cannot be built (a rail canted in its
+-- file given without cant=0, gauge and flange backs of different tracks) stops the study with wrc.wheelset's message,
+-- where every step would fail with it.
+do
+  local probe = {}
+  for k, v in pairs(wheelset) do probe[k] = v end
+  probe.grid = 2e-3
+  loop.wheelset(loop.initial{wheel = wheel, rail = rail, wheelset = probe})
+end
 local wear = {model = opt.model, k = (opt.model == "archard" and opt.k > 0) and opt.k or nil}
 local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, wear = wear, method = opt.method,
                       threads = opt.threads, rail_passes = opt.rail_passes, scheme = opt.scheme,
@@ -184,6 +199,7 @@ local function finish(ctx)
     ctx.write_profile(("%s_step%02d.%s"):format(t.body, t.step, kind == "wheel" and "prw" or "prr"), p)
   end
   local last = ev[#ev]
+  if not last then error("no wear step was computed: every case failed (" .. ctx.dir .. "/failures.csv says why)", 0) end
   local lines = {("%d steps to %.3f km (%s cases, %d failed in the last step)"):format(last.step, last.km,
                    csv_cases and #csv_cases or "generated", last.cases_failed or 0),
                  ("left wheel: worn area %.3f mm2, largest depth %.3f mm, Sh %.3f -> %.3f mm, Sd %.3f -> %.3f mm, " ..

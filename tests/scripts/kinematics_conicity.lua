@@ -27,6 +27,15 @@ local two_e = centred.left.contacts[1].point.y - centred.right.contacts[1].point
 check.rel(centred.left.contacts[1].rail_lateral_radius, 0.080, 1e-3, "the cone touches the rail on its R80 arc")
 local expected = 0.05 / (1 - 2 * 0.05 * (0.45 + 0.080) / two_e)
 for k = 1, #yhat do check.rel(tf[k], expected, 1e-3, ("cone 1:20 with the roll free, yhat = %g mm"):format(yhat[k] * 1e3)) end
+-- The same cone on 60E1 at the default cant 1:40 touches where the head's slope is 1:40, on its R300 crown (within
+-- 10 mm of the top): the same estimate with R = 300 mm, a larger rise (5.2 % against 3.7 %).
+local wc40 = wrc.wheelset{wheel = cone, rail = rail}
+local c40 = wc40:rigid{y = 0}
+local two_e40 = c40.left.contacts[1].point.y - c40.right.contacts[1].point.y
+check.rel(c40.left.contacts[1].rail_lateral_radius, 0.300, 1e-3, "at 1:40 the cone touches the rail on its R300 crown")
+check.near(wc40:conicity{yhat = {2e-3}}[1], 0.05, 2e-5, "cone 1:20 at cant 1:40, roll fixed: its slope")
+local expected40 = 0.05 / (1 - 2 * 0.05 * (0.45 + 0.300) / two_e40)
+check.rel(wc40:conicity{yhat = {2e-3}, roll = "free"}[1], expected40, 2e-3, "cone 1:20 at cant 1:40 with the roll free")
 
 local wheel = wrc.profile.load("profiles/s1002.lua")
 local ws = wrc.wheelset{wheel = wheel, rail = rail}

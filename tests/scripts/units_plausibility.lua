@@ -7,6 +7,7 @@ local check = require "wrc.check"
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
 local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
+local free = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3, check_setup = false}
 
 local function refused(f, key, value, unit, what)
   local err = check.fails(f, ("%s = %s %s is implausible"):format(key, value, unit), what)
@@ -27,6 +28,59 @@ refused(function() ws:contact{y = 0, z = -0.05e-3, V = 300, mu = 0.3} end, "V", 
 refused(function() ws:wheel{side = "left", y = 0, Fz = 100e3, V = -300, mu = 0.3} end, "V", "-300", "m/s",
         "ws:wheel, V in km/h backwards")
 
+-- Kinematics in other units (they gave full sliding, |F| = mu N, with nothing to say why): omega in rpm, the yaw rate
+-- in deg/s, vy in km/h. Pure rolling at r0 = 0.45 m and 30 m/s is 66.67 rad/s = 636.6 rpm (by hand: 30 / 0.45 and
+-- x 60 / 2 pi); given as rpm the creepage would be 1 - 636.6 / 66.67 = -8.55.
+local rpm = 30 / 0.45 * 60 / (2 * math.pi)
+local e_omega = check.fails(function() ws:contact{y = 0, z = -0.05e-3, V = 30, omega = rpm, mu = 0.3} end,
+                            "Is omega in another unit?", "omega in rpm")
+check.ok(e_omega:find("66.67 rad/s is 636.6 rpm", 1, true) and e_omega:find("would be -8.55", 1, true),
+         "the message gives pure rolling and the creepage: " .. e_omega)
+check.fails(function() ws:wheel{side = "left", y = 0, Fz = 100e3, V = 30, omega = -30 / 0.45, mu = 0.3} end,
+            "Is omega in another unit?", "omega turning the wheel backward")
+refused(function() ws:contact{y = 0, z = -0.05e-3, V = 30, yaw_rate = 10, mu = 0.3} end, "yaw_rate", "10", "rad/s",
+        "ws:contact, yaw rate in deg/s")
+refused(function() ws:wheel{side = "left", y = 0, Fz = 100e3, V = 30, vy = 10, mu = 0.3} end, "vy", "10", "m/s",
+        "ws:wheel, vy in km/h")
+-- A locked wheel (omega = 0, xi = 1), a wheel slipping at 1.5 times the train's speed, a tram's yaw rate in a 15 m
+-- curve at 5 m/s and a hunting wheelset's lateral velocity pass.
+for _, k in ipairs{{omega = 0}, {omega = 1.5 * 30 / 0.45}, {yaw_rate = 5 / 15}, {vy = 0.5}} do
+  local o = {y = 0, z = -0.05e-3, V = 30, mu = 0.3}
+  for key, v in pairs(k) do o[key] = v end
+  local ok, r = pcall(ws.contact, ws, o)
+  check.ok(ok and r.left.force.z > 0, "plausible kinematics pass: " .. tostring(ok and "" or r))
+end
+check.ok(free:contact{y = 0, z = -0.05e-3, V = 30, omega = rpm, mu = 0.3}.left.force.z > 0,
+         "check_setup = false: omega in rpm reaches the solver")
+
+-- The rigid calls' loads: hertz_load = 100 (kN meant) gave every contact point's Hertz ellipse for 100 N (p0 78 MPa),
+-- Q = 200 the rigid force balance for 200 N.
+refused(function() ws:rigid{y = 0, hertz_load = 100} end, "hertz_load", "100", "N", "ws:rigid, hertz_load in kN")
+refused(function() ws:rigid{y = 0, Q = 200} end, "Q", "200", "N", "ws:rigid, Q in kN")
+refused(function() ws:geometry_table{y = {0, 1e-3}, hertz_load = 100, progress = false} end, "hertz_load", "100", "N",
+        "ws:geometry_table, hertz_load in kN")
+check.ok(free:rigid{y = 0, hertz_load = 100}.converged, "check_setup = false: hertz_load = 100 N reaches the ellipses")
+
+-- Friction in other units: a friction profile's y in mm (the lubricated gauge face of docs/guide/rolling.md, below
+-- y = -22 mm, given as -30, -22, -18, 40) put every point of the rail between -18 and 40 m, all at mu 0.35, the
+-- lubricant nowhere; CONTACT's falling laws take their slip velocities in mm/s, wrc in m/s (s1 = 100 made the law
+-- constant friction over any wheel-rail slip velocity).
+check.fails(function() ws:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35,
+                                   friction_profile = {y = {-30, -22, -18, 40}, mu = {0.1, 0.1, 0.35, 0.35}}} end,
+            "the 1st value of y (= -30 m) lies beyond +-0.1 m", "friction_profile's y in mm")
+check.fails(function() free:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35,
+                                     friction_profile = {left = {y = {-0.03, 0.22}, mu = {0.1, 0.35}}}} end,
+            "the 2nd value of y (= 0.22 m) lies beyond", "also unchecked: no rail head is 0.4 m wide")
+refused(function() ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "linear", mu_inf = 0.2, m1 = 0.1, s1 = 100}} end,
+        "s1", "100", "m/s", "a linear law's s1 in CONTACT's mm/s")
+refused(function() ws:wheel{side = "left", y = 0, Fz = 100e3, V = 30,
+                            friction = {law = "rational", mu_inf = 0.2, m1 = 0.05, s1 = 0.1, m2 = 0.05, s2 = 50}} end,
+        "s2", "50", "m/s", "a rational law's s2 in mm/s")
+check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35, friction_profile = {y = {-0.030, -0.022, -0.018, 0.040},
+                    mu = {0.10, 0.10, 0.35, 0.35}}, friction = nil}.left.force.z > 0, "the guide's gauge face in m passes")
+check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "linear", mu_inf = 0.2, m1 = 0.1, s1 = 0.1}}
+         .left.force.z > 0, "s1 = 0.1 m/s passes")
+
 -- Realistic values pass: a light tram axle (40 kN) and a heavy-haul one (350 kN), a worn small wheel and a large one,
 -- 300 km/h.
 check.ok(ws:equilibrium{y = 0, Q = 40e3}.converged, "Q = 40 kN")
@@ -37,8 +91,7 @@ local c = ws:contact{y = 0, z = -0.05e-3, V = 300 / 3.6, mu = 0.3}
 check.ok(c.left.force.z > 0, "V = 83.3 m/s")
 
 -- check_setup = false: the values reach the engine (a test body, a scale model).
-local free = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3, check_setup = false}
 local e = free:equilibrium{y = 0, Q = 200, on_failure = "return"}
 check.ok(not (e.error or ""):find("implausible", 1, true), "check_setup = false: Q = 200 N reaches the solver")
 check.ok(wrc.wheelset{wheel = wheel, rail = rail, E = 210, grid = 2e-3, check_setup = false}, "and E = 210 Pa builds")
-print("units: implausible loads, moduli, radii and speeds refused with their unit")
+print("units: implausible loads, moduli, radii, speeds and kinematics refused with their unit")

@@ -108,6 +108,62 @@ check.fails(function() wrc.wheelset{wheel = wheel_m, rail = rail} end, "are its 
 check.ok(wrc.wheelset{wheel = wrc.profile.load(wheel_mm, {kind = "wheel"}), rail = wrc.profile.load(rail_mm, {kind = "rail"}),
                       grid = 2e-3}, "the same files in mm build")
 
+-- Mistakes of a set-up that gave plausible-looking numbers: a negative cant (rails tilted outward: the left wheel's
+-- rigid contact angle at y = 0 came out 5.2 deg instead of 1.4), a broad gauge with standard flange backs (1.520 m with
+-- 1.360 m: the rails under the wheels' field-side treads, s = +35 mm at y = 0), the diameter given as the radius, an
+-- upside-down wheel (anti-centring: conicity then blamed the sign of dr), a canted rail file canted again.
+local e_cant = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, cant = -1 / 40} end,
+                           "tilts the rails' heads outward", "cant < 0")
+check.ok(e_cant:find("cant = 0.025", 1, true) and e_cant:find("check_setup = false", 1, true), "it names 1:40: " .. e_cant)
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, cant = -1 / 40, grid = 2e-3, check_setup = false}, "unless unchecked")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, cant = 0, grid = 2e-3}, "cant = 0 (a canted file) builds")
+-- The play between flanges and rails, by hand: gauge - back_to_back - 2 Sd, with EN 13715's Sd = 32.5 mm of S1002.
+local play = (1.520 - 1.360 - 2 * 0.0325) * 1e3
+local e_play = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.520} end,
+                           "lateral play between its flanges and the rails", "1.520 m gauge with 1.360 m flange backs")
+check.ok(e_play:find(("%.1f mm"):format(play), 1, true), ("the play %.1f mm named: %s"):format(play, e_play))
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.520, back_to_back = 1.440, grid = 2e-3},
+         "1.520 m gauge with 1.440 m flange backs builds")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge = 1.470, back_to_back = 1.357, grid = 2e-3},
+         "the widest gauge in service with the narrowest flange backs builds (43 mm of play with S1002)")
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, radius = 0.92} end, "the radius, not the diameter",
+            "a wheel's diameter given as its radius")
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, radius = 0.625, grid = 2e-3}, "a 1.25 m locomotive wheel builds")
+local upside_down = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua", {mirror_z = true})
+local e_up = check.fails(function() wrc.wheelset{wheel = upside_down, rail = rail} end, "Is the wheel upside down",
+                         "S1002 with z pointing down")
+check.ok(e_up:find("rises 28.0 mm above", 1, true), "the flange's 28 mm (EN 13715's Sh) named: " .. e_up)
+local canted = wrc.profile.load(samples .. "60e1_canted.prr")
+local e_twice = check.fails(function() wrc.wheelset{wheel = wheel, rail = canted} end, "already canted in its file",
+                            "a canted rail file canted again")
+check.ok(e_twice:find("the left rail profile '60e1_canted'", 1, true), "the message names the profile: " .. e_twice)
+
+-- A wheel whose y is not measured from its tape circle: EN 13715 puts S1002's tape circle 70 mm from the flange back,
+-- so a file measured from the flange back (MiniProf's X) has its flange tip at y = +15 mm and every point 70 mm off.
+-- It was called "mirrored" (mirror_y = true would have made it worse); 5 mm off, it built and gave tan gamma_e 0.012
+-- for 0.174 and Sd 27.6 mm for 32.5.
+local from_back = tmp .. "/plausibility_s1002_from_back.txt"
+do
+  local y, z = wheel:points()
+  local f = assert(io.open(from_back, "w"))
+  for i = 1, #y, 2 do f:write(string.format("%.4f %.4f\n", (y[i] + 0.070) * 1e3, z[i] * 1e3)) end
+  f:close()
+end
+local fb = wrc.profile.load(from_back, {kind = "wheel"})
+check.ok(fb.warnings[1] and fb.warnings[1]:find("origin is not at the tape circle", 1, true)
+         and fb.warnings[1]:find("shift = {y = -0.0700}", 1, true), "the loader names the origin: " .. tostring(fb.warnings[1]))
+local e_fb = check.fails(function() wrc.wheelset{wheel = fb, rail = rail} end, "not measured from the tape circle",
+                         "a wheel measured from its flange back")
+check.ok(e_fb:find("shift = {y = -0.0700}", 1, true), "the shift named: " .. e_fb)
+local shifted = wrc.profile.load(from_back, {kind = "wheel", shift = {y = -0.070}})
+check.ok(#shifted.warnings == 0, "shifted by -70 mm it loads without a warning")
+check.ok(wrc.wheelset{wheel = shifted, rail = rail, grid = 2e-3}, "and builds")
+local off5 = wrc.profile.load(from_back, {kind = "wheel", shift = {y = -0.075}})
+local e_off = check.fails(function() wrc.wheelset{wheel = off5, rail = rail} end, "5.0 mm beyond its flange back",
+                          "a wheel whose origin is 5 mm off its tape circle")
+check.ok(e_off:find("y = -tape_offset = -70.0 mm", 1, true), "the flange back named: " .. e_off)
+check.ok(wrc.wheelset{wheel = off5, rail = rail, tape_offset = 0.075, grid = 2e-3}, "with its own tape_offset it builds")
+
 -- ---- results ----
 local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3}
 local Q = 200e3

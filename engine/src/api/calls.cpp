@@ -4,6 +4,7 @@
 
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/location.hpp"
+#include "wrc/wheelset/plausibility.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,15 +102,20 @@ RigidCall RigidCall::read(OptionReader& r) {
 }
 
 namespace {
-// The rigid results' Hertz ellipses use the wheelset's material.
-RigidOptions with_material(RigidOptions o, const Wheelset& wheelset) {
+// The rigid results' Hertz ellipses use the wheelset's material; their loads are checked as the elastic calls' are
+// (plausibility.hpp; hertz_load = 100 meant kN gave p0 = 78 MPa).
+RigidOptions with_material(RigidOptions o, const Wheelset& wheelset, std::string_view context) {
   o.material = wheelset.contact_model().material();
+  if (wheelset.contact_model().options().check_magnitudes) {  // a load <= 0 is solve_rigid's error
+    if (o.Q > 0) check_plausible(context, "Q", o.Q, kWheelsetLoad);
+    if (o.hertz_load > 0) check_plausible(context, "hertz_load", o.hertz_load, kContactLoad);
+  }
   return o;
 }
 }  // namespace
 
 RigidResult RigidCall::run(const Wheelset& wheelset) const {
-  return solve_rigid(wheelset.geometry(), y, yaw, with_material(options, wheelset));
+  return solve_rigid(wheelset.geometry(), y, yaw, with_material(options, wheelset, "rigid contact"));
 }
 
 GeometryTableCall GeometryTableCall::read(OptionReader& r) {
@@ -121,7 +127,7 @@ GeometryTableCall GeometryTableCall::read(OptionReader& r) {
 
 GeometryTable GeometryTableCall::run(const Wheelset& wheelset) const {
   GeometryTableOptions o = options;
-  o.rigid = with_material(o.rigid, wheelset);
+  o.rigid = with_material(o.rigid, wheelset, "geometry table");
   return run_geometry_table(wheelset.geometry(), o);
 }
 

@@ -19,7 +19,8 @@ namespace {
 
 void check_params(const TrackParams& p) {
   auto positive = [](double v, const char* key, double lo, double hi) {
-    if (!(v > lo && v < hi) || !std::isfinite(v)) fail("wrc.wheelset: '{}' = {} is out of range ({} .. {})", key, v, lo, hi);
+    if (!(v > lo && v < hi) || !std::isfinite(v))
+      fail("wrc.wheelset: '{}' = {} is out of range: it must lie strictly between {} and {} (m)", key, v, lo, hi);
   };
   positive(p.radius, "radius", 0.05, 5.0);
   positive(p.back_to_back, "back_to_back", 0.3, 3.0);
@@ -27,6 +28,13 @@ void check_params(const TrackParams& p) {
   positive(p.gauge_depth, "gauge_depth", 0.0, 0.1);
   positive(p.tape_offset, "tape_offset", 0.0, 0.5);
   if (!(std::abs(p.cant) < 0.5) || !std::isfinite(p.cant)) fail("wrc.wheelset: 'cant' = {} is out of range (|cant| < 0.5)", p.cant);
+}
+
+// The first point of y that lies below the one before it (y.size() when none).
+std::size_t fold_index(const std::vector<double>& y) {
+  for (std::size_t i = 1; i < y.size(); ++i)
+    if (y[i] < y[i - 1]) return i;
+  return y.size();
 }
 
 // Lateral position (left-side frame) of the gauge point of a canted rail, walking from the highest point toward the
@@ -45,7 +53,9 @@ double gauge_point_y(const std::vector<double>& y, const std::vector<double>& z,
     }
   }
   if (found) return *found;
-  fail("wrc.wheelset: rail profile {} does not reach {} mm below its top on the gauge side", source, depth * 1e3);
+  fail("wrc.wheelset: rail profile {} does not reach {} mm below its top on the gauge side, where the gauge point "
+       "lies: is it cropped above that depth, or upside down (a file with z pointing down: mirror_z = true)?", source,
+       depth * 1e3);
 }
 
 // Smallest vertical gap wheel - rail over the lateral overlap of two polylines ordered by y. The gap of
@@ -106,8 +116,11 @@ Track assemble_track(const std::array<Profile, 2>& wheels, const std::array<Prof
     for (std::size_t i = 1; i < cy.size(); ++i)
       if (cy[i] < cy[i - 1] && cy[i] > cy[i - 1] - kVerticalRounding) cy[i] = cy[i - 1];
     if (!std::is_sorted(cy.begin(), cy.end()))
-      fail("wrc.wheelset: rail profile {} is not monotone in y after the cant rotation (a face leans over once canted "
-           "by {:.4g} rad)", r.source, angle);
+      fail("wrc.wheelset: the {} rail profile '{}' ({}) is not monotone in y after the cant rotation (a face leans "
+           "over once canted by {:.4g} rad, at y = {:+.1f} mm of the profile){}", side_name(s), r.name, r.source, angle,
+           r.y[fold_index(cy)] * 1e3,
+           params.cant != 0 ? ": is the rail already canted in its file (Simpack and MiniProf rails often are)? A "
+                              "canted rail is used with cant = 0" : "");
     pl.rail_dy = 0.5 * params.gauge - gauge_point_y(cy, cz, params.gauge_depth, params.gauge_rule, r.source);
     pl.rail_dz = -params.radius;  // provisional: crown near the wheel's lowest point
     pl.sign = s == kLeft ? 1.0 : -1.0;

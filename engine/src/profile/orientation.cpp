@@ -33,6 +33,13 @@ void check_wheel(const Profile& p, std::vector<std::string>& out) {
         "circle at y = {:.1f} mm; in the wheel frame the flange tip points down (S1002: z = -28 mm). Pass mirror_z = "
         "true if the file has z pointing down",
         p.source, up * 1e3, y_high * 1e3));
+  else if (down > 0.010 && y_low > 0 && y_low - p.y.front() < 0.5 * (p.y.back() - p.y.front()))
+    out.push_back(fmt::format(
+        "{}: the wheel profile's origin is not at the tape circle: its flange (lowest point, {:.1f} mm below the "
+        "height at y = 0) lies toward its gauge-side end, as a wheel's does, but at y = +{:.1f} mm; in the wheel frame "
+        "y is measured from the tape circle, 70 mm from the flange back (S1002's flange at y = -55 mm). Is y measured "
+        "from the flange back (MiniProf's X)? Pass shift = {{y = {:.4f}}} to put the first point at -70 mm",
+        p.source, down * 1e3, y_low * 1e3, -0.070 - p.y.front()));
   else if (down > 0.010 && y_low > 0)
     out.push_back(fmt::format(
         "{}: the wheel profile looks mirrored: its flange (lowest point, {:.1f} mm below the tape circle) lies at "

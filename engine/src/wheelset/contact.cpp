@@ -218,6 +218,8 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
 ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorkspace& ws, const ContactRequest& request,
                        const VerticalLoad* load) {
   request.validate(model.options().check_magnitudes);
+  if (request.rolling && model.options().check_magnitudes)
+    request.rolling->check_kinematics("contact", model.geometry().track->params.radius);
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);

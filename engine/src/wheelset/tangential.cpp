@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace wrc {
 
@@ -664,6 +665,9 @@ FrictionProfile read_profile(OptionReader& t) {
   if (y->size() != mu->size() || y->empty())
     fail("{}: 'y' has {} values and 'mu' {}: expected equal, non-empty lists", t.context(), y->size(), mu->size());
   for (std::size_t i = 0; i < y->size(); ++i) {
+    if (!(std::abs((*y)[i]) <= kFrictionProfileTo))
+      fail("{}: {} (= {} m) lies beyond +-{:g} m of the rail profile's origin, wider than any rail head (60E1: -36 .. "
+           "+37 mm): is it in mm? y is in metres", t.context(), value_at(i, "y"), (*y)[i], kFrictionProfileTo);
     if (i > 0 && !((*y)[i] > (*y)[i - 1]))
       fail("{}: {} (= {} m) does not increase from the one before ({} m)", t.context(), value_at(i, "y"), (*y)[i],
            (*y)[i - 1]);
@@ -732,6 +736,25 @@ void RollingRequest::validate(std::string_view context, bool plausible) const {
   for (const auto& side : friction_profile)
     if (side)
       for (double mu : side->mu) check_plausible(context, "friction_profile's mu", mu, kFrictionCoefficient);
+  if (friction.law == halfspace::FrictionLaw::coulomb || friction.law == halfspace::FrictionLaw::polach) return;
+  for (std::size_t i = 0; i < 2; ++i)
+    if (friction.term[i] > 0)
+      check_plausible(context, i == 0 ? "s1" : "s2", friction.velocity[i], kFrictionVelocity);
+}
+
+void RollingRequest::check_kinematics(std::string_view context, double r0) const {
+  if (!kinematics) return;
+  const Kinematics& k = *kinematics;
+  check_plausible(context, "yaw_rate", k.yaw_rate, kYawRate);
+  check_plausible(context, "vy", k.vy, kLateralVelocity);
+  if (!k.omega) return;
+  const double rolling = k.V / r0, ratio = *k.omega / rolling;
+  if (ratio >= 0 && ratio <= kMaxSpinRatio) return;
+  fail("{}: omega = {:.6g} rad/s is {:.3g} times the {:.4g} rad/s of pure rolling at V = {:.4g} m/s on r0 = {:.4g} m: "
+       "the longitudinal creepage would be {:.3g}, beyond a locked wheel (1) and a wheel spinning at twice the speed "
+       "(-1). Is omega in another unit? wrc takes rad/s ({:.4g} rad/s is {:.4g} rpm); check_setup = false on the "
+       "wheelset accepts it", context, *k.omega, ratio, rolling, k.V, r0, 1 - ratio, rolling,
+       rolling * 60 / (2 * std::numbers::pi));
 }
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {

@@ -15,8 +15,9 @@ namespace wrc {
 // Throws wrc::Error when a set-up cannot be what the user meant: a profile far too wide or tall for its kind (wrong
 // units), a "wheel" whose radius grows by more than 10 mm toward the field side (a rail profile, or a wheel with
 // reversed y), a "rail" that does not fall by 0.1 mm on the field side of its highest point or rises again there by
-// more than 1 mm (a wheel profile: its tread rises toward the field side), flanges that do not fit between the rails
-// (back_to_back + both flange thicknesses >= gauge).
+// more than 1 mm (a wheel profile: its tread rises toward the field side), a wheel rising more than 10 mm above its
+// tape circle (upside down), flanges that do not fit between the rails (back_to_back + both flange thicknesses >=
+// gauge) or leave more than 70 mm of play (gauge and back_to_back of different tracks).
 void check_setup(const Track& track);
 
 // The magnitudes a railway wheelset's inputs have (SI units). A value outside was almost surely given in another unit
@@ -30,16 +31,31 @@ struct Plausible {
 };
 inline constexpr Plausible kWheelsetLoad{"a wheelset load", "N", 2e3, 2e6, "200 kN is Q = 200e3"};
 inline constexpr Plausible kWheelLoad{"a wheel load", "N", 1e3, 1e6, "100 kN is Fz = 100e3"};
+inline constexpr Plausible kContactLoad{"a contact point's normal load", "N", 1e3, 1e6, "100 kN is hertz_load = 100e3"};
 inline constexpr Plausible kSteelModulus{"Young's modulus of wheel and rail steel", "Pa", 5e10, 5e11,
                                          "210 GPa is E = 2.1e11"};
-inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 1.5, "450 mm is radius = 0.45"};
+// Wheels in service: 0.33 m (diameter 0.66 m, tram and low-floor wagons) to 1.25 m diameter (locomotives). A radius
+// above 0.65 m is a diameter given as the radius (0.92 m: a worn freight-wagon wheel's diameter).
+inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 0.65,
+                                        "450 mm is radius = 0.45; the radius, not the diameter"};
 inline constexpr Plausible kTrainSpeed{"a train's speed", "m/s", 0, 160, "300 km/h is V = 83.3"};
+// A wheelset yaws at V / R in a curve (0.33 rad/s: a tram at 5 m/s in a 15 m curve) and by a few mrad at a few Hz
+// when hunting (5 mrad at 8 Hz: 0.25 rad/s); 10 is deg/s. Its lateral velocity when hunting: 10 mm at 8 Hz, 0.5 m/s.
+inline constexpr Plausible kYawRate{"a wheelset's yaw rate", "rad/s", 0, 1, "10 deg/s is yaw_rate = 0.175"};
+inline constexpr Plausible kLateralVelocity{"a wheelset's lateral velocity", "m/s", 0, 3, "1 km/h is vy = 0.278"};
+// The axle's angular velocity against pure rolling at r0, omega r0 / V: 1 - xi, within 0 (locked, xi = 1) .. 2 (the
+// wheel's surface twice as fast as the train, xi = -1). Given in rpm it is 9.55 times the rad/s.
+inline constexpr double kMaxSpinRatio = 2;
+// The slip velocities of CONTACT's falling friction laws (s1, s2): wheel-rail slip velocities are mm/s to a few m/s,
+// and CONTACT takes them in mm/s, where wrc takes m/s.
+inline constexpr Plausible kFrictionVelocity{"a friction law's slip velocity", "m/s", 0, 10,
+                                             "CONTACT's SABSH1 = 100 mm/s is s1 = 0.1"};
 // Wheel on rail: 0.02-0.1 with leaves or a greased gauge face, 0.3-0.6 dry or sanded; 30 is a percentage. The
 // no-slip limit (a huge coefficient: Kalker's linear theory) needs check_setup = false.
 inline constexpr Plausible kFrictionCoefficient{"a wheel-rail friction coefficient", "", 0.01, 1.0, "30 % is mu = 0.3"};
 void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range);
 
-// The wheelset's parameters (wrc.wheelset{}): radius and E.
+// The wheelset's parameters (wrc.wheelset{}): radius and E, and a cant that tilts the rails outward (< 0).
 void check_plausible(const TrackParams& track, const halfspace::Material& material);
 
 }  // namespace wrc
