@@ -119,3 +119,13 @@ def test_engine_errors_keep_their_message(ws):
         ws.contact(z=-5e-3)
     with pytest.raises(wrc.Error, match="does not touch"):
         ws.wheel(side="right", y=0.1, Fz=1e5)
+
+
+def test_numpy_scalars_that_item_cannot_make_python(ws):
+    # numpy.longdouble.item() gives a longdouble again (no Python type holds it): the conversion recursed until the
+    # interpreter crashed. A real one is a number (the same double as float() makes of it), a complex one no option's.
+    y = np.longdouble("2e-3")
+    assert ws.contact(y=y, z=-20e-6).force.z == ws.contact(y=float(y), z=-20e-6).force.z
+    assert ws.conicity(yhat=np.longdouble("3e-3")).tan_gamma[0] == ws.conicity(yhat=3e-3).tan_gamma[0]
+    with pytest.raises(TypeError, match="'y'.*got (complex256|clongdouble)"):
+        ws.contact(y=np.clongdouble(1e-3), z=-20e-6)
