@@ -129,3 +129,29 @@ def test_numpy_scalars_that_item_cannot_make_python(ws):
     assert ws.conicity(yhat=np.longdouble("3e-3")).tan_gamma[0] == ws.conicity(yhat=3e-3).tan_gamma[0]
     with pytest.raises(TypeError, match="'y'.*got (complex256|clongdouble)"):
         ws.contact(y=np.clongdouble(1e-3), z=-20e-6)
+
+
+def test_a_misspelt_key_is_named_before_the_key_it_hid(ws):
+    # A typo of a required key made the reader say only that the required one was missing ('yhat' is required), the
+    # misspelt key given never named. Each message must name the key given and the key meant.
+    cases = [
+        (lambda: ws.conicity(yaht=[3e-3]), "yaht", "yhat"),
+        (lambda: ws.equilibrium(y=0, q=200e3), "q", "Q"),  # another case: 'Q', not 'y' (also one edit away)
+        (lambda: ws.wheel(side="left", y=0, FZ=1e5), "FZ", "Fz"),
+        (lambda: ws.geometry_table(yy=[0, 1e-3]), "yy", "y"),
+        (lambda: ws.sweep(y=[0], q=1e5), "q", "Q"),
+        (lambda: ws.equilibrium(y=[0, 1e-3], q=200e3), "q", "Q"),  # a batch: every element alike, raised
+        (lambda: ws.geometry_table(y={"from": 0, "too": 1e-3, "step": 1e-3}), "too", "to"),
+        (lambda: wrc.conicity(y=[0, 1e-3, 2e-3], drr=[0, 1e-4, 2e-4], yhat=1e-3), "drr", "dr"),
+        (lambda: wrc.conicity({"y": [0, 1e-3, 2e-3], "drr": [0, 1e-4, 2e-4]}, yhat=1e-3), "drr", "dr"),
+        (lambda: wrc.conicity({"y": [0, 1e-3, 2e-3], "dr": [0, 1e-4, 2e-4]}, yhaat=1e-3), "yhaat", "yhat"),
+    ]
+    for call, given, meant in cases:
+        with pytest.raises(wrc.OptionError) as e:
+            call()
+        assert f"unknown key '{given}' (did you mean '{meant}'?" in str(e.value), str(e.value)
+    # Without a typo the error is the one it was.
+    with pytest.raises(wrc.OptionError, match="'yhat' is required"):
+        ws.conicity(method="simple")
+    with pytest.raises(wrc.OptionError, match="'y' must be finite"):
+        ws.contact(y=math.nan, z=0)
