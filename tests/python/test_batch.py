@@ -304,3 +304,33 @@ def test_a_calls_result_outlives_its_wheelset():
     assert w.patches[0].pressure.shape == (w.patches[0].grid.ny, w.patches[0].grid.nx)
     assert w.patches[0].grid.x.shape == (w.patches[0].grid.nx,)
     assert abs(w.force.z) > 0
+
+
+def test_a_result_pickles_and_copies_as_the_fields_it_holds(ws):
+    # A process pool returns results by pickle; the engine's record behind a deferred Result is no Python data, and
+    # copy.deepcopy said "a wrc.Result is read-only". The copy must hold every field of the original, bit for bit,
+    # whatever of the original was read before.
+    import copy
+    import pickle
+
+    w = ws.wheel(side="left", y=3e-3, Fz=100e3, grids=True)
+    back = pickle.loads(pickle.dumps(w))
+    same(back, ws.wheel(side="left", y=3e-3, Fz=100e3, grids=True))  # a fresh call: nothing of it read yet
+    same(back, w)
+    assert back.units == w.units and back.patches[0].units == w.patches[0].units
+    same(copy.deepcopy(w), w)
+    b = ws.rigid(y=[0.0, 2e-3])
+    same(pickle.loads(pickle.dumps(b.items[1])), ws.rigid(y=2e-3))
+
+
+def test_a_batch_is_indexed_by_field_names(ws):
+    # b[0] and iteration went through __getattr__ with an int: "'int' object has no attribute 'startswith'".
+    b = ws.rigid(y=[0.0, 1e-3])
+    with pytest.raises(TypeError, match=r"b.items\[index\]"):
+        b[0]
+    with pytest.raises(TypeError, match=r"b.items\[index\]"):
+        b.left[0]
+    with pytest.raises(TypeError, match="not iterable"):
+        list(b)
+    assert "Y_Q" in b and "nope" not in b and 0 not in b
+    assert np.array_equal(b["Y_Q"], b.Y_Q) and np.array_equal(b["left"]["normal_force"], b.left.normal_force)
