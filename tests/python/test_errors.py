@@ -155,3 +155,23 @@ def test_a_misspelt_key_is_named_before_the_key_it_hid(ws):
         ws.conicity(method="simple")
     with pytest.raises(wrc.OptionError, match="'y' must be finite"):
         ws.contact(y=math.nan, z=0)
+
+
+def test_conicity_arguments_are_checked_as_they_are_read(ws):
+    # Checked only when the computation began, these were wrc.Error (not the OptionError of a bad argument) and named
+    # wrc.conicity whichever call was made (the C API then said "wrc_conicity: wrc.conicity: ...").
+    for call, words in (
+        (lambda: ws.conicity(yhat=[]), "Wheelset.conicity: 'yhat' needs at least one amplitude"),
+        (lambda: ws.conicity(yhat=[-1e-3]), "Wheelset.conicity: the amplitude yhat = -0.001 m must be a positive"),
+        (lambda: wrc.conicity(y=[0, 1e-3, 2e-3], dr=[0, 1e-4], yhat=1e-3), "wrc.conicity: y has 3 values but dr has 2"),
+        (lambda: wrc.conicity({"y": [0, 1e-3, 2e-3], "dr": [0, math.nan, 2e-4]}, yhat=1e-3),
+         "wrc.conicity: Δr table: the 2nd point is not a finite number"),
+        (lambda: wrc.conicity(y=[0, 2e-3, 1e-3], dr=[0, 1e-4, 2e-4], yhat=1e-3),
+         "wrc.conicity: y must increase strictly: the 3rd value of y"),
+    ):
+        with pytest.raises(wrc.OptionError) as e:
+            call()
+        assert str(e.value).startswith(words), str(e.value)
+    # A cone's table, Δr = 2 (1/20) y: tan γe = 1/20 for an amplitude inside it.
+    y = np.linspace(-5e-3, 5e-3, 11)
+    assert wrc.conicity(y=y, dr=2 * y / 20, yhat=2e-3, method="simple").tan_gamma[0] == pytest.approx(0.05, rel=1e-12)
