@@ -181,6 +181,14 @@ struct Arguments {
     }
   }
 
+  // The names given and not taken, for a message about a missing one (a misspelt name is among them): "" when none,
+  // else "; the other names given: 'q', 'grids'".
+  std::string others() const {
+    std::string list;
+    for (const auto& e : entries) list += (list.empty() ? "'" : ", '") + e.first + "'";
+    return list.empty() ? "" : "; the other names given: " + list;
+  }
+
   // Removes and returns the value of `key` (null when not given).
   const mxArray* take(const char* key) {
     for (auto it = entries.begin(); it != entries.end(); ++it)
@@ -205,9 +213,16 @@ void copy_as_double(const mxArray* v, std::vector<double>& out) {
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<double>(p[i]);
 }
 
+// A value's class as a message names it: "sparse double", "complex double", "uint64".
+std::string class_words(const mxArray* v) {
+  if (!v) return "nothing";
+  return std::string(mxIsSparse(v) ? "sparse " : "") + (mxIsComplex(v) ? "complex " : "") + mxGetClassName(v);
+}
+
 std::vector<double> numbers_of(const mxArray* v, const std::string& what) {
   if (!is_real_numeric(v) && !(v && mxIsLogical(v)))
-    fail("wrc:type", what + " must be real numbers (got " + (v ? mxGetClassName(v) : "nothing") + ")");
+    fail("wrc:type", what + " must be real numbers (got " + class_words(v) +
+                         (v && mxIsUint64(v) ? ", the class of wrc objects' ids: give numbers as double" : "") + ")");
   if (mxGetNumberOfDimensions(v) > 2 || (mxGetM(v) > 1 && mxGetN(v) > 1))
     fail("wrc:type", what + " must be a scalar or a vector, not a matrix");
   std::vector<double> out(mxGetNumberOfElements(v));
@@ -245,7 +260,9 @@ std::string option_pair(const std::string& function, const std::string& key, con
   if (key.empty() || key.find_first_of(" \t\r\n;=") != std::string::npos)
     fail("wrc:usage", function + ": '" + key + "' is not an option name");
   if (!v) fail("wrc:type", what + " is missing");
-  if (mxIsUint64(v)) fail("wrc:type", what + " is a wrc object; this option takes a number, true/false or a word");
+  if (mxIsUint64(v))  // a handle's id, or a number of the class ids have
+    fail("wrc:type", what + " is a uint64 (a wrc object, or a number of the class of their ids); this option takes a "
+                            "number (double or another numeric class), true/false or a word");
   if (mxIsChar(v)) {
     const std::string s = text_of(v, what);
     if (s.find_first_of(" \t\r\n;") != std::string::npos)
@@ -290,7 +307,7 @@ std::array<double, N> positional(Arguments& a, const char* c_function, const cha
     const mxArray* v = a.take(keys[k]);
     if (!v)
       fail("wrc:missingArgument", a.function + ": '" + key + "' is missing (" + c_function + " takes " + all +
-                                      (side ? ")" : " as arguments: give each)"));
+                                      (side ? "" : " as arguments: give each") + a.others() + ")");
     values[k] = side ? side_of(a, v) : number_of(v, a.function + ": '" + key + "'");
   }
   return values;
@@ -572,7 +589,8 @@ void wheelset(const Call& c) {
   const bool two = p[0] || p[1], four = p[2] || p[3] || p[4] || p[5];
   if (two == four || (two && !(p[0] && p[1])) || (four && !(p[2] && p[3] && p[4] && p[5])))
     fail("wrc:missingArgument",
-         "wrc.wheelset: give wheel and rail, or left_wheel, right_wheel, left_rail and right_rail (profiles)");
+         "wrc.wheelset: give wheel and rail, or left_wheel, right_wheel, left_rail and right_rail (profiles" +
+             a.others() + ")");
   const std::string text = option_text(a);
   wrc_wheelset* ws = nullptr;
   check(two ? wrc_wheelset_new(p[0], p[1], text.c_str(), &ws)
@@ -626,7 +644,9 @@ void conicity(const Call& c) {
   Arguments a = c.args(0);
   const mxArray* y = a.take("y");
   const mxArray* dr = a.take("dr");
-  if (!y || !dr) fail("wrc:missingArgument", "wrc.conicity: 'y' and 'dr' (the Δr table, m) are required");
+  if (!y || !dr)
+    fail("wrc:missingArgument", "wrc.conicity: 'y' and 'dr' (the Δr table, m) are required" +
+                                    (a.entries.empty() ? std::string() : " (" + a.others().substr(2) + ")"));
   const std::vector<double> yv = numbers_of(y, "wrc.conicity: y"), dv = numbers_of(dr, "wrc.conicity: dr");
   if (yv.size() != dv.size())
     fail("wrc:usage", "wrc.conicity: y has " + std::to_string(yv.size()) + " values, dr " + std::to_string(dv.size()));

@@ -88,6 +88,11 @@ class Result(Mapping):
     def __dir__(self):
         return list(self._fields) + ["keys", "units", "to_dict"]
 
+    def __reduce__(self):
+        # pickle (multiprocessing, saving results) and copy: the fields themselves, a deferred table expanded (the
+        # engine's record of it is not Python data); __setattr__ refuses the default way of restoring a Result.
+        return Result, (dict(self._fields), dict(self._units))
+
     @property
     def units(self):
         """Each field's unit ("m", "N", "Pa", "rad", "-"), by name; fields without one (text, flags, tables) absent."""

@@ -102,7 +102,17 @@ class BatchNode:
                                  "element are in Batch.items)")
         return got
 
-    __getitem__ = __getattr__
+    def __getitem__(self, name):
+        if not isinstance(name, str):  # b[0] meant an element: said so, not "'int' object has no attribute ..."
+            raise TypeError(f"a batch's fields are indexed by name (b['z'], b.z), got {type(name).__name__}: an "
+                            "element's whole result is b.items[index], a field's value there b.z[index]")
+        return self.__getattr__(name)
+
+    def __contains__(self, name):
+        return name in self.keys()
+
+    def __iter__(self):  # without it Python iterates by b[0], b[1], ...
+        raise TypeError("a batch is not iterable: b.keys() lists its fields, b.items holds its elements' results")
 
     def keys(self):
         """The fields that stack over the batch."""

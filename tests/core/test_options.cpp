@@ -261,3 +261,11 @@ TEST_CASE("option types in the words of the front end that built the options, po
   CHECK(reading_error(m, true, "creepage").find("'creepage' must be a struct, got number") != std::string::npos);
   CHECK(reading_error(m, true, "outer").find("'inner' must be a struct, got logical") != std::string::npos);
 }
+
+TEST_CASE("closest name: a key in another case is the one meant, before a key one edit away") {
+  // 'q' is one edit from 'y' and from 'Q' alike; only the case tells which was meant.
+  CHECK(closest_name("q", {"y", "yaw", "Q"}) == "Q");
+  CHECK(closest_name("FZ", {"y", "Fz", "fy"}) == "Fz");
+  CHECK(closest_name("yhta", {"yhat", "y"}) == "yhat");  // edits as before
+  CHECK(closest_name("xyz", {"Q"}).empty());
+}

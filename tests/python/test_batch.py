@@ -5,6 +5,7 @@ The reference of every batch is the same calls made one by one (each a fresh, co
 equal them bit for bit (np.array_equal on every field, NaN where a field is NaN in both), on one or two threads."""
 import gc
 import os
+import re
 import signal
 import threading
 import time
@@ -198,10 +199,17 @@ def test_bad_input(ws):
     with pytest.raises(wrc.OptionError) as alone:
         ws.rigid(y=0.0, yaww=0.0)
     assert str(batch.value) == str(alone.value) and "yaw" in str(alone.value)
-    with pytest.raises(wrc.OptionError, match="threads = -1"):
-        ws.rigid(y=[0.0], threads=-1)
-    with pytest.raises(TypeError, match="threads must be a whole number"):
-        ws.rigid(y=[0.0], threads="2")
+    # threads= is read as every call reads it (a sweep's, a geometry table's): a whole number in 0..256, of any
+    # Python or numpy kind; anything else is named with its value.
+    for bad, said in ((-1, "got -1"), (257, "got 257"), (10**30, "got 1e+30"), (1.5, "got 1.5"), ("2", "got str"),
+                      (True, "got bool")):
+        with pytest.raises(wrc.OptionError, match="Wheelset.rigid: 'threads' must be .*" + re.escape(said)):
+            ws.rigid(y=[0.0], threads=bad)
+        with pytest.raises(wrc.OptionError, match="Wheelset.sweep: 'threads' must be .*" + re.escape(said)):
+            ws.sweep(y=[0.0], Q=1e5, threads=bad)
+    for good in (np.int64(1), np.uint8(1), 1.0, 1):
+        assert ws.rigid(y=[0.0, 1e-3], threads=good).threads == 1
+    assert ws.rigid(y=[0.0, 1e-3], threads=256).threads == 2  # never more than the elements
     with pytest.raises(wrc.OptionError, match="threads = is an option of batch calls"):
         ws.rigid(y=0.0, threads=2)
     assert "creepage.xi" in wrc.batch_keys("wheel") and "Fz" in wrc.batch_keys("wheel")
@@ -296,3 +304,33 @@ def test_a_calls_result_outlives_its_wheelset():
     assert w.patches[0].pressure.shape == (w.patches[0].grid.ny, w.patches[0].grid.nx)
     assert w.patches[0].grid.x.shape == (w.patches[0].grid.nx,)
     assert abs(w.force.z) > 0
+
+
+def test_a_result_pickles_and_copies_as_the_fields_it_holds(ws):
+    # A process pool returns results by pickle; the engine's record behind a deferred Result is no Python data, and
+    # copy.deepcopy said "a wrc.Result is read-only". The copy must hold every field of the original, bit for bit,
+    # whatever of the original was read before.
+    import copy
+    import pickle
+
+    w = ws.wheel(side="left", y=3e-3, Fz=100e3, grids=True)
+    back = pickle.loads(pickle.dumps(w))
+    same(back, ws.wheel(side="left", y=3e-3, Fz=100e3, grids=True))  # a fresh call: nothing of it read yet
+    same(back, w)
+    assert back.units == w.units and back.patches[0].units == w.patches[0].units
+    same(copy.deepcopy(w), w)
+    b = ws.rigid(y=[0.0, 2e-3])
+    same(pickle.loads(pickle.dumps(b.items[1])), ws.rigid(y=2e-3))
+
+
+def test_a_batch_is_indexed_by_field_names(ws):
+    # b[0] and iteration went through __getattr__ with an int: "'int' object has no attribute 'startswith'".
+    b = ws.rigid(y=[0.0, 1e-3])
+    with pytest.raises(TypeError, match=r"b.items\[index\]"):
+        b[0]
+    with pytest.raises(TypeError, match=r"b.items\[index\]"):
+        b.left[0]
+    with pytest.raises(TypeError, match="not iterable"):
+        list(b)
+    assert "Y_Q" in b and "nope" not in b and 0 not in b
+    assert np.array_equal(b["Y_Q"], b.Y_Q) and np.array_equal(b["left"]["normal_force"], b.left.normal_force)

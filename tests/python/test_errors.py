@@ -119,3 +119,59 @@ def test_engine_errors_keep_their_message(ws):
         ws.contact(z=-5e-3)
     with pytest.raises(wrc.Error, match="does not touch"):
         ws.wheel(side="right", y=0.1, Fz=1e5)
+
+
+def test_numpy_scalars_that_item_cannot_make_python(ws):
+    # numpy.longdouble.item() gives a longdouble again (no Python type holds it): the conversion recursed until the
+    # interpreter crashed. A real one is a number (the same double as float() makes of it), a complex one no option's.
+    y = np.longdouble("2e-3")
+    assert ws.contact(y=y, z=-20e-6).force.z == ws.contact(y=float(y), z=-20e-6).force.z
+    assert ws.conicity(yhat=np.longdouble("3e-3")).tan_gamma[0] == ws.conicity(yhat=3e-3).tan_gamma[0]
+    with pytest.raises(TypeError, match="'y'.*got (complex256|clongdouble)"):
+        ws.contact(y=np.clongdouble(1e-3), z=-20e-6)
+
+
+def test_a_misspelt_key_is_named_before_the_key_it_hid(ws):
+    # A typo of a required key made the reader say only that the required one was missing ('yhat' is required), the
+    # misspelt key given never named. Each message must name the key given and the key meant.
+    cases = [
+        (lambda: ws.conicity(yaht=[3e-3]), "yaht", "yhat"),
+        (lambda: ws.equilibrium(y=0, q=200e3), "q", "Q"),  # another case: 'Q', not 'y' (also one edit away)
+        (lambda: ws.wheel(side="left", y=0, FZ=1e5), "FZ", "Fz"),
+        (lambda: ws.geometry_table(yy=[0, 1e-3]), "yy", "y"),
+        (lambda: ws.sweep(y=[0], q=1e5), "q", "Q"),
+        (lambda: ws.equilibrium(y=[0, 1e-3], q=200e3), "q", "Q"),  # a batch: every element alike, raised
+        (lambda: ws.geometry_table(y={"from": 0, "too": 1e-3, "step": 1e-3}), "too", "to"),
+        (lambda: wrc.conicity(y=[0, 1e-3, 2e-3], drr=[0, 1e-4, 2e-4], yhat=1e-3), "drr", "dr"),
+        (lambda: wrc.conicity({"y": [0, 1e-3, 2e-3], "drr": [0, 1e-4, 2e-4]}, yhat=1e-3), "drr", "dr"),
+        (lambda: wrc.conicity({"y": [0, 1e-3, 2e-3], "dr": [0, 1e-4, 2e-4]}, yhaat=1e-3), "yhaat", "yhat"),
+    ]
+    for call, given, meant in cases:
+        with pytest.raises(wrc.OptionError) as e:
+            call()
+        assert f"unknown key '{given}' (did you mean '{meant}'?" in str(e.value), str(e.value)
+    # Without a typo the error is the one it was.
+    with pytest.raises(wrc.OptionError, match="'yhat' is required"):
+        ws.conicity(method="simple")
+    with pytest.raises(wrc.OptionError, match="'y' must be finite"):
+        ws.contact(y=math.nan, z=0)
+
+
+def test_conicity_arguments_are_checked_as_they_are_read(ws):
+    # Checked only when the computation began, these were wrc.Error (not the OptionError of a bad argument) and named
+    # wrc.conicity whichever call was made (the C API then said "wrc_conicity: wrc.conicity: ...").
+    for call, words in (
+        (lambda: ws.conicity(yhat=[]), "Wheelset.conicity: 'yhat' needs at least one amplitude"),
+        (lambda: ws.conicity(yhat=[-1e-3]), "Wheelset.conicity: the amplitude yhat = -0.001 m must be a positive"),
+        (lambda: wrc.conicity(y=[0, 1e-3, 2e-3], dr=[0, 1e-4], yhat=1e-3), "wrc.conicity: y has 3 values but dr has 2"),
+        (lambda: wrc.conicity({"y": [0, 1e-3, 2e-3], "dr": [0, math.nan, 2e-4]}, yhat=1e-3),
+         "wrc.conicity: Δr table: the 2nd point is not a finite number"),
+        (lambda: wrc.conicity(y=[0, 2e-3, 1e-3], dr=[0, 1e-4, 2e-4], yhat=1e-3),
+         "wrc.conicity: y must increase strictly: the 3rd value of y"),
+    ):
+        with pytest.raises(wrc.OptionError) as e:
+            call()
+        assert str(e.value).startswith(words), str(e.value)
+    # A cone's table, Δr = 2 (1/20) y: tan γe = 1/20 for an amplitude inside it.
+    y = np.linspace(-5e-3, 5e-3, 11)
+    assert wrc.conicity(y=y, dr=2 * y / 20, yhat=2e-3, method="simple").tan_gamma[0] == pytest.approx(0.05, rel=1e-12)

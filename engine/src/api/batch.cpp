@@ -81,6 +81,12 @@ std::vector<std::string> batch_keys(const std::string& operation) {
   return keys;
 }
 
+BatchOptions read_batch_options(OptionReader& r) {
+  BatchOptions o;
+  o.threads = read_threads(r, o.threads);
+  return o;
+}
+
 OptionTable BatchInput::element(std::size_t i) const {
   OptionTable t = shared;
   for (const Column& c : columns) {

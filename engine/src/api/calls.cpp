@@ -11,6 +11,16 @@
 
 namespace wrc::api {
 
+void unknown_key_first(const OptionTable& table, const std::string& context, const OptionReader& partial,
+                       const std::vector<OptionInfo>& documented) {
+  OptionReader all(table, context);
+  for (const OptionInfo& o : documented) all.value(std::string_view(o.key).substr(0, o.key.find('.')));  // "creepage"
+  const auto unread = partial.rest();
+  for (const auto& entry : table.entries)
+    if (std::find(unread.begin(), unread.end(), &entry) == unread.end()) all.value(entry.first);
+  all.finish();
+}
+
 void OnFailure::read(OptionReader& r) {
   returns = r.choice("on_failure", {"error", "return"},
                      {"-", "a failed solve: an error, or the result with converged = false (C: its status)"},

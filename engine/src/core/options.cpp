@@ -1,6 +1,7 @@
 #include "wrc/core/options.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -221,6 +222,14 @@ std::string closest_name(std::string_view key, const std::vector<std::string>& k
     }
     return row[b.size()];
   };
+  // The same letters in another case first ('q' for 'Q', 'FZ' for 'Fz'): one edit away from 'y' too, but the typo.
+  const auto lower = [](std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+  };
+  for (const auto& k : known)
+    if (lower(k) == lower(key)) return k;
   std::string best;
   std::size_t best_d = std::max<std::size_t>(2, key.size() / 3) + 1;  // more edits than that: not a typo
   for (const auto& k : known) {
@@ -433,8 +442,9 @@ std::optional<std::vector<double>> OptionReader::number_list(std::string_view ke
   std::vector<double> out;
   if (v->type == OptionValue::Type::table) {
     OptionReader r = nested(*v->table, fmt::format("{}: '{}' ({})", context_, key, words().range));
+    r.allow({"from", "to", "step"});
+    r.finish();  // a misspelt key first ('too' given, so 'to' is missing)
     const double from = r.need_number("from"), to = r.need_number("to"), step = r.need_number("step");
-    r.finish();
     if (!(step > 0)) fail("{}: '{}.step' must be > 0, got {}", context_, key, step);
     const double n = std::floor(std::abs(to - from) / step + 1e-9);
     if (n + 1 > static_cast<double>(max_count)) fail("{}: '{}' asks for {} values (at most {})", context_, key, n + 1, max_count);

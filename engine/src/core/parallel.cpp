@@ -1,6 +1,8 @@
 // Worker threads: the thread count, parallel_for, progress (parallel.hpp).
 #include "wrc/core/parallel.hpp"
 
+#include "wrc/core/options.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -25,6 +27,10 @@ ThreadCount thread_count(int asked, int cap, std::string_view why) {
   t.threads = std::clamp(asked > 0 ? asked : available_cores(), 1, std::max(1, cap));
   if (asked > t.threads) t.note = fmt::format("threads = {} asked for, {} used: {}", asked, t.threads, why);
   return t;
+}
+
+int read_threads(OptionReader& r, int fallback) {
+  return r.integer("threads", 0, kMaxThreads, {"-", "worker threads (0: the cores available)"}, fallback);
 }
 
 void parallel_for(int count, int workers, const std::function<void(int worker, int task)>& body) {

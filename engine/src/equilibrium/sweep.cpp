@@ -231,7 +231,7 @@ SweepResult run_sweep(const ContactModel& model, const std::vector<double>& ys, 
 SweepOptions read_sweep_options(OptionReader& r) {
   SweepOptions o;
   o.Q = r.need_number("Q", {"N", "vertical load at the wheelset centre"});
-  o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
+  o.threads = read_threads(r, o.threads);
   o.rigid = r.boolean("rigid", {"-", "also solve the rigid reference of each case"}, o.rigid);
   o.keep_grids = r.boolean("grids", {"-", "keep the pressure and h grids of every case"}, o.keep_grids);
   o.keep_rows = r.boolean("rows", {"-", "without the grids: keep each area's per-row results (wear_passage)"},

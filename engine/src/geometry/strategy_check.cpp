@@ -184,7 +184,7 @@ StrategyCheckOptions read_strategy_check_options(OptionReader& r) {
   range("depth", o.depth, {"m", "range {min, max} below the touching height (log-uniform)"});
   o.seed = static_cast<std::uint64_t>(
       r.integer("seed", 0, INT_MAX, {"-", "seed of the random poses"}, static_cast<int>(o.seed)));
-  o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
+  o.threads = read_threads(r, o.threads);
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 namespace wrc {
 namespace {
@@ -16,9 +17,10 @@ namespace {
 constexpr const char* kCtx = "wrc.conicity";
 
 // An amplitude of the lateral motion: positive, at most 50 mm (a flange's reach; beyond, the flange limits it).
-void check_amplitude(double a) {
+// `context` names the call in the message (the reader's, when the options are read; kCtx for a direct call).
+void check_amplitude(double a, std::string_view context) {
   if (!(a > 0) || !std::isfinite(a) || a > 0.05)
-    fail("{}: the amplitude yhat = {} m must be a positive number of metres (up to 0.05)", kCtx, a);
+    fail("{}: the amplitude yhat = {} m must be a positive number of metres (up to 0.05)", context, a);
 }
 
 // 8-point Gauss-Legendre nodes and weights on [-1, 1].
@@ -238,23 +240,24 @@ double regression_method(const Table& t, double yhat) {
   return slope / 2;
 }
 
-void check_input(const DeltaRFunction& d) {
+// The Δr table's sizes and values; `context` as for check_amplitude.
+void check_input(const DeltaRFunction& d, std::string_view context) {
   const std::size_t n = d.y.size();
-  if (d.dr.size() != n) fail("{}: y has {} values but dr has {}", kCtx, n, d.dr.size());
-  if (n < 3) fail("{}: a Δr table needs at least 3 points, got {}", kCtx, n);
-  if (!d.flange.empty() && d.flange.size() != n) fail("{}: flange has {} values for {} points", kCtx, d.flange.size(), n);
+  if (d.dr.size() != n) fail("{}: y has {} values but dr has {}", context, n, d.dr.size());
+  if (n < 3) fail("{}: a Δr table needs at least 3 points, got {}", context, n);
+  if (!d.flange.empty() && d.flange.size() != n) fail("{}: flange has {} values for {} points", context, d.flange.size(), n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(d.y[i]) || !std::isfinite(d.dr[i]))
-      fail("{}: the {} point is not a finite number (y = {}, dr = {})", kCtx, ordinal(i + 1), d.y[i], d.dr[i]);
+      fail("{}: the {} point is not a finite number (y = {}, dr = {})", context, ordinal(i + 1), d.y[i], d.dr[i]);
     if (std::abs(d.y[i]) > 0.1)
-      fail("{}: {} (= {} m) lies beyond +-0.1 m: y is the lateral displacement in metres (mm given?)", kCtx,
+      fail("{}: {} (= {} m) lies beyond +-0.1 m: y is the lateral displacement in metres (mm given?)", context,
            value_at(i, "y"), d.y[i]);
     if (std::abs(d.dr[i]) > 0.05)
-      fail("{}: {} (= {} m): Δr is a rolling radius difference in metres, a few mm at most (mm given?)", kCtx,
+      fail("{}: {} (= {} m): Δr is a rolling radius difference in metres, a few mm at most (mm given?)", context,
            value_at(i, "dr"),
            d.dr[i]);
     if (i > 0 && !(d.y[i] > d.y[i - 1]))
-      fail("{}: y must increase strictly: {} (= {} m) after {} m", kCtx, value_at(i, "y"), d.y[i], d.y[i - 1]);
+      fail("{}: y must increase strictly: {} (= {} m) after {} m", context, value_at(i, "y"), d.y[i], d.y[i - 1]);
   }
 }
 
@@ -271,7 +274,7 @@ const char* to_string(ConicityMethod m) {
 }
 
 ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOptions& o) {
-  check_input(d);
+  check_input(d, kCtx);
   if (o.yhat.empty()) fail("{}: 'yhat' needs at least one amplitude (m)", kCtx);
   if (!(o.r0 > 0) || !(o.contact_distance > 0) || !std::isfinite(o.r0) || !std::isfinite(o.contact_distance))
     fail("{}: r0 = {} m and contact_distance = {} m must be positive", kCtx, o.r0, o.contact_distance);
@@ -286,7 +289,7 @@ ConicityResult equivalent_conicity(const DeltaRFunction& d, const ConicityOption
                          "(an infinite wavelength; EN 15302) for amplitudes up to {:.4f} mm",
                          t.flat_lo() * 1e3, t.flat_hi() * 1e3, flat_half * 1e3);
   for (double a : o.yhat) {
-    check_amplitude(a);
+    check_amplitude(a, kCtx);
     double lo = r.centre - a, hi = r.centre + a, tg = 0;
     if (a <= flat_half * (1 + 1e-12)) {
       // The wheelset moves freely inside the flat zone: Δr = 0 over the whole motion, every method gives 0.
@@ -314,7 +317,10 @@ ConicityOptions read_conicity_options(OptionReader& r, ConicityOptions o) {
   const auto yhat = r.numbers("yhat", {"m", "amplitude(s) of the lateral motion (required)"});
   if (!yhat && !r.documenting()) fail("{}: 'yhat' is required: an amplitude or an array of amplitudes (m)", r.context());
   if (yhat) o.yhat = *yhat;
-  for (double a : o.yhat) check_amplitude(a);  // before ws:conicity builds a table as wide as the largest
+  // Checked as they are read, so that the message names the call and a front end reports a bad argument; and before
+  // ws:conicity builds a table as wide as the largest.
+  if (yhat && yhat->empty()) fail("{}: 'yhat' needs at least one amplitude (m)", r.context());
+  for (double a : o.yhat) check_amplitude(a, r.context());
   const std::string m = r.choice("method", {"integral", "harmonic", "regression", "simple"},
                                  {"-", "how tan(gamma_e) is made of the Δr table (EN 15302)"}, to_string(o.method));
   o.method = m == "integral"   ? ConicityMethod::integral
@@ -349,6 +355,7 @@ DeltaRFunction read_delta_r(OptionReader& r) {
       else fail("{}: {} must be a boolean (or 0/1), got {}", r.context(), value_at(i, "'flange'"), r.type_name(v));
     }
   }
+  check_input(d, r.context());  // as it is read: the message names the call, a front end reports a bad argument
   return d;
 }
 

@@ -133,7 +133,7 @@ GeometryTableOptions read_geometry_table_options(OptionReader& r) {
   o.rigid = read_rigid_options(r, o.rigid);
   if (o.rigid.start && !r.documenting())
     fail("{}: 'start' does not apply to a table (each row starts from its neighbours)", r.context());
-  o.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.threads);
+  o.threads = read_threads(r, o.threads);
   o.jump_threshold = r.number("jump_threshold", {"m", "a larger move of the touching point between rows is examined"},
                               o.jump_threshold);
   o.csv = r.string("csv", {"-", "write the table as CSV to this file"}, o.csv);
@@ -325,7 +325,7 @@ WheelsetConicityOptions read_wheelset_conicity_options(OptionReader& r) {
     o.table.y = *y;
   o.table.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, o.table.yaw);
   o.table.rigid = read_rigid_options(r, o.table.rigid);
-  o.table.threads = r.integer("threads", 0, 256, {"-", "worker threads (0: the cores available)"}, o.table.threads);
+  o.table.threads = read_threads(r, o.table.threads);
   o.flange_angle =
       r.number("flange_angle", {"rad", "a touching point steeper than this is flange contact"}, o.flange_angle);
   if (!r.documenting() && !(o.flange_angle > 0 && o.flange_angle < 1.5)) fail("{}: flange_angle = {} rad must lie in ]0, 1.5[", r.context(), o.flange_angle);

@@ -33,14 +33,17 @@ bool maybe_array(py::handle v, int depth = 0) {
   return false;
 }
 
-// The threads= argument: a whole number >= 0 (0: all cores).
+// The threads= argument, read by the call layer as every call reads it (0..256, 0: all cores).
 int threads_argument(py::handle v, const char* context) {
-  if (py::isinstance<py::bool_>(v) || !py::isinstance<py::int_>(v))
-    throw py::type_error(fmt::format("{}: threads must be a whole number (0: all cores), got {}", context,
-                                     py::str(py::type::of(v).attr("__name__")).cast<std::string>()));
-  const long long n = v.cast<long long>();
-  if (n < 0) throw OptionFailure(fmt::format("{}: threads = {} must be >= 0 (0: all cores)", context, n));
-  return static_cast<int>(std::min<long long>(n, 1 << 20));  // more than the elements run as many as them
+  py::dict given;
+  given["threads"] = v;
+  const OptionTable t = mapping_options(given, context);
+  return reading([&] {
+    OptionReader r(t, context);
+    const api::BatchOptions o = api::read_batch_options(r);
+    r.finish();
+    return o.threads;
+  });
 }
 
 // Runs the batch on a thread of its own while this one, without the GIL, wakes every 50 ms to let Python handle

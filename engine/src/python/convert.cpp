@@ -72,7 +72,14 @@ OptionValue to_option(py::handle v, const std::string& context, int depth) {
     return OptionValue::of_object(p.profile, kProfileTypeName);
   }
   static const py::object numpy_scalar = py::module_::import("numpy").attr("generic");
-  if (is_instance(v, numpy_scalar)) return to_option(v.attr("item")(), context, depth);  // numpy.float64, bool_
+  if (is_instance(v, numpy_scalar)) {  // numpy.float64, bool_: item() gives the Python value
+    py::object item = v.attr("item")();
+    // numpy.longdouble and clongdouble give themselves (no Python type holds them): a real one is a number, rounded to
+    // a double as an array of them is; anything else is no option's value (handing it back here recursed forever).
+    if (!is_instance(item, numpy_scalar)) return to_option(item, context, depth);
+    if (is_instance(v, abc("Real"))) return OptionValue::of(real_number(v, context));
+    type_error(context, v, "expected a number, bool, str, sequence, numpy array, mapping or wrc.Profile");
+  }
   if (py::isinstance<py::array>(v)) {
     if (py::array(py::reinterpret_borrow<py::array>(v)).ndim() == 0) return to_option(v.attr("item")(), context, depth);
     return array_option(v, context, depth);

@@ -232,11 +232,21 @@ py::object conicity(py::object table, const py::kwargs& kw) {
   }
   const auto call = reading([&] {
     if (table.is_none()) return api::read<api::ConicityCall>(options, ctx);
-    OptionReader dr(dr_table, std::string(ctx) + ": Δr table"), o(options, ctx);
-    auto c = api::ConicityCall::read(dr, o);
-    dr.finish();
-    o.finish();
-    return c;
+    const std::string dr_ctx = std::string(ctx) + ": Δr table";
+    OptionReader dr(dr_table, dr_ctx), o(options, ctx);
+    try {
+      auto c = api::ConicityCall::read(dr, o);
+      dr.finish();
+      o.finish();
+      return c;
+    } catch (const Error&) {  // a misspelt key first, as api::read reports it
+      std::vector<OptionInfo> documented;
+      OptionReader all = OptionReader::documenting(ctx, documented);
+      api::ConicityCall::read(all);
+      api::unknown_key_first(dr_table, dr_ctx, dr, documented);
+      api::unknown_key_first(options, ctx, o, documented);
+      throw;
+    }
   });
   FieldRecord tree;
   {

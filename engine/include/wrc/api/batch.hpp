@@ -64,6 +64,10 @@ struct BatchOptions {
   const std::atomic<bool>* stop = nullptr;  // when it turns true, elements not yet begun are skipped
 };
 
+// The batch's own options, beside its elements' keys: threads (read_threads: a whole number in 0..256, 0 for all
+// cores, as a sweep reads it). `stop` is the front end's.
+BatchOptions read_batch_options(OptionReader& r);
+
 struct BatchRun {
   std::vector<BatchElement> elements;  // one per element, in order
   int threads = 1;                     // worker threads run

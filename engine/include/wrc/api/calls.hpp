@@ -8,6 +8,7 @@
 // alone, e.g. to check keyword arguments before a long call.
 #pragma once
 
+#include "wrc/core/error.hpp"
 #include "wrc/core/options.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 #include "wrc/equilibrium/trajectory.hpp"
@@ -26,14 +27,28 @@
 
 namespace wrc::api {
 
+// Throws the "unknown key" error of `table`'s first key that is neither among `documented` (an operation's keys, as
+// a documenting reader records them) nor read by `partial` (the reader that failed); returns when there is none.
+void unknown_key_first(const OptionTable& table, const std::string& context, const OptionReader& partial,
+                       const std::vector<OptionInfo>& documented);
+
 // Reads request X from `table` (the reader's messages name `context`, e.g. "wrc_contact") and rejects keys it does
-// not know.
+// not know. A misspelt key is reported before any other error of the reading: it is often the cause ('yaht' given,
+// so 'yhat' is missing), and a message about the key it hid would not name it.
 template <class X>
 X read(const OptionTable& table, std::string context) {
-  OptionReader r(table, std::move(context));
-  X x = X::read(r);
-  r.finish();
-  return x;
+  OptionReader r(table, context);
+  try {
+    X x = X::read(r);
+    r.finish();
+    return x;
+  } catch (const Error&) {
+    std::vector<OptionInfo> documented;
+    OptionReader all = OptionReader::documenting(context, documented);
+    X::read(all);
+    unknown_key_first(table, context, r, documented);
+    throw;
+  }
 }
 
 // What a failed pose solve does: raise an error (Lua, Python) or give the result with converged = false. The C API

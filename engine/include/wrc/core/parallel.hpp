@@ -25,6 +25,13 @@ struct ThreadCount {
 };
 ThreadCount thread_count(int asked, int cap, std::string_view why);
 
+class OptionReader;
+// The most worker threads a call may ask for: far beyond any machine this runs on, so that a larger number is a typo.
+inline constexpr int kMaxThreads = 256;
+// The key "threads" of a call that runs on worker threads (a sweep, a geometry table, a batch, a strategy check):
+// a whole number in 0..kMaxThreads, 0 for all the cores available; `fallback` when absent.
+int read_threads(OptionReader& r, int fallback);
+
 // Runs body(worker, task) for task = 0 .. count-1 on `workers` threads (fewer when there are fewer tasks; worker in
 // 0 .. workers-1, one task at a time each, so that a worker may keep a workspace of its own). Tasks are handed out
 // in increasing order, each to the next free worker; worker 0 is the calling thread, and one worker runs everything
