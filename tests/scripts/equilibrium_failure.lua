@@ -26,6 +26,7 @@ fails(function() ws:equilibrium{y = 0, Q = Q, force_tolerance = 0} end, "toleran
 fails(function() ws:equilibrium{y = 0, Q = Q, start = 3} end, "start", "start not a table")
 fails(function() ws:wheel{side = "left", y = 0, Fz = 0} end, "Fz = 0", "zero wheel load")
 fails(function() ws:wheel{side = "middle", y = 0, Fz = 1e5} end, 'side must be "left" or "right"', "bad side")
+fails(function() ws:wheel{y = 0, Fz = 1e5} end, "'side' is required", "side missing (it read as an empty name)")
 -- The wheel solver's keys are its own: the equilibrium's moment_tolerance and trace are unknown to it (they did nothing).
 fails(function() ws:wheel{side = "left", y = 0, Fz = 1e5, trace = true} end, "unknown key 'trace'", "trace for a wheel")
 fails(function() ws:wheel{side = "left", y = 0, Fz = 1e5, force_tolerance = 0} end, "force_tolerance = 0 must be in",

@@ -438,7 +438,8 @@ WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWo
 WheelCase read_wheel_case(OptionReader& r) {
   WheelCase c;
   const std::optional<std::string> side = r.string("side", {"-", "the wheel: \"left\" or \"right\" (required)"});
-  if (!r.documenting()) c.side = parse_side(side.value_or(""), r.context());
+  if (!r.documenting() && !side) fail("{}: 'side' is required (\"left\" or \"right\")", r.context());
+  if (!r.documenting()) c.side = parse_side(*side, r.context());
   c.y = r.number("y", {"m", "lateral position of the wheelset centre"}, c.y);
   c.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, c.yaw);
   c.roll = r.number("roll", {"rad", "roll angle of the wheelset"}, c.roll);
