@@ -3,6 +3,7 @@
 // the descriptor/entry point built from a ReaderSpec (reader_entry.cpp).
 #pragma once
 
+#include "wrc/core/error.hpp"  // format_message: numbers in messages as the engine writes them (NaN)
 #include "wrc/reader.h"
 
 #include <fmt/format.h>
@@ -25,7 +26,7 @@ struct ParseError : std::runtime_error {
 
 template <class... Args>
 [[noreturn]] void fail_at(int line, fmt::format_string<Args...> format, Args&&... args) {
-  throw ParseError(line, fmt::format(format, std::forward<Args>(args)...));
+  throw ParseError(line, format_message(format, std::forward<Args>(args)...));
 }
 
 struct Line {

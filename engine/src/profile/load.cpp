@@ -158,7 +158,7 @@ namespace {
 std::string option_text(const std::string& key, const OptionValue& v, const OptionReader& r) {
   switch (v.type) {
     case OptionValue::Type::boolean: return v.boolean ? "true" : "false";
-    case OptionValue::Type::number: return fmt::format("{}", v.number);  // shortest exact representation
+    case OptionValue::Type::number: return number_text(v.number);  // shortest exact representation
     case OptionValue::Type::string: return v.string;
     default: fail("{}: option '{}' must be a string, number or boolean, got {}", r.context(), key, r.type_name(v));
   }
