@@ -161,21 +161,41 @@ double number(std::string_view field, int line, std::string_view what) {
 namespace {
 
 struct Format {
-  const char *name, *id, *extensions;
+  const char *name, *id, *advice;  // what the file is, the reader that reads it (null: none), how to read it
 };
+
+// A Lua chunk's first line: a comment (`-- text`, `--[[`), or a statement that a profile definition begins with
+// (`local opt = ...`). A line of dashes (a rule under a table's title) is none.
+bool begins_lua(std::string_view s) {
+  const auto word_then = [&](std::string_view word, std::string_view next) {
+    return s.substr(0, word.size()) == word && (s.size() == word.size() || next.find(s[word.size()]) != std::string_view::npos);
+  };
+  return word_then("--", " \t[") || word_then("local", " \t") || word_then("return", " \t{(") ||
+         word_then("function", " \t");
+}
 
 // The format a file's first content line begins, or null.
 const Format* format_begun_by(std::string_view s) {
-  static const Format simpack{"Simpack", "simpack", ".prr (rail) or .prw (wheel)"};
-  static const Format miniprof{"MiniProf", "miniprof", ".ban (rail) or .whl (wheel)"};
-  static const Format vampire{"VAMPIRE", "vampire", ".rai (rail) or .whe (wheel)"};
-  static const Format text{"plain text", "text", ".txt, .csv or .dat"};
+  static const Format simpack{"a Simpack profile", "simpack",
+                              "read it with reader = \"simpack\", or give the file the extension .prr (rail) or .prw (wheel)"};
+  static const Format miniprof{"a MiniProf profile", "miniprof",
+                               "read it with reader = \"miniprof\", or give the file the extension .ban (rail) or .whl (wheel)"};
+  static const Format vampire{"a VAMPIRE profile", "vampire",
+                              "read it with reader = \"vampire\", or give the file the extension .rai (rail) or .whe (wheel)"};
+  static const Format text{"a plain text profile", "text",
+                           "read it with reader = \"text\", or give the file the extension .txt, .csv or .dat"};
+  // Not a file that a reader reads: a program, which wrc.profile.load runs when the name ends in .lua and no reader
+  // is named (docs/guide/profiles.md, "Writing a profile definition in Lua").
+  static const Format lua{"a Lua profile definition", nullptr,
+                          "load it without the option reader: wrc.profile.load runs a file whose name ends in .lua as "
+                          "a definition"};
   std::string u(s);
   for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   const bool one_field = s.find_first_of(" \t,;") == std::string_view::npos;
   if (s == "header.begin" || s == "spline.begin") return &simpack;
   if (u == "MINIPROF" || (one_field && s.find('=') != std::string_view::npos)) return &miniprof;
   if (u == "WHEELPROFILE" || u == "RAILPROFILE") return &vampire;
+  if (begins_lua(s)) return &lua;
   const auto fields = split_fields(s, s.find(',') != std::string_view::npos ? ',' : s.find(';') != std::string_view::npos ? ';' : ' ');
   if (fields.size() >= 2 && all_numbers(fields)) return &text;
   return nullptr;
@@ -188,9 +208,7 @@ void refuse_other_format(const std::vector<Line>& lines, std::string_view self, 
     const std::string_view s = trim(strip_comment(ln.text, "!%#"));
     if (s.empty()) continue;
     const Format* f = format_begun_by(s);
-    if (f && f->id != self)
-      fail_at(ln.number, "{} begins a {} profile, not {}: read it with reader = \"{}\", or give the file the extension {}",
-              quoted(s), f->name, self_reads, f->id, f->extensions);
+    if (f && (!f->id || f->id != self)) fail_at(ln.number, "{} begins {}, not {}: {}", quoted(s), f->name, self_reads, f->advice);
     return;
   }
 }

@@ -58,7 +58,8 @@ void reject_decimal_commas(std::string_view row, int line);
 // Where a file fails to begin as the reader `self` reads it: when its first line that is not blank or a comment (`!`,
 // `%`, `#`) begins a file of another format the project reads (Simpack header.begin or spline.begin; MiniProf MINIPROF
 // or a Key=Value line without blanks; VAMPIRE WHEELPROFILE or RAILPROFILE; plain text a row of two or more numbers),
-// a ParseError at that line naming the reader to use and its extensions. Returns when it begins no other format.
+// a ParseError at that line naming the reader to use and its extensions; when it begins a Lua profile definition
+// (`-- comment`, `local`, `return`), one saying so and how to load it. Returns when it begins no other format.
 void refuse_other_format(const std::vector<Line>& lines, std::string_view self, std::string_view self_reads);
 
 // The request as the parser sees it.

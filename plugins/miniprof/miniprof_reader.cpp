@@ -1,5 +1,6 @@
 // MiniProf rail (.ban) and wheel (.whl) profiles: an optional `MINIPROF` first line, `Key=Value` header
-// lines (ColumnDef, XYPoints, ...; every key is kept as metadata), then the points after the first empty
+// lines (ColumnDef, XYPoints, ...; every key is kept as metadata; a file that begins with rows of numbers is refused,
+// naming the text reader), then the points after the first empty
 // line, one row per point with the columns of ColumnDef (X, Y first usually); a leading `"` marks a point
 // (kept); `!` or `%` starts a comment. Millimetres.
 //
@@ -124,7 +125,6 @@ Header read_header(const std::vector<Line>& lines, std::size_t& i, Out& out) {
     const auto eq = s.find('=');
     if (eq == std::string_view::npos) {
       if (is_point_row(s)) break;  // no empty line before the data: a numeric row ends the header too
-      if (h.last_header_line == 0) refuse_other_format(lines, "miniprof", "a MiniProf profile");
       fail_at(ln.number, "expected a `Key=Value` header line, got {}", quoted(s));
     }
     const std::string key(trim(s.substr(0, eq)));
@@ -197,6 +197,9 @@ void parse(std::string_view data, const Request& rq, Out& out) {
   const Options opt = read_options(rq, wheel);
 
   const auto lines = split_lines(data);
+  // Rows of numbers from the first line on are no MiniProf file: without the header, nothing says that the columns
+  // are X and Y, nor which way Y points (a profile in the engine frame would be read shifted by tape_x).
+  refuse_other_format(lines, "miniprof", "a MiniProf profile, which begins with its header (MINIPROF or Key=Value lines)");
   std::size_t i = 0;
   const Header h = read_header(lines, i, out);
   if (lines.empty()) fail_at(0, "the file is empty");

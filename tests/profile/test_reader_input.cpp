@@ -358,7 +358,7 @@ TEST_CASE("every reader given another format's file names the reader that reads 
   for (const Format& file : formats)
     for (const Format& reader : formats) {
       const std::string f = file.id, r = reader.id;
-      if (f == r || (f == "text" && r == "miniprof")) continue;  // MiniProf reads bare rows too
+      if (f == r) continue;
       INFO(file.id << " file given to the " << reader.id << " reader");
       LoadOptions o;
       o.kind = ProfileKind::rail;
@@ -384,4 +384,84 @@ TEST_CASE("Simpack reader: a processing key that leaves no profile is named with
               "point.dist.min = '100' leaves 1 of the 31 points; a profile needs at least 3");
   check_error("narrow.prr", keys_then + " bound.y.min = 0\n bound.y.max = 1\n point.begin\n" + arc_rows(" ") +
               " point.end\nspline.end\n", 7, "2 of the 31 points lie within bound.y.min .. bound.y.max = 0 .. 1");
+}
+
+TEST_CASE("every reader given a Lua profile definition says that it is one, and how to load it") {
+  // The text reader took the definition's first comment line for a header and failed on the next line's field count.
+  const std::string body = "local opt = ... or {}\nreturn wrc.profile.points{kind = \"wheel\", y = {-0.07, 0, 0.06}, "
+                           "z = {0.00175, 0, -0.0015}}\n";
+  for (const std::string& text : {"-- a cone 1:40, 130 mm wide\n" + body, body, "--[[ a cone ]]\n" + body}) {
+    for (const char* reader : {"text", "simpack", "miniprof", "vampire"}) {
+      INFO(reader << " reader, the file beginning " << text.substr(0, text.find('\n')));
+      LoadOptions o;
+      o.reader = reader;
+      o.kind = ProfileKind::wheel;
+      check_error("cone.lua", text, 1, "begins a Lua profile definition", o);
+      check_error("cone.lua", text, 1, "load it without the option reader", o);
+    }
+  }
+  // A rule of dashes under a title is no Lua comment.
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  CHECK(error_of(write("ruled.txt", "----------\n" + arc_rows(" ")), rail).find("Lua") == std::string::npos);
+}
+
+TEST_CASE("MiniProf reader: rows of numbers without the MiniProf header are refused, naming the text reader") {
+  // Nothing says that bare rows are X and Y, nor which way Y points: an arc with a clear top loaded as a MiniProf rail,
+  // and rows of a wheel in the engine frame came out shifted by tape_x (70 mm).
+  for (const char* ext : {".ban", ".whl"}) {
+    INFO(ext);
+    check_error(std::string("bare") + ext, arc_rows(" "), 1, "begins a plain text profile, not a MiniProf profile, which "
+                "begins with its header (MINIPROF or Key=Value lines): read it with reader = \"text\"");
+    check_error(std::string("bare_comma") + ext, "! exported\n" + arc_rows(","), 2, "read it with reader = \"text\"");
+  }
+  // Read as the message says, the rows are the points, in mm.
+  LoadOptions text;
+  text.reader = "text";
+  text.kind = ProfileKind::rail;
+  const Profile p = load("bare_as_text.ban", arc_rows(" "), text);
+  REQUIRE(p.size() == 31);
+  CHECK(p.y.front() == within_rel(-0.015, 1e-9));
+  CHECK(p.z[15] == doctest::Approx(0.0).epsilon(1e-12));
+  // With the header, the same rows are a MiniProf rail.
+  CHECK(error_of(write("with_header.ban", "ColumnDef=X,Y\n\n" + arc_rows(" "))) == "(no error)");
+}
+
+TEST_CASE("Simpack reader: a rotate that turns the profile past vertical is named with its angle and unit") {
+  // The arc's tangents lie within +-atan(15 / sqrt(300^2 - 15^2)) = +-2.866 degrees of the y axis: a rotation by more
+  // than 87.134 degrees turns some past vertical, and y turns back; one by less keeps y monotone.
+  const double edge = std::atan(15.0 / std::sqrt(300.0 * 300.0 - 15.0 * 15.0)) * 180 / M_PI;
+  REQUIRE(edge == doctest::Approx(2.866).epsilon(1e-3));
+  auto file = [](const std::string& rotate, bool degrees) {
+    return "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n units.len.f = 1000\n rotate = " + rotate +
+           "\n" + (degrees ? " units.ang.f = 57.29577951308232\n" : "") + " point.begin\n" + arc_rows(" ") +
+           " point.end\nspline.end\n";
+  };
+  // The first row past the turn, by brute force: the rows rotated in the file's frame, y = y cos a - z sin a.
+  auto turn_line = [](double degrees) {
+    const double a = degrees * M_PI / 180;
+    int from = 0, line = 10;  // the first point's line (after units.len.f, rotate, units.ang.f, point.begin)
+    double prev = 0;
+    for (int i = 0; i < 31; ++i, ++line) {
+      const double y = -15.0 + i, z = std::sqrt(300.0 * 300.0 - y * y) - 300.0;
+      const double yr = y * std::cos(a) - z * std::sin(a);
+      if (i > 0) {
+        const int d = yr > prev ? 1 : -1;
+        if (from != 0 && d != from) return line;
+        from = d;
+      }
+      prev = yr;
+    }
+    return 0;
+  };
+  const int line88 = turn_line(88);
+  REQUIRE(line88 > 0);
+  check_error("rotate88.prr", file("88", true), 7,
+              fmt::format("rotate = '88' turns the profile by 88 degrees (units.ang.f = 57.29577951308232 per radian, "
+                          "line 8): its points, monotone in y before the rotation, fold back after it at line {}", line88));
+  CHECK(error_of(write("rotate86.prr", file("86", true))).find("fold") == std::string::npos);
+  CHECK(turn_line(86) == 0);
+  // In radians without units.ang.f: 1.6 rad is 91.67 degrees.
+  check_error("rotate_rad.prr", file("1.6", false), 7, "rotate = '1.6' turns the profile by 91.6732 degrees (radians: no "
+              "units.ang.f)");
 }
