@@ -215,7 +215,7 @@ TEST_CASE("positions in messages: ordinals by the rules of English, from a 0-bas
   CHECK(value_at(1, "mu") == "the 2nd value of mu");
 }
 
-TEST_CASE("numbers in messages: a NaN of either sign reads NaN, whatever the format; other numbers as fmt writes them") {
+TEST_CASE("numbers in messages: a NaN of either sign reads NaN, whatever the format, other numbers as fmt writes them") {
   // Lua's 0/0 has its sign bit set, which fmt (as printf) wrote "-nan": the message named a negative that is not one.
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   for (const double v : {nan, -nan, std::copysign(nan, -1.0)}) {
