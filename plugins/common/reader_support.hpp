@@ -55,6 +55,11 @@ std::string quoted(std::string_view s);
 // it splits (on ';' or blanks) into two or more numbers, while split on its commas it does not.
 void reject_decimal_commas(std::string_view row, int line);
 
+// A ParseError when a data row holds no number at all (a line of text among the rows), naming the rows it is among
+// ("points y z") and how a comment starts in the format ("a line that starts with #"); otherwise returns, and the
+// reader checks the row's fields.
+void refuse_text_row(std::string_view row, int line, std::string_view rows, std::string_view comment);
+
 // Where a file fails to begin as the reader `self` reads it: when its first line that is not blank or a comment (`!`,
 // `%`, `#`) begins a file of another format the project reads (Simpack header.begin or spline.begin; MiniProf MINIPROF
 // or a Key=Value line without blanks; VAMPIRE WHEELPROFILE or RAILPROFILE; plain text a row of two or more numbers),

@@ -151,6 +151,7 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const 
     if (s.empty()) continue;
     if (s.find('=') != std::string_view::npos)
       fail_at(ln.number, "a `Key=Value` line after the points began (line {})", first_row_line ? first_row_line : ln.number);
+    refuse_text_row(s, ln.number, "point rows", "a line that starts with ! or %");
     reject_decimal_commas(s, ln.number);
     const char here = detect_separator(s);
     if (sep == 0) sep = here, first_row_line = ln.number;
@@ -159,7 +160,8 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const 
               separator_name(here), first_row_line, separator_name(sep));
     const auto f = split_fields(s, sep);
     if (f.size() != h.ncols)
-      fail_at(ln.number, "{} fields, but {} declares {} columns", f.size(), h.column_def ? "ColumnDef" : "the default X,Y", h.ncols);
+      fail_at(ln.number, "{} fields, but {} declares {} columns: {}", f.size(), h.column_def ? "ColumnDef" : "the default X,Y", h.ncols,
+              quoted(s));
     rows.push_back({number(f[h.col_x], ln.number, "X"), number(f[h.col_y], ln.number, "Y"), ln.number});
   }
   return rows;

@@ -132,11 +132,13 @@ State begin_section(std::string_view s, int line, File& f) {
 
 // A line of point.begin/end: `y z [weight]` separated by blanks (the weight is checked, not used).
 Point read_point(std::string_view s, int line) {
+  refuse_text_row(s, line, "points between point.begin and point.end", "after !");
   reject_decimal_commas(s, line);
   if (s.find_first_of(",;") != std::string_view::npos)
     fail_at(line, "a ',' or ';' in a point line; Simpack points are separated by blanks (mixed separators)");
   const auto f = split_fields(s, ' ');
-  if (f.size() < 2 || f.size() > 3) fail_at(line, "a point line holds `y z [weight]`, got {} fields", f.size());
+  if (f.size() < 2 || f.size() > 3) fail_at(line, "a point line holds `y z [weight]`, got {} field{}: {}", f.size(),
+                                           f.size() == 1 ? "" : "s", quoted(s));
   const double y = number(f[0], line, "y");
   const double z = number(f[1], line, "z");
   if (f.size() == 3) number(f[2], line, "weight");
