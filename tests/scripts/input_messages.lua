@@ -14,8 +14,8 @@
 --    the one module not listed, the composer, is refused as not a strategy). A runtime error inside a strategy file
 --    keeps its traceback: that is a bug in the file, and the traceback says where.
 -- 5. Lua's 0/0 has its sign bit set, and messages wrote it "-nan" (a negative that is not one), -(0/0) "nan": an
---    option, a point of a profile, a reader's option passed on as text, a pose; each message says NaN now, whatever
---    the sign, and infinities inf / -inf.
+--    option, a point of a profile, a reader's option passed on as text, a pose, a check or a table cell of the scripts;
+--    each message says NaN now, whatever the sign, and infinities inf / -inf.
 local check = require "wrc.check"
 local H = dofile((arg[0]:match("(.*/)") or "./") .. "../data/profile/helpers.lua")
 local tmp = (arg.tmp or ".") .. "/input_messages_"
@@ -158,6 +158,14 @@ for _, nan in ipairs{0 / 0, -(0 / 0)} do
     check.ok(not err:find("nan", 1, true) and not err:find("-NaN", 1, true), "no nan nor -NaN: " .. err)
   end
 end
+-- The scripts' messages (wrc.check, wrc.output, the wear loop) write numbers with wrc.number_text, the same convention.
+for _, c in ipairs{{0 / 0, "NaN"}, {-(0 / 0), "NaN"}, {1 / 0, "inf"}, {-1 / 0, "-inf"}, {0.1, "0.1"}, {-2.5e-7, "-2.5e-07"},
+                   {3, "3"}, {2^53 + 0.0, "9007199254740992"}} do
+  check.ok(wrc.number_text(c[1]) == c[2], ("wrc.number_text: %s, expected %s"):format(wrc.number_text(c[1]), c[2]))
+end
+err = check.fails(function() check.near(0 / 0, 1, 0.1, "a NaN result") end, "a NaN result = NaN, expected 1", "check.near")
+err = check.fails(function() require("wrc.output").csv_line({"x"}, {x = 0 / 0}, "t row 2") end,
+                  "t row 2 column x: value is not finite (NaN)", "a NaN cell")
 check.fails(function() return ws:contact{y = -1 / 0, z = 0} end, "'y' must be finite, got -inf", "-inf")
 check.fails(function() return ws:contact{y = 1 / 0, z = 0} end, "'y' must be finite, got inf", "inf")
 print("input_messages: ok")
