@@ -3,6 +3,8 @@
 local M = {}
 
 local function fail(msg, level) error(msg, (level or 1) + 2) end
+-- A value in a message: a number as the engine writes it (NaN as NaN: tostring writes 0/0 "-nan").
+local function shown(v) return type(v) == "number" and wrc.number_text(v) or tostring(v) end
 
 -- ok(cond, what): cond must be true.
 function M.ok(cond, what)
@@ -12,7 +14,7 @@ end
 -- near(actual, expected, tol, what): |actual - expected| <= tol.
 function M.near(actual, expected, tol, what)
   if type(actual) ~= "number" or actual ~= actual or math.abs(actual - expected) > tol then
-    fail(string.format("check failed: %s = %s, expected %.12g +/- %.3g", tostring(what), tostring(actual),
+    fail(string.format("check failed: %s = %s, expected %.12g +/- %.3g", tostring(what), shown(actual),
                        expected, tol))
   end
 end
@@ -21,7 +23,7 @@ end
 function M.rel(actual, expected, rtol, what)
   if type(actual) ~= "number" or actual ~= actual or math.abs(actual - expected) > rtol * math.abs(expected) then
     fail(string.format("check failed: %s = %s, expected %.12g within %.3g relative", tostring(what),
-                       tostring(actual), expected, rtol))
+                       shown(actual), expected, rtol))
   end
 end
 

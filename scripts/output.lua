@@ -73,7 +73,7 @@ local function finite(v) return v == v and v ~= math.huge and v ~= -math.huge en
 local function cell(v, where)
   if v == nil then return "" end
   if type(v) == "number" then
-    if not finite(v) then error(where() .. ": value is not finite (" .. tostring(v) .. ")", 0) end
+    if not finite(v) then error(where() .. ": value is not finite (" .. wrc.number_text(v) .. ")", 0) end
     if math.type(v) == "integer" then return tostring(v) end
     return string.format("%.10g", v)
   end

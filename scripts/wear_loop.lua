@@ -28,7 +28,8 @@ local two_pi = 2 * math.pi
 local function check_case(c, where)
   local function need(key, ok, what)
     if type(c[key]) ~= "number" or c[key] ~= c[key] or not ok(c[key]) then
-      error(("%s: %s = %s must be %s"):format(where, key, tostring(c[key]), what), 0)
+      local v = c[key]
+      error(("%s: %s = %s must be %s"):format(where, key, type(v) == "number" and wrc.number_text(v) or tostring(v), what), 0)
     end
   end
   need("y", function(v) return math.abs(v) <= 0.03 end, "a lateral shift within +-30 mm (m)")
@@ -54,8 +55,14 @@ function M.read_cases(path)
   local cases = {}
   for i, r in ipairs(rows) do
     local where = ("%s:%d"):format(path, i + 1)
-    local c = {y = (r.y_mm or 0/0) * 1e-3, yaw = (r.yaw_mrad or 0) * 1e-3, Q = (r.Q_kN or 0/0) * 1e3,
-               V = (r.V_kmh or 0/0) / 3.6, mu = r.mu, share = r.share,
+    for _, col in ipairs{"y_mm", "Q_kN", "V_kmh", "mu", "share"} do  -- an empty cell was a NaN, "y = -nan must be ..."
+      if r[col] == nil then error(("%s: %s is empty (a number is needed)"):format(where, col), 0) end
+      if type(r[col]) ~= "number" then
+        error(("%s: %s = '%s' must be a number"):format(where, col, tostring(r[col])), 0)
+      end
+    end
+    local c = {y = r.y_mm * 1e-3, yaw = (r.yaw_mrad or 0) * 1e-3, Q = r.Q_kN * 1e3, V = r.V_kmh / 3.6, mu = r.mu,
+               share = r.share,
                radius = (r.radius_m and r.radius_m ~= 0) and r.radius_m or nil}
     if r.xi or r.eta or r.phi_1pm then
       if not (r.xi and r.eta and r.phi_1pm) then error(where .. ": give all of xi, eta, phi_1pm or none", 0) end
@@ -571,7 +578,9 @@ end
 -- cases' equilibria (evaluations) and the exact tangential solver's products on the areas' grids (products).
 function M.step(st, cases, o)
   if o.tolerance ~= nil and not (type(o.tolerance) == "number" and o.tolerance > 0) then
-    error("wear step: tolerance = " .. tostring(o.tolerance) .. " must be a depth > 0 (m) or nil", 0)
+    local t = o.tolerance
+    error("wear step: tolerance = " .. (type(t) == "number" and wrc.number_text(t) or tostring(t))
+          .. " must be a depth > 0 (m) or nil", 0)
   end
   local r0, cases0 = rates(st, cases, o)
   local largest = 0

@@ -145,6 +145,16 @@ void reject_decimal_commas(std::string_view row, int line) {
             "decimal commas, or export the file with '.' as the decimal separator", quoted(row), quoted(dotted));
 }
 
+void refuse_text_row(std::string_view row, int line, std::string_view rows, std::string_view comment) {
+  std::string fields(row);
+  for (char& c : fields)
+    if (c == ',' || c == ';') c = ' ';
+  for (const std::string_view f : split_fields(fields, ' '))
+    if (parse_double(f)) return;
+  fail_at(line, "{} is a line of text among the {}, which are numbers: remove it, or make it a comment ({})", quoted(row),
+          rows, comment);
+}
+
 double number(std::string_view field, int line, std::string_view what) {
   const auto v = parse_double(field);
   if (!v && field.find(',') != std::string_view::npos && parse_double(with_points(field)))
@@ -161,21 +171,41 @@ double number(std::string_view field, int line, std::string_view what) {
 namespace {
 
 struct Format {
-  const char *name, *id, *extensions;
+  const char *name, *id, *advice;  // what the file is, the reader that reads it (null: none), how to read it
 };
+
+// A Lua chunk's first line: a comment (`-- text`, `--[[`), or a statement that a profile definition begins with
+// (`local opt = ...`). A line of dashes (a rule under a table's title) is none.
+bool begins_lua(std::string_view s) {
+  const auto word_then = [&](std::string_view word, std::string_view next) {
+    return s.substr(0, word.size()) == word && (s.size() == word.size() || next.find(s[word.size()]) != std::string_view::npos);
+  };
+  return word_then("--", " \t[") || word_then("local", " \t") || word_then("return", " \t{(") ||
+         word_then("function", " \t");
+}
 
 // The format a file's first content line begins, or null.
 const Format* format_begun_by(std::string_view s) {
-  static const Format simpack{"Simpack", "simpack", ".prr (rail) or .prw (wheel)"};
-  static const Format miniprof{"MiniProf", "miniprof", ".ban (rail) or .whl (wheel)"};
-  static const Format vampire{"VAMPIRE", "vampire", ".rai (rail) or .whe (wheel)"};
-  static const Format text{"plain text", "text", ".txt, .csv or .dat"};
+  static const Format simpack{"a Simpack profile", "simpack",
+                              "read it with reader = \"simpack\", or give the file the extension .prr (rail) or .prw (wheel)"};
+  static const Format miniprof{"a MiniProf profile", "miniprof",
+                               "read it with reader = \"miniprof\", or give the file the extension .ban (rail) or .whl (wheel)"};
+  static const Format vampire{"a VAMPIRE profile", "vampire",
+                              "read it with reader = \"vampire\", or give the file the extension .rai (rail) or .whe (wheel)"};
+  static const Format text{"a plain text profile", "text",
+                           "read it with reader = \"text\", or give the file the extension .txt, .csv or .dat"};
+  // Not a file that a reader reads: a program, which wrc.profile.load runs when the name ends in .lua and no reader
+  // is named (docs/guide/profiles.md, "Writing a profile definition in Lua").
+  static const Format lua{"a Lua profile definition", nullptr,
+                          "load it without the option reader: wrc.profile.load runs a file whose name ends in .lua as "
+                          "a definition"};
   std::string u(s);
   for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   const bool one_field = s.find_first_of(" \t,;") == std::string_view::npos;
   if (s == "header.begin" || s == "spline.begin") return &simpack;
   if (u == "MINIPROF" || (one_field && s.find('=') != std::string_view::npos)) return &miniprof;
   if (u == "WHEELPROFILE" || u == "RAILPROFILE") return &vampire;
+  if (begins_lua(s)) return &lua;
   const auto fields = split_fields(s, s.find(',') != std::string_view::npos ? ',' : s.find(';') != std::string_view::npos ? ';' : ' ');
   if (fields.size() >= 2 && all_numbers(fields)) return &text;
   return nullptr;
@@ -188,9 +218,7 @@ void refuse_other_format(const std::vector<Line>& lines, std::string_view self, 
     const std::string_view s = trim(strip_comment(ln.text, "!%#"));
     if (s.empty()) continue;
     const Format* f = format_begun_by(s);
-    if (f && f->id != self)
-      fail_at(ln.number, "{} begins a {} profile, not {}: read it with reader = \"{}\", or give the file the extension {}",
-              quoted(s), f->name, self_reads, f->id, f->extensions);
+    if (f && (!f->id || f->id != self)) fail_at(ln.number, "{} begins {}, not {}: {}", quoted(s), f->name, self_reads, f->advice);
     return;
   }
 }
@@ -256,6 +284,63 @@ bool read_file(const std::string& path, std::string& data, std::string& why) {
 
 }  // namespace
 
+namespace {
+
+// How a number is written: the digits after its point and of its exponent (-1: none), as a program writes every
+// number of a column; nullopt for a field that is no plain number.
+std::optional<std::pair<int, int>> written_shape(std::string_view t) {
+  if (!t.empty() && (t.front() == '-' || t.front() == '+' || t.front() == '"')) t.remove_prefix(1);
+  const auto e = std::min(t.find_first_of("eE"), t.size()), point = t.find('.');
+  const std::string_view mantissa = t.substr(0, e), exponent = e < t.size() ? t.substr(e + 1) : std::string_view();
+  const auto digits = [](std::string_view d) { return d.find_first_not_of("0123456789") == std::string_view::npos; };
+  if (point == std::string_view::npos || point >= e || !digits(mantissa.substr(0, point)) || !digits(mantissa.substr(point + 1)))
+    return std::nullopt;
+  const std::string_view exponent_digits = exponent.substr(!exponent.empty() && (exponent.front() == '-' || exponent.front() == '+'));
+  if (e < t.size() && (exponent_digits.empty() || !digits(exponent_digits)))
+    return std::pair{static_cast<int>(mantissa.size() - point - 1), -2};  // an exponent cut short
+  return std::pair{static_cast<int>(mantissa.size() - point - 1), e < t.size() ? static_cast<int>(exponent.size()) : -1};
+}
+
+std::vector<std::string_view> row_fields(std::string_view s) {
+  std::string_view t = trim(s);
+  return split_fields(t, t.find(',') != std::string_view::npos ? ',' : t.find(';') != std::string_view::npos ? ';' : ' ');
+}
+
+// A file cut short: its last line has no line break, and it holds fewer fields than each of the rows before it, or its
+// last number is written shorter than that column's on each of them (a program writes a column with one number of
+// digits). Any reader would read the cut number as another value, or find a row with too few fields; the last row
+// of a VAMPIRE file cut within its last number was read without a word.
+void refuse_truncated(std::string_view data) {
+  if (data.empty() || data.back() == '\n' || data.back() == '\r') return;
+  const auto lines = split_lines(data);
+  constexpr std::size_t kRows = 5;  // rows before the last that must agree
+  std::vector<std::vector<std::string_view>> before;
+  for (std::size_t i = lines.size() - 1; i-- > 0 && before.size() < kRows;)
+    if (!trim(lines[i].text).empty()) before.push_back(row_fields(lines[i].text));
+  if (before.size() < kRows) return;
+  const Line& last = lines.back();
+  const auto fields = row_fields(last.text);
+  const std::size_t n = before.front().size();
+  if (n < 2 || fields.empty() || std::any_of(before.begin(), before.end(), [&](const auto& f) { return f.size() != n; }))
+    return;
+  const auto shape = written_shape(before.front().back());
+  if (!shape || std::any_of(before.begin(), before.end(), [&](const auto& f) { return written_shape(f.back()) != shape; }))
+    return;
+  if (fields.size() < n)
+    fail_at(last.number, "the file ends without a line break within a row: {} holds {} of the {} fields of the rows "
+            "before it; the file is cut short (truncated)", quoted(last.text), fields.size(), n);
+  // Shorter: fewer digits after the point, or fewer in the exponent (or none), than a column written by a program
+  // (3 digits or more after the point: a number typed by hand may well end a file with fewer).
+  const auto cut = written_shape(fields.back());
+  const bool shorter = !cut || cut->first < shape->first || (cut->first == shape->first && cut->second < shape->second);
+  if (fields.size() == n && shape->first >= 3 && shorter)
+    fail_at(last.number, "the file ends without a line break within a number: {} is written shorter than the same "
+            "column on the rows before it ({}); the file is cut short (truncated)", quoted(fields.back()),
+            quoted(before.front().back()));
+}
+
+}  // namespace
+
 int run_reader_on(const ReaderSpec& spec, std::string_view data, const wrc_reader_request* request,
                   const wrc_reader_sink* sink) {
   try {
@@ -267,6 +352,7 @@ int run_reader_on(const ReaderSpec& spec, std::string_view data, const wrc_reade
       data.remove_prefix(3);
       out.transform("skipped the UTF-8 byte-order mark at the start of the file");
     }
+    refuse_truncated(data);
     spec.parse(data, q, out);
     return 0;
   } catch (const ParseError& e) {

@@ -3,6 +3,7 @@
 // the descriptor/entry point built from a ReaderSpec (reader_entry.cpp).
 #pragma once
 
+#include "wrc/core/error.hpp"  // format_message: numbers in messages as the engine writes them (NaN)
 #include "wrc/reader.h"
 
 #include <fmt/format.h>
@@ -25,7 +26,7 @@ struct ParseError : std::runtime_error {
 
 template <class... Args>
 [[noreturn]] void fail_at(int line, fmt::format_string<Args...> format, Args&&... args) {
-  throw ParseError(line, fmt::format(format, std::forward<Args>(args)...));
+  throw ParseError(line, format_message(format, std::forward<Args>(args)...));
 }
 
 struct Line {
@@ -54,10 +55,16 @@ std::string quoted(std::string_view s);
 // it splits (on ';' or blanks) into two or more numbers, while split on its commas it does not.
 void reject_decimal_commas(std::string_view row, int line);
 
+// A ParseError when a data row holds no number at all (a line of text among the rows), naming the rows it is among
+// ("points y z") and how a comment starts in the format ("a line that starts with #"); otherwise returns, and the
+// reader checks the row's fields.
+void refuse_text_row(std::string_view row, int line, std::string_view rows, std::string_view comment);
+
 // Where a file fails to begin as the reader `self` reads it: when its first line that is not blank or a comment (`!`,
 // `%`, `#`) begins a file of another format the project reads (Simpack header.begin or spline.begin; MiniProf MINIPROF
 // or a Key=Value line without blanks; VAMPIRE WHEELPROFILE or RAILPROFILE; plain text a row of two or more numbers),
-// a ParseError at that line naming the reader to use and its extensions. Returns when it begins no other format.
+// a ParseError at that line naming the reader to use and its extensions; when it begins a Lua profile definition
+// (`-- comment`, `local`, `return`), one saying so and how to load it. Returns when it begins no other format.
 void refuse_other_format(const std::vector<Line>& lines, std::string_view self, std::string_view self_reads);
 
 // The request as the parser sees it.

@@ -1,5 +1,6 @@
 // MiniProf rail (.ban) and wheel (.whl) profiles: an optional `MINIPROF` first line, `Key=Value` header
-// lines (ColumnDef, XYPoints, ...; every key is kept as metadata), then the points after the first empty
+// lines (ColumnDef, XYPoints, ...; every key is kept as metadata; a file that begins with rows of numbers is refused,
+// naming the text reader), then the points after the first empty
 // line, one row per point with the columns of ColumnDef (X, Y first usually); a leading `"` marks a point
 // (kept); `!` or `%` starts a comment. Millimetres.
 //
@@ -124,7 +125,6 @@ Header read_header(const std::vector<Line>& lines, std::size_t& i, Out& out) {
     const auto eq = s.find('=');
     if (eq == std::string_view::npos) {
       if (is_point_row(s)) break;  // no empty line before the data: a numeric row ends the header too
-      if (h.last_header_line == 0) refuse_other_format(lines, "miniprof", "a MiniProf profile");
       fail_at(ln.number, "expected a `Key=Value` header line, got {}", quoted(s));
     }
     const std::string key(trim(s.substr(0, eq)));
@@ -151,6 +151,7 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const 
     if (s.empty()) continue;
     if (s.find('=') != std::string_view::npos)
       fail_at(ln.number, "a `Key=Value` line after the points began (line {})", first_row_line ? first_row_line : ln.number);
+    refuse_text_row(s, ln.number, "point rows", "a line that starts with ! or %");
     reject_decimal_commas(s, ln.number);
     const char here = detect_separator(s);
     if (sep == 0) sep = here, first_row_line = ln.number;
@@ -159,7 +160,8 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const 
               separator_name(here), first_row_line, separator_name(sep));
     const auto f = split_fields(s, sep);
     if (f.size() != h.ncols)
-      fail_at(ln.number, "{} fields, but {} declares {} columns", f.size(), h.column_def ? "ColumnDef" : "the default X,Y", h.ncols);
+      fail_at(ln.number, "{} fields, but {} declares {} columns: {}", f.size(), h.column_def ? "ColumnDef" : "the default X,Y", h.ncols,
+              quoted(s));
     rows.push_back({number(f[h.col_x], ln.number, "X"), number(f[h.col_y], ln.number, "Y"), ln.number});
   }
   return rows;
@@ -197,6 +199,9 @@ void parse(std::string_view data, const Request& rq, Out& out) {
   const Options opt = read_options(rq, wheel);
 
   const auto lines = split_lines(data);
+  // Rows of numbers from the first line on are no MiniProf file: without the header, nothing says that the columns
+  // are X and Y, nor which way Y points (a profile in the engine frame would be read shifted by tape_x).
+  refuse_other_format(lines, "miniprof", "a MiniProf profile, which begins with its header (MINIPROF or Key=Value lines)");
   std::size_t i = 0;
   const Header h = read_header(lines, i, out);
   if (lines.empty()) fail_at(0, "the file is empty");

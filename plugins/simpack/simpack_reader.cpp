@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 namespace wrc::plugin {
 namespace {
@@ -131,11 +132,13 @@ State begin_section(std::string_view s, int line, File& f) {
 
 // A line of point.begin/end: `y z [weight]` separated by blanks (the weight is checked, not used).
 Point read_point(std::string_view s, int line) {
+  refuse_text_row(s, line, "points between point.begin and point.end", "after !");
   reject_decimal_commas(s, line);
   if (s.find_first_of(",;") != std::string_view::npos)
     fail_at(line, "a ',' or ';' in a point line; Simpack points are separated by blanks (mixed separators)");
   const auto f = split_fields(s, ' ');
-  if (f.size() < 2 || f.size() > 3) fail_at(line, "a point line holds `y z [weight]`, got {} fields", f.size());
+  if (f.size() < 2 || f.size() > 3) fail_at(line, "a point line holds `y z [weight]`, got {} field{}: {}", f.size(),
+                                           f.size() == 1 ? "" : "s", quoted(s));
   const double y = number(f[0], line, "y");
   const double z = number(f[1], line, "z");
   if (f.size() == 3) number(f[2], line, "weight");
@@ -310,6 +313,40 @@ void set_units(const Keys& sk, double unit, Out& out) {
   if (const Value* u = sk.find("units.len.f")) out.units(unit, fmt::format("units.len.f = {} (line {})", u->text, u->line));
 }
 
+// Where the points' y turns back (the index of the first point past the turn, 0 if none; `from`: y's direction
+// before it), steps shorter than `tol` ignored: the host's test for a profile that folds back, in the file's unit.
+std::size_t y_turn(const std::vector<Point>& pts, double tol, int& from) {
+  from = 0;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double dy = pts[i + 1].y - pts[i].y;
+    if (std::abs(dy) <= tol) continue;
+    const int d = dy > 0 ? 1 : -1;
+    if (from != 0 && d != from) return i + 1;
+    from = d;
+  }
+  return 0;
+}
+
+// Points monotone in y before the rotation (3) that fold back after the processing: the rotation turned them past
+// vertical (the other steps drop, shift, mirror or reverse points, which keeps them monotone). Named here with the
+// angle and its unit, where the host would see only the folded points (rotate in degrees without units.ang.f turns
+// the profile 57 times too far).
+void check_rotation(const Keys& sk, bool monotone_before, double unit, const std::vector<Point>& pts) {
+  int from = 0;
+  const std::size_t turn = y_turn(pts, kDuplicateTolerance / unit, from);
+  if (!monotone_before || turn == 0) return;
+  const Value* r = sk.find("rotate");
+  const Value* f = sk.find("units.ang.f");
+  const double rad = sk.num("rotate", 0) / sk.num("units.ang.f", 1.0);
+  fail_at(r->line,
+          "rotate = {} turns the profile by {:.6g} degrees ({}): its points, monotone in y before the rotation, fold "
+          "back after it at line {} (y turns from {} to {}), and a profile must be monotone in y; is the angle in that "
+          "unit?",
+          quoted(r->text), rad * 180 / std::numbers::pi,
+          f ? fmt::format("units.ang.f = {} per radian, line {}", f->text, f->line) : std::string("radians: no units.ang.f"),
+          pts[turn].line, from > 0 ? "increasing" : "decreasing", from > 0 ? "decreasing" : "increasing");
+}
+
 // The spline section's keys become metadata; its processing steps are applied in their numbered order.
 void process(const Section& spline, std::vector<Point>& pts, Out& out) {
   const Keys sk(spline);
@@ -319,10 +356,13 @@ void process(const Section& spline, std::vector<Point>& pts, Out& out) {
   const double unit = file_unit(sk);
   drop_close_points(sk, pts, out);
   shift_points(sk, unit, pts, out);
+  int from = 0;
+  const bool monotone_before = y_turn(pts, kDuplicateTolerance / unit, from) == 0;
   rotate_points(sk, pts, out);
   bound_points(sk, "bound.y.min", "bound.y.max", true, pts, out);
   bound_points(sk, "bound.z.min", "bound.z.max", false, pts, out);
   mirror_points(sk, pts, out);
+  if (sk.num("rotate", 0) != 0) check_rotation(sk, monotone_before, unit, pts);
   set_units(sk, unit, out);
 }
 

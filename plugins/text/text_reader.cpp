@@ -89,8 +89,10 @@ void parse(std::string_view data, const Request& rq, Out& out) {
       if (std::max(cy, cz) >= fields_per_line)
         fail_at(ln.number, "option columns asks for column {}, but the data has {} columns", std::max(cy, cz) + 1, fields_per_line);
       if (!header.empty() && header.size() != fields_per_line)
-        fail_at(ln.number, "{} fields, but the header (line {}) names {} columns", fields_per_line, header_line, header.size());
+        fail_at(ln.number, "{} fields, but the header (line {}) names {} columns: {}", fields_per_line, header_line, header.size(),
+                quoted(s));
     } else {
+      refuse_text_row(s, ln.number, "data rows", "a line that starts with #, ! or %");
       // The same separator on every line.
       const char other = detect_separator(s);
       if (other != sep)
@@ -101,7 +103,8 @@ void parse(std::string_view data, const Request& rq, Out& out) {
     }
     const auto f = split_fields(s, sep);
     if (f.size() != fields_per_line)
-      fail_at(ln.number, "{} fields, but the data has {} per line (as on line {})", f.size(), fields_per_line, first_data_line);
+      fail_at(ln.number, "{} fields, but the data has {} per line (as on line {}): {}", f.size(), fields_per_line, first_data_line,
+              quoted(s));
     const double y = number(f[cy], ln.number, fmt::format("y (column {})", cy + 1));
     const double z = number(f[cz], ln.number, fmt::format("z (column {})", cz + 1));
     out.point(y, z, ln.number);

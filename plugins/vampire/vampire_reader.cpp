@@ -104,11 +104,13 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, bool right) {
     const Line& ln = lines[i];
     std::string s(trim(strip_comment(ln.text, kComment)));
     if (s.empty()) continue;
+    refuse_text_row(s, ln.number, "rows yl zl yr zr", "after !, % or \"");
     reject_decimal_commas(s, ln.number);
     std::replace(s.begin(), s.end(), ',', ' ');
     const auto f = split_fields(s, ' ');
     if (f.size() != 4)
-      fail_at(ln.number, "a row holds `yl zl yr zr` (4 numbers, mm), got {} field{}", f.size(), f.size() == 1 ? "" : "s");
+      fail_at(ln.number, "a row holds `yl zl yr zr` (4 numbers, mm), got {} field{}: {}", f.size(), f.size() == 1 ? "" : "s",
+              quoted(trim(strip_comment(ln.text, kComment))));
     const double yl = number(f[0], ln.number, "yl"), zl = number(f[1], ln.number, "zl");
     const double yr = number(f[2], ln.number, "yr"), zr = number(f[3], ln.number, "zr");
     rows.push_back(right ? Row{yr, zr, ln.number} : Row{-yl, zl, ln.number});

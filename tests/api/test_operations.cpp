@@ -149,7 +149,7 @@ TEST_CASE("a request's validate() names the key, the value, the unit and the ran
   CHECK_THROWS_WITH_AS(e.validate(), doctest::Contains("moment_tolerance = 2 must be in ]0, 0.1]"), Error);
   e.options.moment_tolerance = 1e-6;
   e.starts.push_back(Start{std::nan(""), 0, std::nullopt, false});
-  CHECK_THROWS_WITH_AS(e.validate(), doctest::Contains("start = {z = nan m, roll = 0 rad} must be finite"), Error);
+  CHECK_THROWS_WITH_AS(e.validate(), doctest::Contains("start = {z = NaN m, roll = 0 rad} must be finite"), Error);
 
   api::WheelCall w;
   w.wheel.Fz = 5e4;

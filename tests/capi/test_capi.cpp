@@ -152,7 +152,7 @@ TEST_CASE("bad input: a status and a message that names what is wrong") {
   CHECK(wrc_equilibrium(nullptr, 0, 0, 1e5, nullptr, &r) == WRC_INVALID_ARGUMENT);
   CHECK(last().find("wheelset is NULL") != std::string::npos);
   CHECK(wrc_equilibrium(f.ws, NAN, 0, 1e5, nullptr, &r) == WRC_INVALID_ARGUMENT);
-  CHECK(last().find("y = nan") != std::string::npos);
+  CHECK(last().find("y = NaN") != std::string::npos);
   CHECK(r == nullptr);
   CHECK(wrc_equilibrium(f.ws, 0, 0, 1e5, "max_evaluatons=3", &r) == WRC_ERROR);
   CHECK(last().find("did you mean 'max_evaluations'") != std::string::npos);
@@ -235,6 +235,7 @@ TEST_CASE("poses far too deep: an error naming the depth, max_penetration and th
     CAPTURE(z);
     CHECK(wrc_contact(f.ws, 0, z, 0, 0, nullptr, &r) == WRC_ERROR);
     CHECK(last().find("nan") == std::string::npos);
+    CHECK(last().find("NaN") == std::string::npos);
   }
   CHECK(wrc_contact(f.ws, 0, -1e308, 0, 0, nullptr, &r) == WRC_ERROR);
   CHECK(last().find("z = -1e+308 m is more than the wheels' largest radius") != std::string::npos);
@@ -265,6 +266,7 @@ TEST_CASE("loads and friction coefficients beyond any wheel: a range, no NaN, no
   CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 1e308, nullptr, &r) == WRC_ERROR);
   CHECK(last().find("Fz = 1e+308 N must be a positive number of at most") != std::string::npos);
   CHECK(last().find("nan") == std::string::npos);
+  CHECK(last().find("NaN") == std::string::npos);
   CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "creepage.xi=1e-3 mu=1e-300", &r) == WRC_ERROR);
   CHECK(last().find("mu = 1e-300 must be in") != std::string::npos);
   CHECK(last().find("internal error") == std::string::npos);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -214,6 +215,27 @@ TEST_CASE("positions in messages: ordinals by the rules of English, from a 0-bas
   CHECK(value_at(1, "mu") == "the 2nd value of mu");
 }
 
+TEST_CASE("numbers in messages: a NaN of either sign reads NaN, whatever the format, other numbers as fmt writes them") {
+  // Lua's 0/0 has its sign bit set, which fmt (as printf) wrote "-nan": the message named a negative that is not one.
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const double v : {nan, -nan, std::copysign(nan, -1.0)}) {
+    CHECK(format_message("got {}", v) == "got NaN");
+    CHECK(format_message("got {:.6f} m", v) == "got NaN m");
+    CHECK(format_message("got {:g}", static_cast<float>(v)) == "got NaN");
+    CHECK(number_text(v) == "NaN");
+    CHECK_THROWS_WITH_AS(fail("'{}' must be finite, got {}", "y", v), "'y' must be finite, got NaN", Error);
+  }
+  // Everything else as fmt writes it, format specifications and all: the reference is fmt::format itself.
+  for (const double v : {inf, -inf, 0.0, -0.0, 1e-300, 0.1, -2.5e308, 1.0 / 3})
+    for (const char* spec : {"{}", "{:g}", "{:.3f}", "{:+.2e}", "{:>12.4g}"}) {
+      CAPTURE(v);
+      CAPTURE(spec);
+      CHECK(format_message(fmt::runtime(spec), v) == fmt::format(fmt::runtime(spec), v));
+    }
+  CHECK(format_message("{} {} {}", inf, -inf, 3) == "inf -inf 3");
+  CHECK(format_message("{} of {}", std::string("y"), 'z') == "y of z");
+}
+
 namespace {
 
 // The message of reading `key` from `t` as a table (and its key 'inner' as a table) or as numbers ("" when it reads).
@@ -251,7 +273,7 @@ TEST_CASE("option types in the words of the front end that built the options, po
     CAPTURE(words);
     t.dialect = dialect;
     CHECK(reading_error(t, true, "creepage").find(std::string("'creepage' ") + words) != std::string::npos);
-    CHECK(reading_error(t, false, "y") == "call: the 2nd value of 'y' must be finite, got nan");
+    CHECK(reading_error(t, false, "y") == "call: the 2nd value of 'y' must be finite, got NaN");
     const std::string nested = reading_error(t, true, "outer");
     CHECK(nested.find(std::string("call: 'outer': 'inner' must be ") + option_words(dialect).a_table + ", got " +
                       option_words(dialect).boolean) != std::string::npos);

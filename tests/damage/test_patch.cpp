@@ -184,7 +184,7 @@ TEST_CASE("compute_damage refuses bad fields, naming them") {
   f.px = std::span<const double>(s.px).first(3);
   CHECK(message(f).find("px has 3 values") != std::string::npos);
   s.sy[5] = NAN;
-  CHECK(message(s.fields(10)).find("the 6th value of sy (= nan) must be finite") != std::string::npos);
+  CHECK(message(s.fields(10)).find("the 6th value of sy (= NaN) must be finite") != std::string::npos);
   s.sy[5] = 0;
   s.h.pressure[7] = -1;
   CHECK(message(s.fields(10)).find("the 8th value of pressure (= -1) must be finite and >= 0") != std::string::npos);

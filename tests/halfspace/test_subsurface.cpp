@@ -531,7 +531,7 @@ TEST_CASE("subsurface: bad input names what is wrong") {
   bad[5] = -1;
   CHECK(message({g, bad}, rq).find("pressure of element 5 is -1") != std::string::npos);
   bad[5] = NAN;
-  CHECK(message({g, bad}, rq).find("pressure of element 5 is nan") != std::string::npos);
+  CHECK(message({g, bad}, rq).find("pressure of element 5 is NaN") != std::string::npos);
   CHECK(message({g, std::span(p).first(5)}, rq).find("pressure has 5 values, the grid 12") != std::string::npos);
   CHECK(message({g, p, bad}, rq).find("traction px of element 5") != std::string::npos);
   SubsurfaceRequest r2 = rq;

@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+using wrc::test::within_abs;
 using wrc::test::within_rel;
 using namespace wrc;
 
@@ -358,7 +359,7 @@ TEST_CASE("every reader given another format's file names the reader that reads 
   for (const Format& file : formats)
     for (const Format& reader : formats) {
       const std::string f = file.id, r = reader.id;
-      if (f == r || (f == "text" && r == "miniprof")) continue;  // MiniProf reads bare rows too
+      if (f == r) continue;
       INFO(file.id << " file given to the " << reader.id << " reader");
       LoadOptions o;
       o.kind = ProfileKind::rail;
@@ -384,4 +385,177 @@ TEST_CASE("Simpack reader: a processing key that leaves no profile is named with
               "point.dist.min = '100' leaves 1 of the 31 points; a profile needs at least 3");
   check_error("narrow.prr", keys_then + " bound.y.min = 0\n bound.y.max = 1\n point.begin\n" + arc_rows(" ") +
               " point.end\nspline.end\n", 7, "2 of the 31 points lie within bound.y.min .. bound.y.max = 0 .. 1");
+}
+
+TEST_CASE("every reader given a Lua profile definition says that it is one, and how to load it") {
+  // The text reader took the definition's first comment line for a header and failed on the next line's field count.
+  const std::string body = "local opt = ... or {}\nreturn wrc.profile.points{kind = \"wheel\", y = {-0.07, 0, 0.06}, "
+                           "z = {0.00175, 0, -0.0015}}\n";
+  for (const std::string& text : {"-- a cone 1:40, 130 mm wide\n" + body, body, "--[[ a cone ]]\n" + body}) {
+    for (const char* reader : {"text", "simpack", "miniprof", "vampire"}) {
+      INFO(reader << " reader, the file beginning " << text.substr(0, text.find('\n')));
+      LoadOptions o;
+      o.reader = reader;
+      o.kind = ProfileKind::wheel;
+      check_error("cone.lua", text, 1, "begins a Lua profile definition", o);
+      check_error("cone.lua", text, 1, "load it without the option reader", o);
+    }
+  }
+  // A rule of dashes under a title is no Lua comment.
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  CHECK(error_of(write("ruled.txt", "----------\n" + arc_rows(" ")), rail).find("Lua") == std::string::npos);
+}
+
+TEST_CASE("MiniProf reader: rows of numbers without the MiniProf header are refused, naming the text reader") {
+  // Nothing says that bare rows are X and Y, nor which way Y points: an arc with a clear top loaded as a MiniProf rail,
+  // and rows of a wheel in the engine frame came out shifted by tape_x (70 mm).
+  for (const char* ext : {".ban", ".whl"}) {
+    INFO(ext);
+    check_error(std::string("bare") + ext, arc_rows(" "), 1, "begins a plain text profile, not a MiniProf profile, which "
+                "begins with its header (MINIPROF or Key=Value lines): read it with reader = \"text\"");
+    check_error(std::string("bare_comma") + ext, "! exported\n" + arc_rows(","), 2, "read it with reader = \"text\"");
+  }
+  // Read as the message says, the rows are the points, in mm.
+  LoadOptions text;
+  text.reader = "text";
+  text.kind = ProfileKind::rail;
+  const Profile p = load("bare_as_text.ban", arc_rows(" "), text);
+  REQUIRE(p.size() == 31);
+  CHECK(p.y.front() == within_rel(-0.015, 1e-9));
+  CHECK(p.z[15] == within_abs(0.0, 1e-12));
+  // With the header, the same rows are a MiniProf rail.
+  CHECK(error_of(write("with_header.ban", "ColumnDef=X,Y\n\n" + arc_rows(" "))) == "(no error)");
+}
+
+TEST_CASE("Simpack reader: a rotate that turns the profile past vertical is named with its angle and unit") {
+  // The arc's tangents lie within +-atan(15 / sqrt(300^2 - 15^2)) = +-2.866 degrees of the y axis: a rotation by more
+  // than 87.134 degrees turns some past vertical, and y turns back; one by less keeps y monotone.
+  const double edge = std::atan(15.0 / std::sqrt(300.0 * 300.0 - 15.0 * 15.0)) * 180 / M_PI;
+  REQUIRE(edge == within_abs(2.866, 1e-3));
+  auto file = [](const std::string& rotate, bool degrees) {
+    return "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n units.len.f = 1000\n rotate = " + rotate +
+           "\n" + (degrees ? " units.ang.f = 57.29577951308232\n" : "") + " point.begin\n" + arc_rows(" ") +
+           " point.end\nspline.end\n";
+  };
+  // The first row past the turn, by brute force: the rows rotated in the file's frame, y = y cos a - z sin a.
+  auto turn_line = [](double degrees) {
+    const double a = degrees * M_PI / 180;
+    int from = 0, line = 10;  // the first point's line (after units.len.f, rotate, units.ang.f, point.begin)
+    double prev = 0;
+    for (int i = 0; i < 31; ++i, ++line) {
+      const double y = -15.0 + i, z = std::sqrt(300.0 * 300.0 - y * y) - 300.0;
+      const double yr = y * std::cos(a) - z * std::sin(a);
+      if (i > 0) {
+        const int d = yr > prev ? 1 : -1;
+        if (from != 0 && d != from) return line;
+        from = d;
+      }
+      prev = yr;
+    }
+    return 0;
+  };
+  const int line88 = turn_line(88);
+  REQUIRE(line88 > 0);
+  check_error("rotate88.prr", file("88", true), 7,
+              fmt::format("rotate = '88' turns the profile by 88 degrees (units.ang.f = 57.29577951308232 per radian, "
+                          "line 8): its points, monotone in y before the rotation, fold back after it at line {}", line88));
+  CHECK(error_of(write("rotate86.prr", file("86", true))).find("fold") == std::string::npos);
+  CHECK(turn_line(86) == 0);
+  // In radians without units.ang.f: 1.6 rad is 91.67 degrees.
+  check_error("rotate_rad.prr", file("1.6", false), 7, "rotate = '1.6' turns the profile by 91.6732 degrees (radians: no "
+              "units.ang.f)");
+}
+
+namespace {
+
+// One file of each format around the arc's rows (a rail, mm), and the line of its first row.
+struct Layout {
+  const char* ext;
+  std::string (*file)(const std::string& rows);
+  int first_row;
+};
+const Layout kLayouts[] = {{".txt", [](const std::string& r) { return r; }, 1},
+                           {".prr", [](const std::string& r) { return simpack(r); }, kSimpackFirstPoint},
+                           {".ban", [](const std::string& r) { return "MINIPROF\nColumnDef=X,Y\n\n" + r; }, 4},
+                           {".rai", [](const std::string& r) { return vampire(r); }, kVampireFirstRow}};
+
+// The rows up to row k (1-based), and the text of row k.
+std::string rows_to(const std::string& rows, int k) {
+  std::size_t end = 0;
+  for (int i = 0; i < k; ++i) end = rows.find('\n', end) + 1;
+  return rows.substr(0, end);
+}
+
+}  // namespace
+
+TEST_CASE("every reader: a file cut short within its last row is named as truncated, at that row") {
+  // A VAMPIRE file cut within its last number was read without a word (the number cut short, the rest of the profile
+  // gone); the other readers named a field count or mixed separators. The arc's numbers have 6 decimals.
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  const std::string rows = arc_rows(" ");
+  for (const Layout& f : kLayouts) {
+    INFO(f.ext);
+    // The file ending with row 20, then cut within that row's last number ("-0.026668" -> "-0.026") or after its y.
+    const std::string all = f.file(rows_to(rows, 20));
+    const std::string body = all.substr(0, f.ext == std::string(".prr") ? all.rfind('\n', all.find("point.end")) + 1 : all.size());
+    const std::string cut_number = body.substr(0, body.size() - 4);  // less the line break and 3 digits
+    const std::string cut_row = body.substr(0, body.rfind('\n', body.size() - 2) + 1) + "4.000000";
+    const int line = f.first_row + 19;
+    check_error(std::string("cut_number") + f.ext, cut_number, line, "the file ends without a line break within a number", rail);
+    check_error(std::string("cut_number") + f.ext, cut_number, line, "the file is cut short (truncated)", rail);
+    check_error(std::string("cut_row") + f.ext, cut_row, line, "the file ends without a line break within a row", rail);
+  }
+  // The rows complete, without the last line break: read, the same points as with it.
+  const Profile with = load("complete.txt", rows, rail);
+  const Profile without = load("no_last_break.txt", rows.substr(0, rows.size() - 1), rail);
+  CHECK(without.y == with.y);
+  CHECK(without.z == with.z);
+  // Numbers typed by hand (fewer than 3 decimals) may end a file shorter: no truncation is claimed.
+  CHECK(error_of(write("typed.txt", "0 0.25\n5 0.10\n10 0.04\n15 0.01\n20 0.00\n25 0.01\n30 0.1"), rail) == "(no error)");
+}
+
+TEST_CASE("every reader: a line of text among the rows is named as one, with the way to comment it") {
+  // It was "mixed separators" in a CSV file and MiniProf, a field count elsewhere.
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  const std::string rows = arc_rows(","), blank_rows = arc_rows(" ");
+  for (const Layout& f : kLayouts) {
+    INFO(f.ext);
+    const std::string& r = f.ext == std::string(".txt") || f.ext == std::string(".ban") ? rows : blank_rows;
+    const std::string file = f.file(r), before = rows_to(file, f.first_row + 9);  // the file to row 10
+    const std::string text = before + "this line is text\n" + file.substr(before.size());
+    check_error(std::string("text_line") + f.ext, text, f.first_row + 10, "'this line is text' is a line of text among the",
+                rail);
+    check_error(std::string("text_line") + f.ext, text, f.first_row + 10, "make it a comment", rail);
+  }
+  // A row with a word after its numbers keeps its own message: the field.
+  check_error("word.txt", rows_to(blank_rows, 10) + "1 2 abc\n" + blank_rows.substr(rows_to(blank_rows, 10).size()), 11,
+              "3 fields, but the data has 2 per line (as on line 1): '1 2 abc'", rail);
+}
+
+TEST_CASE("a single mistyped point is named with its line: far from the rest (not a unit), or a spike") {
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  const std::string rows = arc_rows(" ");
+  // Row 10 (y = -6 mm) written x100: -600 mm, 1.2 m of detour; the rest is the 30 mm arc. It was blamed on the unit.
+  const double y10 = -6.0, z10 = std::sqrt(300.0 * 300.0 - 36.0) - 300.0;
+  const std::string far = rows_to(rows, 9) + fmt::format("{:.6f} {:.6f}\n", 100 * y10, 100 * z10) + rows.substr(rows_to(rows, 10).size());
+  check_error("far_point.txt", far, 10, "the point y = -600, z = ", rail);
+  check_error("far_point.txt", far, 10, "a mistyped point?", rail);
+  CHECK(error_of(write("far_point.txt", far), rail).find("units are probably wrong") == std::string::npos);
+  // The same row 50 mm below the arc, between neighbours 2 mm apart: a spike (slope 25 both ways), named with how far
+  // it sticks out beyond the lower neighbour (row 9, y = -7 mm; rows 9 and 11 are the arc at y = -7 and -5 mm).
+  const auto written = [](double v) { return std::round(v * 1e6) / 1e6; };  // as the file holds it, 6 decimals
+  const double z9 = written(std::sqrt(300.0 * 300.0 - 49.0) - 300.0), low = written(z10 - 50);
+  const std::string spike = rows_to(rows, 9) + fmt::format("{:.6f} {:.6f}\n", y10, low) + rows.substr(rows_to(rows, 10).size());
+  check_error("spike.txt", spike, 10, fmt::format("sticks out {:.6g} mm below its neighbours", z9 - low), rail);
+  // 30 mm below (slope 15): a steep dip, not refused as a spike.
+  const std::string dip = rows_to(rows, 9) + fmt::format("{:.6f} {:.6f}\n", y10, z10 - 30) + rows.substr(rows_to(rows, 10).size());
+  CHECK(error_of(write("dip.txt", dip), rail).find("spike") == std::string::npos);
+  // A unit still named as one, its lines in increasing order when the file reverses its points (inversion = 1).
+  const std::string inverted = "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n inversion = 1\n point.begin\n" +
+                               arc_rows(" ", 1e-3) + " point.end\nspline.end\n";
+  check_error("metres_inverted.prr", inverted, 8, "(points of lines 8 .. 38)");
 }

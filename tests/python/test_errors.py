@@ -70,7 +70,7 @@ def test_positions_are_ordinals_not_lua_indices(ws):
         y[bad] = np.nan
         with pytest.raises(wrc.OptionError) as e:
             ws.sweep(y=y, Q=200e3)
-        assert f"the {ordinal(bad + 1)} value of 'y' must be finite, got nan" in str(e.value)
+        assert f"the {ordinal(bad + 1)} value of 'y' must be finite, got NaN" in str(e.value)
         assert "[" not in str(e.value)
     with pytest.raises(wrc.OptionError, match="the 3rd value of 'yhat' must be finite"):
         ws.conicity(yhat=[1e-3, 2e-3, math.inf])

@@ -13,6 +13,9 @@
 --    message has no traceback and lists the strategies of scripts/strategies (each listed one builds a wheelset, and
 --    the one module not listed, the composer, is refused as not a strategy). A runtime error inside a strategy file
 --    keeps its traceback: that is a bug in the file, and the traceback says where.
+-- 5. Lua's 0/0 has its sign bit set, and messages wrote it "-nan" (a negative that is not one), -(0/0) "nan": an
+--    option, a point of a profile, a reader's option passed on as text, a pose, a check or a table cell of the scripts;
+--    each message says NaN now, whatever the sign, and infinities inf / -inf.
 local check = require "wrc.check"
 local H = dofile((arg[0]:match("(.*/)") or "./") .. "../data/profile/helpers.lua")
 local tmp = (arg.tmp or ".") .. "/input_messages_"
@@ -137,4 +140,32 @@ err = check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, str
                   "attempt to index", "a bug in a strategy file")
 check.ok(err:find("stack traceback", 1, true) and err:find("buggy_strategy.lua:4:", 1, true),
          "the bug keeps its traceback, with the file's line: " .. err)
+
+-- ---- 5. NaN and infinities in messages ----
+local whl = H.write_miniprof(tmp .. "wheel5.whl", s1002)
+local ws = wrc.wheelset{wheel = s1002, rail = rail}
+for _, nan in ipairs{0 / 0, -(0 / 0)} do
+  local calls = {
+    {function() return wrc.profile.load(whl, {shift = {y = nan}}) end, "'y' must be finite, got NaN"},
+    {function() return wrc.profile.load(whl, {tape_x = nan}) end, "option tape_x must be a finite number, got 'NaN'"},
+    {function() return wrc.profile.points{kind = "rail", y = {0, nan, 2e-3}, z = {0, 0, 0}} end,
+     "the 2nd value of 'y' must be finite, got NaN"},
+    {function() return ws:contact{y = nan, z = 0} end, "'y' must be finite, got NaN"},
+    {function() return s1002:interpolate(nan) end, "must be finite, got NaN"},
+  }
+  for i, c in ipairs(calls) do
+    err = check.fails(c[1], c[2], ("NaN (%s) in call %d"):format(tostring(nan), i))
+    check.ok(not err:find("nan", 1, true) and not err:find("-NaN", 1, true), "no nan nor -NaN: " .. err)
+  end
+end
+-- The scripts' messages (wrc.check, wrc.output, the wear loop) write numbers with wrc.number_text, the same convention.
+for _, c in ipairs{{0 / 0, "NaN"}, {-(0 / 0), "NaN"}, {1 / 0, "inf"}, {-1 / 0, "-inf"}, {0.1, "0.1"}, {-2.5e-7, "-2.5e-07"},
+                   {3, "3"}, {2^53 + 0.0, "9007199254740992"}} do
+  check.ok(wrc.number_text(c[1]) == c[2], ("wrc.number_text: %s, expected %s"):format(wrc.number_text(c[1]), c[2]))
+end
+err = check.fails(function() check.near(0 / 0, 1, 0.1, "a NaN result") end, "a NaN result = NaN, expected 1", "check.near")
+err = check.fails(function() require("wrc.output").csv_line({"x"}, {x = 0 / 0}, "t row 2") end,
+                  "t row 2 column x: value is not finite (NaN)", "a NaN cell")
+check.fails(function() return ws:contact{y = -1 / 0, z = 0} end, "'y' must be finite, got -inf", "-inf")
+check.fails(function() return ws:contact{y = 1 / 0, z = 0} end, "'y' must be finite, got inf", "inf")
 print("input_messages: ok")

@@ -54,7 +54,7 @@ check.fails(function() return ws:contact{y = 0, z = 0, max_penetration = 0} end,
 for _, z in ipairs{-0.3, -0.5, -1, -1e308} do
   local e = check.fails(function() return ws:contact{y = 0, z = z} end, "contact: ", ("z = %g m"):format(z))
   check.ok(e:find("max_penetration", 1, true) or e:find("largest radius", 1, true), e)
-  check.ok(not e:find("nan", 1, true), e)
+  check.ok(not e:lower():find("nan", 1, true), e)
 end
 check.fails(function() return ws:contact{y = 0, z = -1} end, "the wheelset would have passed through its rails", "z = -1 m")
 check.fails(function() return ws:locate{y = 0, z = -1e308} end, "largest radius", "ws:locate at z = -1e308 m")
@@ -79,6 +79,6 @@ check.fails(function() return wrc.wheelset{wheel = wheel, rail = rail, grid = 1e
             "grid = 1 um with the default cap")
 local e = check.fails(function() return ws:wheel{side = "left", y = 0, Fz = 1e308} end, "Fz = 1e+308 N must be",
                       "Fz = 1e308")
-check.ok(not e:find("nan", 1, true), e)
+check.ok(not e:lower():find("nan", 1, true), e)
 check.fails(function() return ws:equilibrium{y = 0, Q = 1e300} end, "Q = 1e+300 N must be", "Q = 1e300")
 print("pose limits: ok")

@@ -155,7 +155,7 @@ void check_side(int side) {
 }
 
 void finite(const char* name, double v) {
-  if (!std::isfinite(v)) invalid(fmt::format("{} = {} must be a finite number", name, v));
+  if (!std::isfinite(v)) invalid(wrc::format_message("{} = {} must be a finite number", name, v));
 }
 
 // A caller's array of n points: no array that size holds a profile or a table (and y + n would not be an address).

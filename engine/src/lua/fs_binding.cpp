@@ -253,6 +253,15 @@ int closest(lua_State* L) {
   return 1;
 }
 
+// wrc.number_text(x) -> the number x as a message writes it: NaN as "NaN" whatever its sign bit (Lua's tostring writes
+// 0/0 "-nan"), integers as tostring, other numbers as the engine's messages (wrc::number_text).
+int number_text_of(lua_State* L) {
+  if (lua_type(L, 1) != LUA_TNUMBER) fail("wrc.number_text: argument 1 must be a number, got {}", type_name(L, 1));
+  if (lua_isinteger(L, 1)) lua_pushstring(L, std::to_string(lua_tointeger(L, 1)).c_str());
+  else lua_pushstring(L, number_text(lua_tonumber(L, 1)).c_str());
+  return 1;
+}
+
 }  // namespace
 
 void open_fs(lua_State* L) {
@@ -302,6 +311,8 @@ void open_fs(lua_State* L) {
   lua_setfield(L, -2, "fs");
   lua_pushcfunction(L, guarded<closest>);
   lua_setfield(L, -2, "closest_name");
+  lua_pushcfunction(L, guarded<number_text_of>);
+  lua_setfield(L, -2, "number_text");
   lua_pushinteger(L, available_cores());
   lua_setfield(L, -2, "cores");
 }

@@ -93,6 +93,33 @@ double total_chord(const std::vector<double>& y, const std::vector<double>& z) {
   return L;
 }
 
+// The point whose removal shortens the total chord most, and by how much: a point mistyped far from its neighbours
+// (a digit or a sign wrong) makes the whole chord implausible, as a wrong unit does, but the rest is plausible.
+std::pair<std::size_t, double> farthest_detour(const std::vector<double>& y, const std::vector<double>& z) {
+  const auto d = [&](std::size_t a, std::size_t b) { return std::hypot(y[b] - y[a], z[b] - z[a]); };
+  const std::size_t n = y.size();
+  std::pair<std::size_t, double> best{0, d(0, 1)};
+  if (d(n - 2, n - 1) > best.second) best = {n - 1, d(n - 2, n - 1)};
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    if (const double g = d(i - 1, i) + d(i, i + 1) - d(i - 1, i + 1); g > best.second) best = {i, g};
+  return best;
+}
+
+// A total chord beyond the plausible one that a single point makes: that point, named with its line.
+void refuse_detour(const std::vector<double>& y, const std::vector<double>& z, const std::vector<int>& lines,
+                   const std::string& source, double chord) {
+  const auto [i, detour] = farthest_detour(y, z);
+  const double rest = chord - detour;
+  if (!(rest >= kMinPlausibleChord && rest <= kMaxPlausibleChord)) return;
+  const std::size_t a = i > 0 ? i - 1 : 1;  // the point before it (after it, for the first)
+  fail("{}: the point y = {:.6g}, z = {:.6g} mm (engine frame) lies {:.6g} mm from its neighbour (y = {:.6g}, z = {:.6g} mm{}), far "
+       "from the rest of the profile: the total chord is {:.6g} mm with it and a plausible {:.6g} mm without it; a "
+       "mistyped point?",
+       at_line(source, i < lines.size() ? lines[i] : 0), y[i] * 1e3, z[i] * 1e3, std::hypot(y[i] - y[a], z[i] - z[a]) * 1e3,
+       y[a] * 1e3, z[a] * 1e3, a < lines.size() ? fmt::format(", line {}", lines[a]) : std::string(), chord * 1e3,
+       rest * 1e3);
+}
+
 void apply_mirrors(std::vector<double>& y, std::vector<double>& z, const LoadOptions& o,
                    std::vector<std::string>& transforms) {
   if (o.mirror_y) {
@@ -158,7 +185,7 @@ namespace {
 std::string option_text(const std::string& key, const OptionValue& v, const OptionReader& r) {
   switch (v.type) {
     case OptionValue::Type::boolean: return v.boolean ? "true" : "false";
-    case OptionValue::Type::number: return fmt::format("{}", v.number);  // shortest exact representation
+    case OptionValue::Type::number: return number_text(v.number);  // shortest exact representation
     case OptionValue::Type::string: return v.string;
     default: fail("{}: option '{}' must be a string, number or boolean, got {}", r.context(), key, r.type_name(v));
   }
@@ -317,10 +344,12 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
   // Extent check, before anything that depends on the scale (duplicate tolerance, crop window).
   const double chord = total_chord(raw.y, raw.z);
   if (!o.metres_per_unit && !(chord >= kMinPlausibleChord && chord <= kMaxPlausibleChord)) {
-    const int first_line = raw.lines.empty() ? 0 : raw.lines.front();
+    if (chord > kMaxPlausibleChord) refuse_detour(raw.y, raw.z, raw.lines, source, chord);
+    const int first_line = raw.lines.empty() ? 0 : *std::min_element(raw.lines.begin(), raw.lines.end());
+    const int end_line = raw.lines.empty() ? 0 : *std::max_element(raw.lines.begin(), raw.lines.end());
     fail("{}: the profile's total chord is {:.6g} mm (points of lines {} .. {}), outside the plausible {:.0f} .. {:.0f} mm: "
          "the units are probably wrong (taken as {}); pass units = \"mm\", \"m\" or a factor to say what they are",
-         at_line(source, first_line), chord * 1e3, first_line, last_line, kMinPlausibleChord * 1e3,
+         at_line(source, first_line), chord * 1e3, first_line, end_line, kMinPlausibleChord * 1e3,
          kMaxPlausibleChord * 1e3, raw.metres_per_unit ? raw.units_declared_by : std::string("millimetres (default)"));
   }
 

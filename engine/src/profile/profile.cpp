@@ -23,6 +23,25 @@ std::string where(const std::string& source, const std::vector<int>& lines, std:
   return fmt::format("{}: point {}", source, i + 1);
 }
 
+// A spike: one point that leaves the height range of its two neighbours by more than kSpikeHeight and comes back,
+// steeper than kSpikeSlope both ways (out by e within a lateral span of e / kSpikeSlope). Wheel and rail surfaces turn
+// by 90 degrees at most between samples (a flange back, a rail's flank), never out and back; measurement noise is
+// micrometres. Such a point is a mistyped number (a sign, a digit), which the contact would take for a real ridge.
+constexpr double kSpikeHeight = 1e-3;  // m
+constexpr double kSpikeSlope = 20;     // |dz / dy| of both flanks: 87 degrees
+
+void refuse_spike(const Profile& p, const std::vector<int>& lines) {
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const double lo = std::min(p.z[i - 1], p.z[i + 1]), hi = std::max(p.z[i - 1], p.z[i + 1]);
+    const double out = std::max(p.z[i] - hi, lo - p.z[i]), span = std::abs(p.y[i + 1] - p.y[i - 1]);
+    if (out > kSpikeHeight && out > kSpikeSlope * span)
+      fail("{}: the point y = {:.6g} mm, z = {:.6g} mm sticks out {:.6g} mm {} its neighbours (z = {:.6g} and {:.6g} mm, "
+           "{:.3g} mm apart in y) and comes back: a spike, which no wheel or rail has; a mistyped z?",
+           where(p.source, lines, i), p.y[i] * 1e3, p.z[i] * 1e3, out * 1e3, p.z[i] > hi ? "above" : "below",
+           p.z[i - 1] * 1e3, p.z[i + 1] * 1e3, span * 1e3);
+  }
+}
+
 }  // namespace
 
 void check_point_count(double n, std::string_view what) {
@@ -86,6 +105,7 @@ Profile make_profile(ProfileKind kind, std::vector<double> y, std::vector<double
     }
   }
   if (ydir == 0) fail("{}: all points have the same y; a profile must extend laterally", p.source);
+  refuse_spike(p, kept_lines);
   if (ydir < 0) {
     std::reverse(p.y.begin(), p.y.end());
     std::reverse(p.z.begin(), p.z.end());

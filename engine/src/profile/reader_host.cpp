@@ -55,7 +55,7 @@ int sink_point(void* host, double y, double z, int32_t line) {
   try {
     SinkState& s = state(host);
     if (!std::isfinite(y) || !std::isfinite(z)) {
-      s.error(line, fmt::format("coordinate is not a finite number (y = {}, z = {})", y, z));
+      s.error(line, format_message("coordinate is not a finite number (y = {}, z = {})", y, z));
       return 1;
     }
     if (s.raw.y.size() >= kMaxProfilePoints) {
@@ -84,7 +84,7 @@ void sink_units(void* host, double metres_per_unit, const char* declared_by) {
     SinkState& s = state(host);
     s.raw.metres_per_unit = metres_per_unit;
     s.raw.units_declared_by = text(declared_by);
-    if (!(metres_per_unit > 0) || !std::isfinite(metres_per_unit)) s.error(0, fmt::format("invalid length unit {} ({})", metres_per_unit, s.raw.units_declared_by));
+    if (!(metres_per_unit > 0) || !std::isfinite(metres_per_unit)) s.error(0, format_message("invalid length unit {} ({})", metres_per_unit, s.raw.units_declared_by));
   } catch (...) {
     state(host).failed_internally = true;
   }
