@@ -80,6 +80,18 @@ check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, mu = 0.35, friction_profile = {
                     mu = {0.10, 0.10, 0.35, 0.35}}, friction = nil}.left.force.z > 0, "the guide's gauge face in m passes")
 check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "linear", mu_inf = 0.2, m1 = 0.1, s1 = 0.1}}
          .left.force.z > 0, "s1 = 0.1 m/s passes")
+-- Polach's B per m/s of slip (his dry rail: 0.6 s/m; B = 600 made every sliding element mu0 A), and a prescribed spin
+-- beyond any contact angle's sin(gamma) / r (at most 1 / r: 2.2 1/m on r = 0.45 m).
+refused(function() ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "polach", mu0 = 0.55, A = 0.4, B = 600}} end,
+        "B", "600", "s/m", "Polach's B of 600 s/m")
+check.ok(ws:contact{y = 0, z = -0.05e-3, V = 30, friction = {law = "polach", mu0 = 0.55, A = 0.4, B = 0.6}}
+         .left.force.z > 0, "Polach's dry rail, B = 0.6 s/m, passes")
+refused(function() ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = 100}} end,
+        "phi", "100", "1/m", "a spin creepage of 100 1/m")
+check.ok(ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = -1.9}}.left.force.z > 0,
+         "a flange's spin, -1.9 1/m, passes")
+check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = 100}}.left.force.z > 0,
+         "check_setup = false: phi = 100 1/m is solved")
 
 -- Realistic values pass: a light tram axle (40 kN) and a heavy-haul one (350 kN), a worn small wheel and a large one,
 -- 300 km/h.

@@ -736,6 +736,9 @@ void RollingRequest::validate(std::string_view context, bool plausible) const {
   for (const auto& side : friction_profile)
     if (side)
       for (double mu : side->mu) check_plausible(context, "friction_profile's mu", mu, kFrictionCoefficient);
+  if (creepage) check_plausible(context, "phi", creepage->phi, kSpinCreepage);
+  if (friction.law == halfspace::FrictionLaw::polach)  // s_1 = ln 2 / B (halfspace::Friction::polach)
+    check_plausible(context, "B", std::numbers::ln2 / friction.velocity[0], kPolachDecay);
   if (friction.law == halfspace::FrictionLaw::coulomb || friction.law == halfspace::FrictionLaw::polach) return;
   for (std::size_t i = 0; i < 2; ++i)
     if (friction.term[i] > 0)

@@ -50,6 +50,14 @@ inline constexpr double kMaxSpinRatio = 2;
 // and CONTACT takes them in mm/s, where wrc takes m/s.
 inline constexpr Plausible kFrictionVelocity{"a friction law's slip velocity", "m/s", 0, 10,
                                              "CONTACT's SABSH1 = 100 mm/s is s1 = 0.1"};
+// Polach's decay of friction with the slip velocity, mu0 ((1 - A) exp(-B w) + A): his fits give B = 0.6 s/m dry and
+// 0.2 s/m wet (Polach, Wear 258, 2005); 50 s/m halves the falling part within 14 mm/s of slip, beyond any measured
+// creep curve (B = 600 made every element slide at mu0 A).
+inline constexpr Plausible kPolachDecay{"Polach's friction decay B", "s/m", 0, 50, "Polach's dry rail is B = 0.6"};
+// A prescribed spin creepage: sin(gamma) / r at a contact angle gamma, at most 1 / r (6.7 1/m on a 0.15 m wheel);
+// 1.9 1/m is a flange at 60 degrees on r = 0.45 m.
+inline constexpr Plausible kSpinCreepage{"a spin creepage", "1/m", 0, 10, "a flange at 60 deg on r = 0.45 m is "
+                                         "phi = 1.9"};
 // Wheel on rail: 0.02-0.1 with leaves or a greased gauge face, 0.3-0.6 dry or sanded; 30 is a percentage. The
 // no-slip limit (a huge coefficient: Kalker's linear theory) needs check_setup = false.
 inline constexpr Plausible kFrictionCoefficient{"a wheel-rail friction coefficient", "", 0.01, 1.0, "30 % is mu = 0.3"};
