@@ -48,6 +48,8 @@ local s = study.new{
      max = 20},
     {"grid_mm", "number", 0.2, "element size of the contact areas (mm)", min = 0.01, max = 5},
     {"method", "string", "exact", "rolling contact solver", choices = {"exact", "fastsim"}},
+    {"spin", "string", "free", "the wheelset's spin: the one that balances its axle torque (free rolling), or " ..
+     "omega = V / r0", choices = {"free", "nominal"}},
     {"model", "string", "archard", "wear model", choices = {"archard", "usfd"}},
     {"k", "number", 0, "Archard's constant wear coefficient (0: the KTH wear map)", min = 0, max = 1},
     {"tangent", "integer", 90, "generated cases on tangent track", min = 0},
@@ -87,7 +89,7 @@ do
   loop.wheelset(loop.initial{wheel = wheel, rail = rail, wheelset = probe})
 end
 local wear = {model = opt.model, k = (opt.model == "archard" and opt.k > 0) and opt.k or nil}
-local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, wear = wear, method = opt.method,
+local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, wear = wear, method = opt.method, spin = opt.spin,
                       threads = opt.threads, rail_passes = opt.rail_passes, scheme = opt.scheme,
                       tolerance = opt.tolerance > 0 and opt.tolerance * opt.step_mm * 1e-3 or nil,
                       km_end = opt.km_end > 0 and opt.km_end or nil}
