@@ -1,6 +1,7 @@
 -- Wheel (and rail) profiles worn over mileage: a wear loop (docs/guide/wear.md). Per step every running case is
 -- solved -- the wheelset's equilibrium under its load, then rolling contact with the wear model (Archard with the KTH
--- map by default) at that pose; the depth each area wears per passage is mapped onto the profiles, spread over the
+-- map by default) at that pose, the axle turning at the spin that balances its torque (spin=free; spin=nominal:
+-- omega = V / r0); the depth each area wears per passage is mapped onto the profiles, spread over the
 -- wheel's circumference, weighted by the cases' shares of distance, smoothed (area-preserving) and scaled so that the
 -- step's largest wheel depth is step_mm; the profiles move along their normals, and the next step runs on them.
 --

@@ -125,6 +125,7 @@ class SweepRun {
       e.yaw = sc.yaw;
       e.Q = opt_.Q;
       e.message = ex.what();
+      e.converged = ok = false;  // also when the equilibrium converged and its rolling contact failed
     }
     if (reported) progress_.add(!ok);
     return ok;

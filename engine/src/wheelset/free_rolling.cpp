@@ -22,7 +22,13 @@ namespace wrc {
 namespace {
 
 constexpr double kFirstStep = 1e-4;  // omega r0 / V: xi 1e-4, the creepage of a new tread's balance
-constexpr double kSlopeBase = 1e-7;  // the shortest secant the slope is taken from (100 x kFreeRollingResolution)
+// The longest first (Newton) step: a slope from another case may be far off (a flat, saturated torque), and a bracket
+// reaching into full sliding would leave regula falsi on its plateau.
+constexpr double kNewtonStep = 1e-3;
+constexpr double kSlopeBase = 1e-7;
+// The secant's step past its predicted root, so that the bracket closes where the torque is known only to the exact
+// solver's noise (a secant from one side stalled at -0.68 N m, 1.6e-7 short of the root, on a flange at 1e-4).
+constexpr double kOvershoot = 1.2;  // the shortest secant the slope is taken from (100 x kFreeRollingResolution)
 constexpr int kGrowSteps = 16;      // 1e-4 x 4^7 already spans kFreeRollingSpan
 constexpr int kRootSteps = 40;      // regula falsi (Illinois) within the bracket
 
@@ -55,9 +61,7 @@ void solve_free_rolling(const ContactModel& model, ContactResult& result, const 
     at = s;
     return t;
   };
-  const double rel = request.method == RollingMethod::exact ? std::max(kFreeRollingTolerance, request.tolerance / 2)
-                                                             : kFreeRollingTolerance;
-  const double tol = rel * sliding_torque(result, request);
+  const double tol = kFreeRollingTolerance * sliding_torque(result, request);
   const double lo = 1 - kFreeRollingSpan, hi = 1 + kFreeRollingSpan;
   const bool started = ws.spin && ws.spin->ratio > lo && ws.spin->ratio < hi;
   double a = started ? ws.spin->ratio : 1.0;
@@ -73,7 +77,7 @@ void solve_free_rolling(const ContactModel& model, ContactResult& result, const 
   if (std::abs(fa) <= tol) return finish(a);
   // The first step: Newton's with the slope the last search ended with, else a probe of kFirstStep.
   double dir = (fa > 0) == (falls < 0) ? 1.0 : -1.0, b = a, fb = fa;
-  double h = known != 0 ? std::clamp(std::abs(fa / known), kSlopeBase, kFreeRollingSpan) : kFirstStep;
+  double h = known != 0 ? std::clamp(std::abs(fa / known), kSlopeBase, kNewtonStep) : kFirstStep;
   std::string seen = fmt::format("{:.4g} N m at omega r0 / V = {:.6f}", fa, a);
   bool turned = false, bracketed = false;
   for (int step = 0; step < kGrowSteps && !bracketed; ++step) {
@@ -83,13 +87,13 @@ void solve_free_rolling(const ContactModel& model, ContactResult& result, const 
     if (std::abs(fb) <= tol) return finish(b);
     if ((fb > 0) != (fa > 0)) {
       bracketed = true;
-    } else if (std::abs(fb) >= std::abs(fa) && !turned) {  // the wrong way: from a the other way
+    } else if (std::abs(fb) >= std::abs(fa) && !turned && step == 0) {  // the wrong way: from a the other way
       dir = -dir;
       turned = true;
     } else {
       if (b == lo || b == hi) break;
       const double ahead = -fb * (b - a) / (fb - fa) * dir;  // the secant's distance to the root, along dir
-      h = ahead > 0 ? std::clamp(ahead, kSlopeBase, 4 * h) : 4 * h;
+      h = ahead > 0 ? std::clamp(kOvershoot * ahead, kSlopeBase, 4 * h) : 4 * h;
       a = b;
       fa = fb;
     }
