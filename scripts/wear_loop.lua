@@ -290,7 +290,7 @@ local function sweep_keys(ws, g, o, warm)
   if c.creepage then k.creepage = c.creepage
   else
     if c.radius then k.yaw_rate = c.V / c.radius end
-    k.free_rolling = o.spin ~= "nominal" or nil  -- the balanced spin; "nominal": omega = V / r0
+    k.free_rolling = o.spin == "free" or nil  -- the balanced spin; "nominal" (default): omega = V / r0
   end
   -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group
   -- (the curving cases: 5 on one side of y = 0, one chain of 4 after the centre) with those starts (`warm`) in
@@ -568,8 +568,9 @@ end
 -- M.generated_cases' key `early`).
 -- o = {step = m (the largest wheel depth of the step), smooth = m (the smoothing's standard deviation), wear = {...}
 -- (the wear model's keys), method =, rolling_tolerance = (the exact solver's; default M.ROLLING_TOLERANCE), spin =
--- "free" (default: each case with kinematics rolls at the omega that balances its axle torque, free_rolling) |
--- "nominal" (omega = V / r0; cases with prescribed creepages keep them either way),
+-- "nominal" (default: omega = V / r0) | "free" (each case with kinematics rolls at the omega that balances its axle
+-- torque, free_rolling; its search still fails on some worn flanges: docs/guide/wear.md), cases with prescribed
+-- creepages keep them either way,
 -- threads =, chain =, rail_passes = (passages of the wheelset over a rail
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =
 -- "heun" (default: the rates at the start and at the profiles an Euler step gives, averaged -- second order in the

@@ -10,7 +10,7 @@
 --     wheels 0.1 mm apart in radius, alike contacts (f11 equal), omega = V (r_L + r_R) / (r_L^2 + r_R^2);
 --   - a hollow tread rolled at V / r0 gets a longitudinal creepage and creep force on both wheels that free rolling
 --     takes away (by the mirror symmetry, each wheel's force vanishes), and with it most of the wear;
---   - the wear loop's cases roll free unless spin = "nominal" (each case against ws:contact with the loop's keys);
+--   - the wear loop's cases roll free with spin = "free", at V / r0 with "nominal" (each case against ws:contact with the loop's keys);
 --   - bad input: free_rolling with omega, with creepage, in ws:wheel, with sensitivity.
 local check = require "wrc.check"
 
@@ -147,7 +147,7 @@ do
   check.ok(vf < 0.1 * vn, ("hollow: wear volume free %.3g, at V / r0 %.3g m^3/m"):format(vf, vn))
 end
 
--- 5. The wear loop: free by default, nominal on request; a case's rolling is ws:contact's at its equilibrium.
+-- 5. The wear loop: free or nominal as asked; a case's rolling is ws:contact's at its equilibrium.
 do
   local loop = require "wrc.wear_loop"
   local st = loop.initial{wheel = wheel, rail = rail, wheelset = {grid = 0.5e-3}}
