@@ -412,9 +412,7 @@ WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWo
                         std::optional<double> start, const std::optional<RollingRequest>& rolling,
                         const std::optional<WheelHint>& hint) {
   c.validate("wheel", model.options().check_magnitudes);
-  if (rolling) rolling->validate("wheel", model.options().check_magnitudes);
-  if (rolling && model.options().check_magnitudes)
-    rolling->check_kinematics("wheel", model.geometry().track->params.radius);
+  if (rolling) rolling->validate("wheel", model.options().check_magnitudes, model.geometry().track->params.radius);
   opt.validate("wheel");
   WheelResult res;
   res.side = c.side;

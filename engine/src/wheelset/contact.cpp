@@ -217,9 +217,7 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
 // evaluate_contact, with the predictor's load when given: locate, then each wheel's areas.
 ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorkspace& ws, const ContactRequest& request,
                        const VerticalLoad* load) {
-  request.validate(model.options().check_magnitudes);
-  if (request.rolling && model.options().check_magnitudes)
-    request.rolling->check_kinematics("contact", model.geometry().track->params.radius);
+  request.validate(model.options().check_magnitudes, model.geometry().track->params.radius);
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);
@@ -285,8 +283,8 @@ ContactRequest read_contact_request(OptionReader& r) {
   return req;
 }
 
-void ContactRequest::validate(bool plausible) const {
-  if (rolling) rolling->validate("contact", plausible);
+void ContactRequest::validate(bool plausible, double r0) const {
+  if (rolling) rolling->validate("contact", plausible, r0);
   if (!(max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", max_penetration);
   if (!(tolerance >= 0 && tolerance <= 1e-2))
     fail("contact: tolerance = {} must be in [0, 1e-2] (relative; 0: the model's)", tolerance);
