@@ -10,11 +10,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
 #include <deque>
-#include <thread>
 
 namespace wrc::python {
 namespace {
@@ -44,47 +40,6 @@ int threads_argument(py::handle v, const char* context) {
     r.finish();
     return o.threads;
   });
-}
-
-// Runs the batch on a thread of its own while this one, without the GIL, wakes every 50 ms to let Python handle
-// signals: on KeyboardInterrupt the elements not begun are skipped, the run ends and the exception propagates.
-api::BatchRun run_interruptible(const Wheelset& model, const api::BatchInput& input, std::deque<FieldRecorder>& trees,
-                                int threads) {
-  std::atomic<bool> stop{false};
-  api::BatchRun run;
-  std::exception_ptr error;
-  bool done = false, interrupted = false;
-  std::mutex mutex;
-  std::condition_variable finished;
-  {
-    py::gil_scoped_release release;
-    std::thread runner([&] {
-      try {
-        run = api::run_batch(model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
-      } catch (...) {
-        error = std::current_exception();
-      }
-      std::lock_guard lock(mutex);
-      done = true;
-      finished.notify_all();
-    });
-    std::unique_lock lock(mutex);
-    while (!finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) {
-      if (interrupted) continue;
-      lock.unlock();
-      {
-        py::gil_scoped_acquire gil;
-        if (PyErr_CheckSignals() != 0) interrupted = true;  // the exception stays set for this thread
-      }
-      if (interrupted) stop = true;
-      lock.lock();
-    }
-    lock.unlock();
-    runner.join();
-  }
-  if (interrupted) throw py::error_already_set();
-  if (error) std::rethrow_exception(error);
-  return run;
 }
 
 // An element's exception as a one-by-one call raises it, with .index (its index into the batch).
@@ -129,7 +84,10 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
   }
 
   std::deque<FieldRecorder> trees(input.count);
-  const api::BatchRun run = run_interruptible(*model, input, trees, threads);
+  api::BatchRun run;  // Ctrl-C: the elements not begun are skipped, KeyboardInterrupt raised, the results dropped
+  run_interruptible([&](const std::atomic<bool>& stop) {
+    run = api::run_batch(*model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
+  });
 
   // The same error for every element is the call's (a misspelt key, a value of the wrong kind): raised.
   const auto& el = run.elements;
