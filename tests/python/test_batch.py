@@ -194,11 +194,21 @@ def test_bad_input(ws):
     with pytest.raises(TypeError, match="complex"):
         ws.rigid(y=np.array([1j]))
     # a misspelt key fails every element alike: raised, naming the closest key as a one-by-one call does
+    # once, with how many elements fail so and the first one's index (.index, as the recorded errors have)
     with pytest.raises(wrc.OptionError) as batch:
         ws.rigid(y=[0.0, 1e-3], yaww=0.0)
     with pytest.raises(wrc.OptionError) as alone:
         ws.rigid(y=0.0, yaww=0.0)
-    assert str(batch.value) == str(alone.value) and "yaw" in str(alone.value)
+    assert "yaw" in str(alone.value)
+    assert str(batch.value) == f"{alone.value} (every element of the batch fails so: all 2, the first at index (0,))"
+    assert batch.value.index == (0,)
+    with pytest.raises(wrc.OptionError, match=re.escape("'Fz' must be finite, got NaN (every element of the batch "
+                                                        "fails so: all 6, the first at index (0, 0))")) as e:
+        ws.wheel(side="left", y=np.zeros((2, 3)), Fz=np.nan)
+    assert e.value.index == (0, 0)
+    # the same bad value in some elements only is theirs: recorded, the others solved
+    b = ws.wheel(side="left", y=np.zeros(3), Fz=[np.nan, 100e3, np.nan])
+    assert np.array_equal(b.ok, [False, True, False]) and [x.index for x in b.errors] == [(0,), (2,)]
     # threads= is read as every call reads it (a sweep's, a geometry table's): a whole number in 0..256, of any
     # Python or numpy kind; anything else is named with its value.
     for bad, said in ((-1, "got -1"), (257, "got 257"), (10**30, "got 1e+30"), (1.5, "got 1.5"), ("2", "got str"),

@@ -89,12 +89,27 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
     run = api::run_batch(*model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
   });
 
-  // The same error for every element is the call's (a misspelt key, a value of the wrong kind): raised.
+  // The same bad input for every element is the call's (a misspelt key, a value of the wrong kind, a shared value out
+  // of range): the input is wrong as a whole, so it is raised once, as the one-by-one call raises it, with the count
+  // and the first element, rather than recorded as n copies of one error. Anything else is an element's, recorded.
   const auto& el = run.elements;
+  const py::object unravel = py::module_::import("numpy").attr("unravel_index");
+  const auto index_of = [&](std::size_t i) {
+    py::list plain;
+    for (auto n : py::tuple(unravel(i, shape))) plain.append(n.cast<long long>());
+    return py::tuple(plain);
+  };
   if (!el.empty() && std::all_of(el.begin(), el.end(), [&](const api::BatchElement& e) {
         return e.status == api::BatchStatus::failed && e.input && e.message == el.front().message;
-      }))
-    throw OptionFailure(el.front().message);
+      })) {
+    const py::tuple first = index_of(0);
+    py::object x = error_class("OptionError")(fmt::format("{} (every element of the batch fails so: all {}, the first "
+                                                          "at index {})", el.front().message, el.size(),
+                                                          py::repr(first).cast<std::string>()));
+    x.attr("index") = first;
+    PyErr_SetObject(error_class("OptionError").ptr(), x.ptr());
+    throw py::error_already_set();
+  }
 
   // The results stay in the engine's form (batch_fields.hpp): fields are stacked and items made when first read.
   auto kept = std::make_shared<BatchTrees>();
@@ -102,17 +117,13 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
   for (FieldRecorder& t : trees) kept->records.push_back(t.take());
   std::vector<bool> present(el.size());
   py::list errors;
-  const py::object unravel = py::module_::import("numpy").attr("unravel_index");
   for (std::size_t i = 0; i < el.size(); ++i) {
     present[i] = el[i].status == api::BatchStatus::done;
     if (present[i]) continue;
     FieldRecord& record = kept->records[i];
     py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(record.root()) : py::none();
     record = FieldRecord();  // not in the batch's fields: its memory back now
-    py::tuple index = py::tuple(unravel(i, shape));
-    py::list plain;
-    for (auto n : index) plain.append(n.cast<long long>());
-    errors.append(element_error(el[i], result, py::tuple(plain)));
+    errors.append(element_error(el[i], result, index_of(i)));
   }
   const py::object nodes = batch_nodes(std::move(kept), present);
   py::object b = batch_module().attr("Batch")(operation, shape, nodes, errors, run.threads, run.seconds);
