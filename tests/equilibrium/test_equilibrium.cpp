@@ -17,6 +17,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -274,6 +275,57 @@ TEST_CASE("sweep: the plan cuts the cases into chunks that start cold, and any s
                   ref.elastic[static_cast<std::size_t>(cut.chunks[3].solve[0])]);
   CHECK_THROWS_WITH_AS(run_sweep(model, cut, {8}, o, make_workspace), doctest::Contains("chunk 9 does not exist"), Error);
   CHECK_THROWS_WITH_AS(run_sweep(model, cut, {1, 1}, o, make_workspace), doctest::Contains("listed twice"), Error);
+}
+
+TEST_CASE("sweep: the caller's stop ends it between cases and it throws, naming the cases solved") {
+  // Ctrl-C in a front end: the flag is set from the progress callback after the 3rd case here. On one thread the
+  // cases follow one another, so exactly 3 of the 10 are solved whatever their times; on two each worker finishes
+  // the case it is solving, so 3 or 4. A flag that stays false changes nothing.
+  const ContactModel& model = synthetic_model();
+  const std::vector<double> ys{-4e-3, -2e-3, 0.0, 1e-3, 3e-3};
+  const std::vector<double> yaws{0.0, 0.01};
+  auto make_workspace = [&] { return std::make_unique<ContactWorkspace>(model); };
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    std::atomic<bool> stop{false};
+    SweepOptions o;
+    o.threads = threads;
+    o.Q = kQ;
+    o.stop = &stop;
+    int reported = 0;
+    o.progress = [&](int done, int, int) {
+      reported = done;
+      if (done == 3) stop = true;
+    };
+    try {
+      run_sweep(model, ys, yaws, o, make_workspace);
+      FAIL("a stopped sweep returned");
+    } catch (const Error& e) {
+      const std::string said = e.what();
+      CHECK(said == fmt::format("sweep: stopped by its caller after {} of 10 cases (the others were not begun)",
+                                reported));
+      CHECK(reported >= 3);
+      CHECK(reported <= 2 + threads);
+    }
+    stop = false;
+    o.progress = {};
+    const SweepResult whole = run_sweep(model, ys, yaws, o, make_workspace);
+    o.stop = nullptr;
+    const SweepResult plain = run_sweep(model, ys, yaws, o, make_workspace);
+    REQUIRE(whole.elastic.size() == 10);
+    for (std::size_t c = 0; c < 10; ++c) {
+      CHECK(whole.elastic[c].converged);
+      CHECK(whole.elastic[c].z == plain.elastic[c].z);
+      CHECK(whole.elastic[c].roll == plain.elastic[c].roll);
+    }
+  }
+  // set before it begins: no case is solved
+  std::atomic<bool> stop{true};
+  SweepOptions o;
+  o.Q = kQ;
+  o.stop = &stop;
+  CHECK_THROWS_WITH_AS(run_sweep(model, ys, yaws, o, make_workspace),
+                       "sweep: stopped by its caller after 0 of 10 cases (the others were not begun)", Error);
 }
 
 TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on") {
