@@ -121,9 +121,9 @@ void DenseActiveFactor::factorise_ldlt() {
     fail("{}: the influence matrix of {} active elements could not be factorised", context_, m_);
 }
 
-// The block to m x m, its first `columns` columns' rows [column, rows) (their lower triangle) kept. Columns move to
-// the larger stride from the last one down: column c's new place starts at c m + c >= c capacity_ + c, beyond every
-// column not yet moved, and memmove allows it to overlap its own old place.
+// The block to m x m, rows [c, rows) of each column c < `columns` kept (their lower triangle). Columns move to the
+// larger stride from the last one down: column c's new place, from c m + c on, lies beyond the columns not yet moved
+// (they end before c capacity_), and memmove allows it to overlap its own old place.
 void DenseActiveFactor::grow(int m, int rows, int columns) {
   const std::size_t bytes = sizeof(double) * static_cast<std::size_t>(m) * m;
   auto* grown = static_cast<double*>(std::realloc(block_.get(), bytes));
