@@ -277,4 +277,25 @@ TEST_CASE("dense solver = the active-set iteration with a fresh factorisation at
     MESSAGE("warm starts on 40 random patches (", lost_and_gained, " losing and gaining elements, ", outgrown,
             " sets beyond every earlier one): max |dp| / pmax = ", worst);
   }
+  SUBCASE("a warm start wholly beside the contact (its support turns tensile): the cold solve's solution") {
+    // A start shifted too far (a pose that jumped) can lie where h < 0 throughout: every element of it leaves at
+    // the first iteration; the solver goes on from the cold start {h > 0} rather than stopping with an empty set.
+    const NormalCase c = paraboloid_case(1 / 0.9, 3 / 0.9, 15e-6, 0.2e-3);
+    const Grid& g = c.grid;
+    Reference cold = fresh_active_set(c, NormalLoad::penetration());
+    ++cold.iterations;  // the start's own iteration, all of it dropped
+    for (int width : {1, 2}) {  // a corner element, a 2 x 2 corner block
+      CAPTURE(width);
+      std::vector<double> start(g.size(), 0.0);
+      for (int j = 0; j < width; ++j)
+        for (int i = 0; i < width; ++i) {
+          REQUIRE(c.h[g.index(i, j)] < 0);
+          start[g.index(i, j)] = 1e8;
+        }
+      NormalOptions o;
+      o.initial_pressure = start;
+      MESSAGE("warm start beside the contact (", width, " x ", width, "): max |dp| / pmax = ",
+              check_same(solve_normal_dense(steel, g, c.h, NormalLoad::penetration(), o), cold));
+    }
+  }
 }
