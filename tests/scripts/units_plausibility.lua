@@ -90,6 +90,24 @@ refused(function() ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0,
         "phi", "100", "1/m", "a spin creepage of 100 1/m")
 check.ok(ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = -1.9}}.left.force.z > 0,
          "a flange's spin, -1.9 1/m, passes")
+-- Creepages in percent (a creep curve's 2 % given as xi = 2, 20 % lateral as eta = 20) were solved to full sliding,
+-- |F| = mu N, like any creepage beyond saturation. A creepage is a slip velocity over V: |xi| = 1 is a locked wheel
+-- (omega = 0), and the bound is the one of omega, 0 .. 2 times pure rolling, so xi and eta beyond 1 are refused.
+local creep_bound = 1  -- omega r0 / V = 1 - xi in [0, 2]
+for _, k in ipairs{{"xi", 2}, {"xi", -5}, {"eta", 20}} do
+  local err = check.fails(function() ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {[k[1]] = k[2]}} end,
+                          ("%s = %g is implausible"):format(k[1], k[2]), k[1] .. " in percent")
+  check.ok(err:find("is it in another unit?", 1, true) and err:find("check_setup = false", 1, true), err)
+end
+local e_xi = check.fails(function() ws:wheel{side = "left", y = 0, Fz = 100e3, mu = 0.3, creepage = {xi = 2}} end,
+                         "xi = 2 is implausible", "ws:wheel, xi in percent")
+check.ok(e_xi:find(("0 .. %g)"):format(creep_bound), 1, true) and e_xi:find("2 % is xi = 0.02", 1, true), e_xi)
+for _, k in ipairs{{xi = creep_bound}, {xi = -creep_bound}, {eta = 0.3}, {xi = 0.02, eta = -0.01}} do
+  check.ok(ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = k}.left.force.z > 0,
+           "a locked wheel, one spinning at twice rolling, a 0.3 rad yaw's lateral creepage pass")
+end
+check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 2}}.left.force.z > 0,
+         "check_setup = false: xi = 2 is solved")
 check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = 100}}.left.force.z > 0,
          "check_setup = false: phi = 100 1/m is solved")
 

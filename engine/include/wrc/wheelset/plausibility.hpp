@@ -46,6 +46,11 @@ inline constexpr Plausible kLateralVelocity{"a wheelset's lateral velocity", "m/
 // The axle's angular velocity against pure rolling at r0, omega r0 / V: 1 - xi, within 0 (locked, xi = 1) .. 2 (the
 // wheel's surface twice as fast as the train, xi = -1). Given in rpm it is 9.55 times the rad/s.
 inline constexpr double kMaxSpinRatio = 2;
+// A prescribed longitudinal or lateral creepage: the same bound, |xi| <= kMaxSpinRatio - 1 (a locked wheel, or one
+// turning twice as fast as it rolls), and |eta| likewise (a wheelset sliding sideways as fast as it runs, 45 deg of
+// yaw). Creep curves are measured to a few percent of creepage: xi = 2 is 2 % given as a percentage.
+inline constexpr Plausible kCreepage{"a creepage", "", 0, kMaxSpinRatio - 1,
+                                     "2 % is xi = 0.02"};
 // The slip velocities of CONTACT's falling friction laws (s1, s2): wheel-rail slip velocities are mm/s to a few m/s,
 // and CONTACT takes them in mm/s, where wrc takes m/s.
 inline constexpr Plausible kFrictionVelocity{"a friction law's slip velocity", "m/s", 0, 10,
