@@ -111,6 +111,24 @@ check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 2}}.left.f
 check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = 100}}.left.force.z > 0,
          "check_setup = false: phi = 100 1/m is solved")
 
+-- A sweep's positions in mm or degrees (y = {0, 8} for 0 .. 8 mm, yaw = {0, 1} for 1 deg) gave a table whose rows past
+-- the first were failed cases with Y/Q = 0: refused before any case is solved, naming the value, with the limit of the
+-- one-case call (ws:equilibrium's message at the same y, here read from that call).
+local function limit_message(o)
+  local _, err = pcall(ws.equilibrium, ws, o)
+  return tostring(err):match("(must be finite and within [^%s]+ %a+)")
+end
+for _, k in ipairs{{key = "y", cases = {y = {0, 8}}, one = {y = 8, Q = 200e3}},
+                   {key = "yaw", cases = {y = {0}, yaw = {0, 1}}, one = {y = 0, yaw = 1, Q = 200e3}}} do
+  local limit = limit_message(k.one)
+  check.ok(limit, "ws:equilibrium refuses " .. k.key .. " = 8")
+  local o = {Q = 200e3, progress = false}
+  for key, v in pairs(k.cases) do o[key] = v end
+  local err = check.fails(function() ws:sweep(o) end, "the 2nd value of " .. k.key, "ws:sweep, " .. k.key .. " in mm")
+  check.ok(err:find(limit, 1, true), "the sweep's limit is the one-case call's: " .. err)
+end
+check.ok(#ws:sweep{y = {0, 8e-3}, yaw = {0, math.rad(1)}, Q = 200e3, progress = false} == 4, "y = 8 mm and 1 deg pass")
+
 -- Realistic values pass: a light tram axle (40 kN) and a heavy-haul one (350 kN), a worn small wheel and a large one,
 -- 300 km/h.
 check.ok(ws:equilibrium{y = 0, Q = 40e3}.converged, "Q = 40 kN")
