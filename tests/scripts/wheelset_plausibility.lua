@@ -105,6 +105,11 @@ check.near(rail_m:bounds().y_max - rail_m:bounds().y_min, 73.57, 0.01, "a 73 m w
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail_m} end, "are its units right", "a 73 m wide rail")
 local wheel_m = wrc.profile.load(wheel_mm, {kind = "wheel", units = "m"})
 check.fails(function() wrc.wheelset{wheel = wheel_m, rail = rail} end, "are its units right", "a 130 m wide wheel")
+-- Points in mm (wrc.profile.points takes metres, as every array of the API): the message names them, not only a file.
+local yw, zw = wheel:points()
+for i = 1, #yw do yw[i], zw[i] = yw[i] * 1e3, zw[i] * 1e3 end
+check.fails(function() wrc.wheelset{wheel = wrc.profile.points{kind = "wheel", y = yw, z = zw}, rail = rail} end,
+            "points given in mm", "a wheel's points in mm")
 check.ok(wrc.wheelset{wheel = wrc.profile.load(wheel_mm, {kind = "wheel"}), rail = wrc.profile.load(rail_mm, {kind = "rail"}),
                       grid = 2e-3}, "the same files in mm build")
 

@@ -44,7 +44,7 @@ void check_extent(const Profile& p, int side) {
   const char* what = wheel ? "a wheel profile (S1002: 130 mm)" : "a rail head (60E1: 73 mm)";
   if (width > w.hi || height > h.hi)
     fail("wrc.wheelset: {} is {:.4g} mm wide and {:.4g} mm tall; {} is at most {:.0f} mm wide and {:.0f} mm tall: "
-         "are its units right (a file in mm read with units = \"m\")?", describe_profile(p, side), width * 1e3,
+         "are its units right? wrc takes metres (points given in mm, or a file in mm read with units = \"m\")", describe_profile(p, side), width * 1e3,
          height * 1e3, what, w.hi * 1e3, h.hi * 1e3);
   if (width < w.lo)
     fail("wrc.wheelset: {} is {:.4g} mm wide; {} is at least {:.0f} mm wide: are its units right (a file in metres "
