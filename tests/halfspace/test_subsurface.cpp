@@ -544,6 +544,9 @@ TEST_CASE("subsurface: bad input names what is wrong") {
   r2 = rq;
   r2.shear_yield = 0;
   CHECK(message({g, p}, r2).find("shear_yield = 0") != std::string::npos);
+  r2.shear_yield = 300;  // ER7's k (EN 13262: ReH 520 MPa / sqrt 3) in MPa
+  CHECK(message({g, p}, r2).find("shear_yield = 300 Pa must be in [1e+06, 1e+10] Pa") != std::string::npos);
+  CHECK(message({g, p}, r2).find("is it in MPa?") != std::string::npos);
   r2 = rq;
   r2.z.assign(kMaxSubsurfaceDepths, 1e-4);
   const Grid big = Grid::square(100, 100, 1e-4);

@@ -129,6 +129,27 @@ for _, k in ipairs{{key = "y", cases = {y = {0, 8}}, one = {y = 8, Q = 200e3}},
 end
 check.ok(#ws:sweep{y = {0, 8e-3}, yaw = {0, math.rad(1)}, Q = 200e3, progress = false} == 4, "y = 8 mm and 1 deg pass")
 
+-- The shear yield stress k in MPa: Ekberg's FI_surf = mu - 2 pi a b k / (3 Fz) is then the traction coefficient
+-- itself, surface fatigue predicted at any creepage; the shakedown point's p0 / k a million times too large. Wheel
+-- steel ER7's k = ReH / sqrt 3 = 520 MPa / sqrt 3 (EN 13262) passes; its number of MPa is refused, for both.
+local k_er7 = 520e6 / math.sqrt(3)
+local rolling = {side = "left", y = 0, Fz = 100e3, mu = 0.3, creepage = {xi = 2e-3}}
+local function with(extra)
+  local o = {}
+  for key, v in pairs(rolling) do o[key] = v end
+  for key, v in pairs(extra) do o[key] = v end
+  return o
+end
+local k_mpa = tonumber(("%.0f"):format(k_er7 / 1e6))
+check.fails(function() ws:wheel(with{fatigue = {shear_yield = k_mpa}}) end,
+            ("shear_yield = %g Pa must be in"):format(k_mpa), "fatigue's shear_yield in MPa")
+local ok_w = ws:wheel(with{fatigue = {shear_yield = k_er7}})
+local patch = ok_w.patches[1]
+check.ok(patch.fi_surf < patch.traction_coefficient, "ER7's k in Pa lowers FI_surf below the traction coefficient")
+check.fails(function() patch:subsurface{z = {1e-3}, shear_yield = k_mpa} end, "is it in MPa?",
+            "the shakedown point's shear_yield in MPa")
+check.ok(patch:subsurface{z = {1e-3}, shear_yield = k_er7}.shakedown.load_factor > 0, "ER7's k passes p:subsurface")
+
 -- Realistic values pass: a light tram axle (40 kN) and a heavy-haul one (350 kN), a worn small wheel and a large one,
 -- 300 km/h.
 check.ok(ws:equilibrium{y = 0, Q = 40e3}.converged, "Q = 40 kN")
