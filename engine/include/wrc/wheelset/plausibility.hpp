@@ -17,7 +17,8 @@ namespace wrc {
 // reversed y), a "rail" that does not fall by 0.1 mm on the field side of its highest point or rises again there by
 // more than 1 mm (a wheel profile: its tread rises toward the field side), a wheel rising more than 10 mm above its
 // tape circle (upside down), flanges that do not fit between the rails (back_to_back + both flange thicknesses >=
-// gauge) or leave more than 70 mm of play (gauge and back_to_back of different tracks).
+// gauge) or leave more than 70 mm of play (gauge and back_to_back of different tracks), a gauge of flanged wheels
+// measured outside 10 .. 25 mm below the rails' tops (gauge_depth; EN 13848-1: 14 mm).
 void check_setup(const Track& track);
 
 // The magnitudes a railway wheelset's inputs have (SI units). A value outside was almost surely given in another unit
