@@ -334,6 +334,9 @@ void check_input(const Material& material, const SurfaceLoad& load, const Subsur
   for (std::size_t d = 0; d < r.z.size(); ++d)
     if (!(std::isfinite(r.z[d]) && r.z[d] > 0))
       fail("subsurface: {} (= {}) must be a finite depth > 0 below the surface (m)", value_at(d, "z"), r.z[d]);
+    else if (r.z[d] > kMaxSubsurfaceDepth)
+      fail("subsurface: {} (= {} m) is deeper than {:g} m, below any wheel rim or rail head: is it in mm? (1 mm is "
+           "z = 1e-3)", value_at(d, "z"), r.z[d], kMaxSubsurfaceDepth);
   if (r.fields && static_cast<double>(r.z.size()) * static_cast<double>(N) * 11 > kMaxSubsurfaceFieldValues)
     fail("subsurface: {} depths of {} elements make {} field values, more than {} (ask for fields = false: the "
          "maxima only)", r.z.size(), N, r.z.size() * N * 11, kMaxSubsurfaceFieldValues);
