@@ -4,6 +4,8 @@
 #include "wrc/core/parallel.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
+#include "pose_solve.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,12 +14,14 @@
 namespace wrc {
 namespace {
 
+// Every case's position within the pose solvers' limits, before any is solved: a y in mm or a yaw in degrees made
+// every case but y = 0 a failed row (Y/Q = 0) rather than an error.
 void check_input(const std::vector<double>& ys, const std::vector<double>& yaws) {
   if (ys.empty() || yaws.empty()) fail("sweep: needs at least one y and one yaw");
-  for (double y : ys)
-    if (!std::isfinite(y)) fail("sweep: y values must be finite");
-  for (double a : yaws)
-    if (!std::isfinite(a)) fail("sweep: yaw values must be finite");
+  for (std::size_t k = 0; k < ys.size(); ++k)
+    pose_solve::check_position(ys[k], 0, fmt::format("sweep: {}", value_at(k, "y")));
+  for (std::size_t k = 0; k < yaws.size(); ++k)
+    pose_solve::check_position(0, yaws[k], fmt::format("sweep: {}", value_at(k, "yaw")));
 }
 
 // Cuts the cases `report` (in the order they are solved) into pieces of at most `chain`; the first piece starts

@@ -5,6 +5,7 @@
 #include "wrc/profile/orientation.hpp"
 #include "wrc/profile/reader.hpp"
 #include "wrc/profile/spline.hpp"
+#include "wrc/profile/units.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -69,16 +70,13 @@ std::string file_extension(const std::string& path) {
 }
 
 double parse_units(const std::string& text, const std::string& context) {
-  if (text == "mm") return 1e-3;
-  if (text == "cm") return 1e-2;
-  if (text == "m") return 1.0;
-  if (text == "in") return 0.0254;
+  if (const double named = length_unit(text); named > 0) return named;
   double v = 0;
   const char* end = text.data() + text.size();
   const auto r = std::from_chars(text.data(), end, v);
   if (r.ec == std::errc() && r.ptr == end && std::isfinite(v) && v > 0) return v;
-  fail("{}: units must be \"mm\", \"cm\", \"m\", \"in\" or a positive number of metres per file unit, got \"{}\"",
-       context, text);
+  fail("{}: units must be {} or a positive number of metres per file unit, got \"{}\"", context, length_unit_names(),
+       text);
 }
 
 namespace {

@@ -754,7 +754,11 @@ void RollingRequest::validate(std::string_view context, bool plausible, double r
   for (const auto& side : friction_profile)
     if (side)
       for (double mu : side->mu) check_plausible(context, "friction_profile's mu", mu, kFrictionCoefficient);
-  if (creepage) check_plausible(context, "phi", creepage->phi, kSpinCreepage);
+  if (creepage) {
+    check_plausible(context, "xi", creepage->xi, kCreepage);
+    check_plausible(context, "eta", creepage->eta, kCreepage);
+    check_plausible(context, "phi", creepage->phi, kSpinCreepage);
+  }
   if (friction.law == halfspace::FrictionLaw::polach)  // s_1 = ln 2 / B (halfspace::Friction::polach)
     check_plausible(context, "B", std::numbers::ln2 / friction.velocity[0], kPolachDecay);
   if (friction.law == halfspace::FrictionLaw::coulomb || friction.law == halfspace::FrictionLaw::polach) return;
