@@ -186,7 +186,8 @@ std::pair<double, std::size_t> turn_back(const std::vector<Row>& rows, double Ro
 }
 
 double span(const std::vector<Row>& rows, double Row::*v) {
-  const auto [a, b] = std::minmax_element(rows.begin(), rows.end(), [&](const Row& p, const Row& q) { return p.*v < q.*v; });
+  const auto less = [&](const Row& p, const Row& q) { return p.*v < q.*v; };
+  const auto [a, b] = std::minmax_element(rows.begin(), rows.end(), less);
   return (*b).*v - (*a).*v;
 }
 
@@ -211,7 +212,8 @@ void refuse_swapped(const std::vector<Row>& rows, const Header& h) {
   const auto [x_turn, at] = turn_back(rows, &Row::x);
   const double y_turn = turn_back(rows, &Row::y).first;
   if (!(sy > 1.5 * sx && x_turn > 0.2 * sx && y_turn < 0.05 * sy)) return;
-  const std::string columns = fmt::format("column {} as X (lateral) and column {} as Y (vertical)", h.col_x + 1, h.col_y + 1);
+  const std::string columns =
+      fmt::format("column {} as X (lateral) and column {} as Y (vertical)", h.col_x + 1, h.col_y + 1);
   const std::string declared = h.column_def ? fmt::format("ColumnDef={} takes {}", h.column_def_text, columns)
                                             : fmt::format("without a ColumnDef line, the reader takes {}", columns);
   fail_at(h.column_def ? h.column_def_line : rows.front().line,

@@ -16,11 +16,11 @@ namespace {
 constexpr double kHeadDepth = 0.014;   // m
 constexpr double kLeanOffset = 0.003;  // m
 // The head's tilt: the angle that, undone, leaves the head most nearly symmetric, the middles of its width at every
-// mm from 1 to kHeadDepth below its top on one vertical line. A head canted 1:40 and mirrored, whether read from a file
-// or written analytically, is symmetric within a few hundredths of a mm so (60E1); a worn gauge face moves only the
-// deeper middles, which no tilt puts back in line with the crown's, or only with an inward tilt (the crown's middle then
-// follows the worn head's). The tilt must be outward beyond 1:100 (well below the cant of any track: 1:40, 1:30, 1:20),
-// and symmetric within kSymmetry, to settle that a head leaning outward is mirrored.
+// mm from 1 to kHeadDepth below its top on one vertical line. A 60E1 head canted 1:40 and mirrored is found tilted
+// 1:40 outward and symmetric so within 0.01 mm (tests/scripts/profile_orientation_files.lua); a worn gauge face
+// moves the deeper middles, which no tilt puts back in line with the crown's, or only with an inward tilt (the
+// crown's middle then follows the worn head's). The tilt must be outward beyond 1:100 (well below the cant of any
+// track: 1:40, 1:30, 1:20), and symmetric within kSymmetry, to settle that a head leaning outward is mirrored.
 constexpr double kMaxTilt = 0.1, kTiltStep = 0.0005;  // searched over +-1:10
 constexpr double kMinTilt = 0.01;
 constexpr double kSymmetry = 0.3e-3;  // m
@@ -30,7 +30,8 @@ std::optional<double> crossing(const std::vector<double>& y, const std::vector<d
                                double level) {
   for (std::size_t i = k; dir > 0 ? i + 1 < y.size() : i > 0; i = dir > 0 ? i + 1 : i - 1) {
     const std::size_t j = dir > 0 ? i + 1 : i - 1;
-    if ((z[i] - level) * (z[j] - level) <= 0 && z[i] != z[j]) return y[i] + (level - z[i]) / (z[j] - z[i]) * (y[j] - y[i]);
+    if ((z[i] - level) * (z[j] - level) <= 0 && z[i] != z[j])
+      return y[i] + (level - z[i]) / (z[j] - z[i]) * (y[j] - y[i]);
   }
   return std::nullopt;
 }
@@ -126,11 +127,11 @@ void check_rail(const Profile& p, const Reversals& rev, std::vector<std::string>
                                                   "centre on +X)");
   const auto [tilt, spread] = head_tilt(p);
   if (tilt < -kMinTilt && spread < kSymmetry)
-    fail("{}: the rail profile is mirrored: its head leans outward, toward -y (the gauge side), by two measures: its top "
-         "lies {:.1f} mm toward -y of the head's centre (the middle of its width {:.0f} mm below the top), and the head "
-         "is a symmetric one tilted outward by 1:{:.0f} (turned back by that angle, the middles of its width from 1 to "
-         "{:.0f} mm below the top lie within {:.2f} mm of one vertical line): a rail canted toward the track centre, "
-         "seen from the other side. {}",
+    fail("{}: the rail profile is mirrored: its head leans outward, toward -y (the gauge side), by two measures: its "
+         "top lies {:.1f} mm toward -y of the head's centre (the middle of its width {:.0f} mm below the top), and the "
+         "head is a symmetric one tilted outward by 1:{:.0f} (turned back by that angle, the middles of its width from "
+         "1 to {:.0f} mm below the top lie within {:.2f} mm of one vertical line): a rail canted toward the track "
+         "centre, seen from the other side. {}",
          p.source, -offset * 1e3, kHeadDepth * 1e3, -1 / tilt, kHeadDepth * 1e3, spread * 1e3, fix);
   out.push_back(fmt::format(
       "{}: the rail head's top lies {:.1f} mm toward -y (the gauge side) of the head's centre (the middle of its "
