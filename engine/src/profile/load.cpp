@@ -118,6 +118,13 @@ void refuse_detour(const std::vector<double>& y, const std::vector<double>& z, c
        rest * 1e3);
 }
 
+// The file's steps that reversed y or z (the reader's report), and the options that did.
+Reversals reversals(Reversals file, const LoadOptions& o) {
+  if (o.mirror_y) file.y.push_back("the option mirror_y = true: drop it if the profile was right without it");
+  if (o.mirror_z) file.z.push_back("the option mirror_z = true: drop it if the profile was right without it");
+  return file;
+}
+
 void apply_mirrors(std::vector<double>& y, std::vector<double>& z, const LoadOptions& o,
                    std::vector<std::string>& transforms) {
   if (o.mirror_y) {
@@ -365,7 +372,7 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
     p = smooth_profile(p, *o.smooth);
   else if (!o.polyline)
     p = default_spline(std::move(p));
-  p.warnings = orientation_warnings(p);
+  p.warnings = orientation_warnings(p, reversals(std::move(raw.reversed), o));
   return p;
 }
 
@@ -379,7 +386,7 @@ bool has_geometric_options(const LoadOptions& o) {
 Profile finish_definition(Profile made, const LoadOptions& o, const std::string& path) {
   made.source = path;
   if (has_geometric_options(o)) made = transform_profile(made, o);
-  made.warnings = orientation_warnings(made);
+  made.warnings = orientation_warnings(made, reversals({}, o));
   return made;
 }
 
