@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -240,6 +241,12 @@ std::optional<bool> Request::flag(std::string_view key) const {
 void Out::point(double y, double z, int line) {
   if (sink_->point(sink_->host, y, z, line) != 0) throw ParseError(line, "");  // the host has the reason
   ++points_;
+}
+
+void Out::reversed(int axis, const std::string& undo) {
+  // The callback exists from ABI 1.1 on: a host built before it passes a smaller sink.
+  const std::size_t end = offsetof(wrc_reader_sink, reversed) + sizeof(sink_->reversed);
+  if (sink_->struct_size >= end && sink_->reversed) sink_->reversed(sink_->host, axis, undo.c_str());
 }
 
 namespace {

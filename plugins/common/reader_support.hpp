@@ -86,6 +86,8 @@ class Out {
   void units(double metres_per_unit, const std::string& declared_by) { sink_->units(sink_->host, metres_per_unit, declared_by.c_str()); }
   void transform(const std::string& description) { sink_->transform(sink_->host, description.c_str()); }
   void metadata(const std::string& key, const std::string& value) { sink_->metadata(sink_->host, key.c_str(), value.c_str()); }
+  // A file's step that reversed axis WRC_AXIS_Y or WRC_AXIS_Z, and how to undo it; nothing for a host of ABI 1.0.
+  void reversed(int axis, const std::string& undo);
   std::size_t points() const { return points_; }
 
  private:

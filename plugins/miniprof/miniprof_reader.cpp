@@ -12,7 +12,9 @@
 // therefore looks at the shape: the head top (flange tip) is the interior extreme of Y, the profile's
 // two ends lie away from it. It reports which way it found Y pointing; the option y_axis =
 // "standard" | "reversed" overrides the detection. Engine z: rail z = Y (standard) or -Y (reversed);
-// wheel z = -Y (standard: Y = radius offset toward the flange tip) or Y (reversed).
+// wheel z = -Y (standard: Y = radius offset toward the flange tip) or Y (reversed). A file whose columns are swapped
+// (the height in the X column) is refused as such before the detection, which would find no extreme in its Y; one
+// with fewer rows than XYPoints as cut short.
 #include "reader_support.hpp"
 
 #include <algorithm>
@@ -77,6 +79,8 @@ struct Header {
   long long declared = -1;  // XYPoints, -1: not given
   int declared_line = 0, last_header_line = 0;
   bool column_def = false;
+  int column_def_line = 0;
+  std::string column_def_text;
 };
 
 // The keys that shape the reading of the points: ColumnDef and XYPoints.
@@ -92,6 +96,8 @@ void read_header_key(const std::string& key, std::string_view value, int line, H
     }
     if (!hx || !hy) fail_at(line, "ColumnDef must name the columns X and Y, got {}", quoted(value));
     h.column_def = true;
+    h.column_def_line = line;
+    h.column_def_text = std::string(value);
   } else if (key == "XYPoints") {
     const auto v = parse_double(value);
     if (!v || *v < 0 || *v != std::floor(*v) || *v > 1e8)
@@ -167,6 +173,57 @@ std::vector<Row> read_rows(const std::vector<Line>& lines, std::size_t i, const 
   return rows;
 }
 
+// How far a column's values turn back between the profile's ends: the larger overshoot of an interior extreme beyond
+// the ends' range (0 when the ends are the column's extremes, as for the lateral X), and the row of that extreme.
+std::pair<double, std::size_t> turn_back(const std::vector<Row>& rows, double Row::*v) {
+  const double lo = std::min(rows.front().*v, rows.back().*v), hi = std::max(rows.front().*v, rows.back().*v);
+  std::pair<double, std::size_t> worst{0.0, 0};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double beyond = std::max(rows[i].*v - hi, lo - rows[i].*v);
+    if (beyond > worst.first) worst = {beyond, i};
+  }
+  return worst;
+}
+
+double span(const std::vector<Row>& rows, double Row::*v) {
+  const auto less = [&](const Row& p, const Row& q) { return p.*v < q.*v; };
+  const auto [a, b] = std::minmax_element(rows.begin(), rows.end(), less);
+  return (*b).*v - (*a).*v;
+}
+
+// The ColumnDef line with the names X and Y exchanged.
+std::string exchanged(const Header& h) {
+  auto names = split_fields(h.column_def_text, ',');
+  std::swap(names[h.col_x], names[h.col_y]);
+  std::string line = "ColumnDef=";
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (c > 0) line += ',';
+    line += names[c];
+  }
+  return line;
+}
+
+// X and Y swapped (the vertical in the X column): X then turns back between the ends as a head's or a flange's height
+// does, while Y runs from end to end as a lateral coordinate does, and spans the wider range (a rail head is about 70
+// mm wide and 15-40 mm tall as measured, a wheel 130 mm wide with a 25-40 mm flange). Neither happens in a profile
+// read the right way: its X would fold back by a fifth of its width.
+void refuse_swapped(const std::vector<Row>& rows, const Header& h) {
+  const double sx = span(rows, &Row::x), sy = span(rows, &Row::y);
+  const auto [x_turn, at] = turn_back(rows, &Row::x);
+  const double y_turn = turn_back(rows, &Row::y).first;
+  if (!(sy > 1.5 * sx && x_turn > 0.2 * sx && y_turn < 0.05 * sy)) return;
+  const std::string columns =
+      fmt::format("column {} as X (lateral) and column {} as Y (vertical)", h.col_x + 1, h.col_y + 1);
+  const std::string declared = h.column_def ? fmt::format("ColumnDef={} takes {}", h.column_def_text, columns)
+                                            : fmt::format("without a ColumnDef line, the reader takes {}", columns);
+  fail_at(h.column_def ? h.column_def_line : rows.front().line,
+          "the columns look swapped: {}, but X spans {:.1f} mm and turns back between the ends ({:.1f} mm beyond them "
+          "at line {}), as a height does, while Y runs from end to end over {:.1f} mm, as a lateral coordinate does (a "
+          "rail head is about 70 mm wide, a wheel 130 mm); swap the two columns, or name them in the header as they "
+          "are ({})", declared, sx, x_turn, rows[at].line, sy,
+          h.column_def ? exchanged(h) : std::string("ColumnDef=Y,X"));
+}
+
 // Which way Y points (+1 standard, -1 reversed) and why.
 struct Orientation {
   int axis;
@@ -210,13 +267,18 @@ void parse(std::string_view data, const Request& rq, Out& out) {
   int marked = 0;
   const std::vector<Row> rows = read_rows(lines, i, h, marked);
   if (rows.empty()) fail_at(h.last_header_line, "a header but no points after it");
-  if (h.declared >= 0 && static_cast<long long>(rows.size()) != h.declared)
-    fail_at(h.declared_line, "XYPoints = {} but the file holds {} points (lines {} .. {})", h.declared, rows.size(),
-            rows.front().line, rows.back().line);
+  if (h.declared >= 0 && static_cast<long long>(rows.size()) < h.declared)
+    fail_at(h.declared_line, "XYPoints = {} but the file holds {} points (lines {} .. {}): the file is cut short "
+            "(truncated) after line {}, or XYPoints is wrong", h.declared, rows.size(), rows.front().line,
+            rows.back().line, rows.back().line);
+  if (h.declared >= 0 && static_cast<long long>(rows.size()) > h.declared)
+    fail_at(h.declared_line, "XYPoints = {} but the file holds {} points (lines {} .. {}): XYPoints is wrong, or rows "
+            "were added", h.declared, rows.size(), rows.front().line, rows.back().line);
   if (marked) out.metadata("marked_points", std::to_string(marked));
   if (rows.size() < 3)
     fail_at(rows.back().line, "only {} point{} read; a profile needs at least 3", rows.size(), rows.size() == 1 ? "" : "s");
 
+  refuse_swapped(rows, h);
   const auto [axis, why] = orientation(rows, wheel, opt.forced_axis);
   // Rails: standard Y is up (z = Y). Wheels: standard Y is the radius offset toward the flange tip (z = -Y).
   const double zsign = (wheel ? -1.0 : 1.0) * axis;

@@ -3,7 +3,9 @@
 // points `y z [weight]` with z positive DOWN. The file's processing steps are applied in their numbered
 // order: 1 point.dist.min, 2 shift.y/z, 3 rotate, 4 bound.y/z.min/max (ignored when min > max),
 // 5 mirror.y/z, 6 inversion, 7 units.len.f (= file units per metre). Then z -> -z (engine z up). A shift that moves
-// the points beyond the host's bound on a point is refused here, naming its key and line.
+// the points beyond the host's bound on a point is refused here, naming its key and line. The steps that reverse the
+// points' y or z (mirror.y, mirror.z, a rotation past a quarter turn: 180 degrees is y and z reversed) are reported to
+// the host with how to undo them, so that an orientation warning names the file's key rather than an option.
 #include "reader_support.hpp"
 #include "wrc/profile/profile.hpp"  // kMaxProfileCoordinate, the host's bound on a point
 
@@ -189,9 +191,14 @@ void check_complete(const File& f, State st, const std::vector<Line>& lines) {
   if (lines.empty()) fail_at(0, "the file is empty (no header.begin, no spline.begin)");
   if (!f.seen_header && !f.spline.begin_line)
     fail_at(0, "no header.begin, no spline.begin: the file holds only comments and blank lines");
-  if (st == State::header) fail_at(last, "the file ends inside header.begin (line {}): no header.end", f.header.begin_line);
-  if (st == State::points) fail_at(last, "the file ends inside point.begin (line {}): no point.end", f.points_begin);
-  if (st == State::spline) fail_at(last, "the file ends inside spline.begin (line {}): no spline.end", f.spline.begin_line);
+  // An open section at the end: a file cut short, even exactly at a row's end, or an end marker left out.
+  const char* cut = "the file is cut short (truncated), or the end marker is missing";
+  if (st == State::header)
+    fail_at(last, "the file ends inside header.begin (line {}): no header.end; {}", f.header.begin_line, cut);
+  if (st == State::points)
+    fail_at(last, "the file ends inside point.begin (line {}): no point.end; {}", f.points_begin, cut);
+  if (st == State::spline)
+    fail_at(last, "the file ends inside spline.begin (line {}): no spline.end; {}", f.spline.begin_line, cut);
   if (!f.seen_header) fail_at(0, "no header.begin ... header.end (it says version and type)");
   if (!f.spline.begin_line) fail_at(f.header.end_line, "no spline.begin ... spline.end after the header: no points");
   if (!f.seen_points) fail_at(f.spline.end_line, "no point.begin ... point.end in the spline section: no points");
@@ -273,6 +280,14 @@ void rotate_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
       p.y = y, p.z = z;
     }
     out.transform(fmt::format("3 {}: points rotated by {:.9g} rad about x (file frame, z down)", sk.where("rotate"), rot));
+    if (c < 0) {  // a turn past a quarter: the points' vertical direction is reversed, and their lateral one with it
+      const std::string turn = fmt::format("{} in the file, a turn by {:.6g} degrees", sk.where("rotate"),
+                                           rot * 180 / std::numbers::pi);
+      out.reversed(WRC_AXIS_Z, turn + ", which turns the points over: set rotate = 0 if they already have z down, as "
+                   "Simpack reads them");
+      out.reversed(WRC_AXIS_Y, turn + ", which mirrors the points in y as it turns them over: to turn them over alone, "
+                   "set rotate = 0 and mirror.z = 1");
+    }
   }
 }
 
@@ -297,10 +312,14 @@ void mirror_points(const Keys& sk, std::vector<Point>& pts, Out& out) {
   if (sk.flag("mirror.y")) {
     for (Point& p : pts) p.y = -p.y;
     out.transform(fmt::format("5 {}: y -> -y", sk.where("mirror.y")));
+    out.reversed(WRC_AXIS_Y, fmt::format("{} in the file: set mirror.y = 0 if the points' y already points to the field "
+                                         "side", sk.where("mirror.y")));
   }
   if (sk.flag("mirror.z")) {
     for (Point& p : pts) p.z = -p.z;
     out.transform(fmt::format("5 {}: z -> -z", sk.where("mirror.z")));
+    out.reversed(WRC_AXIS_Z, fmt::format("{} in the file: set mirror.z = 0 if the points already have z down, as "
+                                         "Simpack reads them", sk.where("mirror.z")));
   }
   if (sk.flag("inversion")) {
     std::reverse(pts.begin(), pts.end());

@@ -1,12 +1,14 @@
 // Plain text / CSV profiles: two columns `y z` (or the columns chosen by the `columns` option), in the
 // engine orientation (left-side frame, y toward the field side, z up), millimetres unless the header
-// names the unit (y_mm / y_m, as wrc's own CSV tables do) or the user passes `units`.
+// names the unit (y_mm / y_m, as wrc's own CSV tables do; z [cm], y (in): the names of `units`) or the user passes
+// `units`.
 // `#` starts a comment, and so does `!` or `%` as a line's first character (the comment lines other programs
 // write: Simpack, MiniProf, VAMPIRE, MATLAB); one optional header line before the data; fields separated by
 // commas, semicolons, or blanks (spaces/tabs), the same on every line. A first line that begins another
 // format the engine reads (header.begin, MINIPROF, WHEELPROFILE, ...) is refused naming that format's reader:
 // each of those lines is one field, and a header of one field never matches data of two or more.
 #include "reader_support.hpp"
+#include "wrc/profile/units.hpp"
 
 #include <algorithm>
 
@@ -47,14 +49,20 @@ std::string_view content(std::string_view line) {
   return !s.empty() && (s.front() == '!' || s.front() == '%') ? std::string_view() : s;
 }
 
-// Unit named by a header field ("y_mm", "z [m]"), or 0 when none.
+// Unit named by a header field, metres per unit, or 0 when none: the field's last part after '_', or within brackets
+// or parentheses ("y_mm", "z [cm]", "Y(in)"), any of the names the `units` option takes (y_in was read as mm).
 double header_unit(std::string_view h) {
-  std::string s(h);
+  std::string s(trim(h));
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  auto ends = [&](std::string_view suffix) { return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0; };
-  if (ends("_mm") || ends("[mm]") || ends("(mm)")) return 1e-3;
-  if (ends("_m") || ends("[m]") || ends("(m)")) return 1.0;
-  return 0;
+  std::string_view unit;
+  if (!s.empty() && (s.back() == ']' || s.back() == ')')) {
+    const std::size_t open = s.find_last_of(s.back() == ']' ? '[' : '(');
+    if (open == std::string::npos) return 0;
+    unit = trim(std::string_view(s).substr(open + 1, s.size() - open - 2));
+  } else if (const std::size_t under = s.find_last_of('_'); under != std::string::npos) {
+    unit = std::string_view(s).substr(under + 1);
+  }
+  return length_unit(unit);
 }
 
 void parse(std::string_view data, const Request& rq, Out& out) {

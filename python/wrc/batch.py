@@ -71,6 +71,13 @@ def split_batch(context, kwargs, batch_keys, option_error):
 _MISSING = object()
 
 
+def _nodes_from(state):
+    """The engine's results of a batch from what pickling them gave (wrc._wrc._BatchNodes.__reduce__)."""
+    from wrc import _wrc
+
+    return _wrc._batch_nodes(state)
+
+
 def _stack(got, shape):
     """A BatchNode, BatchList or array of the batch's shape from what _BatchNodes.field gives, or _MISSING when the
     field does not stack (arrays, grids, values of different kinds)."""
@@ -135,6 +142,10 @@ class BatchNode:
     def __dir__(self):
         return list(super().__dir__()) + self.keys()
 
+    def __reduce__(self):
+        # pickle and copy: the engine's results it reads (they pickle bit for bit), not the arrays made from them
+        return type(self), (self._nodes, self._shape)
+
     def __repr__(self):
         return f"<wrc batch fields, shape {self._shape}: {', '.join(self.keys())}>"
 
@@ -179,6 +190,9 @@ class BatchList:
     def to_dict(self):
         return {"count": self.count, "items": [self[k].to_dict() for k in range(self._longest)]}
 
+    def __reduce__(self):
+        return BatchList, (self._nodes, self._shape)
+
     def __repr__(self):
         return f"<wrc batch list, shape {self._shape}, longest {self._longest}>"
 
@@ -196,6 +210,9 @@ class Batch(BatchNode):
     of the batch's shape: each element's wrc.Result, None where it failed; made when first read), ``errors`` (list
     of the failed elements' exceptions, each with ``.index``, its index into the batch: wrc.Error, or
     wrc.NotConverged with ``.result``), ``threads`` (worker threads run), ``seconds`` (wall time of the solves).
+
+    A batch pickles (a process pool returns it, a file keeps it) and copies (copy.copy, copy.deepcopy): the copy
+    holds every element's result bit for bit, its errors, shape, threads and seconds.
     """
 
     def __init__(self, operation, shape, nodes, errors, threads, seconds):
@@ -221,6 +238,13 @@ class Batch(BatchNode):
 
     def __len__(self):
         return self.shape[0] if self.shape else 1
+
+    def __reduce__(self):
+        # pickle (a process pool, a file) and copy.copy / deepcopy: the engine's results -- each element's recorded
+        # result, written and read back bit for bit -- the errors (exceptions pickle with .index and .result) and the
+        # run's figures. The arrays and items read so far are not written: the copy makes them again when read.
+        state = {"threads_note": self.threads_note} if "threads_note" in self.__dict__ else None
+        return Batch, (self.operation, self.shape, self._nodes, self.errors, self.threads, self.seconds), state
 
     def __repr__(self):
         return (f"<wrc.Batch {self.operation}, shape {self.shape}, {len(self.errors)} failed, "

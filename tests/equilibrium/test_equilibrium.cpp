@@ -17,6 +17,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -276,6 +277,69 @@ TEST_CASE("sweep: the plan cuts the cases into chunks that start cold, and any s
   CHECK_THROWS_WITH_AS(run_sweep(model, cut, {1, 1}, o, make_workspace), doctest::Contains("listed twice"), Error);
 }
 
+TEST_CASE("sweep: the caller's stop ends it between cases and it throws, naming the cases solved") {
+  // Ctrl-C in a front end: the flag is set from the progress callback after the 3rd case here. On one thread the
+  // cases follow one another, so exactly 3 of the 10 are solved whatever their times; on two each worker finishes
+  // the case it is solving, so 3 or 4. A flag that stays false changes nothing.
+  const ContactModel& model = synthetic_model();
+  const std::vector<double> ys{-4e-3, -2e-3, 0.0, 1e-3, 3e-3};
+  const std::vector<double> yaws{0.0, 0.01};
+  auto make_workspace = [&] { return std::make_unique<ContactWorkspace>(model); };
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    std::atomic<bool> stop{false};
+    SweepOptions o;
+    o.threads = threads;
+    o.Q = kQ;
+    o.stop = &stop;
+    int reported = 0;
+    o.progress = [&](int done, int, int) {
+      reported = done;
+      if (done == 3) stop = true;
+    };
+    try {
+      run_sweep(model, ys, yaws, o, make_workspace);
+      FAIL("a stopped sweep returned");
+    } catch (const Error& e) {
+      const std::string said = e.what();
+      CHECK(said == fmt::format("sweep: stopped by its caller after {} of 10 cases (the others were not begun)",
+                                reported));
+      CHECK(reported >= 3);
+      CHECK(reported <= 2 + threads);
+    }
+    stop = false;
+    o.progress = {};
+    const SweepResult whole = run_sweep(model, ys, yaws, o, make_workspace);
+    o.stop = nullptr;
+    const SweepResult plain = run_sweep(model, ys, yaws, o, make_workspace);
+    REQUIRE(whole.elastic.size() == 10);
+    for (std::size_t c = 0; c < 10; ++c) {
+      CHECK(whole.elastic[c].converged);
+      CHECK(whole.elastic[c].z == plain.elastic[c].z);
+      CHECK(whole.elastic[c].roll == plain.elastic[c].roll);
+    }
+  }
+  // set before it begins: no case is solved
+  std::atomic<bool> stop{true};
+  SweepOptions o;
+  o.Q = kQ;
+  o.stop = &stop;
+  CHECK_THROWS_WITH_AS(run_sweep(model, ys, yaws, o, make_workspace),
+                       "sweep: stopped by its caller after 0 of 10 cases (the others were not begun)", Error);
+}
+
+// A search that throws at the poses beyond y = 95 mm, as a Lua strategy's error would, and searches natively elsewhere.
+class ThrowingSearch final : public PoseSearch {
+ public:
+  void search(SearchContext& ctx, int side) override {
+    if (ctx.pose().y > 0.095) fail("test strategy: no search at y = {} m", ctx.pose().y);
+    native_.search(ctx, side);
+  }
+
+ private:
+  NativeSearch native_{NativePlan{}};
+};
+
 TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on") {
   // A wheel without flange (the 1/40 tread from the tape circle outward): at y = 90 mm the left wheel has passed its
   // rail and only the right wheel's outer edge reaches the right rail's gauge corner, so no equilibrium exists (with a
@@ -287,7 +351,7 @@ TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on"
   }
   auto g = std::make_shared<GeometryModel>(
       test::make_model(make_profile(ProfileKind::wheel, wy, wz, "flangeless wheel", "test"), test::synthetic_rail(0.5e-3)));
-  g->strategy.make_search = [] { return std::make_unique<NativeSearch>(NativePlan{}); };
+  g->strategy.make_search = [] { return std::make_unique<ThrowingSearch>(); };
   ContactOptions co;
   co.element = 1e-3;
   const ContactModel model(g, halfspace::Material{2.1e11, 0.3}, co);
@@ -296,8 +360,12 @@ TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on"
   o.Q = kQ;
   int last_failed = -1;
   o.progress = [&](int, int, int failed) { last_failed = failed; };
-  // 0.09 m: no contact possible; 0.2 m: out of the accepted range (throws).
-  const SweepResult r = run_sweep(model, {0.0, 1e-3, 0.09, 0.2}, {0.0}, o, [&] { return std::make_unique<ContactWorkspace>(model); });
+  const auto workspace = [&] { return std::make_unique<ContactWorkspace>(model); };
+  // A position out of the pose solvers' range (0.2 m: 200 mm meant as mm?) is the sweep's error, before any case.
+  CHECK_THROWS_WITH_AS(run_sweep(model, {0.0, 1e-3, 0.09, 0.2}, {0.0}, o, workspace),
+                       doctest::Contains("the 4th value of y: y = 0.2 m must be finite and within"), Error);
+  // 0.09 m: no contact possible; 0.099 m: the strategy throws.
+  const SweepResult r = run_sweep(model, {0.0, 1e-3, 0.09, 0.099}, {0.0}, o, workspace);
   REQUIRE(r.elastic.size() == 4);
   CHECK(r.elastic[0].converged);
   CHECK(r.elastic[1].converged);
@@ -310,9 +378,9 @@ TEST_CASE("sweep: a case that throws or fails is recorded and the sweep goes on"
   CHECK((std::abs(r.elastic[2].residual_force) > 1e-6 * kQ || std::abs(r.elastic[2].residual_moment) > 1e-6 * kQ));
   CHECK(r.errors[2].empty());  // no exception: a failed solve
   CHECK_FALSE(r.elastic[3].converged);
-  CHECK(r.errors[3].find("y = 0.2") != std::string::npos);
+  CHECK(r.errors[3].find("test strategy: no search at y = 0.099") != std::string::npos);
   CHECK(r.elastic[3].message == r.errors[3]);
-  CHECK(r.elastic[3].y == 0.2);
+  CHECK(r.elastic[3].y == 0.099);
   CHECK(last_failed == 2);
 }
 

@@ -45,6 +45,10 @@ void on_units(void* host, double m, const char* by) {
 }
 void on_transform(void* host, const char* d) { from(host).raw.transforms.emplace_back(d ? d : ""); }
 void on_metadata(void* host, const char* k, const char* v) { from(host).raw.metadata.emplace_back(k ? k : "", v ? v : ""); }
+void on_reversed(void* host, int32_t axis, const char* undo) {
+  if (!undo || !*undo || (axis != WRC_AXIS_Y && axis != WRC_AXIS_Z)) __builtin_trap();  // says which axis and how to undo it
+  (axis == WRC_AXIS_Y ? from(host).raw.reversed.y : from(host).raw.reversed.z).emplace_back(undo);
+}
 void on_error(void* host, int32_t, const char* message) {
   if (!message || !*message) __builtin_trap();  // a reader error must say something
   from(host).failed = true;
@@ -62,7 +66,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data) + (size > 0 ? 1 : 0), size > 0 ? size - 1 : 0);
 
   Collected c;
-  wrc_reader_sink sink{sizeof(wrc_reader_sink), &c, on_point, on_kind, on_units, on_transform, on_metadata, on_error};
+  wrc_reader_sink sink{sizeof(wrc_reader_sink), &c, on_point, on_kind, on_units, on_transform, on_metadata, on_error,
+                       on_reversed};
   wrc_reader_request req{sizeof(wrc_reader_request), path.c_str(), static_cast<int32_t>((sel / 4) % 3), nullptr, 0};
   const int rc = wrc::plugin::run_reader_on(spec, text, &req, &sink);
   if ((rc != 0) != c.failed) __builtin_trap();  // read's result and the error calls must agree

@@ -33,21 +33,27 @@ double influence(const Grid& g, int k, int l) {
          (std::numbers::pi * steel.combined_modulus());
 }
 
-// x = (2 D_AA)^-1 r_A by a fresh Cholesky factorisation, A in index order.
-Eigen::VectorXd fresh_solve(const Grid& g, const std::vector<int>& A, const Eigen::VectorXd& r) {
+// A fresh Cholesky factorisation of 2 D_AA, the elements in A's order.
+Eigen::LLT<Eigen::MatrixXd> fresh_llt(const Grid& g, const std::vector<int>& A) {
   const int m = static_cast<int>(A.size());
   Eigen::MatrixXd K(m, m);
   for (int a = 0; a < m; ++a)
     for (int b = 0; b < m; ++b) K(a, b) = influence(g, A[a], A[b]);
-  const Eigen::LLT<Eigen::MatrixXd> llt(K);
+  Eigen::LLT<Eigen::MatrixXd> llt(K);
   REQUIRE(llt.info() == Eigen::Success);
-  return llt.solve(r);
+  return llt;
+}
+
+// x = (2 D_AA)^-1 r_A by a fresh Cholesky factorisation, A in index order.
+Eigen::VectorXd fresh_solve(const Grid& g, const std::vector<int>& A, const Eigen::VectorXd& r) {
+  return fresh_llt(g, A).solve(r);
 }
 
 struct Reference {
   std::vector<double> pressure;
   double approach = 0, force = 0;
   int iterations = 0;
+  int outgrown = 0;  // iterations whose set had more elements than every set before
 };
 
 // The paper's active-set iteration with CONTACT's check, as solve_normal_dense documents it (start {h > 0} or the
@@ -61,11 +67,14 @@ Reference fresh_active_set(const NormalCase& c, const NormalLoad& load, const st
   std::vector<char> in(n, 0);
   for (int k = 0; k < n; ++k) in[k] = warm.empty() ? c.h[k] > 0 : warm[k] > 0;
   Reference ref;
+  int largest = 0;
   for (ref.iterations = 1; ref.iterations <= 200; ++ref.iterations) {
     std::vector<int> A;
     for (int k = 0; k < n; ++k)
       if (in[k]) A.push_back(k);
     const int m = static_cast<int>(A.size());
+    ref.outgrown += ref.iterations > 1 && m > largest;
+    largest = std::max(largest, m);
     Eigen::VectorXd h(m), w(m);
     for (int a = 0; a < m; ++a) h[a] = c.h[A[a]], w[a] = load.weight(A[a]);
     Eigen::VectorXd p = fresh_solve(g, A, h);
@@ -134,21 +143,29 @@ TEST_CASE("dense factor kept across set changes = a fresh factorisation of each 
   struct Step {
     const char* what;
     std::vector<char> in;
-    bool kept, joined;  // expected: leading columns kept, rows appended
+    bool kept, joined, grew;  // expected: leading columns kept, rows appended, the block grown
   };
   const std::vector<Step> steps = {
-      {"{h > 0}", set_of([&](int k) { return c.h[k] > 0; }), false, false},
-      {"its rim dropped", set_of([&](int k) { return c.h[k] > 0.3 * hmax; }), true, false},
+      {"{h > 0}", set_of([&](int k) { return c.h[k] > 0; }), false, false, false},
+      {"its rim dropped", set_of([&](int k) { return c.h[k] > 0.3 * hmax; }), true, false, false},
       {"more rim dropped, part of it back (x > 0)",
-       set_of([&](int k) { return c.h[k] > 0.5 * hmax || (c.h[k] > 0.2 * hmax && g.x(k % g.nx) > 0); }), true, true},
-      {"every 5th element of the rim dropped, the rest of the x < 0 half back",
-       set_of([&](int k) { return c.h[k] > 0.2 * hmax && (c.h[k] > 0.6 * hmax || k % 5 != 0); }), true, true},
-      {"the deepest element dropped", set_of([&](int k) { return c.h[k] > 0.2 * hmax && k != deepest; }), false,
+       set_of([&](int k) { return c.h[k] > 0.5 * hmax || (c.h[k] > 0.2 * hmax && g.x(k % g.nx) > 0); }), true, true,
        false},
-      {"a ring beyond {h > 0} added (more than the matrix holds)", set_of([&](int k) { return c.h[k] > -0.2 * hmax; }),
+      {"every 5th element of the rim dropped, the rest of the x < 0 half back",
+       set_of([&](int k) { return c.h[k] > 0.2 * hmax && (c.h[k] > 0.6 * hmax || k % 5 != 0); }), true, true, false},
+      {"the deepest element dropped", set_of([&](int k) { return c.h[k] > 0.2 * hmax && k != deepest; }), false,
        false, false},
-      {"its outer half dropped", set_of([&](int k) { return c.h[k] > -0.1 * hmax; }), true, false},
+      {"a ring beyond {h > 0} added, more than the block holds: every column kept",
+       set_of([&](int k) { return c.h[k] > -0.2 * hmax; }), true, true, true},
+      {"its outer half dropped", set_of([&](int k) { return c.h[k] > -0.1 * hmax; }), true, false, false},
+      {"every 4th element of 0 < h < 0.3 hmax dropped and a wider ring joining, beyond the block",
+       set_of([&](int k) { return c.h[k] > -0.35 * hmax && !(c.h[k] > 0 && c.h[k] < 0.3 * hmax && k % 4 == 0); }),
+       true, true, true},
+      {"the same set again: nothing left to factorise",
+       set_of([&](int k) { return c.h[k] > -0.35 * hmax && !(c.h[k] > 0 && c.h[k] < 0.3 * hmax && k % 4 == 0); }),
+       true, false, false},
   };
+  double worst_factor = 0, worst_solve = 0;
   for (const Step& step : steps) {
     CAPTURE(step.what);
     L.factorise(step.in);
@@ -161,6 +178,13 @@ TEST_CASE("dense factor kept across set changes = a fresh factorisation of each 
     CHECK(std::is_permutation(order.begin(), order.end(), A.begin()));
     CHECK((L.kept_columns() > 0) == step.kept);
     CHECK((L.joined() > 0) == step.joined);
+    CHECK(L.grew() == step.grew);
+    // The Cholesky factor is unique: the kept one must be a fresh LLT's of the set in the factor's order.
+    const Eigen::MatrixXd lower = L.lower(), fresh = fresh_llt(g, order).matrixL();
+    REQUIRE(lower.rows() == m);
+    const double dL = (lower - fresh).cwiseAbs().maxCoeff() / fresh.cwiseAbs().maxCoeff();
+    CHECK(dL <= 1e-12);
+    worst_factor = std::max(worst_factor, dL);
     std::vector<double> r(g.size());
     for (double& v : r) v = U(rng);
     Eigen::VectorXd r_order(m), r_index(m);
@@ -171,7 +195,10 @@ TEST_CASE("dense factor kept across set changes = a fresh factorisation of each 
     double dx = 0;
     for (int a = 0; a < m; ++a) dx = std::max(dx, std::abs(x_grid[A[a]] - ref[a]));
     CHECK(dx <= 1e-10 * ref.cwiseAbs().maxCoeff());
+    worst_solve = std::max(worst_solve, dx / ref.cwiseAbs().maxCoeff());
   }
+  MESSAGE("kept factor vs fresh LLT: max |dL| / max |L| = ", worst_factor, ", solves max |dx| / max |x| = ",
+          worst_solve);
 }
 
 TEST_CASE("dense solver = the active-set iteration with a fresh factorisation at every step") {
@@ -208,5 +235,67 @@ TEST_CASE("dense solver = the active-set iteration with a fresh factorisation at
       worst = std::max(worst, check_same(solve_normal_dense(steel, c.grid, c.h, load), fresh_active_set(c, load)));
     }
     MESSAGE("kept factor vs fresh factorisations on 40 random patches: max |dp| / pmax = ", worst);
+  }
+  SUBCASE("40 random patches warm-started from a neighbour's solution: sets that lose and gain elements") {
+    // The start: the solution of the patch 0.1 hmax shallower, shifted by up to one element along x and y. Its
+    // support lies partly outside the new contact (dropped) and short of it (joining, beyond the first set: the
+    // block grows).
+    std::mt19937 rng(43);
+    std::uniform_int_distribution<int> shift(-1, 1);
+    double worst = 0;
+    int outgrown = 0, lost_and_gained = 0;
+    for (int t = 0; t < 40; ++t) {
+      const NormalCase c = random_case(rng, 10, 24);
+      CAPTURE(t);
+      const Grid& g = c.grid;
+      const double hmax = *std::max_element(c.h.begin(), c.h.end());
+      NormalCase shallower = c;
+      for (double& h : shallower.h) h -= 0.1 * hmax;
+      const Reference before = fresh_active_set(shallower, NormalLoad::penetration());
+      const int sx = shift(rng), sy = shift(rng);
+      std::vector<double> start(g.size(), 0.0);
+      for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i)
+          if (i - sx >= 0 && i - sx < g.nx && j - sy >= 0 && j - sy < g.ny)
+            start[g.index(i, j)] = before.pressure[g.index(i - sx, j - sy)];
+      NormalLoad load = NormalLoad::penetration();
+      if (t % 2 == 1) load = NormalLoad::normal_force(fresh_active_set(c, load).force * 1.1);
+      NormalOptions o;
+      o.initial_pressure = start;
+      const Reference ref = fresh_active_set(c, load, start);
+      outgrown += ref.outgrown;
+      int lost = 0, gained = 0;
+      for (int k = 0; k < g.size(); ++k) {
+        lost += start[k] > 0 && ref.pressure[k] == 0;
+        gained += start[k] == 0 && ref.pressure[k] > 0;
+      }
+      lost_and_gained += lost > 0 && gained > 0;
+      worst = std::max(worst, check_same(solve_normal_dense(steel, g, c.h, load, o), ref));
+    }
+    CHECK(outgrown >= 20);
+    CHECK(lost_and_gained >= 20);
+    MESSAGE("warm starts on 40 random patches (", lost_and_gained, " losing and gaining elements, ", outgrown,
+            " sets beyond every earlier one): max |dp| / pmax = ", worst);
+  }
+  SUBCASE("a warm start wholly beside the contact (its support turns tensile): the cold solve's solution") {
+    // A start shifted too far (a pose that jumped) can lie where h < 0 throughout: every element of it leaves at
+    // the first iteration; the solver goes on from the cold start {h > 0} rather than stopping with an empty set.
+    const NormalCase c = paraboloid_case(1 / 0.9, 3 / 0.9, 15e-6, 0.2e-3);
+    const Grid& g = c.grid;
+    Reference cold = fresh_active_set(c, NormalLoad::penetration());
+    ++cold.iterations;  // the start's own iteration, all of it dropped
+    for (int width : {1, 2}) {  // a corner element, a 2 x 2 corner block
+      CAPTURE(width);
+      std::vector<double> start(g.size(), 0.0);
+      for (int j = 0; j < width; ++j)
+        for (int i = 0; i < width; ++i) {
+          REQUIRE(c.h[g.index(i, j)] < 0);
+          start[g.index(i, j)] = 1e8;
+        }
+      NormalOptions o;
+      o.initial_pressure = start;
+      MESSAGE("warm start beside the contact (", width, " x ", width, "): max |dp| / pmax = ",
+              check_same(solve_normal_dense(steel, g, c.h, NormalLoad::penetration(), o), cold));
+    }
   }
 }

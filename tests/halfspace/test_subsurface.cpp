@@ -541,9 +541,16 @@ TEST_CASE("subsurface: bad input names what is wrong") {
   CHECK(message({g, p}, r2).find("no depth") != std::string::npos);
   r2.z = {INFINITY};
   CHECK(message({g, p}, r2).find("the 1st value of z (= inf)") != std::string::npos);
+  r2.z = {0.5e-3, 2};  // 0.5 and 2 mm meant; a wheel's rim is 70 mm thick
+  CHECK(message({g, p}, r2).find("the 2nd value of z (= 2 m) is deeper than 0.1 m") != std::string::npos);
+  r2.z = {0.07};  // the whole rim: accepted
+  CHECK(message({g, p}, r2).empty());
   r2 = rq;
   r2.shear_yield = 0;
   CHECK(message({g, p}, r2).find("shear_yield = 0") != std::string::npos);
+  r2.shear_yield = 300;  // ER7's k (EN 13262: ReH 520 MPa / sqrt 3) in MPa
+  CHECK(message({g, p}, r2).find("shear_yield = 300 Pa must be in [1e+06, 1e+10] Pa") != std::string::npos);
+  CHECK(message({g, p}, r2).find("is it in MPa?") != std::string::npos);
   r2 = rq;
   r2.z.assign(kMaxSubsurfaceDepths, 1e-4);
   const Grid big = Grid::square(100, 100, 1e-4);
@@ -553,8 +560,11 @@ TEST_CASE("subsurface: bad input names what is wrong") {
   r2.z.resize(2);
   CHECK(message({big, pb}, r2).empty());
   r2 = rq;
-  r2.z = {1e170};  // the closed forms overflow: an error, never a NaN
-  CHECK(message({g, p}, r2).find("not finite") != std::string::npos);
+  r2.z = {1e170};  // a depth beyond any body, refused as such before the closed forms overflow
+  CHECK(message({g, p}, r2).find("is deeper than") != std::string::npos);
+  r2.z = {0.05};  // elements of 1e160 m: the closed forms overflow: an error, never a NaN
+  const Grid huge = Grid::square(4, 3, 1e160);
+  CHECK(message({huge, p}, r2).find("not finite") != std::string::npos);
   Material m = steel;
   m.nu = 0.5;
   CHECK_THROWS_AS(compute_subsurface(m, {g, p}, rq), wrc::Error);

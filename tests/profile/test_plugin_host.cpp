@@ -3,14 +3,19 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/reader.hpp"
+#include "wrc/reader.h"
 #include "approx.hpp"
 
 #include <doctest/doctest.h>
 
+#include <dlfcn.h>
+
+#include <cstddef>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 using wrc::test::within_rel;
 using namespace wrc;
@@ -62,13 +67,58 @@ TEST_CASE("rejected libraries: no entry point, wrong ABI major, NULL descriptor,
     return *why;
   };
   CHECK(reason(variant("no_entry")).find("does not export the entry point 'wrc_reader_entry'") != std::string::npos);
-  CHECK(reason(variant("bad_major")).find("reader ABI version 99.0, but this host implements 1.0") != std::string::npos);
+  CHECK(reason(variant("bad_major")).find("reader ABI version 99.1, but this host implements 1.1") != std::string::npos);
   CHECK(reason(variant("null")).find("returned no descriptor") != std::string::npos);
   CHECK(reason(variant("small_struct")).find("descriptor struct_size 8 is smaller") != std::string::npos);
   const std::string junk = tmp_path("junk.so");
   std::ofstream(junk) << "not an ELF file\n";
   CHECK(reason(junk).find("cannot load the library") != std::string::npos);
   CHECK(r.readers().empty());
+}
+
+// ABI 1.1 appended `reversed` to the sink; a host of ABI 1.0 passes the smaller sink, whose struct_size ends before it.
+// The project's plugins call it only when the size covers it. A Simpack file turned by rotate = 180 reverses y and z.
+TEST_CASE("a sink of ABI 1.0, without `reversed`, is read as before, and one of ABI 1.1 hears of the reversals") {
+  void* lib = dlopen((paths().plugin_dirs.at(0) + "/wrc_reader_simpack.so").c_str(), RTLD_NOW | RTLD_LOCAL);
+  REQUIRE(lib != nullptr);
+  const auto entry = reinterpret_cast<wrc_reader_entry_fn>(dlsym(lib, WRC_READER_ENTRY_NAME));
+  const bool exported = entry != nullptr;
+  REQUIRE(exported);
+  const wrc_reader_descriptor* d = entry();
+  const std::string path = tmp_path("turned.prr");
+  std::ofstream(path) << "header.begin\nversion = 1\ntype = 0\nheader.end\nspline.begin\nrotate = 180\n"
+                         "units.ang.f = 57.29577951308232\npoint.begin\n-10 1\n0 0\n10 1\npoint.end\nspline.end\n";
+  struct Seen {
+    std::vector<double> y, z;
+    int reversed = 0, errors = 0;
+  };
+  wrc_reader_sink sink{};
+  sink.point = [](void* h, double y, double z, int32_t) {
+    static_cast<Seen*>(h)->y.push_back(y);
+    static_cast<Seen*>(h)->z.push_back(z);
+    return 0;
+  };
+  sink.kind = [](void*, int32_t) {};
+  sink.units = [](void*, double, const char*) {};
+  sink.transform = [](void*, const char*) {};
+  sink.metadata = [](void*, const char*, const char*) {};
+  sink.error = [](void* h, int32_t, const char*) { ++static_cast<Seen*>(h)->errors; };
+  sink.reversed = [](void* h, int32_t, const char*) { ++static_cast<Seen*>(h)->reversed; };
+  wrc_reader_request req{};
+  req.struct_size = sizeof(req);
+  req.path = path.c_str();
+  for (const std::size_t size : {offsetof(wrc_reader_sink, reversed), sizeof(wrc_reader_sink)}) {
+    Seen seen;
+    sink.struct_size = static_cast<uint32_t>(size);
+    sink.host = &seen;
+    CHECK(d->read(&req, &sink) == 0);
+    CHECK(seen.errors == 0);
+    CHECK(seen.reversed == (size == sizeof(wrc_reader_sink) ? 2 : 0));  // y and z, from ABI 1.1 on
+    // The file's (y, z down) = (-10, 1) turned by 180 degrees: (10, -1); z up: (10, 1).
+    REQUIRE(seen.y.size() == 3);
+    CHECK(seen.y.front() == within_rel(10.0, 1e-12));
+    CHECK(seen.z.front() == within_rel(1.0, 1e-12));
+  }
 }
 
 // A copy of a real plugin cut short. dlopen maps a segment that reaches past the end of the file and the loader

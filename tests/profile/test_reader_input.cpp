@@ -270,6 +270,33 @@ TEST_CASE("text reader: a line taken as a header is reported in the transforms")
   CHECK_FALSE(has_transform(load("noheader.txt", arc_rows(" "), rail), "header"));
 }
 
+TEST_CASE("text reader: a header reads in any unit the units option names") {
+  // The 30 mm arc written in cm, in, m and mm, each under a header naming its unit in one of the forms: every file
+  // gives the arc's points in metres (y_in and z [cm] were taken for the default mm: a wheel 25.4 times too small
+  // built without complaint).
+  LoadOptions rail;
+  rail.kind = ProfileKind::rail;
+  struct Case {
+    const char* header;
+    double per_metre;  // file units per metre, by definition of the unit
+  };
+  const Case cases[] = {{"y_cm,z_cm", 100}, {"y [in],z [in]", 1 / 0.0254}, {"Y(IN),Z(IN)", 1 / 0.0254},
+                        {"y_m,z_m", 1}, {"y (mm),z (mm)", 1000}};
+  for (const Case& c : cases) {
+    INFO(std::string(c.header));
+    const Profile p = load("units.csv", std::string(c.header) + "\n" + arc_rows(",", c.per_metre / 1000), rail);
+    const double written = 0.5e-6 / c.per_metre + 1e-15;  // m: arc_rows writes 6 decimals of the file's unit
+    REQUIRE(p.size() == 31);
+    CHECK(p.y.front() == within_abs(-15e-3, written));
+    CHECK(p.y.back() == within_abs(15e-3, written));
+    CHECK(p.z[15] == within_abs(0.0, written));
+    CHECK(p.z.front() == within_abs(std::sqrt(0.3 * 0.3 - 0.015 * 0.015) - 0.3, written));
+  }
+  // A header naming no unit leaves the default, millimetres; one naming two units is refused.
+  CHECK(load("nounit.csv", "y_pos,z_pos\n" + arc_rows(","), rail).y.front() == within_abs(-15e-3, 1e-12));
+  check_error("two_units.csv", "y_cm,z_mm\n" + arc_rows(","), 1, "different units for y ('y_cm') and z ('z_mm')", rail);
+}
+
 TEST_CASE("every reader: decimal commas are named as such") {
   LoadOptions rail;
   rail.kind = ProfileKind::rail;

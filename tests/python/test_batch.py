@@ -194,11 +194,21 @@ def test_bad_input(ws):
     with pytest.raises(TypeError, match="complex"):
         ws.rigid(y=np.array([1j]))
     # a misspelt key fails every element alike: raised, naming the closest key as a one-by-one call does
+    # once, with how many elements fail so and the first one's index (.index, as the recorded errors have)
     with pytest.raises(wrc.OptionError) as batch:
         ws.rigid(y=[0.0, 1e-3], yaww=0.0)
     with pytest.raises(wrc.OptionError) as alone:
         ws.rigid(y=0.0, yaww=0.0)
-    assert str(batch.value) == str(alone.value) and "yaw" in str(alone.value)
+    assert "yaw" in str(alone.value)
+    assert str(batch.value) == f"{alone.value} (every element of the batch fails so: all 2, the first at index (0,))"
+    assert batch.value.index == (0,)
+    with pytest.raises(wrc.OptionError, match=re.escape("'Fz' must be finite, got NaN (every element of the batch "
+                                                        "fails so: all 6, the first at index (0, 0))")) as e:
+        ws.wheel(side="left", y=np.zeros((2, 3)), Fz=np.nan)
+    assert e.value.index == (0, 0)
+    # the same bad value in some elements only is theirs: recorded, the others solved
+    b = ws.wheel(side="left", y=np.zeros(3), Fz=[np.nan, 100e3, np.nan])
+    assert np.array_equal(b.ok, [False, True, False]) and [x.index for x in b.errors] == [(0,), (2,)]
     # threads= is read as every call reads it (a sweep's, a geometry table's): a whole number in 0..256, of any
     # Python or numpy kind; anything else is named with its value.
     for bad, said in ((-1, "got -1"), (257, "got 257"), (10**30, "got 1e+30"), (1.5, "got 1.5"), ("2", "got str"),
@@ -321,6 +331,65 @@ def test_a_result_pickles_and_copies_as_the_fields_it_holds(ws):
     same(copy.deepcopy(w), w)
     b = ws.rigid(y=[0.0, 2e-3])
     same(pickle.loads(pickle.dumps(b.items[1])), ws.rigid(y=2e-3))
+
+
+def test_a_batch_pickles_and_copies_bit_for_bit(ws):
+    # A process pool returns batches by pickle; the engine's results behind a batch were no Python data ("cannot
+    # pickle '_BatchNodes' object"). The copy must equal the same calls made afresh, element by element: its items
+    # the one-by-one calls, its fields and errors a fresh batch's, whatever of the original was read before.
+    import copy
+    import pickle
+
+    # shape (2, 3, 3): a NaN load fails (OptionError), 400 kN is out of reach within 40 um (NotConverged)
+    kw = dict(side="left", y=np.linspace(0, 7e-3, 3).reshape(3, 1), Fz=np.array([100e3, np.nan, 400e3]),
+              max_penetration=np.array([1e-3, 40e-6]).reshape(2, 1, 1), grids=True)
+    b = ws.wheel(**kw)
+    b.force.y, b.patches[0].pmax  # some fields made before the copy: the copy makes its own
+    fresh = ws.wheel(**kw)
+    assert {type(x) for x in fresh.errors} == {wrc.OptionError, wrc.NotConverged}  # both kinds of failure
+    copies = [pickle.loads(pickle.dumps(b)), pickle.loads(pickle.dumps(b, protocol=0)), copy.deepcopy(b),
+              copy.copy(b)]
+    for got in copies:
+        assert isinstance(got, wrc.Batch) and got.shape == b.shape == (2, 3, 3) and got.size == 18
+        assert (got.operation, got.threads, got.seconds) == (b.operation, b.threads, b.seconds)
+        assert np.array_equal(got.ok, fresh.ok)
+        for name in ("force", "z", "converged", "patches"):  # a table, a number, a bool and a list field
+            same_fields(getattr(got, name), getattr(fresh, name), name)
+        assert np.array_equal(got.patches.pmax, fresh.patches.pmax, equal_nan=True)
+        assert [(type(x), str(x), x.index) for x in got.errors] == [(type(x), str(x), x.index) for x in fresh.errors]
+        for x, y in zip(got.errors, fresh.errors):
+            if isinstance(x, wrc.NotConverged):
+                same(x.result, y.result, f"errors{x.index}.result")
+        for index in np.ndindex(*b.shape):
+            if not fresh.ok[index]:
+                assert got.items[index] is None
+                continue
+            alone = ws.wheel(side="left", y=float(kw["y"][index[1], 0]), Fz=float(kw["Fz"][index[2]]),
+                             max_penetration=float(kw["max_penetration"][index[0], 0, 0]), grids=True)
+            same(got.items[index], alone, f"items{index}")
+    # a field of a batch pickles too (its part of the results)
+    assert np.array_equal(pickle.loads(pickle.dumps(b.force)).y, fresh.force.y, equal_nan=True)
+    assert np.array_equal(pickle.loads(pickle.dumps(b.patches)).count, fresh.patches.count)
+    # damaged pickled data is refused with a clear error, never read past its end
+    remake, (state,) = b._nodes.__reduce__()
+    cut = [x[:len(x) // 2] if x is not None else None for x in state[1]]
+    with pytest.raises(wrc.Error, match="pickled results are damaged .cut short."):
+        remake((state[0], cut))
+
+
+def same_fields(a, b, where):
+    """Two stacked fields of batches the same: arrays bit for bit (NaN where NaN), nodes field by field."""
+    if isinstance(a, np.ndarray):
+        assert a.dtype == b.dtype and np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), where
+        return
+    assert type(a) is type(b) and a.keys() == b.keys(), where
+    if isinstance(a, wrc.batch.BatchList):
+        assert np.array_equal(a.count, b.count), where
+        for k in range(len(a)):
+            same_fields(a[k], b[k], f"{where}[{k}]")
+        return
+    for k in a.keys():
+        same_fields(getattr(a, k), getattr(b, k), f"{where}.{k}")
 
 
 def test_a_batch_is_indexed_by_field_names(ws):

@@ -90,8 +90,65 @@ refused(function() ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0,
         "phi", "100", "1/m", "a spin creepage of 100 1/m")
 check.ok(ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = -1.9}}.left.force.z > 0,
          "a flange's spin, -1.9 1/m, passes")
+-- Creepages in percent (a creep curve's 2 % given as xi = 2, 20 % lateral as eta = 20) were solved to full sliding,
+-- |F| = mu N, like any creepage beyond saturation. A creepage is a slip velocity over V: |xi| = 1 is a locked wheel
+-- (omega = 0), and the bound is the one of omega, 0 .. 2 times pure rolling, so xi and eta beyond 1 are refused.
+local creep_bound = 1  -- omega r0 / V = 1 - xi in [0, 2]
+for _, k in ipairs{{"xi", 2}, {"xi", -5}, {"eta", 20}} do
+  local err = check.fails(function() ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {[k[1]] = k[2]}} end,
+                          ("%s = %g is implausible"):format(k[1], k[2]), k[1] .. " in percent")
+  check.ok(err:find("is it in another unit?", 1, true) and err:find("check_setup = false", 1, true), err)
+end
+local e_xi = check.fails(function() ws:wheel{side = "left", y = 0, Fz = 100e3, mu = 0.3, creepage = {xi = 2}} end,
+                         "xi = 2 is implausible", "ws:wheel, xi in percent")
+check.ok(e_xi:find(("0 .. %g)"):format(creep_bound), 1, true) and e_xi:find("2 % is xi = 0.02", 1, true), e_xi)
+for _, k in ipairs{{xi = creep_bound}, {xi = -creep_bound}, {eta = 0.3}, {xi = 0.02, eta = -0.01}} do
+  check.ok(ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = k}.left.force.z > 0,
+           "a locked wheel, one spinning at twice rolling, a 0.3 rad yaw's lateral creepage pass")
+end
+check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 2}}.left.force.z > 0,
+         "check_setup = false: xi = 2 is solved")
 check.ok(free:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {xi = 0, eta = 0, phi = 100}}.left.force.z > 0,
          "check_setup = false: phi = 100 1/m is solved")
+
+-- A sweep's positions in mm or degrees (y = {0, 8} for 0 .. 8 mm, yaw = {0, 1} for 1 deg) gave a table whose rows past
+-- the first were failed cases with Y/Q = 0: refused before any case is solved, naming the value, with the limit of the
+-- one-case call (ws:equilibrium's message at the same y, here read from that call).
+local function limit_message(o)
+  local _, err = pcall(ws.equilibrium, ws, o)
+  return tostring(err):match("(must be finite and within [^%s]+ %a+)")
+end
+for _, k in ipairs{{key = "y", cases = {y = {0, 8}}, one = {y = 8, Q = 200e3}},
+                   {key = "yaw", cases = {y = {0}, yaw = {0, 1}}, one = {y = 0, yaw = 1, Q = 200e3}}} do
+  local limit = limit_message(k.one)
+  check.ok(limit, "ws:equilibrium refuses " .. k.key .. " = 8")
+  local o = {Q = 200e3, progress = false}
+  for key, v in pairs(k.cases) do o[key] = v end
+  local err = check.fails(function() ws:sweep(o) end, "the 2nd value of " .. k.key, "ws:sweep, " .. k.key .. " in mm")
+  check.ok(err:find(limit, 1, true), "the sweep's limit is the one-case call's: " .. err)
+end
+check.ok(#ws:sweep{y = {0, 8e-3}, yaw = {0, math.rad(1)}, Q = 200e3, progress = false} == 4, "y = 8 mm and 1 deg pass")
+
+-- The shear yield stress k in MPa: Ekberg's FI_surf = mu - 2 pi a b k / (3 Fz) is then the traction coefficient
+-- itself, surface fatigue predicted at any creepage; the shakedown point's p0 / k a million times too large. Wheel
+-- steel ER7's k = ReH / sqrt 3 = 520 MPa / sqrt 3 (EN 13262) passes; its number of MPa is refused, for both.
+local k_er7 = 520e6 / math.sqrt(3)
+local rolling = {side = "left", y = 0, Fz = 100e3, mu = 0.3, creepage = {xi = 2e-3}}
+local function with(extra)
+  local o = {}
+  for key, v in pairs(rolling) do o[key] = v end
+  for key, v in pairs(extra) do o[key] = v end
+  return o
+end
+local k_mpa = tonumber(("%.0f"):format(k_er7 / 1e6))
+check.fails(function() ws:wheel(with{fatigue = {shear_yield = k_mpa}}) end,
+            ("shear_yield = %g Pa must be in"):format(k_mpa), "fatigue's shear_yield in MPa")
+local ok_w = ws:wheel(with{fatigue = {shear_yield = k_er7}})
+local patch = ok_w.patches[1]
+check.ok(patch.fi_surf < patch.traction_coefficient, "ER7's k in Pa lowers FI_surf below the traction coefficient")
+check.fails(function() patch:subsurface{z = {1e-3}, shear_yield = k_mpa} end, "is it in MPa?",
+            "the shakedown point's shear_yield in MPa")
+check.ok(patch:subsurface{z = {1e-3}, shear_yield = k_er7}.shakedown.load_factor > 0, "ER7's k passes p:subsurface")
 
 -- Realistic values pass: a light tram axle (40 kN) and a heavy-haul one (350 kN), a worn small wheel and a large one,
 -- 300 km/h.

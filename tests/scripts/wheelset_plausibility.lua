@@ -105,6 +105,23 @@ check.near(rail_m:bounds().y_max - rail_m:bounds().y_min, 73.57, 0.01, "a 73 m w
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail_m} end, "are its units right", "a 73 m wide rail")
 local wheel_m = wrc.profile.load(wheel_mm, {kind = "wheel", units = "m"})
 check.fails(function() wrc.wheelset{wheel = wheel_m, rail = rail} end, "are its units right", "a 130 m wide wheel")
+-- The gauge measured at the wrong height: 2 mm below the tops puts the gauge points on the heads' rounded corners and
+-- the rails closer to the flanges than the gauge says (S1002 touched its flange at y = 3 mm). The standards' depths
+-- pass: EN 13848-1's 14 mm, AAR's 5/8 in, GOST's 13 mm; a flangeless body's gauge point is only its placement.
+local e_depth = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge_depth = 0.002} end,
+                            "gauge_depth = 0.002 m", "the gauge measured 2 mm below the tops")
+check.ok(e_depth:find("14 mm", 1, true) and e_depth:find("check_setup = false", 1, true), e_depth)
+for _, depth in ipairs{0.014, 5 / 8 * 0.0254, 0.013} do
+  check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge_depth = depth, grid = 2e-3}, "gauge_depth " .. depth)
+end
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge_depth = 0.002, check_setup = false, grid = 2e-3},
+         "check_setup = false: gauge_depth = 2 mm builds")
+
+-- Points in mm (wrc.profile.points takes metres, as every array of the API): the message names them, not only a file.
+local yw, zw = wheel:points()
+for i = 1, #yw do yw[i], zw[i] = yw[i] * 1e3, zw[i] * 1e3 end
+check.fails(function() wrc.wheelset{wheel = wrc.profile.points{kind = "wheel", y = yw, z = zw}, rail = rail} end,
+            "points given in mm", "a wheel's points in mm")
 check.ok(wrc.wheelset{wheel = wrc.profile.load(wheel_mm, {kind = "wheel"}), rail = wrc.profile.load(rail_mm, {kind = "rail"}),
                       grid = 2e-3}, "the same files in mm build")
 

@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 #define WRC_READER_ABI_MAJOR 1u
-#define WRC_READER_ABI_MINOR 0u
+#define WRC_READER_ABI_MINOR 1u
 #define WRC_READER_ENTRY_NAME "wrc_reader_entry"
 
 #if defined(_WIN32)
@@ -44,6 +44,10 @@ extern "C" {
 #define WRC_KIND_UNKNOWN 0
 #define WRC_KIND_WHEEL 1
 #define WRC_KIND_RAIL 2
+
+/* Axes of the sink's `reversed` callback. */
+#define WRC_AXIS_Y 1
+#define WRC_AXIS_Z 2
 
 /* One reader-specific option, both strings owned by the host and valid during one `read` call. Numbers
  * are formatted with full precision ("0.001"), booleans as "true"/"false". */
@@ -90,6 +94,13 @@ typedef struct wrc_reader_sink {
   /* Reports a failure at source line `line` (0 when no line applies) with a message that says what is
    * wrong and what was expected; the host prefixes the file name. `read` then returns non-zero. */
   void (*error)(void* host, int32_t line, const char* message);
+
+  /* Since ABI 1.1 (call it only when struct_size covers it): says that a step the FILE asks for reversed the
+   * lateral (WRC_AXIS_Y) or vertical (WRC_AXIS_Z) direction of its points, and how to undo it there, in `undo`
+   * ("rotate = 180 (line 27) turns the points over: set rotate = 0 if they already have z down"). A reader's
+   * own fixed conventions (a format's z down) are none. When the profile's shape then looks mirrored or
+   * upside down (wrc/profile/orientation.hpp), the host names these steps instead of suggesting an option. */
+  void (*reversed)(void* host, int32_t axis, const char* undo);
 } wrc_reader_sink;
 
 /* The plugin's description. Owned by the plugin: the descriptor, its strings and arrays are static and

@@ -32,8 +32,7 @@ double surface_fatigue_index(double mu, double a, double b, double shear_yield, 
 }
 
 void FatigueOptions::validate(std::string_view context) const {
-  if (!(shear_yield > 0 && std::isfinite(shear_yield)))
-    fail("{}: shear_yield = {} Pa must be finite and > 0 (wheel steel ER7: 300e6)", context, shear_yield);
+  halfspace::check_shear_yield(context, shear_yield);
   const BurstowFunction& f = burstow;
   if (!(std::isfinite(f.limit) && f.threshold >= 0 && f.threshold < f.peak && f.peak < f.limit))
     fail("{}: threshold = {}, peak = {}, limit = {} N must be finite with 0 <= threshold < peak < limit "

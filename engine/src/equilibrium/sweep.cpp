@@ -4,19 +4,24 @@
 #include "wrc/core/parallel.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
 
+#include "pose_solve.hpp"
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
 namespace wrc {
 namespace {
 
+// Every case's position within the pose solvers' limits, before any is solved: a y in mm or a yaw in degrees made
+// every case but y = 0 a failed row (Y/Q = 0) rather than an error.
 void check_input(const std::vector<double>& ys, const std::vector<double>& yaws) {
   if (ys.empty() || yaws.empty()) fail("sweep: needs at least one y and one yaw");
-  for (double y : ys)
-    if (!std::isfinite(y)) fail("sweep: y values must be finite");
-  for (double a : yaws)
-    if (!std::isfinite(a)) fail("sweep: yaw values must be finite");
+  for (std::size_t k = 0; k < ys.size(); ++k)
+    pose_solve::check_position(ys[k], 0, fmt::format("sweep: {}", value_at(k, "y")));
+  for (std::size_t k = 0; k < yaws.size(); ++k)
+    pose_solve::check_position(0, yaws[k], fmt::format("sweep: {}", value_at(k, "yaw")));
 }
 
 // Cuts the cases `report` (in the order they are solved) into pieces of at most `chain`; the first piece starts
@@ -77,6 +82,10 @@ class SweepRun {
     const bool has_lead = chunk.solve.size() > chunk.report.size();
     EquilibriumResult lead;  // the first case when the chunk does not report it (the centre of a series)
     for (std::size_t k = 0; k < chunk.solve.size(); ++k) {
+      if (opt_.stop && opt_.stop->load()) {  // stopped: the rest of the chunk is not begun
+        cut_ = true;
+        return;
+      }
       const int c = chunk.solve[k];
       const double yc = plan_.cases[static_cast<std::size_t>(c)].y;
       std::vector<Start> starts;
@@ -92,8 +101,13 @@ class SweepRun {
       const int slot = reported ? slot_[static_cast<std::size_t>(c)] : -1;
       EquilibriumResult& e = reported ? out_.elastic[static_cast<std::size_t>(slot)] : lead;
       if (solve_case(ws, c, slot, e, starts, reported)) path.push_back({yc, e.z, e.roll, e.jacobian, e.jacobian_lifted});
+      if (reported) ++solved_;
     }
   }
+
+  // Whether SweepOptions::stop left cases unsolved, and how many were solved.
+  bool cut() const { return cut_; }
+  int solved() const { return solved_; }
 
  private:
   // Solves one case into `e` (recording a failure or an exception); true when it converged. A reported case gets
@@ -137,6 +151,8 @@ class SweepRun {
   SweepResult& out_;
   std::vector<int> slot_;  // per case of the plan, its entry in out_ (-1: not in this run)
   ProgressCount progress_;
+  std::atomic<bool> cut_{false};
+  std::atomic<int> solved_{0};
 };
 
 }  // namespace
@@ -217,6 +233,9 @@ SweepResult run_sweep(const ContactModel& model, const SweepPlan& plan, const st
     run.run_chunk(*workspaces[static_cast<std::size_t>(worker)],
                   plan.chunks[static_cast<std::size_t>(chunks[static_cast<std::size_t>(t)])]);
   });
+  if (run.cut())
+    fail("sweep: stopped by its caller after {} of {} cases (the others were not begun)", run.solved(),
+         out.index.size());
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

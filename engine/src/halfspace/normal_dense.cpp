@@ -44,13 +44,16 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
   const double dA = grid.element_area();
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 200;
 
+  const auto paper_start = [&](std::vector<char>& set) {
+    for (int k = 0; k < n; ++k) set[k] = h[k] > 0;  // the paper's start: {h > 0}
+    if (std::find(set.begin(), set.end(), 1) == set.end())  // prescribed force, bodies apart: deepest element
+      set[std::max_element(h.begin(), h.end()) - h.begin()] = 1;
+  };
   std::vector<char> in(n, 0);
+  bool warm = false;  // started from options.initial_pressure's support
   if (!options.initial_pressure.empty())
-    for (int k = 0; k < n; ++k) in[k] = options.initial_pressure[k] > 0;
-  if (std::find(in.begin(), in.end(), 1) == in.end())
-    for (int k = 0; k < n; ++k) in[k] = h[k] > 0;  // the paper's start: {h > 0}
-  if (std::find(in.begin(), in.end(), 1) == in.end())  // prescribed force, bodies apart: deepest element
-    in[std::max_element(h.begin(), h.end()) - h.begin()] = 1;
+    for (int k = 0; k < n; ++k) warm |= (in[k] = options.initial_pressure[k] > 0);
+  if (!warm) paper_start(in);
 
   NormalSolution s;
   s.grid = grid;
@@ -66,6 +69,12 @@ NormalSolution solve_normal_dense(const Material& material, const Grid& grid, st
     active.clear();
     for (int k = 0; k < n; ++k)
       if (in[k]) active.push_back(k);
+    if (active.empty() && warm) {  // a warm start's whole support turned tensile (it lay beside the contact)
+      warm = false;
+      paper_start(in);
+      for (int k = 0; k < n; ++k)
+        if (in[k]) active.push_back(k);
+    }
     if (active.empty())
       fail("solve_normal_dense: the active set became empty (internal error for h with max {} m)", hmax);
     // Each set determines the next: one met before would repeat the same iterations up to max_iterations.

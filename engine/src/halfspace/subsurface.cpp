@@ -334,17 +334,25 @@ void check_input(const Material& material, const SurfaceLoad& load, const Subsur
   for (std::size_t d = 0; d < r.z.size(); ++d)
     if (!(std::isfinite(r.z[d]) && r.z[d] > 0))
       fail("subsurface: {} (= {}) must be a finite depth > 0 below the surface (m)", value_at(d, "z"), r.z[d]);
+    else if (r.z[d] > kMaxSubsurfaceDepth)
+      fail("subsurface: {} (= {} m) is deeper than {:g} m, below any wheel rim or rail head: is it in mm? (1 mm is "
+           "z = 1e-3)", value_at(d, "z"), r.z[d], kMaxSubsurfaceDepth);
   if (r.fields && static_cast<double>(r.z.size()) * static_cast<double>(N) * 11 > kMaxSubsurfaceFieldValues)
     fail("subsurface: {} depths of {} elements make {} field values, more than {} (ask for fields = false: the "
          "maxima only)", r.z.size(), N, r.z.size() * N * 11, kMaxSubsurfaceFieldValues);
-  if (!(std::isfinite(r.shear_yield) && r.shear_yield > 0))
-    fail("subsurface: shear_yield = {} (expected the shear yield stress k, finite and > 0, Pa)", r.shear_yield);
+  check_shear_yield("subsurface", r.shear_yield);
   if (r.method != SubsurfaceMethod::automatic && r.method != SubsurfaceMethod::fft &&
       r.method != SubsurfaceMethod::direct)
     fail("subsurface: unknown method {}", static_cast<int>(r.method));
 }
 
 }  // namespace
+
+void check_shear_yield(std::string_view context, double k) {
+  if (std::isfinite(k) && k >= kMinShearYield && k <= kMaxShearYield) return;
+  fail("{}: shear_yield = {} Pa must be in [{:g}, {:g}] Pa (the shear yield stress k; wheel steel ER7: {:.0f}e6): is it "
+       "in MPa?", context, k, kMinShearYield, kMaxShearYield, kDefaultShearYield / 1e6);
+}
 
 PrincipalStresses principal_stresses(const Stress& s) {
   const double q = (s.xx + s.yy + s.zz) / 3;

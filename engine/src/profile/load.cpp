@@ -5,6 +5,7 @@
 #include "wrc/profile/orientation.hpp"
 #include "wrc/profile/reader.hpp"
 #include "wrc/profile/spline.hpp"
+#include "wrc/profile/units.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -69,16 +70,13 @@ std::string file_extension(const std::string& path) {
 }
 
 double parse_units(const std::string& text, const std::string& context) {
-  if (text == "mm") return 1e-3;
-  if (text == "cm") return 1e-2;
-  if (text == "m") return 1.0;
-  if (text == "in") return 0.0254;
+  if (const double named = length_unit(text); named > 0) return named;
   double v = 0;
   const char* end = text.data() + text.size();
   const auto r = std::from_chars(text.data(), end, v);
   if (r.ec == std::errc() && r.ptr == end && std::isfinite(v) && v > 0) return v;
-  fail("{}: units must be \"mm\", \"cm\", \"m\", \"in\" or a positive number of metres per file unit, got \"{}\"",
-       context, text);
+  fail("{}: units must be {} or a positive number of metres per file unit, got \"{}\"", context, length_unit_names(),
+       text);
 }
 
 namespace {
@@ -118,6 +116,13 @@ void refuse_detour(const std::vector<double>& y, const std::vector<double>& z, c
        at_line(source, i < lines.size() ? lines[i] : 0), y[i] * 1e3, z[i] * 1e3, std::hypot(y[i] - y[a], z[i] - z[a]) * 1e3,
        y[a] * 1e3, z[a] * 1e3, a < lines.size() ? fmt::format(", line {}", lines[a]) : std::string(), chord * 1e3,
        rest * 1e3);
+}
+
+// The file's steps that reversed y or z (the reader's report), and the options that did.
+Reversals reversals(Reversals file, const LoadOptions& o) {
+  if (o.mirror_y) file.y.push_back("the option mirror_y = true: drop it if the profile was right without it");
+  if (o.mirror_z) file.z.push_back("the option mirror_z = true: drop it if the profile was right without it");
+  return file;
 }
 
 void apply_mirrors(std::vector<double>& y, std::vector<double>& z, const LoadOptions& o,
@@ -367,7 +372,7 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
     p = smooth_profile(p, *o.smooth);
   else if (!o.polyline)
     p = default_spline(std::move(p));
-  p.warnings = orientation_warnings(p);
+  p.warnings = orientation_warnings(p, reversals(std::move(raw.reversed), o));
   return p;
 }
 
@@ -381,7 +386,7 @@ bool has_geometric_options(const LoadOptions& o) {
 Profile finish_definition(Profile made, const LoadOptions& o, const std::string& path) {
   made.source = path;
   if (has_geometric_options(o)) made = transform_profile(made, o);
-  made.warnings = orientation_warnings(made);
+  made.warnings = orientation_warnings(made, reversals({}, o));
   return made;
 }
 

@@ -106,6 +106,17 @@ void sink_metadata(void* host, const char* key, const char* value) {
   }
 }
 
+void sink_reversed(void* host, int32_t axis, const char* undo) {
+  try {
+    SinkState& s = state(host);
+    if (axis == WRC_AXIS_Y) s.raw.reversed.y.push_back(text(undo));
+    else if (axis == WRC_AXIS_Z) s.raw.reversed.z.push_back(text(undo));
+    else s.failed_internally = true;
+  } catch (...) {
+    state(host).failed_internally = true;
+  }
+}
+
 void sink_error(void* host, int32_t line, const char* message) {
   try {
     state(host).error(line, text(message));
@@ -131,6 +142,7 @@ RawProfile read_with_plugin(const wrc_reader_descriptor* d, const std::string& i
   sink.transform = sink_transform;
   sink.metadata = sink_metadata;
   sink.error = sink_error;
+  sink.reversed = sink_reversed;
   std::vector<wrc_reader_option> opts;
   opts.reserve(options.size());
   for (const auto& [k, v] : options) opts.push_back({k.c_str(), v.c_str()});

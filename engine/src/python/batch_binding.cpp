@@ -10,11 +10,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
 #include <deque>
-#include <thread>
 
 namespace wrc::python {
 namespace {
@@ -44,47 +40,6 @@ int threads_argument(py::handle v, const char* context) {
     r.finish();
     return o.threads;
   });
-}
-
-// Runs the batch on a thread of its own while this one, without the GIL, wakes every 50 ms to let Python handle
-// signals: on KeyboardInterrupt the elements not begun are skipped, the run ends and the exception propagates.
-api::BatchRun run_interruptible(const Wheelset& model, const api::BatchInput& input, std::deque<FieldRecorder>& trees,
-                                int threads) {
-  std::atomic<bool> stop{false};
-  api::BatchRun run;
-  std::exception_ptr error;
-  bool done = false, interrupted = false;
-  std::mutex mutex;
-  std::condition_variable finished;
-  {
-    py::gil_scoped_release release;
-    std::thread runner([&] {
-      try {
-        run = api::run_batch(model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
-      } catch (...) {
-        error = std::current_exception();
-      }
-      std::lock_guard lock(mutex);
-      done = true;
-      finished.notify_all();
-    });
-    std::unique_lock lock(mutex);
-    while (!finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) {
-      if (interrupted) continue;
-      lock.unlock();
-      {
-        py::gil_scoped_acquire gil;
-        if (PyErr_CheckSignals() != 0) interrupted = true;  // the exception stays set for this thread
-      }
-      if (interrupted) stop = true;
-      lock.lock();
-    }
-    lock.unlock();
-    runner.join();
-  }
-  if (interrupted) throw py::error_already_set();
-  if (error) std::rethrow_exception(error);
-  return run;
 }
 
 // An element's exception as a one-by-one call raises it, with .index (its index into the batch).
@@ -129,14 +84,32 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
   }
 
   std::deque<FieldRecorder> trees(input.count);
-  const api::BatchRun run = run_interruptible(*model, input, trees, threads);
+  api::BatchRun run;  // Ctrl-C: the elements not begun are skipped, KeyboardInterrupt raised, the results dropped
+  run_interruptible([&](const std::atomic<bool>& stop) {
+    run = api::run_batch(*model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
+  });
 
-  // The same error for every element is the call's (a misspelt key, a value of the wrong kind): raised.
+  // The same bad input for every element is the call's (a misspelt key, a value of the wrong kind, a shared value out
+  // of range): the input is wrong as a whole, so it is raised once, as the one-by-one call raises it, with the count
+  // and the first element, rather than recorded as n copies of one error. Anything else is an element's, recorded.
   const auto& el = run.elements;
+  const py::object unravel = py::module_::import("numpy").attr("unravel_index");
+  const auto index_of = [&](std::size_t i) {
+    py::list plain;
+    for (auto n : py::tuple(unravel(i, shape))) plain.append(n.cast<long long>());
+    return py::tuple(plain);
+  };
   if (!el.empty() && std::all_of(el.begin(), el.end(), [&](const api::BatchElement& e) {
         return e.status == api::BatchStatus::failed && e.input && e.message == el.front().message;
-      }))
-    throw OptionFailure(el.front().message);
+      })) {
+    const py::tuple first = index_of(0);
+    py::object x = error_class("OptionError")(fmt::format("{} (every element of the batch fails so: all {}, the first "
+                                                          "at index {})", el.front().message, el.size(),
+                                                          py::repr(first).cast<std::string>()));
+    x.attr("index") = first;
+    PyErr_SetObject(error_class("OptionError").ptr(), x.ptr());
+    throw py::error_already_set();
+  }
 
   // The results stay in the engine's form (batch_fields.hpp): fields are stacked and items made when first read.
   auto kept = std::make_shared<BatchTrees>();
@@ -144,17 +117,13 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
   for (FieldRecorder& t : trees) kept->records.push_back(t.take());
   std::vector<bool> present(el.size());
   py::list errors;
-  const py::object unravel = py::module_::import("numpy").attr("unravel_index");
   for (std::size_t i = 0; i < el.size(); ++i) {
     present[i] = el[i].status == api::BatchStatus::done;
     if (present[i]) continue;
     FieldRecord& record = kept->records[i];
     py::object result = el[i].status == api::BatchStatus::not_converged ? to_python(record.root()) : py::none();
     record = FieldRecord();  // not in the batch's fields: its memory back now
-    py::tuple index = py::tuple(unravel(i, shape));
-    py::list plain;
-    for (auto n : index) plain.append(n.cast<long long>());
-    errors.append(element_error(el[i], result, py::tuple(plain)));
+    errors.append(element_error(el[i], result, index_of(i)));
   }
   const py::object nodes = batch_nodes(std::move(kept), present);
   py::object b = batch_module().attr("Batch")(operation, shape, nodes, errors, run.threads, run.seconds);

@@ -7,7 +7,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <span>
+#include <string>
 #include <string_view>
 #include <unordered_set>
 
@@ -149,6 +152,195 @@ py::array_t<bool> present(const BatchNodes& s) {
   return filled<bool>(s.nodes, [](const FieldNode* n) { return n != nullptr; });
 }
 
+// ---- pickle and copy: each element's node as bytes ----
+//
+// A node is written depth first: its kind (1 byte), whether it was documented (1 byte), its key, unit and object
+// type, then its value -- a number or an integer (8 bytes as in memory: a float's bits are kept, NaN payloads
+// included), a text, an array (its length, then its values), a grid (nx, ny, then nx ny values), a table's fields
+// (their count, then each), a list's announced length and items (their count, then each: tables). Lengths are
+// 8-byte unsigned integers. The bytes are read back by recording the same calls into a FieldRecorder: the tree read
+// back is the tree written, field for field and bit for bit. Data of another build's layout or cut short is
+// refused with an error, never read past its end.
+
+class NodeWriter {
+ public:
+  std::string bytes;
+  template <class T>
+  void put(T v) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  void text(std::string_view s) {
+    put<std::uint64_t>(s.size());
+    bytes.append(s);
+  }
+  template <class T>
+  void array(std::span<const T> v) {
+    put<std::uint64_t>(v.size());
+    bytes.append(reinterpret_cast<const char*>(v.data()), v.size_bytes());
+  }
+  void node(const FieldNode& n) {
+    put(static_cast<std::uint8_t>(n.kind));
+    put(static_cast<std::uint8_t>(n.documented));
+    text(n.key);
+    text(n.unit);
+    text(n.object_type);
+    switch (n.kind) {
+      case Kind::number: put(n.number); break;
+      case Kind::integer:
+      case Kind::boolean: put<std::int64_t>(n.integer); break;
+      case Kind::string: text(n.text); break;
+      case Kind::numbers: array(n.values); break;
+      case Kind::integers: array(n.integers); break;
+      case Kind::grid:
+        put<std::int32_t>(n.nx);
+        put<std::int32_t>(n.ny);
+        array(n.values);
+        break;
+      case Kind::list: put<std::uint64_t>(n.count); [[fallthrough]];
+      case Kind::table:
+        put<std::uint64_t>(n.fields);
+        for (const FieldNode& c : n.children()) node(c);
+        break;
+    }
+  }
+};
+
+class NodeReader {
+ public:
+  explicit NodeReader(std::string_view in) : in_(in) {}
+
+  // Records the node at the reader's position into `t`; `item`: it is an item of a list (a table opened by item()).
+  // Results nest a few levels (an equilibrium: 6, lists counted); kDepth bounds the recursion on damaged data.
+  void node(FieldRecorder& t, bool item = false, int depth = 0) {
+    constexpr int kDepth = 64;
+    if (depth > kDepth) damaged("nested too deep");
+    const auto kind = static_cast<Kind>(get<std::uint8_t>());
+    const bool documented = get<std::uint8_t>() != 0;
+    const std::string key(text()), unit(text()), type(text());
+    if (kind > Kind::list || (item && kind != Kind::table)) damaged("a node of unknown kind");
+    const FieldDoc doc{unit.c_str(), ""};
+    switch (kind) {
+      case Kind::number: documented ? t.number(key, get<double>(), doc) : t.number(key, get<double>()); break;
+      case Kind::integer:
+        documented ? t.integer(key, get<std::int64_t>(), doc) : t.integer(key, get<std::int64_t>());
+        break;
+      case Kind::boolean:
+        documented ? t.boolean(key, get<std::int64_t>() != 0, doc) : t.boolean(key, get<std::int64_t>() != 0);
+        break;
+      case Kind::string: {
+        const std::string v(text());
+        documented ? t.string(key, v, doc) : t.string(key, v);
+        break;
+      }
+      case Kind::numbers: {
+        const std::vector<double> v = array<double>();
+        documented ? t.numbers(key, v.data(), v.size(), doc) : t.numbers(key, v.data(), v.size());
+        break;
+      }
+      case Kind::integers: {
+        const std::vector<long long> v = array<long long>();
+        documented ? t.integers(key, v.data(), v.size(), doc) : t.integers(key, v.data(), v.size());
+        break;
+      }
+      case Kind::grid: {
+        const int nx = get<std::int32_t>(), ny = get<std::int32_t>();
+        const std::vector<double> v = array<double>();
+        if (nx < 0 || ny < 0 || v.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny))
+          damaged("a grid whose size is not nx ny");
+        documented ? t.grid(key, v.data(), nx, ny, doc) : t.grid(key, v.data(), nx, ny);
+        break;
+      }
+      case Kind::table:
+      case Kind::list: {
+        const bool list = kind == Kind::list;
+        const std::uint64_t count = list ? get<std::uint64_t>() : 0;
+        if (item) t.item();
+        else if (list) documented ? t.begin_list(key, count, doc) : t.begin_list(key, count);
+        else documented ? t.begin(key, doc) : t.begin(key);
+        if (!type.empty()) t.object_type(type);
+        const std::uint64_t fields = get<std::uint64_t>();
+        for (std::uint64_t k = 0; k < fields; ++k) node(t, list, depth + 1);
+        t.end();
+        break;
+      }
+    }
+  }
+
+  void finish() const {
+    if (at_ != in_.size()) damaged("bytes after its end");
+  }
+
+  [[noreturn]] static void damaged(std::string_view what) {
+    fail("wrc.Batch: the pickled results are damaged ({}): pickle and unpickle with the same wrc", what);
+  }
+
+ private:
+  std::string_view take(std::uint64_t n) {
+    if (n > in_.size() - at_) damaged("cut short");
+    const std::string_view s = in_.substr(at_, static_cast<std::size_t>(n));
+    at_ += static_cast<std::size_t>(n);
+    return s;
+  }
+  template <class T>
+  T get() {
+    T v;
+    std::memcpy(&v, take(sizeof v).data(), sizeof v);
+    return v;
+  }
+  std::string_view text() { return take(get<std::uint64_t>()); }
+  template <class T>
+  std::vector<T> array() {
+    const std::uint64_t n = get<std::uint64_t>();
+    if (n > (in_.size() - at_) / sizeof(T)) damaged("cut short");
+    std::vector<T> v(static_cast<std::size_t>(n));
+    if (n > 0) std::memcpy(v.data(), take(n * sizeof(T)).data(), v.size() * sizeof(T));
+    return v;
+  }
+
+  std::string_view in_;
+  std::size_t at_ = 0;
+};
+
+// (list, [bytes of each element's node, None where it has none]).
+py::tuple pickled(const BatchNodes& s) {
+  py::list nodes(s.nodes.size());
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    if (!s.nodes[i]) {
+      nodes[i] = py::none();
+      continue;
+    }
+    NodeWriter w;
+    w.node(*s.nodes[i]);
+    nodes[i] = py::bytes(w.bytes);
+  }
+  return py::make_tuple(s.list, nodes);
+}
+
+// The nodes read back: each into a record of its own, as the only field of its root.
+BatchNodes unpickled(const py::tuple& state) {
+  if (state.size() != 2) NodeReader::damaged("not a pair");
+  auto trees = std::make_shared<BatchTrees>();
+  const py::list given = state[1].cast<py::list>();
+  std::vector<int> record_of;
+  for (py::handle b : given) {
+    if (b.is_none()) {
+      record_of.push_back(-1);
+      continue;
+    }
+    const std::string bytes = b.cast<std::string>();
+    NodeReader r(bytes);
+    FieldRecorder t;
+    r.node(t);
+    r.finish();
+    record_of.push_back(static_cast<int>(trees->records.size()));
+    trees->records.push_back(t.take());
+  }
+  BatchNodes s{trees, {}, state[0].cast<bool>()};
+  for (int k : record_of)
+    s.nodes.push_back(k < 0 ? nullptr : trees->records[static_cast<std::size_t>(k)].root().child(0));
+  return s;
+}
+
 }  // namespace
 
 py::object batch_nodes(std::shared_ptr<const BatchTrees> trees, const std::vector<bool>& present) {
@@ -159,6 +351,7 @@ py::object batch_nodes(std::shared_ptr<const BatchTrees> trees, const std::vecto
 }
 
 void register_batch_fields(py::module_& m) {
+  m.def("_batch_nodes", &unpickled, py::arg("state"), "a batch's results from what pickling them gave");
   py::class_<BatchNodes>(m, "_BatchNodes",
                          "The results of a batch's elements kept in the engine's form (python/wrc/batch.py reads them)")
       .def("__len__", [](const BatchNodes& s) { return s.nodes.size(); })
@@ -169,7 +362,15 @@ void register_batch_fields(py::module_& m) {
       .def("item", &item, py::arg("k"), "the k-th item of each list")
       .def("padded", &padded, py::arg("longest"), "items 0 .. longest - 1 of each list, element after element")
       .def("present", &present, "whether each element has a node")
-      .def("results", &results, "each element's wrc.Result, None where absent");
+      .def("results", &results, "each element's wrc.Result, None where absent")
+      // pickle: made again by wrc.batch._nodes_from(state), a Python function (pickle names it; a compiled one it
+      // cannot), rather than by __setstate__ on a bare instance (which pybind11 cannot make under protocols 0 and 1)
+      .def("__reduce__", [](const BatchNodes& s) {
+        return py::make_tuple(py::module_::import("wrc.batch").attr("_nodes_from"), py::make_tuple(pickled(s)));
+      })
+      // The results never change once recorded: a copy shares them (the wrc.Batch copied makes its arrays anew).
+      .def("__copy__", [](const BatchNodes& s) { return s; })
+      .def("__deepcopy__", [](const BatchNodes& s, const py::dict&) { return s; }, py::arg("memo"));
 }
 
 }  // namespace wrc::python

@@ -11,6 +11,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -75,6 +77,13 @@ class Lease {
   PyWheelset& w_;
   std::unique_ptr<ContactWorkspace> ws_;
 };
+
+// Runs work(stop) -- a long call of worker threads: a batch, a sweep -- on a thread of its own while the calling thread
+// (holding the GIL on entry) waits without it, waking every 50 ms to let Python run its signal handlers. When one
+// raises (Ctrl-C: KeyboardInterrupt), `stop` turns true, work is waited for -- it must begin nothing more, let its
+// workers finish what they are doing and return or throw -- and the exception propagates; work's own error otherwise
+// (interrupt.cpp).
+void run_interruptible(const std::function<void(const std::atomic<bool>& stop)>& work);
 
 // A batch call (batch_binding.cpp) when an argument of `operation` that batches holds an array, or threads= is
 // given: the wrc.Batch of the elements. None for a one-by-one call.

@@ -24,7 +24,8 @@ const std::vector<PythonEntry>& python_entries() {
        "The elastic equilibrium of the free wheelset under the load Q at (y, yaw): z and roll solved."},
       {"rigid", "Wheelset.rigid", "self", "Result", "The rigid contact at (y, yaw): contact points, rolling radii."},
       {"sweep", "Wheelset.sweep", "self", "Result",
-       "Equilibria over y (and yaw) on all cores; .table is a pandas DataFrame of the rows."},
+       "Equilibria over y (and yaw) on all cores; .table is a pandas DataFrame of the rows. Ctrl-C stops it between "
+       "cases (KeyboardInterrupt, nothing returned)."},
       {"geometry_table", "Wheelset.geometry_table", "self", "pandas.DataFrame",
        "The rigid contact over a range of y, as a pandas DataFrame (units in the column names)."},
       {"wheelset_conicity", "Wheelset.conicity", "self", "Result",

@@ -169,10 +169,14 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
   auto call = read_call<api::SweepCall>(kw, ctx);
   if (call.progress.on(false)) call.options.progress = host::progress_line("sweep", "cases");
   call.options.notice = host::note_printer("sweep");
+  SweepResult r;  // Ctrl-C: no case begins after it, KeyboardInterrupt is raised and nothing returned
+  run_interruptible([&](const std::atomic<bool>& stop) {
+    call.options.stop = &stop;
+    r = call.run(*model, [&] { return model->make_workspace(); });
+  });
   FieldRecord tree;
   {
     py::gil_scoped_release release;
-    const SweepResult r = call.run(*model, [&] { return model->make_workspace(); });
     FieldRecorder t;
     long long failed = 0;
     t.begin_list("rows", r.cases.size(), {"", "one entry per case, in the order of the plan"});

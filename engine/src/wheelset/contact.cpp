@@ -230,9 +230,7 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
 // evaluate_contact, with the predictor's load when given: locate, then each wheel's areas.
 ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorkspace& ws, const ContactRequest& request,
                        const VerticalLoad* load) {
-  request.validate(model.options().check_magnitudes);
-  if (request.rolling && model.options().check_magnitudes)
-    request.rolling->check_kinematics("contact", model.geometry().track->params.radius);
+  request.validate(model.options().check_magnitudes, model.geometry().track->params.radius);
   const LocationState& st = [&]() -> const LocationState& {
     PhaseTimer t(ws, ws.times.locate);
     return ws.locator.locate(pose);
@@ -303,8 +301,8 @@ ContactRequest read_contact_request(OptionReader& r) {
   return req;
 }
 
-void ContactRequest::validate(bool plausible) const {
-  if (rolling) rolling->validate("contact", plausible);
+void ContactRequest::validate(bool plausible, double r0) const {
+  if (rolling) rolling->validate("contact", plausible, r0);
   if (rolling && rolling->kinematics && rolling->kinematics->free_rolling && (only_side != -1 || jacobian))
     fail("contact: free_rolling balances the axle torque of both wheels at one omega: not with {}", only_side != -1
          ? "only_side (one wheel)" : "sensitivity (the Jacobian would hold omega fixed; give the omega it found)");

@@ -30,6 +30,10 @@ constexpr double kUpsideDownRise = 10e-3; // m: a wheel rising more above its ta
 // m: the largest lateral play of a wheelset in service between its flanges and the rails: EN 13848-5's widest gauge
 // (about 1.470 m) less EN 15313's smallest back-to-back (1.357 m) and flanges (Sd 22 mm); nominal 10 mm
 constexpr double kMaxFlangeway = 70e-3;
+// m: how far below the rail's top the gauge is measured: EN 13848-1 14 mm, AAR 5/8 in (15.9 mm), GOST 13 mm. Nearer
+// the top the gauge point lies on the head's rounded corner, millimetres toward the field side, and the rails close in
+// on the flanges: S1002 on 60E1 with gauge_depth = 2 mm touched its flange at y = 3 mm (Y/Q 1.47 for 0.041).
+constexpr double kMinGaugeDepth = 10e-3, kMaxGaugeDepth = 25e-3;
 
 std::string describe_profile(const Profile& p, int side) {
   return fmt::format("the {} {} profile '{}' ({})", side_name(side), to_string(p.kind), p.name, p.source);
@@ -44,7 +48,7 @@ void check_extent(const Profile& p, int side) {
   const char* what = wheel ? "a wheel profile (S1002: 130 mm)" : "a rail head (60E1: 73 mm)";
   if (width > w.hi || height > h.hi)
     fail("wrc.wheelset: {} is {:.4g} mm wide and {:.4g} mm tall; {} is at most {:.0f} mm wide and {:.0f} mm tall: "
-         "are its units right (a file in mm read with units = \"m\")?", describe_profile(p, side), width * 1e3,
+         "are its units right? wrc takes metres (points given in mm, or a file in mm read with units = \"m\")", describe_profile(p, side), width * 1e3,
          height * 1e3, what, w.hi * 1e3, h.hi * 1e3);
   if (width < w.lo)
     fail("wrc.wheelset: {} is {:.4g} mm wide; {} is at least {:.0f} mm wide: are its units right (a file in metres "
@@ -158,6 +162,19 @@ void check_flangeway(const Track& t) {
        thick[kRight] * 1e3, kMaxFlangeway * 1e3);
 }
 
+// The gauge of flanged wheels is measured where standards measure it; a flangeless test body's gauge point is only
+// where its rails are placed.
+void check_gauge_depth(const Track& t) {
+  const double d = t.params.gauge_depth;
+  if (d >= kMinGaugeDepth && d <= kMaxGaugeDepth) return;
+  if (!flange_of(t.wheel[kLeft]).present && !flange_of(t.wheel[kRight]).present) return;
+  fail("wrc.wheelset: gauge_depth = {:.4g} m puts the gauge points {:.1f} mm below the rails' tops; the gauge is "
+       "measured {:.0f} .. {:.0f} mm below them (EN 13848-1: 14 mm, gauge_depth = 0.014; AAR: 5/8 in, 0.0159), where "
+       "the head's gauge face is, and gauge = {:.4f} m is the distance between those points. Nearer the top the rails "
+       "close in on the flanges. check_setup = false accepts it", d, d * 1e3, kMinGaugeDepth * 1e3,
+       kMaxGaugeDepth * 1e3, t.params.gauge);
+}
+
 }  // namespace
 
 void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& r) {
@@ -185,6 +202,7 @@ void check_setup(const Track& t) {
     check_flange_back(t.wheel[s], s, t.params.tape_offset);
     check_head(t.rail[s], s);
   }
+  check_gauge_depth(t);
   check_flangeway(t);
 }
 

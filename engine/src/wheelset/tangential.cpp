@@ -733,31 +733,14 @@ halfspace::Friction read_friction(OptionReader& r) {
   return f;
 }
 
-}  // namespace
-
-void RollingRequest::validate(std::string_view context, bool plausible) const {
-  if (!plausible) return;
-  check_plausible(context, "V", kinematics ? kinematics->V : V, kTrainSpeed);
-  check_plausible(context, friction.law == halfspace::FrictionLaw::coulomb ? "mu" : "mu(0)",
-                  friction.static_coefficient, kFrictionCoefficient);
-  for (const auto& side : friction_profile)
-    if (side)
-      for (double mu : side->mu) check_plausible(context, "friction_profile's mu", mu, kFrictionCoefficient);
-  if (creepage) check_plausible(context, "phi", creepage->phi, kSpinCreepage);
-  if (friction.law == halfspace::FrictionLaw::polach)  // s_1 = ln 2 / B (halfspace::Friction::polach)
-    check_plausible(context, "B", std::numbers::ln2 / friction.velocity[0], kPolachDecay);
-  if (friction.law == halfspace::FrictionLaw::coulomb || friction.law == halfspace::FrictionLaw::polach) return;
-  for (std::size_t i = 0; i < 2; ++i)
-    if (friction.term[i] > 0)
-      check_plausible(context, i == 0 ? "s1" : "s2", friction.velocity[i], kFrictionVelocity);
-}
-
-void RollingRequest::check_kinematics(std::string_view context, double r0) const {
+// yaw_rate, vy, and omega against pure rolling on r0 (m).
+void check_kinematics(const std::optional<Kinematics>& kinematics, std::string_view context, double r0) {
   if (!kinematics) return;
   const Kinematics& k = *kinematics;
   check_plausible(context, "yaw_rate", k.yaw_rate, kYawRate);
   check_plausible(context, "vy", k.vy, kLateralVelocity);
   if (!k.omega) return;
+  if (!(r0 > 0)) fail("{}: omega cannot be checked against pure rolling without the nominal radius (r0 = {} m)", context, r0);
   const double rolling = k.V / r0, ratio = *k.omega / rolling;
   if (ratio >= 0 && ratio <= kMaxSpinRatio) return;
   fail("{}: omega = {:.6g} rad/s is {:.3g} times the {:.4g} rad/s of pure rolling at V = {:.4g} m/s on r0 = {:.4g} m: "
@@ -765,6 +748,30 @@ void RollingRequest::check_kinematics(std::string_view context, double r0) const
        "(-1). Is omega in another unit? wrc takes rad/s ({:.4g} rad/s is {:.4g} rpm); check_setup = false on the "
        "wheelset accepts it", context, *k.omega, ratio, rolling, k.V, r0, 1 - ratio, rolling,
        rolling * 60 / (2 * std::numbers::pi));
+}
+
+}  // namespace
+
+void RollingRequest::validate(std::string_view context, bool plausible, double r0) const {
+  if (!plausible) return;
+  check_plausible(context, "V", kinematics ? kinematics->V : V, kTrainSpeed);
+  check_kinematics(kinematics, context, r0);
+  check_plausible(context, friction.law == halfspace::FrictionLaw::coulomb ? "mu" : "mu(0)",
+                  friction.static_coefficient, kFrictionCoefficient);
+  for (const auto& side : friction_profile)
+    if (side)
+      for (double mu : side->mu) check_plausible(context, "friction_profile's mu", mu, kFrictionCoefficient);
+  if (creepage) {
+    check_plausible(context, "xi", creepage->xi, kCreepage);
+    check_plausible(context, "eta", creepage->eta, kCreepage);
+    check_plausible(context, "phi", creepage->phi, kSpinCreepage);
+  }
+  if (friction.law == halfspace::FrictionLaw::polach)  // s_1 = ln 2 / B (halfspace::Friction::polach)
+    check_plausible(context, "B", std::numbers::ln2 / friction.velocity[0], kPolachDecay);
+  if (friction.law == halfspace::FrictionLaw::coulomb || friction.law == halfspace::FrictionLaw::polach) return;
+  for (std::size_t i = 0; i < 2; ++i)
+    if (friction.term[i] > 0)
+      check_plausible(context, i == 0 ? "s1" : "s2", friction.velocity[i], kFrictionVelocity);
 }
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {

@@ -11,6 +11,7 @@
 #include "wrc/kinematics/rigid.hpp"
 #include "wrc/wheelset/contact.hpp"
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -72,6 +73,9 @@ struct SweepOptions {
   std::string single_thread;
   // Called once (on the calling thread) when fewer threads run than `threads` asked for, with the reason.
   std::function<void(const std::string&)> notice;
+  // The front end's stop (Ctrl-C): once it turns true no case begins (those being solved finish) and run_sweep
+  // throws wrc::Error saying how many cases were solved, so that no partial sweep is taken for a whole one.
+  const std::atomic<bool>* stop = nullptr;
 };
 struct SweepResult {
   std::vector<int> index;                   // the plan's case index of each entry (ascending)

@@ -93,6 +93,14 @@ enum class ShakedownMap { point, line };   // which of Johnson's maps gives the 
 
 // k of wheel steel ER7 (EN 13262: yield strength ReH >= 520 MPa) by von Mises, k = ReH / sqrt(3) = 300 MPa.
 inline constexpr double kDefaultShearYield = 520e6 / std::numbers::sqrt3;
+// The shear yield stresses k a contact is computed with: 1 MPa (a soft polymer test body) .. 10 GPa (beyond any steel).
+// Below is a k given in MPa (shear_yield = 300 made Ekberg's FI_surf the traction coefficient: fatigue everywhere).
+inline constexpr double kMinShearYield = 1e6, kMaxShearYield = 1e10;
+// m: the deepest depth asked for: below any wheel rim (70 mm thick) or rail head (40-50 mm), the half-space is no longer
+// the body. A deeper z is a depth in mm (z = {0.5, 1, 2} gave von Mises 0.2 MPa for 965 at 2 mm).
+inline constexpr double kMaxSubsurfaceDepth = 0.1;
+// Throws wrc::Error naming `context` when k (Pa) is not finite within [kMinShearYield, kMaxShearYield].
+void check_shear_yield(std::string_view context, double k);
 // The maps' subsurface shakedown limits p0/k in free rolling (header).
 inline constexpr double kPointShakedownLimit = 4.7, kLineShakedownLimit = 4.0;
 // At most this many depths per call, and this many stored field values (depths x elements x 11 grids; beyond it ask

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "wrc/core/options.hpp"
+#include "wrc/profile/orientation.hpp"
 #include "wrc/profile/profile.hpp"
 
 #include <functional>
@@ -46,6 +47,7 @@ struct RawProfile {
   std::string name;                          // empty: the host uses the file's stem
   std::vector<std::string> transforms;       // what the reader applied, in order
   std::vector<std::pair<std::string, std::string>> metadata;
+  Reversals reversed;                        // the file's steps that reversed y or z, and how to undo them
 };
 
 // Axis-aligned window (metres) of the frame after units and mirrors, before the shift.

@@ -318,8 +318,9 @@ struct ContactRequest {
   // check their solution against their own SolveLimits::max_penetration (equilibrium/limits.hpp).
   double max_penetration = kMaxPenetration;
   // Throws wrc::Error naming the member, its value and its range (evaluate_contact calls it first).
-  // `plausible`: the speed checked against a train's too (ContactOptions::check_magnitudes).
-  void validate(bool plausible = false) const;
+  // `plausible` (ContactOptions::check_magnitudes): the rolling request's magnitudes checked against a railway
+  // wheelset's of nominal radius r0 (m) too (RollingRequest::validate).
+  void validate(bool plausible = false, double r0 = 0) const;
 };
 
 // Reads ws:contact's keys (wrc_contact's options) into a request: grids (default true), sensitivity (false),

@@ -17,7 +17,8 @@ namespace wrc {
 // reversed y), a "rail" that does not fall by 0.1 mm on the field side of its highest point or rises again there by
 // more than 1 mm (a wheel profile: its tread rises toward the field side), a wheel rising more than 10 mm above its
 // tape circle (upside down), flanges that do not fit between the rails (back_to_back + both flange thicknesses >=
-// gauge) or leave more than 70 mm of play (gauge and back_to_back of different tracks).
+// gauge) or leave more than 70 mm of play (gauge and back_to_back of different tracks), a gauge of flanged wheels
+// measured outside 10 .. 25 mm below the rails' tops (gauge_depth; EN 13848-1: 14 mm).
 void check_setup(const Track& track);
 
 // The magnitudes a railway wheelset's inputs have (SI units). A value outside was almost surely given in another unit
@@ -46,6 +47,11 @@ inline constexpr Plausible kLateralVelocity{"a wheelset's lateral velocity", "m/
 // The axle's angular velocity against pure rolling at r0, omega r0 / V: 1 - xi, within 0 (locked, xi = 1) .. 2 (the
 // wheel's surface twice as fast as the train, xi = -1). Given in rpm it is 9.55 times the rad/s.
 inline constexpr double kMaxSpinRatio = 2;
+// A prescribed longitudinal or lateral creepage: the same bound, |xi| <= kMaxSpinRatio - 1 (a locked wheel, or one
+// turning twice as fast as it rolls), and |eta| likewise (a wheelset sliding sideways as fast as it runs, 45 deg of
+// yaw). Creep curves are measured to a few percent of creepage: xi = 2 is 2 % given as a percentage.
+inline constexpr Plausible kCreepage{"a creepage", "", 0, kMaxSpinRatio - 1,
+                                     "2 % is xi = 0.02"};
 // The slip velocities of CONTACT's falling friction laws (s1, s2): wheel-rail slip velocities are mm/s to a few m/s,
 // and CONTACT takes them in mm/s, where wrc takes m/s.
 inline constexpr Plausible kFrictionVelocity{"a friction law's slip velocity", "m/s", 0, 10,

@@ -85,11 +85,10 @@ struct RollingRequest {
   // The damage indices every solved area gets (PatchRolling::damage): T gamma and the fatigue indices always, the
   // wear fields when a call asks for a wear model (`wear = {...}`: with_wear).
   damage::DamageOptions damage{.wear = {}, .fatigue = {}, .with_wear = false};
-  // The speed's magnitude (plausibility.hpp, with `plausible`: check_setup); the reader checks the rest.
-  void validate(std::string_view context, bool plausible) const;
-  // The kinematics' magnitudes against a railway wheelset's of nominal radius r0 (m): yaw_rate, vy, and omega against
-  // pure rolling (plausibility.hpp; with check_setup).
-  void check_kinematics(std::string_view context, double r0) const;
+  // With `plausible` (check_setup), the magnitudes against a railway wheelset's of nominal radius r0 (m): V, the
+  // friction, spin, the friction law's constants, yaw_rate, vy, and omega against pure rolling (plausibility.hpp);
+  // the reader checks the rest.
+  void validate(std::string_view context, bool plausible, double r0) const;
 };
 
 // Reads a call's rolling keys: V, omega or free_rolling, vy, yaw_rate, slip_reference ("deformed" | "undeformed")
