@@ -25,10 +25,10 @@ constexpr double kFirstStep = 1e-4;  // omega r0 / V: xi 1e-4, the creepage of a
 // The longest first (Newton) step: a slope from another case may be far off (a flat, saturated torque), and a bracket
 // reaching into full sliding would leave regula falsi on its plateau.
 constexpr double kNewtonStep = 1e-3;
-constexpr double kSlopeBase = 1e-7;
+constexpr double kSlopeBase = 1e-7;  // the shortest secant the slope is taken from (100 x kFreeRollingResolution)
 // The secant's step past its predicted root, so that the bracket closes where the torque is known only to the exact
 // solver's noise (a secant from one side stalled at -0.68 N m, 1.6e-7 short of the root, on a flange at 1e-4).
-constexpr double kOvershoot = 1.2;  // the shortest secant the slope is taken from (100 x kFreeRollingResolution)
+constexpr double kOvershoot = 1.2;
 constexpr int kGrowSteps = 16;      // 1e-4 x 4^7 already spans kFreeRollingSpan
 constexpr int kRootSteps = 40;      // regula falsi (Illinois) within the bracket
 
@@ -36,7 +36,8 @@ constexpr int kRootSteps = 40;      // regula falsi (Illinois) within the bracke
 double sliding_torque(const ContactResult& result, const RollingRequest& request) {
   double t = 0;
   for (const WheelContact& wc : result.wheel)
-    for (const PatchContact& pc : wc.patches) t += request.friction.static_coefficient * pc.normal_force * pc.rolling_radius;
+    for (const PatchContact& pc : wc.patches)
+      t += request.friction.static_coefficient * pc.normal_force * pc.rolling_radius;
   return t;
 }
 
