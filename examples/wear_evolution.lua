@@ -1,6 +1,7 @@
 -- Wheel (and rail) profiles worn over mileage: a wear loop (docs/guide/wear.md). Per step every running case is
 -- solved -- the wheelset's equilibrium under its load, then rolling contact with the wear model (Archard with the KTH
--- map by default) at that pose; the depth each area wears per passage is mapped onto the profiles, spread over the
+-- map by default) at that pose, the axle turning at omega = V / r0 (spin=nominal) or at the spin that balances its
+-- torque (spin=free); the depth each area wears per passage is mapped onto the profiles, spread over the
 -- wheel's circumference, weighted by the cases' shares of distance, smoothed (area-preserving) and scaled so that the
 -- step's largest wheel depth is step_mm; the profiles move along their normals, and the next step runs on them.
 --
@@ -48,6 +49,8 @@ local s = study.new{
      max = 20},
     {"grid_mm", "number", 0.2, "element size of the contact areas (mm)", min = 0.01, max = 5},
     {"method", "string", "exact", "rolling contact solver", choices = {"exact", "fastsim"}},
+    {"spin", "string", "nominal", "the wheelset's spin: omega = V / r0, or the one that balances its axle torque " ..
+     "(free rolling)", choices = {"nominal", "free"}},
     {"model", "string", "archard", "wear model", choices = {"archard", "usfd"}},
     {"k", "number", 0, "Archard's constant wear coefficient (0: the KTH wear map)", min = 0, max = 1},
     {"tangent", "integer", 90, "generated cases on tangent track", min = 0},
@@ -87,7 +90,7 @@ do
   loop.wheelset(loop.initial{wheel = wheel, rail = rail, wheelset = probe})
 end
 local wear = {model = opt.model, k = (opt.model == "archard" and opt.k > 0) and opt.k or nil}
-local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, wear = wear, method = opt.method,
+local step_options = {step = opt.step_mm * 1e-3, smooth = opt.smooth_mm * 1e-3, wear = wear, method = opt.method, spin = opt.spin,
                       threads = opt.threads, rail_passes = opt.rail_passes, scheme = opt.scheme,
                       tolerance = opt.tolerance > 0 and opt.tolerance * opt.step_mm * 1e-3 or nil,
                       km_end = opt.km_end > 0 and opt.km_end or nil}

@@ -279,12 +279,19 @@ end
 M.ROLLING_TOLERANCE = 1e-4
 
 local function sweep_keys(ws, g, o, warm)
+  if o.spin ~= nil and o.spin ~= "free" and o.spin ~= "nominal" then
+    error("wear step: spin = " .. tostring(o.spin) .. " must be \"free\" (the torque-free spin) or \"nominal\" "
+          .. "(omega = V / r0)", 0)
+  end
   local c = g.case
   local k = {y = g.ys, yaw = {c.yaw}, Q = c.Q, V = c.V, mu = c.mu, wear = o.wear or {}, method = o.method,
              rolling_tolerance = o.rolling_tolerance or M.ROLLING_TOLERANCE,
              rows = true, chain = o.chain or ((warm and #g.ys <= 8) and 2 or 8), progress = false}
   if c.creepage then k.creepage = c.creepage
-  elseif c.radius then k.yaw_rate = c.V / c.radius end
+  else
+    if c.radius then k.yaw_rate = c.V / c.radius end
+    k.free_rolling = o.spin == "free" or nil  -- the balanced spin; "nominal" (default): omega = V / r0
+  end
   -- Chains of 8 (a chunk's first case starts from its equilibrium on the profiles before, or cold); a small group
   -- (the curving cases: 5 on one side of y = 0, one chain of 4 after the centre) with those starts (`warm`) in
   -- pieces of 2, so that two threads share it (cold, each piece would cost 10 times more). No more threads than
@@ -560,7 +567,10 @@ end
 -- starts the solves of the cases in `list`, those of the final list that need no placing, while it places the others:
 -- M.generated_cases' key `early`).
 -- o = {step = m (the largest wheel depth of the step), smooth = m (the smoothing's standard deviation), wear = {...}
--- (the wear model's keys), method =, rolling_tolerance = (the exact solver's; default M.ROLLING_TOLERANCE),
+-- (the wear model's keys), method =, rolling_tolerance = (the exact solver's; default M.ROLLING_TOLERANCE), spin =
+-- "nominal" (default: omega = V / r0) | "free" (each case with kinematics rolls at the omega that balances its axle
+-- torque, free_rolling; its search still fails on some worn flanges: docs/guide/wear.md), cases with prescribed
+-- creepages keep them either way,
 -- threads =, chain =, rail_passes = (passages of the wheelset over a rail
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =
 -- "heun" (default: the rates at the start and at the profiles an Euler step gives, averaged -- second order in the

@@ -3,7 +3,7 @@
 -- Archard/KTH: the time to place the curving cases, of one rate evaluation (the cases solved and mapped: an Euler
 -- step), of a Heun step (two), and of the next Heun step with and without each case started from its equilibrium and
 -- its exact tangential solution of the step before, CPU (all threads) and wall.
---   build/wrc run tests/bench/bench_wear_step.lua [grid_mm=0.2] [method=exact] [threads=2] [tangent=90]
+--   build/wrc run tests/bench/bench_wear_step.lua [grid_mm=0.2] [method=exact] [threads=2] [tangent=90] [spin=free]
 local loop = require "wrc.wear_loop"
 local grid = (tonumber(arg.grid_mm) or 0.2) * 1e-3
 local threads = tonumber(arg.threads) or 2
@@ -25,7 +25,7 @@ local function timed(what, f)
 end
 local list = timed("placing the 10 curving cases (y for Y)", function() return cases(st) end)
 print(("%d cases, grid %.2f mm, method %s, %d threads"):format(#list, grid * 1e3, arg.method or "exact", threads))
-local o = {step = 0.1e-3, smooth = 1e-3, wear = {}, threads = threads, method = arg.method}
+local o = {step = 0.1e-3, smooth = 1e-3, wear = {}, threads = threads, method = arg.method, spin = arg.spin}
 timed("one Euler step (the cases placed before)", function() o.scheme = "euler"; return loop.step(st, list, o) end)
 local st1 = timed("one Heun step (placing the cases twice)", function() o.scheme = "heun"; return loop.step(st, cases, o) end)
 -- The steps after the first: every case from its equilibrium and its exact tangential solution on the profiles before

@@ -572,6 +572,7 @@ void describe(const EquilibriumResult& e, FieldSink& out) {
   out.vec3("force", e.contact.force, {"N", "contact forces of both wheels summed (track frame)"});
   out.vec3("moment", e.contact.moment, {"N m", "their moment about the wheelset centre (track axes)"});
   describe(e.contact.creep, out);
+  describe_spin(e.contact, out);
 }
 
 }  // namespace wrc

@@ -130,7 +130,7 @@ class SweepRun {
         if (!opt_.keep_grids) drop_grids(e.contact, opt_.keep_rows);  // rows: a wear loop's input, a hundredth of the numbers
       }
       if (ok && reported && opt_.keep_starts)
-        out_.contact_starts[static_cast<std::size_t>(slot)] = std::make_shared<const ContactStart>(ContactStart{ws.previous, ws.tangential});
+        out_.contact_starts[static_cast<std::size_t>(slot)] = std::make_shared<const ContactStart>(ContactStart{ws.previous, ws.tangential, ws.spin});
       if (opt_.rigid && reported)
         out_.rigid[static_cast<std::size_t>(slot)] = solve_rigid(model_.geometry(), sc.y, sc.yaw, opt_.Q);
     } catch (const std::exception& ex) {
@@ -139,6 +139,7 @@ class SweepRun {
       e.yaw = sc.yaw;
       e.Q = opt_.Q;
       e.message = ex.what();
+      e.converged = ok = false;  // also when the equilibrium converged and its rolling contact failed
     }
     if (reported) progress_.add(!ok);
     return ok;

@@ -413,6 +413,9 @@ WheelResult solve_wheel(const ContactModel& model, const WheelCase& c, ContactWo
                         const std::optional<WheelHint>& hint) {
   c.validate("wheel", model.options().check_magnitudes);
   if (rolling) rolling->validate("wheel", model.options().check_magnitudes, model.geometry().track->params.radius);
+  if (rolling && rolling->kinematics && rolling->kinematics->free_rolling)
+    fail("wheel: free_rolling balances the axle torque of both wheels at one omega; a single wheel's solve cannot "
+         "(give omega: e.g. the one ws:contact or ws:sweep found with free_rolling)");
   opt.validate("wheel");
   WheelResult res;
   res.side = c.side;

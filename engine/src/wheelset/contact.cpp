@@ -3,6 +3,7 @@
 #include "wrc/wheelset/contact.hpp"
 
 #include "area.hpp"
+#include "free_rolling.hpp"
 #include "tangential_step.hpp"
 #include "vertical_load.hpp"
 
@@ -174,6 +175,17 @@ void add_area(WheelContact& wc, PatchContact&& pc) {
   wc.patches.push_back(std::move(pc));
 }
 
+bool free_rolling(const RollingRequest& request) { return request.kinematics && request.kinematics->free_rolling; }
+
+// The creep moments about the axle and the spin the areas were solved at.
+void finish_creep(const ContactModel& model, ContactResult& result, const RollingRequest& request) {
+  const Eigen::Vector3d axle = PoseFrame(result.pose).matrix().col(1);
+  for (WheelContact& wc : result.wheel) wc.creep.axle_torque = wc.creep.moment.dot(axle);
+  result.creep.axle_torque = result.creep.moment.dot(axle);
+  result.omega.reset();
+  if (const auto& k = request.kinematics) result.omega = k->omega.value_or(k->V / model.geometry().track->params.radius);
+}
+
 // The areas of one wheel through the pipeline, their tangential problems, the wheel's totals; the workspace remembers
 // the areas for the next evaluation.
 WheelContact wheel_contact(const ContactModel& model, const LocationState& st, int side, ContactWorkspace& ws,
@@ -193,10 +205,11 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
                  std::make_move_iterator(located.segments[p].end()));
     const AreaInput in{model, st, side, group, all, st.patches(side)[static_cast<std::size_t>(group.front())]};
     PatchContact pc = solve_area(in, how, ws, next_previous);
-    if (request.rolling) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);
+    if (request.rolling && !free_rolling(*request.rolling)) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);
     add_area(wc, std::move(pc));
   }
-  if (request.rolling) {  // as the normal problem's areas: the one before kept for the next step's extrapolation
+  if (request.rolling && !free_rolling(*request.rolling)) {  // as the normal problem's areas: the one before kept
+                                                              // for the next step's extrapolation
     ws.tangential_before[side].clear();
     if (ws.extrapolate) ws.tangential_before[side] = std::move(ws.tangential[side]);
     ws.tangential[side] = std::move(next_tangential);
@@ -234,6 +247,10 @@ ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorks
     res.sensitivity += wc.sensitivity;
     add_creep(res.creep, wc.creep);
   }
+  if (request.rolling) {
+    if (free_rolling(*request.rolling)) solve_free_rolling(model, res, *request.rolling, ws);
+    else finish_creep(model, res, *request.rolling);
+  }
   if (request.jacobian) add_jacobian(model, res, request.rolling, ws);
   if (!request.keep_grids) drop_grids(res);
   return res;
@@ -259,6 +276,7 @@ void ContactWorkspace::forget() {
   for (auto& p : before) p.clear();
   for (auto& p : tangential) p.clear();
   for (auto& p : tangential_before) p.clear();
+  spin.reset();
 }
 
 double read_max_penetration(OptionReader& r, double fallback) {
@@ -285,6 +303,9 @@ ContactRequest read_contact_request(OptionReader& r) {
 
 void ContactRequest::validate(bool plausible, double r0) const {
   if (rolling) rolling->validate("contact", plausible, r0);
+  if (rolling && rolling->kinematics && rolling->kinematics->free_rolling && (only_side != -1 || jacobian))
+    fail("contact: free_rolling balances the axle torque of both wheels at one omega: not with {}", only_side != -1
+         ? "only_side (one wheel)" : "sensitivity (the Jacobian would hold omega fixed; give the omega it found)");
   if (!(max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", max_penetration);
   if (!(tolerance >= 0 && tolerance <= 1e-2))
     fail("contact: tolerance = {} must be in [0, 1e-2] (relative; 0: the model's)", tolerance);
@@ -314,6 +335,7 @@ double largest_potential_area(const ContactModel& model, const LocationState& st
 
 void add_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
                  ContactWorkspace& ws) {
+  if (free_rolling(request)) return solve_free_rolling(model, result, request, ws);
   result.force.setZero();
   result.moment.setZero();
   result.creep = {};
@@ -335,6 +357,7 @@ void add_rolling(const ContactModel& model, ContactResult& result, const Rolling
     result.moment += wc.moment;
     add_creep(result.creep, wc.creep);
   }
+  finish_creep(model, result, request);
 }
 
 void add_sensitivity(const ContactModel& model, ContactResult& result, ContactWorkspace& ws) {
@@ -474,6 +497,15 @@ void describe(const Pose& p, FieldSink& out) {
   out.end();
 }
 
+void describe_spin(const ContactResult& c, FieldSink& out) {
+  if (!c.omega) return;
+  out.number("omega", *c.omega, {"rad/s", "the axle's angular velocity the creep forces were solved at (kinematics: "
+                                          "omega, V / r0, or the free-rolling one)"});
+  if (c.spin_evaluations > 0)
+    out.integer("spin_evaluations", c.spin_evaluations, {"-", "free_rolling: the tangential solves of both wheels its "
+                                                              "search for omega took"});
+}
+
 void describe(const ContactResult& c, FieldSink& out, bool sensitivity) {
   if (sensitivity) describe_sensitivity(c.sensitivity, out);
   for (int s : {kLeft, kRight}) {
@@ -484,6 +516,7 @@ void describe(const ContactResult& c, FieldSink& out, bool sensitivity) {
   out.vec3("force", c.force, {"N", "contact forces of both wheels summed (track frame)"});
   out.vec3("moment", c.moment, {"N m", "their moment about the wheelset centre (track axes)"});
   describe(c.creep, out);
+  describe_spin(c, out);
   describe(c.pose, out);
 }
 

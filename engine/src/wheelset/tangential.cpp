@@ -536,6 +536,8 @@ void describe(const CreepTotals& c, FieldSink& out) {
   out.vec3("creep_force", c.force, {"N", "the areas' creep forces summed (track frame; with rolling keys)"});
   out.vec3("creep_moment", c.moment, {"N m", "their moment about the wheelset centre (track axes)"});
   out.number("power", c.power, {"W", "frictional power summed over the areas"});
+  out.number("axle_torque", c.axle_torque, {"N m", "the creep moment's component along the axle (> 0 drives the "
+                                                    "wheelset's spin forward; free_rolling: ~0 for both wheels)"});
 }
 
 namespace {
@@ -551,7 +553,7 @@ void check_speed(const OptionReader& r, double V) {
 // The creepages prescribed, or the kinematics; sets q.V. A documenting reader goes through both.
 void read_slip(OptionReader& r, RollingRequest& q) {
   if (auto t = r.table("creepage", {"-", "creepages prescribed at every area's reference point: {xi, eta, phi}"})) {
-    for (const char* key : {"omega", "vy", "yaw_rate", "slip_reference"})
+    for (const char* key : {"omega", "free_rolling", "vy", "yaw_rate", "slip_reference"})
       if (!r.documenting() && r.has(key))
         fail("{}: 'creepage' prescribes the creepages; '{}' (kinematics) cannot be given with it", r.context(), key);
     halfspace::Creepages c;
@@ -569,6 +571,11 @@ void read_slip(OptionReader& r, RollingRequest& q) {
   Kinematics k;
   k.V = r.documenting() ? r.number("V", kV).value_or(0) : r.need_number("V", kV);
   k.omega = r.number("omega", {"rad/s", "axle angular velocity (default: V / r0, pure rolling)"});
+  k.free_rolling = r.boolean("free_rolling", {"-", "find omega: the one at which the creep forces of both wheels "
+                                                   "have no moment about the axle (no traction or braking torque)"},
+                             false);
+  if (!r.documenting() && k.free_rolling && k.omega)
+    fail("{}: free_rolling finds omega; give omega or free_rolling = true, not both", r.context());
   k.vy = r.number("vy", {"m/s", "lateral velocity of the wheelset centre"}, k.vy);
   k.yaw_rate = r.number("yaw_rate", {"rad/s", "yaw rate of the wheelset"}, k.yaw_rate);
   if (r.choice("slip_reference", {"undeformed", "deformed"},
@@ -769,7 +776,7 @@ void RollingRequest::validate(std::string_view context, bool plausible, double r
 
 std::optional<RollingRequest> read_rolling_request(OptionReader& r) {
   bool any = r.documenting() || r.has("creepage");
-  for (const char* key : {"V", "omega", "vy", "yaw_rate", "slip_reference"}) any |= r.has(key);
+  for (const char* key : {"V", "omega", "free_rolling", "vy", "yaw_rate", "slip_reference"}) any |= r.has(key);
   for (const char* key : {"mu", "mu_static", "mu_kinetic", "friction", "friction_profile", "method", "rolling_tolerance",
                           "wear", "fatigue"})
     if (r.has(key) && !any)

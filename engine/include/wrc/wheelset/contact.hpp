@@ -161,6 +161,7 @@ struct CreepTotals {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, track frame
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, about the wheelset centre
   double power = 0;                                  // W
+  double axle_torque = 0;  // N m: the moment's component along the axle a (> 0 drives the spin omega a forward)
 };
 
 struct WheelContact {
@@ -185,6 +186,8 @@ struct ContactResult {
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // both wheels, about the wheelset centre (N m)
   Sensitivity sensitivity = Sensitivity::Zero();     // both wheels
   CreepTotals creep;                                 // both wheels
+  std::optional<double> omega;  // rad/s: the axle's angular velocity the creep forces were solved at (kinematics)
+  int spin_evaluations = 0;     // free rolling: the tangential solves of both wheels its search for omega took
 };
 
 // The immutable contact model: discretised geometry, material, normal solver (with its FFT caches) and options.
@@ -257,6 +260,12 @@ class ContactWorkspace {
   // Grids of a discarded FASTSIM solution (recycle_tangential), which the next FASTSIM solve writes over instead of
   // allocating and zeroing its own.
   halfspace::TangentialSolution fastsim_grids;
+  // The last free-rolling solve's spin, where the next one's search starts (a neighbouring case's).
+  struct Spin {
+    double ratio = 1;  // omega r0 / V
+    double slope = 0;  // d(axle torque) / d(ratio) there (N m), the secant the search ended with; 0: unknown
+  };
+  std::optional<Spin> spin;
   // Drops the previous areas: the next evaluation starts cold, so that a call's result does not depend on what
   // the workspace did before (every top-level operation and every chain of a sweep starts so).
   void forget();
@@ -282,6 +291,7 @@ class ContactWorkspace {
 struct ContactStart {
   static constexpr const char* kTypeName = "wrc.ContactStart";  // its name as an option value (OptionValue::object)
   std::array<std::vector<ContactWorkspace::Previous>, 2> normal, tangential;
+  std::optional<ContactWorkspace::Spin> spin;  // a free-rolling solve's spin (ContactWorkspace::spin)
   void adopt_normal(ContactWorkspace& ws) const {
     ws.previous = normal;
     for (auto& b : ws.before) b.clear();
@@ -289,6 +299,7 @@ struct ContactStart {
   void adopt_tangential(ContactWorkspace& ws) const {
     ws.tangential = tangential;
     for (auto& b : ws.tangential_before) b.clear();
+    if (spin) ws.spin = spin;
   }
 };
 
@@ -365,6 +376,8 @@ void describe(const PatchContact& area, FieldSink& out);
 void describe(const WheelContact& wheel, FieldSink& out);
 // With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.
 void describe(const ContactResult& result, FieldSink& out, bool sensitivity = false);
+// The spin of a rolling result: omega (with kinematics) and spin_evaluations (free rolling).
+void describe_spin(const ContactResult& result, FieldSink& out);
 void describe_sensitivity(const Sensitivity& s, FieldSink& out);
 // A Jacobian as fields: one list of 6 values (Fx, Fy, Fz, Mx, My, Mz) per column, named by kJacobianColumns.
 void describe_jacobian(const char* name, const Jacobian& J, bool constant_fz, FieldSink& out);

@@ -56,6 +56,9 @@ struct Kinematics {
   double vy = 0;                 // lateral velocity of the centre (m/s)
   double yaw_rate = 0;           // rad/s, about track z
   SlipReference slip_reference = SlipReference::undeformed;
+  // Free rolling: omega is not given but found, the one at which the creep forces of both wheels have no moment
+  // about the axle (a wheelset without traction or braking torque; wheelset/free_rolling.hpp). Not with omega.
+  bool free_rolling = false;
 };
 
 enum class RollingMethod { exact, fastsim };
@@ -88,7 +91,8 @@ struct RollingRequest {
   void validate(std::string_view context, bool plausible, double r0) const;
 };
 
-// Reads a call's rolling keys: V, omega, vy, yaw_rate, slip_reference ("deformed" | "undeformed") (kinematics) or
+// Reads a call's rolling keys: V, omega or free_rolling, vy, yaw_rate, slip_reference ("deformed" | "undeformed")
+// (kinematics) or
 // creepage = {xi, eta, phi} (with V optional),
 // and mu or mu_static and mu_kinetic or friction = {law = "polach" | "linear" | "rational" | "exponential", ...} or
 // friction = {preset = ...} (docs/guide/rolling.md), friction_profile = {y =, mu =} or {left = {y =, mu =}, right =
@@ -96,7 +100,7 @@ struct RollingRequest {
 // (damage/damage.hpp). Returns nothing when none of V, omega, vy, yaw_rate, creepage, mu, mu_static, mu_kinetic,
 // friction, method, wear, fatigue is given (a frictionless call). Throws
 // wrc::Error naming the key on: V = 0 (the creepages are slip velocities divided by V: undefined), kinematics keys
-// without V, creepage together with omega, vy or yaw_rate, a missing, zero, negative or non-finite mu, a kinetic
+// without V, creepage together with omega, free_rolling, vy or yaw_rate, free_rolling with omega, a missing, zero, negative or non-finite mu, a kinetic
 // coefficient above the static one, an unknown method, a creepage that is not a finite number, a falling law with a
 // prescribed creepage and no V (its slip velocities need the speed), a friction profile whose y does not increase or
 // whose mu is outside the friction range.
