@@ -21,6 +21,9 @@
 --    naming the NUL, and no file is written at the cut name (the test looks in the folder itself).
 -- 7. An empty Lua table where an array is expected ({} for y, yhat, a sweep's y) was "must be an array of numbers, got
 --    table": Lua's {} is an empty array as much as a table, and the message now says what is wrong, that it is empty.
+-- 8. wrc.wheelset{wheel = a, left_wheel = b, right_wheel = c} built with b and c, 'wheel' silently unused (no error
+--    named the key that had no effect); it is refused, naming the keys. 'wheel' with one side's own stays the two
+--    profiles it says (checked against the wheelset built with both sides given).
 local check = require "wrc.check"
 local H = dofile((arg[0]:match("(.*/)") or "./") .. "../data/profile/helpers.lua")
 local tmp = (arg.tmp or ".") .. "/input_messages_"
@@ -198,4 +201,16 @@ for _, c in ipairs{
   err = check.fails(c[1], c[2], c[2])
   check.ok(not err:find("got table", 1, true), "not 'got table': " .. err)
 end
+
+-- ---- 8. 'wheel' or 'rail' with both sides' own ----
+err = check.fails(function() return wrc.wheelset{wheel = s1002, left_wheel = s1002, right_wheel = s1002, rail = rail} end,
+                  "'wheel' is given, and so are 'left_wheel' and 'right_wheel'", "wheel shadowed on both sides")
+check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, left_rail = rail, right_rail = rail} end,
+            "'rail' is given, and so are 'left_rail' and 'right_rail'", "rail shadowed on both sides")
+local worn = wrc.profile.load(wrc.paths.profiles .. "/worn_s1002.lua")
+local one = wrc.wheelset{wheel = s1002, left_wheel = worn, rail = rail}
+local four = wrc.wheelset{left_wheel = worn, right_wheel = s1002, left_rail = rail, right_rail = rail}
+local same = wrc.wheelset{wheel = s1002, rail = rail}
+check.ok(one:rigid{y = 1e-3}.z == four:rigid{y = 1e-3}.z and one:rigid{y = 1e-3}.z ~= same:rigid{y = 1e-3}.z,
+         "'wheel' with 'left_wheel' is the right wheel's profile, the left one's its own")
 print("input_messages: ok")
