@@ -26,7 +26,10 @@ def _column(context, key, value):
         raise TypeError(f"{context}: '{key}' must be a number or an array of numbers ({e})") from None
     if a.dtype.kind not in "iuf":
         raise TypeError(f"{context}: '{key}' must be a number or an array of numbers, got an array of {a.dtype}")
-    return a
+    if np.ma.is_masked(value):  # np.asarray keeps the values behind the mask: the elements masked out would be solved
+        raise TypeError(f"{context}: '{key}' is a masked array with {np.ma.count_masked(value)} masked value(s): "
+                        "give the values to solve (a masked value has no number to solve for)")
+    return a.astype(np.float64, copy=False)
 
 
 def split_batch(context, kwargs, batch_keys, option_error):
@@ -34,7 +37,8 @@ def split_batch(context, kwargs, batch_keys, option_error):
 
     Returns None when no batchable argument is an array (a one-by-one call), else (shared, keys, columns, shape):
     `shared` the arguments without the columns, `keys` the columns' keys ("creepage.xi" for a nested one),
-    `columns` contiguous float64 arrays of the batch's size, `shape` the broadcast shape.
+    `columns` float64 arrays of the broadcast shape (read-only views: the engine copies them once it has checked that
+    the batch fits its memory), `shape` the broadcast shape.
     """
     batchable = set(batch_keys)
     shared, keys, arrays = dict(kwargs), [], []
@@ -58,7 +62,7 @@ def split_batch(context, kwargs, batch_keys, option_error):
     except ValueError:
         listed = ", ".join(f"{k} {a.shape}" for k, a in zip(keys, arrays))
         raise option_error(f"{context}: the batch's arrays do not broadcast together: {listed}") from None
-    columns = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).ravel() for a in arrays]
+    columns = [np.broadcast_to(a, shape) for a in arrays]
     return shared, keys, columns, shape
 
 

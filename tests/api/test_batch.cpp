@@ -89,7 +89,7 @@ Traced batch(const api::BatchInput& in, int threads, const std::atomic<bool>* st
   std::deque<Trace> sinks(in.count);
   Traced t;
   t.run = api::run_batch(synthetic_wheelset(), in, [&](std::size_t i) -> FieldSink& { return sinks[i]; },
-                         {threads, stop});
+                         {threads, stop, {}});
   for (const Trace& s : sinks) t.text.push_back(s.text);
   return t;
 }
@@ -234,9 +234,25 @@ TEST_CASE("batch: the stop flag skips the elements not begun") {
         stop = true;  // while element 0 runs (one thread: in order)
         return sinks[i];
       },
-      {1, &stop});
+      {1, &stop, {}});
   CHECK(run.elements[0].status == api::BatchStatus::done);
   for (std::size_t i = 1; i < 4; ++i) CHECK(run.elements[i].status == api::BatchStatus::skipped);
+}
+
+TEST_CASE("batch: done() is told of every element run, and false skips the elements not begun") {
+  const api::BatchInput in{"rigid", "ws.rigid", {}, {{"y", range(0, 3e-3, 5)}}, 5};
+  std::deque<Trace> sinks(in.count);
+  std::vector<std::size_t> told;
+  const api::BatchRun run = api::run_batch(
+      synthetic_wheelset(), in, [&](std::size_t i) -> FieldSink& { return sinks[i]; },
+      {1, nullptr, [&](std::size_t i) {
+         told.push_back(i);
+         CHECK(!sinks[i].text.empty());  // after the element was described
+         return i < 1;                   // a front end's budget spent by the second element (one thread: in order)
+       }});
+  CHECK(told == std::vector<std::size_t>{0, 1});
+  for (std::size_t i = 0; i < 2; ++i) CHECK(run.elements[i].status == api::BatchStatus::done);
+  for (std::size_t i = 2; i < 5; ++i) CHECK(run.elements[i].status == api::BatchStatus::skipped);
 }
 
 TEST_CASE("batch: the batchable keys are the operations' number keys, and bad batches throw") {

@@ -190,6 +190,15 @@ TEST_CASE("bad input: a status and a message that names what is wrong") {
   size_t n = 0;
   CHECK(wrc_profile_points(f.rail, nullptr, nullptr, 0, &n) == WRC_TOO_SMALL);
   CHECK(n > 3);
+  // A number is not a list or array of none: counting it said n = 0 (an empty array, to a caller) with WRC_OK.
+  n = 7;
+  CHECK(wrc_result_count(r, "force.z", &n) == WRC_INVALID_ARGUMENT);
+  CHECK(last().find("'force.z' is a number, not a list or array") != std::string::npos);
+  CHECK(wrc_result_numbers(r, "force.z", nullptr, 0, &n) == WRC_INVALID_ARGUMENT);
+  CHECK(n == 7);
+  // A table is no field; its fields are named (it said "the result has no field 'force'").
+  CHECK(wrc_result_number(r, "force", &v) == WRC_NOT_FOUND);
+  CHECK(last().find("'force' is a table, not a field: its fields are force.x, force.y, force.z") != std::string::npos);
   wrc_result_free(r);
 }
 

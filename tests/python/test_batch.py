@@ -6,6 +6,7 @@ equal them bit for bit (np.array_equal on every field, NaN where a field is NaN 
 import gc
 import os
 import re
+import resource
 import signal
 import threading
 import time
@@ -229,12 +230,12 @@ def test_bad_input(ws):
 
 
 def test_keyboard_interrupt_stops_between_elements(ws):
-    ys = np.linspace(0, 7e-3, 20000)  # tens of seconds of solves
+    ys = np.linspace(0, 7e-3, 10000)  # tens of seconds of solves (3.4 GB of results without grids, within the budget)
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
     t0 = time.perf_counter()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        ws.wheel(side="left", y=ys, Fz=100e3, threads=2)
+        ws.wheel(side="left", y=ys, Fz=100e3, threads=2, grids=False)
     elapsed = time.perf_counter() - t0
     timer.join()
     assert elapsed < 3.0, elapsed  # stopped, not run to the end
@@ -403,3 +404,48 @@ def test_a_batch_is_indexed_by_field_names(ws):
         list(b)
     assert "Y_Q" in b and "nope" not in b and 0 not in b
     assert np.array_equal(b["Y_Q"], b.Y_Q) and np.array_equal(b["left"]["normal_force"], b.left.normal_force)
+
+
+def resident_bytes():
+    """The process's resident memory, as the system counts it (/proc/self/statm), independent of the engine."""
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+
+
+def test_a_batch_whose_results_do_not_fit_is_refused_before_it_takes_the_memory(ws):
+    # Every element's result is kept until the Batch is dropped: a million rigid elements asked for ~29 GB and the
+    # system ended the process (or the broadcast columns alone took GBs). The batch is refused, naming the size and how
+    # to split it, before the memory is taken: first on what every element holds whatever its result ...
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB
+    t0 = time.perf_counter()
+    with pytest.raises(wrc.Error, match=r"100000000 elements .* before any result\), more than a batch call keeps "
+                                        r"\(4 GB\): split it into batches of at most \d+ elements$"):
+        ws.rigid(y=np.broadcast_to(0.0, (10**8,)))  # a view: no memory of its own
+    with pytest.raises(wrc.Error, match="10000000000 elements"):
+        ws.rigid(y=np.zeros((10**5, 1)), yaw=np.zeros((1, 10**5)))  # a broadcast of 1e10 elements
+    # ... then on the results of the first elements solved, projected to the whole batch.
+    with pytest.raises(wrc.Error) as e:
+        ws.rigid(y=np.linspace(0, 1e-3, 400_000))
+    said = re.search(r"about ([\d.]+) GB \(400000 elements of about ([\d.]+) KB each, as the first (\d+) took\), "
+                     r"more than a batch call keeps \(4 GB\): split it into batches of at most (\d+) elements$",
+                     str(e.value))
+    assert said, str(e.value)
+    per_element = float(said.group(2)) * 1e3
+    assert int(said.group(3)) < 100 and int(said.group(4)) * per_element <= 4e9
+    assert time.perf_counter() - t0 < 5 and resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - peak < 500_000
+    # The estimate against the memory the system gives a batch that fits (its resident growth while it is held).
+    before = resident_bytes()
+    kept = ws.rigid(y=np.linspace(0, 1e-3, 4000))
+    grown = (resident_bytes() - before) / kept.size
+    assert 0.5 < per_element / grown < 2, (per_element, grown)
+    with pytest.raises(wrc.Error, match=r"\(or grids = False: no grids kept\)$"):
+        ws.wheel(side="left", y=np.zeros(10**5), Fz=100e3)
+    with pytest.raises(wrc.Error, match=r"elements$"):
+        ws.wheel(side="left", y=np.zeros(10**5), Fz=100e3, grids=False)
+
+
+def test_a_masked_array_is_refused(ws):
+    # np.asarray drops the mask: the masked values were solved as if given.
+    with pytest.raises(TypeError, match="'y' is a masked array with 1 masked value"):
+        ws.rigid(y=np.ma.array([0, 1e-3], mask=[False, True]))
+    assert ws.rigid(y=np.ma.array([0, 1e-3])).size == 2  # nothing masked: its values

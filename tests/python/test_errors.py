@@ -175,3 +175,16 @@ def test_conicity_arguments_are_checked_as_they_are_read(ws):
     # A cone's table, Δr = 2 (1/20) y: tan γe = 1/20 for an amplitude inside it.
     y = np.linspace(-5e-3, 5e-3, 11)
     assert wrc.conicity(y=y, dr=2 * y / 20, yhat=2e-3, method="simple").tan_gamma[0] == pytest.approx(0.05, rel=1e-12)
+
+
+def test_a_path_holding_nul_is_refused(tmp_path, s1002):
+    # The system reads a path up to its first NUL: "w.txt\0.csv" was written as w.txt and "x.txt\0junk" read x.txt,
+    # files the caller did not name. The folder itself shows that nothing was written at the cut name.
+    cut = tmp_path / "cut.txt"
+    with pytest.raises(wrc.Error, match="holds a NUL character"):
+        s1002.write(str(cut) + "\0.csv")
+    assert not cut.exists()
+    cut.write_text("-30 -9\n0 0\n30 -9\n")
+    with pytest.raises(wrc.ProfileError, match=r"cut.txt\\0junk' holds a NUL character"):
+        wrc.profile.load(str(cut) + "\0junk", kind="rail")
+    assert len(wrc.profile.load(cut, kind="rail")) == 3

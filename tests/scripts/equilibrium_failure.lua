@@ -33,7 +33,7 @@ fails(function() ws:wheel{side = "left", y = 0, Fz = 1e5, force_tolerance = 0} e
       "zero wheel tolerance")
 fails(function() ws:wheel{side = "right", y = 0.1, Fz = 1e5} end, "does not touch", "right wheel off its rail")
 fails(function() ws:rigid{y = 0.2} end, "y = 0.2", "rigid: y out of range")
-fails(function() ws:sweep{y = {}, Q = Q} end, "'from' is required", "empty sweep list (read as {from=, to=, step=})")
+fails(function() ws:sweep{y = {}, Q = Q} end, "'y' is empty", "empty sweep list (an empty array, not a range)")
 fails(function() ws:sweep{y = {from = 0, to = 1e-3, step = 0}, Q = Q} end, "step", "zero sweep step")
 fails(function() ws:sweep{y = {0, 0 / 0}, Q = Q} end, "finite", "NaN in a sweep")
 fails(function() ws:sweep{y = {0}, Q = Q, threads = -1} end, "threads", "negative thread count")

@@ -16,6 +16,14 @@
 -- 5. Lua's 0/0 has its sign bit set, and messages wrote it "-nan" (a negative that is not one), -(0/0) "nan": an
 --    option, a point of a profile, a reader's option passed on as text, a pose, a check or a table cell of the scripts;
 --    each message says NaN now, whatever the sign, and infinities inf / -inf.
+-- 6. A path holding a NUL byte ("w.txt\0.csv", a Lua string may hold one) was cut at the NUL on its way to the
+--    system: wrc.profile.load read and p:write wrote another file than the one named, silently. Such a path is refused,
+--    naming the NUL, and no file is written at the cut name (the test looks in the folder itself).
+-- 7. An empty Lua table where an array is expected ({} for y, yhat, a sweep's y) was "must be an array of numbers, got
+--    table": Lua's {} is an empty array as much as a table, and the message now says what is wrong, that it is empty.
+-- 8. wrc.wheelset{wheel = a, left_wheel = b, right_wheel = c} built with b and c, 'wheel' silently unused (no error
+--    named the key that had no effect); it is refused, naming the keys. 'wheel' with one side's own stays the two
+--    profiles it says (checked against the wheelset built with both sides given).
 local check = require "wrc.check"
 local H = dofile((arg[0]:match("(.*/)") or "./") .. "../data/profile/helpers.lua")
 local tmp = (arg.tmp or ".") .. "/input_messages_"
@@ -168,4 +176,41 @@ err = check.fails(function() require("wrc.output").csv_line({"x"}, {x = 0 / 0}, 
                   "t row 2 column x: value is not finite (NaN)", "a NaN cell")
 check.fails(function() return ws:contact{y = -1 / 0, z = 0} end, "'y' must be finite, got -inf", "-inf")
 check.fails(function() return ws:contact{y = 1 / 0, z = 0} end, "'y' must be finite, got inf", "inf")
+
+-- ---- 6. a NUL byte in a path ----
+local cut = tmp .. "nul_cut.txt"
+wrc.fs.remove(cut)  -- a run before this one left it
+check.ok(wrc.fs.kind(cut) == nil, "no file at the cut name before the calls")
+local whole = H.write(cut .. ".real.txt", "-30 -9\n0 0\n30 -9\n")  -- a file exists beyond the NUL's cut too
+check.fails(function() return s1002:write(cut .. "\0.csv") end, "holds a NUL character", "p:write to 'x.txt\\0.csv'")
+check.fails(function() return wrc.fs.write_file(cut .. "\0x", "text") end, "holds a NUL character", "wrc.fs.write_file")
+check.ok(wrc.fs.kind(cut) == nil, "nothing was written at the cut name 'nul_cut.txt'")
+H.write(cut, "-30 -9\n0 0\n30 -9\n")  -- now the cut name is a readable profile: loading it would be wrong
+err = check.fails(function() return wrc.profile.load(cut .. "\0.real.txt", {kind = "rail"}) end,
+                  "holds a NUL character", "wrc.profile.load of 'x.txt\\0.real.txt'")
+check.ok(err:find("nul_cut.txt\\0.real.txt", 1, true), "the message shows the NUL: " .. err)
+check.ok(#wrc.profile.load(whole, {kind = "rail"}) == 3, "the path without the NUL loads")
+
+-- ---- 7. an empty table for an array ----
+for _, c in ipairs{
+    {function() return wrc.profile.points{kind = "rail", y = {}, z = {}} end, "needs at least 3 distinct points, got 0"},
+    {function() return ws:conicity{yhat = {}} end, "'yhat' needs at least one amplitude"},
+    {function() return ws:sweep{y = {}, Q = 2e5} end, "'y' is empty"},
+    {function() return ws:geometry_table{y = {}} end, "'y' is empty"},
+    {function() return wrc.wear.arc_length{y = {}, z = {}} end, "needs at least 2 points, got 0"}} do
+  err = check.fails(c[1], c[2], c[2])
+  check.ok(not err:find("got table", 1, true), "not 'got table': " .. err)
+end
+
+-- ---- 8. 'wheel' or 'rail' with both sides' own ----
+err = check.fails(function() return wrc.wheelset{wheel = s1002, left_wheel = s1002, right_wheel = s1002, rail = rail} end,
+                  "'wheel' is given, and so are 'left_wheel' and 'right_wheel'", "wheel shadowed on both sides")
+check.fails(function() return wrc.wheelset{wheel = s1002, rail = rail, left_rail = rail, right_rail = rail} end,
+            "'rail' is given, and so are 'left_rail' and 'right_rail'", "rail shadowed on both sides")
+local worn = wrc.profile.load(wrc.paths.profiles .. "/worn_s1002.lua")
+local one = wrc.wheelset{wheel = s1002, left_wheel = worn, rail = rail}
+local four = wrc.wheelset{left_wheel = worn, right_wheel = s1002, left_rail = rail, right_rail = rail}
+local same = wrc.wheelset{wheel = s1002, rail = rail}
+check.ok(one:rigid{y = 1e-3}.z == four:rigid{y = 1e-3}.z and one:rigid{y = 1e-3}.z ~= same:rigid{y = 1e-3}.z,
+         "'wheel' with 'left_wheel' is the right wheel's profile, the left one's its own")
 print("input_messages: ok")

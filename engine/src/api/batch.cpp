@@ -7,6 +7,7 @@
 #include "wrc/core/parallel.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 
 namespace wrc::api {
@@ -116,8 +117,9 @@ BatchRun run_batch(const Wheelset& wheelset, const BatchInput& input,
   std::vector<std::unique_ptr<ContactWorkspace>> workspaces(static_cast<std::size_t>(tc.threads));
   if (input.operation != "rigid")  // the rigid contact needs none
     for (auto& w : workspaces) w = workspace ? workspace() : wheelset.make_workspace();
+  std::atomic<bool> halted{false};  // options.done said so
   parallel_for(count, tc.threads, [&](int worker, int task) {
-    if (options.stop && options.stop->load()) return;  // skipped
+    if ((options.stop && options.stop->load()) || halted.load()) return;  // skipped
     BatchElement& e = run.elements[static_cast<std::size_t>(task)];
     ContactWorkspace* ws = workspaces[static_cast<std::size_t>(worker)].get();
     try {
@@ -128,6 +130,7 @@ BatchRun run_batch(const Wheelset& wheelset, const BatchInput& input,
       e.status = BatchStatus::failed;
       e.message = ex.what();
     }
+    if (options.done && !options.done(static_cast<std::size_t>(task))) halted = true;
   });
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

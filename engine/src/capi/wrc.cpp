@@ -42,7 +42,7 @@ struct wrc_trajectory {
 
 struct wrc_result {
   struct Field {
-    bool is_string = false, is_list = false;
+    bool is_string = false, is_list = false, is_array = false;  // none: a number (or boolean, integer)
     double number = 0;
     std::string text;
     std::vector<double> values;  // arrays and grids
@@ -258,8 +258,12 @@ void flatten(wrc::FieldRecord& record, const wrc::FieldNode& parent, const std::
         f.text = c.text;
         break;
       case K::numbers:
-      case K::grid: f.values = record.take_values(c); break;
+      case K::grid:
+        f.is_array = true;  // also when empty: then values is, and a number's is too
+        f.values = record.take_values(c);
+        break;
       case K::integers:
+        f.is_array = true;
         for (long long v : c.integers) f.values.push_back(static_cast<double>(v));
         break;
       case K::list:
@@ -287,7 +291,19 @@ const wrc_result::Field& field(const wrc_result* result, const char* path) {
   const auto r = registry().get(result, "result");
   if (!path) invalid("the path is NULL");
   const auto it = r->fields.find(path);
-  if (it == r->fields.end()) throw Failure{WRC_NOT_FOUND, fmt::format("the result has no field '{}'", path)};
+  if (it == r->fields.end()) {
+    // A table is not a field of its own: its fields are ("force" holds "force.x", ...); name them.
+    const std::string prefix = std::string(path) + ".";
+    std::vector<std::string> inside;
+    for (const std::string& p : r->order)
+      if (p.compare(0, prefix.size(), prefix) == 0 && p.find('.', prefix.size()) == std::string::npos) inside.push_back(p);
+    const std::size_t shown = std::min<std::size_t>(inside.size(), 8);
+    if (!inside.empty() && *path)
+      throw Failure{WRC_NOT_FOUND, fmt::format("'{}' is a table, not a field: its fields are {}{}", path,
+                                               fmt::join(inside.begin(), inside.begin() + shown, ", "),
+                                               inside.size() > shown ? ", ..." : "")};
+    throw Failure{WRC_NOT_FOUND, fmt::format("the result has no field '{}'", path)};
+  }
   return it->second;  // the result outlives the call: the caller may not free it meanwhile (wrc.h)
 }
 
@@ -463,7 +479,7 @@ wrc_status wrc_subsurface(const wrc_result* result, const char* patch, const cha
     const std::string at = std::string(patch) + ".";
     const auto number = [&](const std::string& key) {
       const wrc_result::Field& f = field(result, (at + key).c_str());
-      if (f.is_string || f.is_list || !f.values.empty()) invalid(fmt::format("'{}{}' is not a number", at, key));
+      if (f.is_string || f.is_list || f.is_array) invalid(fmt::format("'{}{}' is not a number", at, key));
       return f.number;
     };
     const auto grid = [&](const std::string& key) {
@@ -620,7 +636,7 @@ wrc_status wrc_result_number(const wrc_result* result, const char* path, double*
   return guard("wrc_result_number", [&] {
     need_output(value, "value");
     const auto& f = field(result, path);
-    if (f.is_string || f.is_list || !f.values.empty() ) invalid(fmt::format("'{}' is not a number", path));
+    if (f.is_string || f.is_list || f.is_array) invalid(fmt::format("'{}' is not a number", path));
     *value = f.number;
     return WRC_OK;
   });
@@ -630,7 +646,8 @@ wrc_status wrc_result_count(const wrc_result* result, const char* path, size_t* 
   return guard("wrc_result_count", [&] {
     need_output(n, "n");
     const auto& f = field(result, path);
-    if (f.is_string) invalid(fmt::format("'{}' is a string, not a list or array", path));
+    if (!f.is_list && !f.is_array)
+      invalid(fmt::format("'{}' is a {}, not a list or array", path, f.is_string ? "string" : "number"));
     *n = f.is_list ? f.count : f.values.size();
     return WRC_OK;
   });
@@ -640,7 +657,7 @@ wrc_status wrc_result_numbers(const wrc_result* result, const char* path, double
   return guard("wrc_result_numbers", [&] {
     need_output(n, "n");
     const auto& f = field(result, path);
-    if (f.is_string || f.is_list) invalid(fmt::format("'{}' is not an array of numbers", path));
+    if (!f.is_array) invalid(fmt::format("'{}' is not an array of numbers", path));
     *n = f.values.size();
     if (capacity < *n) throw Failure{WRC_TOO_SMALL, fmt::format("'{}' has {} values, the array holds {}", path, *n, capacity)};
     if (*n > 0 && !values) invalid("the values array is NULL");

@@ -58,6 +58,12 @@ void FieldRecord::clear() {
   used_ = 0;
 }
 
+std::size_t FieldRecord::bytes() const {
+  std::size_t n = nodes_.size() * sizeof(FieldNode) + used_;
+  for (const std::vector<double>& v : large_) n += v.capacity() * sizeof(double);
+  return n;
+}
+
 // Blocks grow from 1 KiB to 64 KiB (a result of a few fields stays small, a wheel's ~4000 fields take few blocks); an
 // array larger than a quarter of that that does not fit the current block gets a block of its own, the current one
 // kept for the small copies.

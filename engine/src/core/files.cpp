@@ -52,7 +52,17 @@ std::string temporary_path(const std::string& path) {
   return (p.parent_path() / name).string();
 }
 
+void check_path_text(std::string_view path, std::string_view context) {
+  const std::size_t nul = path.find('\0');
+  if (nul == std::string_view::npos) return;
+  std::string shown(path);
+  for (std::size_t i = 0; (i = shown.find('\0', i)) != std::string::npos; i += 2) shown.replace(i, 1, "\\0");
+  fail("{}: the path '{}' holds a NUL character (after '{}'): the system reads a path up to its first NUL, so it "
+       "would name another file than the one given", context, shown, path.substr(0, nul));
+}
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  check_path_text(path_, "cannot write");
   if (path_.empty() || std::filesystem::path(path_).filename().empty())
     fail("cannot write '{}': not a file name", path_);
   temp_ = temporary_path(path_);

@@ -104,6 +104,12 @@ OptionTable& OptionTable::set(std::string key, OptionValue v) {
 
 namespace {
 
+// Lua has one kind of table: {} is an empty array as much as an empty table, so a reader that wants an array takes it
+// as one (and says that it is empty, where "must be an array of numbers, got table" named the wrong fault).
+bool empty_lua_table(const OptionValue& v) {
+  return v.type == OptionValue::Type::table && v.table && v.table->empty() && v.table->dialect == OptionDialect::lua;
+}
+
 bool parse_double(std::string_view s, double& out) {
   if (s.empty()) return false;
   const std::string t(s);
@@ -404,6 +410,7 @@ std::optional<std::vector<double>> OptionReader::numbers(std::string_view key, O
   if (!v) return std::nullopt;
   if (v->type == OptionValue::Type::number && !finite) return std::vector<double>{v->number};
   if (v->type == OptionValue::Type::number) return std::vector<double>{*number(key)};
+  if (empty_lua_table(*v)) return std::vector<double>{};
   if (v->type != OptionValue::Type::array) type_error(key, *v, words().numbers);
   std::vector<double> out;
   out.reserve(v->array.size());
@@ -421,6 +428,7 @@ std::optional<std::vector<std::string>> OptionReader::strings(std::string_view k
   if (doc_) note(key, "strings", doc);
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
+  if (empty_lua_table(*v)) return std::vector<std::string>{};
   if (v->type != OptionValue::Type::array) type_error(key, *v, words().strings);
   std::vector<std::string> out;
   for (std::size_t i = 0; i < v->array.size(); ++i) {
@@ -440,7 +448,9 @@ std::optional<std::vector<double>> OptionReader::number_list(std::string_view ke
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
   std::vector<double> out;
-  if (v->type == OptionValue::Type::table) {
+  if (empty_lua_table(*v)) {
+    // out stays empty: named so below
+  } else if (v->type == OptionValue::Type::table) {
     OptionReader r = nested(*v->table, fmt::format("{}: '{}' ({})", context_, key, words().range));
     r.allow({"from", "to", "step"});
     r.finish();  // a misspelt key first ('too' given, so 'to' is missing)

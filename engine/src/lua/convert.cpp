@@ -23,7 +23,9 @@ double check_number(lua_State* L, int idx, std::string_view context) {
 
 std::string check_string(lua_State* L, int idx, std::string_view context) {
   if (lua_type(L, idx) != LUA_TSTRING) fail("{}: argument {} must be a string, got {}", context, idx, type_name(L, idx));
-  return lua_tostring(L, idx);
+  std::size_t n = 0;
+  const char* s = lua_tolstring(L, idx, &n);
+  return std::string(s, n);  // all of it: a Lua string may hold NUL bytes, which the callee must see (a path's check)
 }
 
 void push_vec3(lua_State* L, const Eigen::Vector3d& v) {
@@ -99,7 +101,11 @@ OptionValue to_option_at(lua_State* L, int idx, std::string_view context, int de
   switch (lua_type(L, idx)) {
     case LUA_TNUMBER: return OptionValue::of(static_cast<double>(lua_tonumber(L, idx)));
     case LUA_TBOOLEAN: return OptionValue::of(static_cast<bool>(lua_toboolean(L, idx)));
-    case LUA_TSTRING: return OptionValue::of(std::string(lua_tostring(L, idx)));
+    case LUA_TSTRING: {
+      std::size_t n = 0;
+      const char* s = lua_tolstring(L, idx, &n);
+      return OptionValue::of(std::string(s, n));
+    }
     case LUA_TTABLE: return table_option(L, lua_absindex(L, idx), context, depth);
     case LUA_TUSERDATA:
       if (auto* p = static_cast<std::shared_ptr<const Profile>*>(luaL_testudata(L, idx, "wrc.Profile")))

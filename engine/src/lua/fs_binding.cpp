@@ -15,12 +15,19 @@ namespace wrc::lua {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A string argument that names a file or folder: refused when it holds a NUL byte (check_path_text).
+std::string check_path(lua_State* L, int idx, const char* context) {
+  std::string path = check_string(L, idx, context);
+  check_path_text(path, context);
+  return path;
+}
 const char* const kAtomicType = "wrc.AtomicFile";
 const char* const kLockType = "wrc.FileLock";
 
 // wrc.fs.mkdir(path): creates a folder and its parents (no error if it exists).
 int fs_mkdir(lua_State* L) {
-  const std::string path = check_string(L, 1, "wrc.fs.mkdir");
+  const std::string path = check_path(L, 1, "wrc.fs.mkdir");
   std::error_code ec;
   fs::create_directories(path, ec);
   if (ec) fail("wrc.fs.mkdir: cannot create '{}': {}", path, ec.message());
@@ -62,13 +69,13 @@ int atomic_discard(lua_State* L) {
 
 // wrc.fs.write_file(path, text): the whole file, atomically.
 int fs_write_file(lua_State* L) {
-  write_file_atomic(check_string(L, 1, "wrc.fs.write_file"), check_string(L, 2, "wrc.fs.write_file"));
+  write_file_atomic(check_path(L, 1, "wrc.fs.write_file"), check_string(L, 2, "wrc.fs.write_file"));
   return 0;
 }
 
 // wrc.fs.list(folder) -> sorted names.
 int fs_list(lua_State* L) {
-  const std::vector<std::string> names = list_folder(check_string(L, 1, "wrc.fs.list"));
+  const std::vector<std::string> names = list_folder(check_path(L, 1, "wrc.fs.list"));
   lua_createtable(L, static_cast<int>(names.size()), 0);
   for (std::size_t i = 0; i < names.size(); ++i) {
     lua_pushlstring(L, names[i].data(), names[i].size());
@@ -80,7 +87,7 @@ int fs_list(lua_State* L) {
 // wrc.fs.kind(path) -> "file", "folder", "other" or nil (missing).
 int fs_kind(lua_State* L) {
   std::error_code ec;
-  const fs::file_status st = fs::status(check_string(L, 1, "wrc.fs.kind"), ec);
+  const fs::file_status st = fs::status(check_path(L, 1, "wrc.fs.kind"), ec);
   if (ec || !fs::exists(st)) return 0;
   lua_pushstring(L, fs::is_regular_file(st) ? "file" : fs::is_directory(st) ? "folder" : "other");
   return 1;
@@ -88,7 +95,7 @@ int fs_kind(lua_State* L) {
 
 // wrc.fs.remove(path): a file or an empty folder; nothing when missing.
 int fs_remove(lua_State* L) {
-  const std::string path = check_string(L, 1, "wrc.fs.remove");
+  const std::string path = check_path(L, 1, "wrc.fs.remove");
   std::error_code ec;
   fs::remove(path, ec);
   if (ec) fail("wrc.fs.remove: cannot remove '{}': {}", path, ec.message());
@@ -97,7 +104,7 @@ int fs_remove(lua_State* L) {
 
 // wrc.fs.remove_tree(path): a folder and everything in it.
 int fs_remove_tree(lua_State* L) {
-  const std::string path = check_string(L, 1, "wrc.fs.remove_tree");
+  const std::string path = check_path(L, 1, "wrc.fs.remove_tree");
   std::error_code ec;
   fs::remove_all(path, ec);
   if (ec) fail("wrc.fs.remove_tree: cannot remove '{}': {}", path, ec.message());
@@ -107,7 +114,7 @@ int fs_remove_tree(lua_State* L) {
 // wrc.fs.is_link(path) -> true when path is a symbolic link (not followed).
 int fs_is_link(lua_State* L) {
   std::error_code ec;
-  lua_pushboolean(L, fs::is_symlink(fs::symlink_status(check_string(L, 1, "wrc.fs.is_link"), ec)));
+  lua_pushboolean(L, fs::is_symlink(fs::symlink_status(check_path(L, 1, "wrc.fs.is_link"), ec)));
   return 1;
 }
 
@@ -121,7 +128,7 @@ int fs_name_problem(lua_State* L) {
 
 // wrc.fs.mkdir_inside(root, name): mkdir -p of root/name through real folders only.
 int fs_mkdir_inside(lua_State* L) {
-  make_folders_inside(check_string(L, 1, "wrc.fs.mkdir_inside"), check_string(L, 2, "wrc.fs.mkdir_inside"));
+  make_folders_inside(check_path(L, 1, "wrc.fs.mkdir_inside"), check_string(L, 2, "wrc.fs.mkdir_inside"));
   return 0;
 }
 
@@ -129,7 +136,7 @@ int fs_mkdir_inside(lua_State* L) {
 int fs_remove_inside(lua_State* L) {
   const char* ctx = "wrc.fs.remove_inside";
   const std::string hash = lua_isnoneornil(L, 3) ? std::string() : check_string(L, 3, ctx);
-  const RemoveResult r = remove_file_inside(check_string(L, 1, ctx), check_string(L, 2, ctx), hash);
+  const RemoveResult r = remove_file_inside(check_path(L, 1, ctx), check_string(L, 2, ctx), hash);
   if (r.what == Removal::refused) {
     lua_pushnil(L);
     lua_pushstring(L, r.why.c_str());
@@ -141,7 +148,7 @@ int fs_remove_inside(lua_State* L) {
 
 // wrc.fs.remove_tree_inside(root, name): the folder root/name and its content, no link followed.
 int fs_remove_tree_inside(lua_State* L) {
-  remove_tree_inside(check_string(L, 1, "wrc.fs.remove_tree_inside"), check_string(L, 2, "wrc.fs.remove_tree_inside"));
+  remove_tree_inside(check_path(L, 1, "wrc.fs.remove_tree_inside"), check_string(L, 2, "wrc.fs.remove_tree_inside"));
   return 0;
 }
 
@@ -149,7 +156,7 @@ int fs_remove_tree_inside(lua_State* L) {
 // nil and the note of the process that holds it.
 int fs_lock(lua_State* L) {
   std::string holder;
-  std::unique_ptr<FileLock> lock = FileLock::try_acquire(check_string(L, 1, "wrc.fs.lock"), holder);
+  std::unique_ptr<FileLock> lock = FileLock::try_acquire(check_path(L, 1, "wrc.fs.lock"), holder);
   if (!lock) {
     lua_pushnil(L);
     lua_pushstring(L, holder.c_str());
@@ -178,14 +185,14 @@ int lock_index(lua_State* L) {
 
 // wrc.fs.temporary_name(path) -> a fresh temporary path next to `path` (the pattern fs.is_temporary recognises).
 int fs_temporary_name(lua_State* L) {
-  lua_pushstring(L, temporary_path(check_string(L, 1, "wrc.fs.temporary_name")).c_str());
+  lua_pushstring(L, temporary_path(check_path(L, 1, "wrc.fs.temporary_name")).c_str());
   return 1;
 }
 
 // wrc.fs.digest(path [, bytes]) -> the hash of the first `bytes` bytes (all by default), bytes read, line breaks.
 int fs_digest(lua_State* L) {
   const char* ctx = "wrc.fs.digest";
-  const std::string path = check_string(L, 1, ctx);
+  const std::string path = check_path(L, 1, ctx);
   std::uint64_t limit = UINT64_MAX;
   if (!lua_isnoneornil(L, 2)) {
     const double n = check_number(L, 2, ctx);
@@ -200,7 +207,7 @@ int fs_digest(lua_State* L) {
 }
 
 int fs_check_writable(lua_State* L) {
-  check_writable(check_string(L, 1, "wrc.fs.check_writable"));
+  check_writable(check_path(L, 1, "wrc.fs.check_writable"));
   return 0;
 }
 
@@ -211,14 +218,14 @@ int fs_is_temporary(lua_State* L) {
 
 int fs_absolute(lua_State* L) {
   std::error_code ec;
-  const fs::path p = fs::absolute(check_string(L, 1, "wrc.fs.absolute"), ec).lexically_normal();
+  const fs::path p = fs::absolute(check_path(L, 1, "wrc.fs.absolute"), ec).lexically_normal();
   if (ec) fail("wrc.fs.absolute: {}", ec.message());
   lua_pushstring(L, p.string().c_str());
   return 1;
 }
 
 int fs_size(lua_State* L) {
-  const std::string path = check_string(L, 1, "wrc.fs.size");
+  const std::string path = check_path(L, 1, "wrc.fs.size");
   std::error_code ec;
   const auto n = fs::file_size(path, ec);
   if (ec) fail("wrc.fs.size: '{}': {}", path, ec.message());
@@ -232,7 +239,7 @@ int fs_hash(lua_State* L) {
 }
 
 int fs_hash_file(lua_State* L) {
-  lua_pushstring(L, hash_file(check_string(L, 1, "wrc.fs.hash_file")).c_str());
+  lua_pushstring(L, hash_file(check_path(L, 1, "wrc.fs.hash_file")).c_str());
   return 1;
 }
 

@@ -1,6 +1,7 @@
 #include "wrc/profile/load.hpp"
 
 #include "wrc/core/error.hpp"
+#include "wrc/core/files.hpp"
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/orientation.hpp"
 #include "wrc/profile/reader.hpp"
@@ -36,6 +37,7 @@ std::string shipped_names() {
 }  // namespace
 
 std::string resolve_profile_path(const std::string& name) {
+  check_path_text(name, "wrc.profile.load");
   const fs::path p(name);
   std::error_code ec;
   if (p.is_relative() && !p.empty() && *p.begin() == "profiles") {

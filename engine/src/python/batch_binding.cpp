@@ -10,12 +10,33 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <deque>
 
 namespace wrc::python {
 namespace {
 
 py::object batch_module() { return py::module_::import("wrc.batch"); }
+
+// The most memory a batch call keeps for its results (bytes). Each element's result is a tree of fields held until the
+// Batch is dropped: ws.rigid's takes about 29 KB (100,000 elements: 2.9 GB peak, measured with /usr/bin/time -v), a
+// contact with its pressure grids far more; a batch of a million rigid elements asked for 29 GB and was ended by the
+// system, not by a message.
+constexpr double kBatchMaxBytes = 4e9;
+// The elements whose results are averaged before the batch's total is projected from them.
+constexpr std::size_t kBatchProbe = 8;
+
+// Refuses a batch whose results would not fit kBatchMaxBytes, naming the size it would reach and the way out.
+[[noreturn]] void batch_too_large(const api::BatchInput& input, double count, double per_element, const char* basis) {
+  const double most = std::floor(kBatchMaxBytes / per_element);
+  const OptionValue* grids = input.shared.find("grids");
+  const bool with_grids = input.operation != "rigid" && !(grids && grids->type == OptionValue::Type::boolean &&
+                                                          !grids->boolean);
+  fail("{}: the batch's results would take about {:.1f} GB ({:.0f} elements of about {:.1f} KB each, {}), more than a "
+       "batch call keeps ({:.0f} GB): split it into batches of at most {:.0f} elements{}", input.context,
+       count * per_element / 1e9, count, per_element / 1e3, basis, kBatchMaxBytes / 1e9, most,
+       with_grids ? " (or grids = False: no grids kept)" : "");
+}
 py::object error_class(const char* name) { return py::module_::import("wrc._errors").attr(name); }
 
 // Whether a value may make the call a batch: a list, a tuple, an array of one dimension or more, or a mapping (a
@@ -74,9 +95,15 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
   input.context = context;
   input.shared = to_options(parts[0].cast<py::kwargs>(), context);
   const py::tuple shape = parts[3].cast<py::tuple>();
-  input.count = 1;
-  for (auto n : shape) input.count *= n.cast<std::size_t>();
   const auto keys = parts[1].cast<std::vector<std::string>>();
+  // What every element holds whatever its result (its recorder, its status, its column values twice: the contiguous
+  // copy of the broadcast views and the engine's), checked before any of it is allocated (the count in floating
+  // point: a broadcast shape's product may overflow); then each element's result as it is recorded (budget below).
+  const double fixed = sizeof(FieldRecorder) + sizeof(api::BatchElement) + 2 * keys.size() * sizeof(double);
+  double elements = 1;
+  for (auto n : shape) elements *= n.cast<double>();
+  if (elements * fixed > kBatchMaxBytes) batch_too_large(input, elements, fixed, "before any result");
+  input.count = static_cast<std::size_t>(elements);
   const py::list columns = parts[2].cast<py::list>();
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const auto a = columns[k].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
@@ -84,10 +111,26 @@ py::object batch_call(PyWheelset& self, const char* operation, const char* conte
   }
 
   std::deque<FieldRecorder> trees(input.count);
+  // The results' memory, projected to the whole batch from the elements recorded so far (from kBatchProbe on): the
+  // batch stops as soon as the projection exceeds kBatchMaxBytes, long before the memory is taken.
+  std::atomic<std::size_t> kept_bytes{0}, recorded{0};
+  std::atomic<bool> over{false};
+  const auto within_budget = [&](std::size_t i) {
+    const double bytes = static_cast<double>(kept_bytes += trees[i].bytes());
+    const std::size_t n = ++recorded;
+    const double total = n >= std::min(input.count, kBatchProbe) ? bytes / n * input.count : bytes;
+    if (input.count * fixed + total <= kBatchMaxBytes) return true;
+    over = true;
+    return false;
+  };
   api::BatchRun run;  // Ctrl-C: the elements not begun are skipped, KeyboardInterrupt raised, the results dropped
   run_interruptible([&](const std::atomic<bool>& stop) {
-    run = api::run_batch(*model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; }, {threads, &stop});
+    run = api::run_batch(*model, input, [&](std::size_t i) -> FieldSink& { return trees[i]; },
+                         {threads, &stop, within_budget});
   });
+  if (over)
+    batch_too_large(input, elements, fixed + static_cast<double>(kept_bytes) / recorded,
+                    fmt::format("as the first {} took", recorded.load()).c_str());
 
   // The same bad input for every element is the call's (a misspelt key, a value of the wrong kind, a shared value out
   // of range): the input is wrong as a whole, so it is raised once, as the one-by-one call raises it, with the count

@@ -64,6 +64,14 @@ WheelsetProfiles read_wheelset_profiles(OptionReader& r) {
     if (!p) fail("{}: '{}' (or '{}') is required: a {}", r.context(), key, both, kProfileTypeName);
     return *p;
   };
+  // 'wheel' (or 'rail') is both sides' profile unless a side has its own: given with both sides' own, it would be
+  // read by neither, and which profile was meant is not for wrc to guess.
+  for (const char* both : {"wheel", "rail"}) {
+    const std::string left = fmt::format("left_{}", both), right = fmt::format("right_{}", both);
+    if (r.has(both) && r.has(left) && r.has(right))
+      fail("{}: '{}' is given, and so are '{}' and '{}', which take its place on both sides: it would be unused; give "
+           "'{}' alone or the two sides' own", r.context(), both, left, right, both);
+  }
   WheelsetProfiles w;
   w.wheel = {get("left_wheel", "wheel"), get("right_wheel", "wheel")};
   w.rail = {get("left_rail", "rail"), get("right_rail", "rail")};

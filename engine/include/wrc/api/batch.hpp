@@ -62,6 +62,9 @@ struct BatchElement {
 struct BatchOptions {
   int threads = 0;                          // worker threads (0: all cores; thread_count)
   const std::atomic<bool>* stop = nullptr;  // when it turns true, elements not yet begun are skipped
+  // Called on the worker after each element ran (whatever its status), with the element's index; false skips the
+  // elements not yet begun, as `stop` does (a front end's memory budget for the results it keeps). May be empty.
+  std::function<bool(std::size_t element)> done;
 };
 
 // The batch's own options, beside its elements' keys: threads (read_threads: a whole number in 0..256, 0 for all

@@ -110,6 +110,10 @@ class FieldRecord {
   // into the same storage then allocates nothing in the steady state (no fresh pages for every result).
   void clear();
 
+  // The memory the record holds (bytes): its nodes' array, its copies and its large arrays. A front end keeping many
+  // records (a batch) counts them against its budget.
+  std::size_t bytes() const;
+
  private:
   friend class FieldRecorder;
   std::string_view copy(std::string_view s);
@@ -138,6 +142,7 @@ class FieldRecorder final : public FieldSink {
 
   // The record so far (tables left open are closed); the recorder then starts an empty one.
   FieldRecord take();
+  std::size_t bytes() const { return record_.bytes(); }  // the record's memory so far (FieldRecord::bytes)
 
   // The documented forms of FieldSink (number(key, v, doc), ...) too.
   using FieldSink::begin, FieldSink::begin_list, FieldSink::boolean, FieldSink::grid, FieldSink::integer,

@@ -32,6 +32,11 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
 };
 
+// Throws wrc::Error "<context>: the path '...' holds a NUL character ..." when `path` does: the system reads a path up
+// to its first NUL, so "w.txt\0.csv" would read or write w.txt, a file the caller did not name (Lua and Python strings
+// may hold NUL; a C string cannot).
+void check_path_text(std::string_view path, std::string_view context);
+
 // Writes `content` to `path` through an AtomicFile.
 void write_file_atomic(const std::string& path, std::string_view content);
 
