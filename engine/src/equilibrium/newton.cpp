@@ -422,7 +422,8 @@ void finish_result(const ContactModel& model, ContactWorkspace& ws, const Contac
 }  // namespace
 
 void EquilibriumCase::validate(std::string_view context, bool plausible) const {
-  pose_solve::check_position(y, yaw, context);
+  check_lateral(y, context);
+  check_yaw(yaw, context);
   pose_solve::check_load("Q", Q, context);
   if (plausible) check_plausible(context, "Q", Q, kWheelsetLoad);
 }
