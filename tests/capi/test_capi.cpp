@@ -148,6 +148,18 @@ TEST_CASE("implausible magnitudes are refused with their unit, as in Lua, unless
   wrc_wheelset_free(w2);
 }
 
+TEST_CASE("wrc_closest_name: the option readers' suggestion for a front end's own names") {
+  const char* names[] = {"y", "z", "roll", "yaw", "side"};
+  CHECK(wrc_closest_name("yy", names, 5) == names[0]);     // one insertion from y, two from yaw
+  CHECK(wrc_closest_name("rol", names, 5) == names[2]);    // one deletion
+  CHECK(wrc_closest_name("Side", names, 5) == names[4]);   // the same letters in another case
+  CHECK(wrc_closest_name("Fz", names, 5) == names[1]);     // one deletion from z: short names are near many words
+  CHECK(wrc_closest_name("grids", names, 5) == nullptr);   // no name within max(2, 5 / 3) = 2 edits
+  CHECK(wrc_closest_name("yy", names, 0) == nullptr);
+  CHECK(wrc_closest_name(nullptr, names, 5) == nullptr);
+  CHECK(wrc_closest_name("yy", nullptr, 5) == nullptr);
+}
+
 TEST_CASE("bad input: a status and a message that names what is wrong") {
   Fixture f;
   wrc_result* r = nullptr;
