@@ -189,6 +189,15 @@ struct Arguments {
     return list.empty() ? "" : "; the other names given: " + list;
   }
 
+  // For a message about missing names: "did you mean 'y' for 'yy'? " when a name given and not taken is plausibly a
+  // misspelling of one of `missing` (the engine's rule, wrc_closest_name, as for a misspelt option), else "".
+  std::string misspelt(const std::vector<const char*>& missing) const {
+    for (const auto& e : entries)
+      if (const char* near = wrc_closest_name(e.first.c_str(), missing.data(), missing.size()))
+        return std::string("did you mean '") + near + "' for '" + e.first + "'? ";
+    return "";
+  }
+
   // Removes and returns the value of `key` (null when not given).
   const mxArray* take(const char* key) {
     for (auto it = entries.begin(); it != entries.end(); ++it)
@@ -300,15 +309,20 @@ template <std::size_t N>
 std::array<double, N> positional(Arguments& a, const char* c_function, const char* const (&keys)[N]) {
   std::string all;  // "y, z, roll and yaw"
   for (std::size_t k = 0; k < N; ++k) all += (k == 0 ? "" : k + 1 < N ? ", " : " and ") + std::string(keys[k]);
+  std::array<const mxArray*, N> given{};
+  std::vector<const char*> missing;
+  for (std::size_t k = 0; k < N; ++k)
+    if (!(given[k] = a.take(keys[k]))) missing.push_back(keys[k]);
+  if (!missing.empty()) {
+    const std::string key = missing.front();
+    fail("wrc:missingArgument", a.function + ": '" + key + "' is missing (" + a.misspelt(missing) + c_function +
+                                    " takes " + all + (key == "side" ? "" : " as arguments: give each") + a.others() +
+                                    ")");
+  }
   std::array<double, N> values{};
   for (std::size_t k = 0; k < N; ++k) {
     const std::string key = keys[k];
-    const bool side = key == "side";
-    const mxArray* v = a.take(keys[k]);
-    if (!v)
-      fail("wrc:missingArgument", a.function + ": '" + key + "' is missing (" + c_function + " takes " + all +
-                                      (side ? "" : " as arguments: give each") + a.others() + ")");
-    values[k] = side ? side_of(a, v) : number_of(v, a.function + ": '" + key + "'");
+    values[k] = key == "side" ? side_of(a, given[k]) : number_of(given[k], a.function + ": '" + key + "'");
   }
   return values;
 }
@@ -535,14 +549,19 @@ void profile_load(const Call& c) {
   c.plhs[0] = add_handle(Kind::profile, p);
 }
 
+constexpr const char* kPointsKeys[] = {"kind", "y", "z", "name"};
+
 void profile_points(const Call& c) {
   Arguments a = c.args(0);
   const mxArray* kind = a.take("kind");
   const mxArray* y = a.take("y");
   const mxArray* z = a.take("z");
   const mxArray* name = a.take("name");
-  if (!a.entries.empty())
-    fail("wrc:usage", "wrc.profile.points: unknown key '" + a.entries[0].first + "' (kind, y, z, name)");
+  if (!a.entries.empty()) {
+    const char* near = wrc_closest_name(a.entries[0].first.c_str(), kPointsKeys, std::size(kPointsKeys));
+    fail("wrc:usage", "wrc.profile.points: unknown key '" + a.entries[0].first + "' (" +
+                          (near ? std::string("did you mean '") + near + "'? " : "") + "kind, y, z, name)");
+  }
   if (!kind || !y || !z) fail("wrc:missingArgument", "wrc.profile.points: kind, y and z are required");
   const std::string k = text_of(kind, "wrc.profile.points: kind");
   const std::vector<double> yv = numbers_of(y, "wrc.profile.points: y"), zv = numbers_of(z, "wrc.profile.points: z");
@@ -587,10 +606,15 @@ void wheelset(const Call& c) {
     if (const mxArray* v = a.take(keys[k]))
       p[k] = static_cast<const wrc_profile*>(object_of(v, Kind::profile, (std::string("wrc.wheelset: ") + keys[k]).c_str()));
   const bool two = p[0] || p[1], four = p[2] || p[3] || p[4] || p[5];
-  if (two == four || (two && !(p[0] && p[1])) || (four && !(p[2] && p[3] && p[4] && p[5])))
+  if (two == four || (two && !(p[0] && p[1])) || (four && !(p[2] && p[3] && p[4] && p[5]))) {
+    std::vector<const char*> missing;
+    for (int k = 0; k < 6; ++k)
+      if (!p[k] && (k < 2 ? !four : !two)) missing.push_back(keys[k]);
+    const std::string near = a.misspelt(missing);
     fail("wrc:missingArgument",
-         "wrc.wheelset: give wheel and rail, or left_wheel, right_wheel, left_rail and right_rail (profiles" +
-             a.others() + ")");
+         "wrc.wheelset: give wheel and rail, or left_wheel, right_wheel, left_rail and right_rail (" + near +
+             "profiles" + a.others() + ")");
+  }
   const std::string text = option_text(a);
   wrc_wheelset* ws = nullptr;
   check(two ? wrc_wheelset_new(p[0], p[1], text.c_str(), &ws)
@@ -644,9 +668,14 @@ void conicity(const Call& c) {
   Arguments a = c.args(0);
   const mxArray* y = a.take("y");
   const mxArray* dr = a.take("dr");
-  if (!y || !dr)
+  if (!y || !dr) {
+    std::vector<const char*> missing;
+    if (!y) missing.push_back("y");
+    if (!dr) missing.push_back("dr");
+    const std::string near = a.misspelt(missing);
     fail("wrc:missingArgument", "wrc.conicity: 'y' and 'dr' (the Δr table, m) are required" +
-                                    (a.entries.empty() ? std::string() : " (" + a.others().substr(2) + ")"));
+                                    (a.entries.empty() ? std::string() : " (" + near + a.others().substr(2) + ")"));
+  }
   const std::vector<double> yv = numbers_of(y, "wrc.conicity: y"), dv = numbers_of(dr, "wrc.conicity: dr");
   if (yv.size() != dv.size())
     fail("wrc:usage", "wrc.conicity: y has " + std::to_string(yv.size()) + " values, dr " + std::to_string(dv.size()));

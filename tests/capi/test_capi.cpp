@@ -133,6 +133,8 @@ TEST_CASE("implausible magnitudes are refused with their unit, as in Lua, unless
   wrc_result* r = nullptr;
   CHECK(wrc_equilibrium(f.ws, 0, 0, 200, nullptr, &r) == WRC_ERROR);  // kN meant
   CHECK(last().find("Q = 200 N is implausible for a wheelset load") != std::string::npos);
+  // The way out in no one front end's words: C's option text says check_setup=false, not Lua's "= false".
+  CHECK(last().find("set the wheelset's option check_setup to false to accept it") != std::string::npos);
   CHECK(wrc_wheel(f.ws, WRC_LEFT, 0, 0, 0, 100, nullptr, &r) == WRC_ERROR);
   CHECK(last().find("Fz = 100 N is implausible for a wheel load") != std::string::npos);
   CHECK(wrc_contact(f.ws, 0, -0.05e-3, 0, 0, "V=300 mu=0.3", &r) == WRC_ERROR);  // km/h meant
@@ -144,6 +146,18 @@ TEST_CASE("implausible magnitudes are refused with their unit, as in Lua, unless
   CHECK(wrc_contact(w2, 0, -0.05e-3, 0, 0, "V=300 mu=0.3 grids=false", &r) == WRC_OK);
   wrc_result_free(r);
   wrc_wheelset_free(w2);
+}
+
+TEST_CASE("wrc_closest_name: the option readers' suggestion for a front end's own names") {
+  const char* names[] = {"y", "z", "roll", "yaw", "side"};
+  CHECK(wrc_closest_name("yy", names, 5) == names[0]);     // one insertion from y, two from yaw
+  CHECK(wrc_closest_name("rol", names, 5) == names[2]);    // one deletion
+  CHECK(wrc_closest_name("Side", names, 5) == names[4]);   // the same letters in another case
+  CHECK(wrc_closest_name("Fz", names, 5) == names[1]);     // one deletion from z: short names are near many words
+  CHECK(wrc_closest_name("grids", names, 5) == nullptr);   // no name within max(2, 5 / 3) = 2 edits
+  CHECK(wrc_closest_name("yy", names, 0) == nullptr);
+  CHECK(wrc_closest_name(nullptr, names, 5) == nullptr);
+  CHECK(wrc_closest_name("yy", nullptr, 5) == nullptr);
 }
 
 TEST_CASE("bad input: a status and a message that names what is wrong") {

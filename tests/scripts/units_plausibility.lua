@@ -3,6 +3,9 @@
 -- N". wrc takes SI units; a load, modulus, radius or speed outside what a railway wheelset has is almost surely in
 -- another unit. check_setup = false accepts them (test bodies, scale models).
 local check = require "wrc.check"
+-- How a refusal says to turn the check off: in no one front end's words (not Lua's "check_setup = false", which a
+-- Python, C or MATLAB user would not write).
+local unchecked_hint = "set the wheelset's option check_setup to false to accept it"
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
@@ -11,7 +14,7 @@ local free = wrc.wheelset{wheel = wheel, rail = rail, grid = 1e-3, check_setup =
 
 local function refused(f, key, value, unit, what)
   local err = check.fails(f, ("%s = %s %s is implausible"):format(key, value, unit), what)
-  check.ok(err:find("is it in another unit?", 1, true) and err:find("check_setup = false", 1, true), err)
+  check.ok(err:find("is it in another unit?", 1, true) and err:find(unchecked_hint, 1, true), err)
   return err
 end
 
@@ -97,7 +100,7 @@ local creep_bound = 1  -- omega r0 / V = 1 - xi in [0, 2]
 for _, k in ipairs{{"xi", 2}, {"xi", -5}, {"eta", 20}} do
   local err = check.fails(function() ws:contact{y = 0, z = -0.05e-3, mu = 0.3, creepage = {[k[1]] = k[2]}} end,
                           ("%s = %g is implausible"):format(k[1], k[2]), k[1] .. " in percent")
-  check.ok(err:find("is it in another unit?", 1, true) and err:find("check_setup = false", 1, true), err)
+  check.ok(err:find("is it in another unit?", 1, true) and err:find(unchecked_hint, 1, true), err)
 end
 local e_xi = check.fails(function() ws:wheel{side = "left", y = 0, Fz = 100e3, mu = 0.3, creepage = {xi = 2}} end,
                          "xi = 2 is implausible", "ws:wheel, xi in percent")

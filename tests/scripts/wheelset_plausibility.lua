@@ -10,6 +10,9 @@
 -- profile's points.
 local check = require "wrc.check"
 local H = dofile(os.getenv("WRC_TEST_DATA") .. "/profile/helpers.lua")
+-- How a refusal says to turn the check off: in no one front end's words (not Lua's "check_setup = false", which a
+-- Python, C or MATLAB user would not write).
+local unchecked_hint = "set the wheelset's option check_setup to false to accept it"
 
 local wheel = wrc.profile.load(wrc.paths.profiles .. "/s1002.lua")
 local rail = wrc.profile.load(wrc.paths.profiles .. "/60e1.lua")
@@ -110,7 +113,7 @@ check.fails(function() wrc.wheelset{wheel = wheel_m, rail = rail} end, "are its 
 -- pass: EN 13848-1's 14 mm, AAR's 5/8 in, GOST's 13 mm; a flangeless body's gauge point is only its placement.
 local e_depth = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge_depth = 0.002} end,
                             "gauge_depth = 0.002 m", "the gauge measured 2 mm below the tops")
-check.ok(e_depth:find("14 mm", 1, true) and e_depth:find("check_setup = false", 1, true), e_depth)
+check.ok(e_depth:find("14 mm", 1, true) and e_depth:find(unchecked_hint, 1, true), e_depth)
 for _, depth in ipairs{0.014, 5 / 8 * 0.0254, 0.013} do
   check.ok(wrc.wheelset{wheel = wheel, rail = rail, gauge_depth = depth, grid = 2e-3}, "gauge_depth " .. depth)
 end
@@ -131,7 +134,7 @@ check.ok(wrc.wheelset{wheel = wrc.profile.load(wheel_mm, {kind = "wheel"}), rail
 -- upside-down wheel (anti-centring: conicity then blamed the sign of dr), a canted rail file canted again.
 local e_cant = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, cant = -1 / 40} end,
                            "tilts the rails' heads outward", "cant < 0")
-check.ok(e_cant:find("cant = 0.025", 1, true) and e_cant:find("check_setup = false", 1, true), "it names 1:40: " .. e_cant)
+check.ok(e_cant:find("cant = 0.025", 1, true) and e_cant:find(unchecked_hint, 1, true), "it names 1:40: " .. e_cant)
 check.ok(wrc.wheelset{wheel = wheel, rail = rail, cant = -1 / 40, grid = 2e-3, check_setup = false}, "unless unchecked")
 check.ok(wrc.wheelset{wheel = wheel, rail = rail, cant = 0, grid = 2e-3}, "cant = 0 (a canted file) builds")
 -- The play between flanges and rails, by hand: gauge - back_to_back - 2 Sd, with EN 13715's Sd = 32.5 mm of S1002.

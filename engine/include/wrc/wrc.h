@@ -70,6 +70,11 @@ const char* wrc_last_error(void);
  * for a table) or "matlab" (a numeric array, a struct: the MATLAB/Octave interface passes its name/value pairs and
  * structs as option text). Positions in arrays are named by ordinals ("the 2nd value of 'y'"), whoever asks. */
 wrc_status wrc_set_option_dialect(const char* front_end);
+/* The entry of names[0 .. count) that `word` is plausibly a misspelling of, by the rule of the option readers' "did
+ * you mean" (same letters in another case first, else the fewest edits, at most max(2, length / 3)); NULL when none
+ * is, or for a NULL word or names. The pointer is the caller's names[i]. For a front end that reads some names
+ * itself: the MATLAB interface's required arguments. Sets no error. */
+const char* wrc_closest_name(const char* word, const char* const* names, size_t count);
 
 /* ---- profiles ---- */
 

@@ -332,6 +332,19 @@ wrc_status wrc_set_option_dialect(const char* front_end) {
   });
 }
 
+const char* wrc_closest_name(const char* word, const char* const* names, size_t count) {
+  if (!word || !names) return nullptr;
+  try {
+    std::vector<std::string> known;
+    for (size_t i = 0; i < count; ++i) known.emplace_back(names[i] ? names[i] : "");
+    const std::string near = wrc::closest_name(word, known);
+    for (size_t i = 0; i < count && !near.empty(); ++i)
+      if (known[i] == near) return names[i];
+  } catch (...) {  // out of memory: no suggestion
+  }
+  return nullptr;
+}
+
 wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out) {
   return guard("wrc_profile_load", [&] {
     set_out(out, "profile");

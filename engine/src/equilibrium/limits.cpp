@@ -34,12 +34,6 @@ SolveLimits read_solve_limits(OptionReader& r) {
 
 namespace pose_solve {
 
-void check_position(double y, double yaw, std::string_view context) {
-  if (!std::isfinite(y) || std::abs(y) > 0.1) fail("{}: y = {} m must be finite and within +-0.1 m", context, y);
-  if (!std::isfinite(yaw) || std::abs(yaw) > 0.3)
-    fail("{}: yaw = {} rad must be finite and within +-0.3 rad", context, yaw);
-}
-
 void check_load(std::string_view name, double load, std::string_view context) {
   if (!std::isfinite(load) || !(load > 0) || load > kMaxLoad)
     fail("{}: {} = {:.6g} N must be a positive number of at most {:.0e} N (loads are in N: 100 kN is 1e5)", context,

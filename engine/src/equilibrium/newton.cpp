@@ -48,8 +48,8 @@ class EquilibriumSolver {
  public:
   EquilibriumSolver(const ContactModel& model, double yaw, double Q, ContactWorkspace& ws, const NewtonOptions& opt,
                     const ContactRequest& request, EquilibriumResult& res)
-      : model_(model), yaw_(yaw), Q_(Q), ws_(ws), opt_(opt), res_(res) {
-    req_ = request;
+      : model_(model), yaw_(yaw), Q_(Q), ws_(ws), opt_(opt), res_(res), req_(request) {
+    req_.rolling.reset();  // the equilibrium is frictionless (add_rolling evaluates creep forces at its pose)
     req_.sensitivity = false;  // added when a Newton step needs it (not for line-search trials or the last iterate)
     req_.keep_grids = true;
     req_.max_penetration = INFINITY;  // an iterate may overshoot; the solve's own checks use its max_penetration
@@ -422,7 +422,8 @@ void finish_result(const ContactModel& model, ContactWorkspace& ws, const Contac
 }  // namespace
 
 void EquilibriumCase::validate(std::string_view context, bool plausible) const {
-  pose_solve::check_position(y, yaw, context);
+  check_lateral(y, context);
+  check_yaw(yaw, context);
   pose_solve::check_load("Q", Q, context);
   if (plausible) check_plausible(context, "Q", Q, kWheelsetLoad);
 }
@@ -463,12 +464,10 @@ void last_at_case(const ContactModel& model, EquilibriumSolver& solver, double y
 
 EquilibriumResult solve_equilibrium(const ContactModel& model, const EquilibriumCase& c, ContactWorkspace& ws,
                                     const NewtonOptions& opt, const std::vector<Start>& starts,
-                                    const ContactRequest& frictional) {
+                                    const ContactRequest& request) {
   c.validate("equilibrium", model.options().check_magnitudes);
   opt.validate("equilibrium");
   const double y = c.y, yaw = c.yaw, Q = c.Q;
-  ContactRequest request = frictional;
-  request.rolling.reset();  // the equilibrium is frictionless (add_rolling evaluates creep forces at its pose)
   EquilibriumResult res;
   res.y = y;
   res.yaw = yaw;

@@ -10,8 +10,6 @@
 
 namespace wrc::pose_solve {
 
-// y (m) within +-0.1 and yaw (rad) within +-0.3, finite; else an error naming `context`.
-void check_position(double y, double yaw, std::string_view context);
 // A load `name` (N) in ]0, kMaxLoad]; else an error naming `context`.
 void check_load(std::string_view name, double load, std::string_view context);
 

@@ -3,6 +3,7 @@
 #include "wrc/wheelset/plausibility.hpp"
 #include "wrc/core/parallel.hpp"
 #include "wrc/equilibrium/equilibrium.hpp"
+#include "wrc/geometry/pose.hpp"
 
 #include "pose_solve.hpp"
 
@@ -19,9 +20,9 @@ namespace {
 void check_input(const std::vector<double>& ys, const std::vector<double>& yaws) {
   if (ys.empty() || yaws.empty()) fail("sweep: needs at least one y and one yaw");
   for (std::size_t k = 0; k < ys.size(); ++k)
-    pose_solve::check_position(ys[k], 0, fmt::format("sweep: {}", value_at(k, "y")));
+    check_lateral(ys[k], fmt::format("sweep: {}", value_at(k, "y")));
   for (std::size_t k = 0; k < yaws.size(); ++k)
-    pose_solve::check_position(0, yaws[k], fmt::format("sweep: {}", value_at(k, "yaw")));
+    check_yaw(yaws[k], fmt::format("sweep: {}", value_at(k, "yaw")));
 }
 
 // Cuts the cases `report` (in the order they are solved) into pieces of at most `chain`; the first piece starts

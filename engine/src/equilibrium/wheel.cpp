@@ -395,7 +395,8 @@ class WheelSolver {
 void WheelCase::validate(std::string_view context, bool plausible) const {
   if (side != kLeft && side != kRight)
     fail("{}: side = {} must be {} (left) or {} (right)", context, side, +kLeft, +kRight);
-  pose_solve::check_position(y, yaw, context);
+  check_lateral(y, context);
+  check_yaw(yaw, context);
   if (!std::isfinite(roll) || std::abs(roll) > 0.3)
     fail("{}: roll = {} rad must be finite and within +-0.3 rad", context, roll);
   pose_solve::check_load("Fz", Fz, context);

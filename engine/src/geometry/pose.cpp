@@ -1,9 +1,22 @@
-// The pose's rotation A = Rz(yaw) Rx(roll) and its translation (pose.hpp).
+// The pose's rotation A = Rz(yaw) Rx(roll) and its translation, the limits of y and yaw (pose.hpp).
 #include "wrc/geometry/pose.hpp"
+
+#include "wrc/core/error.hpp"
 
 #include <cmath>
 
 namespace wrc {
+
+void check_lateral(double y, std::string_view context) {
+  if (!std::isfinite(y) || std::abs(y) > kMaxLateral)
+    fail("{}: y = {} m must be finite and within +-{:g} m (the lateral displacement in metres: mm given?)", context, y,
+         kMaxLateral);
+}
+
+void check_yaw(double yaw, std::string_view context) {
+  if (!std::isfinite(yaw) || std::abs(yaw) > kMaxYaw)
+    fail("{}: yaw = {} rad must be finite and within +-{:g} rad (degrees given?)", context, yaw, kMaxYaw);
+}
 
 PoseFrame::PoseFrame(const Pose& p) : y(p.y), z(p.z) {
   const double cf = std::cos(p.roll), sf = std::sin(p.roll), cp = std::cos(p.yaw), sp = std::sin(p.yaw);

@@ -4,6 +4,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/parallel.hpp"
 #include "wrc/geometry/location.hpp"
+#include "wrc/geometry/pose.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
 #include <algorithm>
@@ -92,8 +93,8 @@ struct Draw {
 };
 
 std::vector<Draw> draw_poses(const StrategyCheckOptions& o) {
-  check_range(o.y, "y", -0.1, 0.1);
-  check_range(o.yaw, "yaw", -0.3, 0.3);
+  check_range(o.y, "y", -kMaxLateral, kMaxLateral);
+  check_range(o.yaw, "yaw", -kMaxYaw, kMaxYaw);
   check_range(o.roll, "roll", -0.1, 0.1);
   check_range(o.depth, "depth", 1e-9, 0.01);
   std::mt19937_64 rng(o.seed);

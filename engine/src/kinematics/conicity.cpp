@@ -4,6 +4,7 @@
 
 #include "wrc/core/error.hpp"
 #include "wrc/core/roots.hpp"
+#include "wrc/geometry/pose.hpp"
 
 #include <algorithm>
 #include <array>
@@ -249,9 +250,7 @@ void check_input(const DeltaRFunction& d, std::string_view context) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(d.y[i]) || !std::isfinite(d.dr[i]))
       fail("{}: the {} point is not a finite number (y = {}, dr = {})", context, ordinal(i + 1), d.y[i], d.dr[i]);
-    if (std::abs(d.y[i]) > 0.1)
-      fail("{}: {} (= {} m) lies beyond +-0.1 m: y is the lateral displacement in metres (mm given?)", context,
-           value_at(i, "y"), d.y[i]);
+    check_lateral(d.y[i], fmt::format("{}: {}", context, value_at(i, "y")));
     if (std::abs(d.dr[i]) > 0.05)
       fail("{}: {} (= {} m): Δr is a rolling radius difference in metres, a few mm at most (mm given?)", context,
            value_at(i, "dr"),

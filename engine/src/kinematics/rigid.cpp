@@ -4,6 +4,7 @@
 
 #include "wrc/core/error.hpp"
 #include "wrc/core/roots.hpp"
+#include "wrc/geometry/pose.hpp"
 #include "wrc/geometry/wheel_surface.hpp"
 
 #include <Eigen/Dense>
@@ -19,9 +20,8 @@ namespace {
 constexpr double kTouch = 1e-12;  // m: both overlaps within this of zero = touching
 
 void check_case(double y, double yaw, const RigidOptions& o) {
-  if (!std::isfinite(y) || std::abs(y) > 0.1) fail("rigid contact: y = {} m must be finite and within +-0.1 m", y);
-  if (!std::isfinite(yaw) || std::abs(yaw) > 0.3)
-    fail("rigid contact: yaw = {} rad must be finite and within +-0.3 rad", yaw);
+  check_lateral(y, "rigid contact");
+  check_yaw(yaw, "rigid contact");
   if (!std::isfinite(o.Q) || !(o.Q > 0)) fail("rigid contact: Q = {} N must be a positive number", o.Q);
   if (!std::isfinite(o.roll) || std::abs(o.roll) > 0.1)
     fail("rigid contact: roll = {} rad must be finite and within +-0.1 rad", o.roll);

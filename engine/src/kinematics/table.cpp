@@ -4,6 +4,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/files.hpp"
 #include "wrc/core/parallel.hpp"
+#include "wrc/geometry/pose.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -17,8 +18,7 @@ namespace {
 void check_options(const GeometryTableOptions& o) {
   if (o.y.empty()) fail("geometry table: 'y' needs at least one lateral position (m)");
   for (std::size_t i = 0; i < o.y.size(); ++i) {
-    if (!std::isfinite(o.y[i]) || std::abs(o.y[i]) > 0.1)
-      fail("geometry table: {} (= {} m) must be finite and within +-0.1 m", value_at(i, "y"), o.y[i]);
+    check_lateral(o.y[i], fmt::format("geometry table: {}", value_at(i, "y")));
     if (i > 0 && !(o.y[i] > o.y[i - 1]))
       fail("geometry table: y must increase strictly: {} (= {} m) after {} m", value_at(i, "y"), o.y[i], o.y[i - 1]);
   }

@@ -65,7 +65,8 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
     fail("contact model: the element size grid = {:.6g} m must be in [{}, {}] m ({} um .. {} mm)", options.element,
          kElementMin, kElementMax, kElementMin * 1e6, kElementMax * 1e3);
   if (options.max_elements < 1) fail("contact model: max_elements = {} must be >= 1", options.max_elements);
-  if (options.margin < 1 || options.margin > 100) fail("contact model: margin must be 1..100 elements, got {}", options.margin);
+  if (options.margin < 1 || options.margin > 100)
+    fail("contact model: margin must be 1..100 elements, got {}", options.margin);
   if (!(options.merge_tolerance > 0) || !std::isfinite(options.merge_tolerance))
     fail("contact model: merge_tolerance must be > 0, got {}", options.merge_tolerance);
   if (!(options.normal.tolerance >= 1e-14 && options.normal.tolerance < 1e-2))
@@ -123,12 +124,13 @@ std::vector<std::vector<int>> area_groups(const ContactModel& model, const std::
   return out;
 }
 
-// A wheel deeper in its rail than max_penetration (ContactRequest): the pose is a mistake, or the option must be raised.
+// A wheel deeper in its rail than max_penetration (ContactRequest): a mistaken pose, or the option is to be raised.
 [[noreturn]] void too_deep(const Pose& pose, int side, double depth, double limit) {
   fail("contact: at y = {:.4f} mm, z = {:.4f} mm, roll = {:.4f} mrad, yaw = {:.4f} mrad the {} wheel and its rail "
-       "inter-penetrate {:.4g} mm deep (undeformed profiles), more than max_penetration = {:.4g} mm: wheel-rail contacts "
-       "at realistic loads are 0.05-0.3 mm deep and beyond ~1 mm the half-space model no longer holds; check the pose "
-       "(z in m, 0 where the centred wheelset first touches, < 0 pressed in) or raise the option max_penetration",
+       "inter-penetrate {:.4g} mm deep (undeformed profiles), more than max_penetration = {:.4g} mm: wheel-rail "
+       "contacts at realistic loads are 0.05-0.3 mm deep and beyond ~1 mm the half-space model no longer holds; check "
+       "the pose (z in m, 0 where the centred wheelset first touches, < 0 pressed in) or raise the option "
+       "max_penetration",
        pose.y * 1e3, pose.z * 1e3, pose.roll * 1e3, pose.yaw * 1e3, side_name(side), depth * 1e3, limit * 1e3);
 }
 
@@ -138,7 +140,8 @@ std::string flange_climb(const ContactModel& model, const PoseFrame& f, int side
   const SidePlacement& place = model.geometry().track->place[side];
   for (const PatchContact& pc : wc.patches)
     if (pc.normal_force > 0)
-      if (std::string why = beyond_steepest(flange, profile_y(place, f.to_wheelset(pc.point).y())); !why.empty()) return why;
+      if (std::string why = beyond_steepest(flange, profile_y(place, f.to_wheelset(pc.point).y())); !why.empty())
+        return why;
   return nadal_exceeded(flange, side, wc.force.y(), wc.force.z());
 }
 
@@ -183,13 +186,14 @@ void finish_creep(const ContactModel& model, ContactResult& result, const Rollin
   for (WheelContact& wc : result.wheel) wc.creep.axle_torque = wc.creep.moment.dot(axle);
   result.creep.axle_torque = result.creep.moment.dot(axle);
   result.omega.reset();
-  if (const auto& k = request.kinematics) result.omega = k->omega.value_or(k->V / model.geometry().track->params.radius);
+  if (const auto& k = request.kinematics)
+    result.omega = k->omega.value_or(k->V / model.geometry().track->params.radius);
 }
 
-// The areas of one wheel through the pipeline, their tangential problems, the wheel's totals; the workspace remembers
-// the areas for the next evaluation.
+// The areas of one wheel through the pipeline, their tangential problems when `roll_areas`, the wheel's totals; the
+// workspace remembers the areas for the next evaluation.
 WheelContact wheel_contact(const ContactModel& model, const LocationState& st, int side, ContactWorkspace& ws,
-                           const ContactRequest& request, const VerticalLoad* load) {
+                           const ContactRequest& request, const VerticalLoad* load, bool roll_areas) {
   WheelAreas located = group_areas(model, st, side, request.max_penetration, ws);
   AreaSolve how;
   how.tolerance = request.tolerance;
@@ -205,11 +209,10 @@ WheelContact wheel_contact(const ContactModel& model, const LocationState& st, i
                  std::make_move_iterator(located.segments[p].end()));
     const AreaInput in{model, st, side, group, all, st.patches(side)[static_cast<std::size_t>(group.front())]};
     PatchContact pc = solve_area(in, how, ws, next_previous);
-    if (request.rolling && !free_rolling(*request.rolling)) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);
+    if (roll_areas) solve_area_rolling(model, st.pose(), pc, *request.rolling, ws, next_tangential);
     add_area(wc, std::move(pc));
   }
-  if (request.rolling && !free_rolling(*request.rolling)) {  // as the normal problem's areas: the one before kept
-                                                              // for the next step's extrapolation
+  if (roll_areas) {  // as the normal problem's areas: the one before kept for the next step's extrapolation
     ws.tangential_before[side].clear();
     if (ws.extrapolate) ws.tangential_before[side] = std::move(ws.tangential[side]);
     ws.tangential[side] = std::move(next_tangential);
@@ -236,21 +239,22 @@ ContactResult evaluate(const ContactModel& model, const Pose& pose, ContactWorks
     return ws.locator.locate(pose);
   }();
   ++ws.times.evaluations;
+  // Free rolling finds its spin once both wheels' normal problems are solved; otherwise each area rolls when solved.
+  const bool free_spin = request.rolling && free_rolling(*request.rolling);
+  const bool roll_areas = request.rolling && !free_spin;
   ContactResult res;
   res.pose = pose;
   for (int side : {kLeft, kRight}) {
     if (request.only_side >= 0 && request.only_side != side) continue;
     WheelContact& wc = res.wheel[side];
-    wc = wheel_contact(model, st, side, ws, request, load);
+    wc = wheel_contact(model, st, side, ws, request, load, roll_areas);
     res.force += wc.force;
     res.moment += wc.moment;
     res.sensitivity += wc.sensitivity;
     add_creep(res.creep, wc.creep);
   }
-  if (request.rolling) {
-    if (free_rolling(*request.rolling)) solve_free_rolling(model, res, *request.rolling, ws);
-    else finish_creep(model, res, *request.rolling);
-  }
+  if (free_spin) solve_free_rolling(model, res, *request.rolling, ws);
+  else if (roll_areas) finish_creep(model, res, *request.rolling);
   if (request.jacobian) add_jacobian(model, res, request.rolling, ws);
   if (!request.keep_grids) drop_grids(res);
   return res;
@@ -303,7 +307,7 @@ ContactRequest read_contact_request(OptionReader& r) {
 
 void ContactRequest::validate(bool plausible, double r0) const {
   if (rolling) rolling->validate("contact", plausible, r0);
-  if (rolling && rolling->kinematics && rolling->kinematics->free_rolling && (only_side != -1 || jacobian))
+  if (rolling && free_rolling(*rolling) && (only_side != -1 || jacobian))
     fail("contact: free_rolling balances the axle torque of both wheels at one omega: not with {}", only_side != -1
          ? "only_side (one wheel)" : "sensitivity (the Jacobian would hold omega fixed; give the omega it found)");
   if (!(max_penetration > 0)) fail("contact: max_penetration = {} m must be > 0", max_penetration);
@@ -407,17 +411,22 @@ void describe(const PatchContact& pc, FieldSink& out) {
              {"N", "normal force of the area (conformal: the magnitude of its pressure's resultant)"});
   out.number("pressure_integral", s.force,  // sum p dA: the normal force, or more where the normals turn
              {"N", "sum of p dA: the normal force on a plane, more than normal_force where the normals turn"});
-  out.vec3("force", pc.force, {"N", "force of the rail on the wheel through this area, creep force included (track frame)"});
+  out.vec3("force", pc.force,
+           {"N", "force of the rail on the wheel through this area, creep force included (track frame)"});
   out.vec3("moment", pc.moment, {"N m", "moment of the area's tractions about the wheelset centre (track axes)"});
   out.vec3("point", pc.point, {"m", "centre of pressure (track frame)"});
   out.vec3("normal", pc.normal,
-           {"-", "unit normal from the rail into the wheel (track frame; conformal: direction of the normal resultant)"});
+           {"-", "unit normal from the rail into the wheel (track frame; conformal: direction of the normal "
+                 "resultant)"});
   out.number("angle", pc.angle, {"rad", "contact angle of the normal, > 0 tilted toward the track centre"});
   const AreaSurface& surface = surface_of(pc);
   out.string("surface", surface.name(), {"", "the potential contact area: planar (a plane) or conformal (curved)"});
-  out.number("angle_min", pc.angle_min, {"rad", "smallest contact angle of the directions the pressure acts in (planar: angle)"});
-  out.number("angle_max", pc.angle_max, {"rad", "largest contact angle of the directions the pressure acts in (planar: angle)"});
-  out.number("nominal_angle", pc.nominal_angle, {"rad", "contact angle of the wheel's normal at the paper's nominal point"});
+  out.number("angle_min", pc.angle_min,
+             {"rad", "smallest contact angle of the directions the pressure acts in (planar: angle)"});
+  out.number("angle_max", pc.angle_max,
+             {"rad", "largest contact angle of the directions the pressure acts in (planar: angle)"});
+  out.number("nominal_angle", pc.nominal_angle,
+             {"rad", "contact angle of the wheel's normal at the paper's nominal point"});
   out.number("area", s.area, {"m^2", "contact area: elements in contact times the element area"});
   out.number("pmax", s.max_pressure, {"Pa", "peak pressure"});
   out.integer("elements", s.elements_in_contact, {"-", "elements in contact (p > 0)"});
@@ -427,11 +436,14 @@ void describe(const PatchContact& pc, FieldSink& out) {
   out.number("rolling_radius", pc.rolling_radius, {"m", "wheel radius at the centre of pressure"});
   out.number("nu", pc.nu, {"-", "Poisson's ratio of the bodies: what the stresses below the area take (p:subsurface)"});
   describe(pc.ellipses, out);
-  out.integer("iterations", s.iterations, {"-", "iterations of the normal solver (CG, or active set for the dense one)"});
+  out.integer("iterations", s.iterations,
+              {"-", "iterations of the normal solver (CG, or active set for the dense one)"});
   out.number("complementarity", s.residual.relative,
-             {"-", "relative residual of the normal solution: max |gap| in contact or max overlap outside / max(h + approach)"});
+             {"-", "relative residual of the normal solution: max |gap| in contact or max overlap outside / "
+                   "max(h + approach)"});
   // The contact plane: grid coordinates (u, v) are at origin + u t1 + v t2.
-  out.begin("frame", {"", "the contact plane (conformal: the local frame at the grid's origin): grid (u, v) at origin + u t1 + v t2"});
+  out.begin("frame", {"", "the contact plane (conformal: the local frame at the grid's origin): grid (u, v) at "
+                          "origin + u t1 + v t2"});
   out.vec3("origin", pc.origin, {"m", "origin of the frame, the area's reference point (track frame)"});
   out.vec3("t1", pc.t1, {"-", "unit rolling direction, the grid's x axis (track frame)"});
   out.vec3("t2", pc.t2, {"-", "unit lateral direction n x t1, the grid's y axis (track frame)"});
@@ -445,7 +457,8 @@ void describe(const PatchContact& pc, FieldSink& out) {
   out.number("y0", s.grid.y0, {"m", "v of the first element's centre (from the frame's origin)"});
   out.end();
   if (!s.pressure.empty())
-    out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny, {"Pa", "normal pressure per element, >= 0 (with grids)"});
+    out.grid("pressure", s.pressure.data(), s.grid.nx, s.grid.ny,
+             {"Pa", "normal pressure per element, >= 0 (with grids)"});
   if (!pc.h.empty())
     out.grid("h", pc.h.data(), s.grid.nx, s.grid.ny,
              {"m", "undeformed distance per element, > 0 where the profiles inter-penetrate (with grids)"});
@@ -479,7 +492,8 @@ void describe(const WheelContact& wc, FieldSink& out) {
 }
 
 void describe_sensitivity(const Sensitivity& S, FieldSink& out) {
-  out.begin("sensitivity", {"", "derivatives of (Fx, Fy, Fz, Mx, My, Mz), both wheels, by the pose (only when asked for)"});
+  out.begin("sensitivity",
+            {"", "derivatives of (Fx, Fy, Fz, Mx, My, Mz), both wheels, by the pose (only when asked for)"});
   for (int col = 0; col < 2; ++col) {
     const double v[6] = {S(0, col), S(1, col), S(2, col), S(3, col), S(4, col), S(5, col)};
     if (col == 0) out.numbers("z", v, 6, {"N/m, N m/m", "d(Fx, Fy, Fz, Mx, My, Mz)/dz of the normal problem"});

@@ -157,9 +157,9 @@ void check_flangeway(const Track& t) {
   fail("wrc.wheelset: the wheelset has {:.1f} mm of lateral play between its flanges and the rails: gauge {:.4f} m - "
        "(back_to_back {:.4f} m + flange thicknesses {:.1f} and {:.1f} mm); a wheelset in service has at most {:.0f} mm "
        "(standard gauge: 1.435 - (1.360 + 2 x 0.0325) = 10 mm). Are gauge and back_to_back those of one track (1.520 m "
-       "gauge takes about 1.440 m between flange backs, 1.668 m about 1.590 m, 1.000 m about 0.930 m)? check_setup = "
-       "false accepts it", (t.params.gauge - span) * 1e3, t.params.gauge, t.params.back_to_back, thick[kLeft] * 1e3,
-       thick[kRight] * 1e3, kMaxFlangeway * 1e3);
+       "gauge takes about 1.440 m between flange backs, 1.668 m about 1.590 m, 1.000 m about 0.930 m)? If the play is meant, {}",
+       (t.params.gauge - span) * 1e3, t.params.gauge, t.params.back_to_back, thick[kLeft] * 1e3, thick[kRight] * 1e3,
+       kMaxFlangeway * 1e3, kUncheckedHint);
 }
 
 // The gauge of flanged wheels is measured where standards measure it; a flangeless test body's gauge point is only
@@ -171,8 +171,8 @@ void check_gauge_depth(const Track& t) {
   fail("wrc.wheelset: gauge_depth = {:.4g} m puts the gauge points {:.1f} mm below the rails' tops; the gauge is "
        "measured {:.0f} .. {:.0f} mm below them (EN 13848-1: 14 mm, gauge_depth = 0.014; AAR: 5/8 in, 0.0159), where "
        "the head's gauge face is, and gauge = {:.4f} m is the distance between those points. Nearer the top the rails "
-       "close in on the flanges. check_setup = false accepts it", d, d * 1e3, kMinGaugeDepth * 1e3,
-       kMaxGaugeDepth * 1e3, t.params.gauge);
+       "close in on the flanges. To measure it there anyway, {}", d, d * 1e3, kMinGaugeDepth * 1e3,
+       kMaxGaugeDepth * 1e3, t.params.gauge, kUncheckedHint);
 }
 
 }  // namespace
@@ -181,7 +181,7 @@ void check_plausible(std::string_view context, std::string_view key, double valu
   if (!std::isfinite(value) || (std::abs(value) >= r.lo && std::abs(value) <= r.hi)) return;  // NaN: the range checks
   const std::string unit = *r.unit ? fmt::format(" {}", r.unit) : "";  // a friction coefficient has none
   fail("{}: {} = {:.6g}{} is implausible for {} ({:.3g} .. {:.3g}{}): is it in another unit? wrc takes SI units ({}); "
-       "check_setup = false on the wheelset accepts it", context, key, value, unit, r.what, r.lo, r.hi, unit, r.hint);
+       "{}", context, key, value, unit, r.what, r.lo, r.hi, unit, r.hint, kUncheckedHint);
 }
 
 void check_plausible(const TrackParams& track, const halfspace::Material& material) {
@@ -190,7 +190,7 @@ void check_plausible(const TrackParams& track, const halfspace::Material& materi
   if (track.cant < 0)
     fail("wrc.wheelset: cant = {:.6g} tilts the rails' heads outward, toward the field side; rails are inclined toward "
          "the track centre, cant > 0 (1:40 is cant = 0.025, 1:20 cant = 0.05), and a rail already canted in its file "
-         "is used with cant = 0; check_setup = false accepts it", track.cant);
+         "is used with cant = 0; {}", track.cant, kUncheckedHint);
 }
 
 void check_setup(const Track& t) {

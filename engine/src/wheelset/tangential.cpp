@@ -745,9 +745,9 @@ void check_kinematics(const std::optional<Kinematics>& kinematics, std::string_v
   if (ratio >= 0 && ratio <= kMaxSpinRatio) return;
   fail("{}: omega = {:.6g} rad/s is {:.3g} times the {:.4g} rad/s of pure rolling at V = {:.4g} m/s on r0 = {:.4g} m: "
        "the longitudinal creepage would be {:.3g}, beyond a locked wheel (1) and a wheel spinning at twice the speed "
-       "(-1). Is omega in another unit? wrc takes rad/s ({:.4g} rad/s is {:.4g} rpm); check_setup = false on the "
-       "wheelset accepts it", context, *k.omega, ratio, rolling, k.V, r0, 1 - ratio, rolling,
-       rolling * 60 / (2 * std::numbers::pi));
+       "(-1). Is omega in another unit? wrc takes rad/s ({:.4g} rad/s is {:.4g} rpm); {}",
+       context, *k.omega, ratio, rolling, k.V, r0, 1 - ratio, rolling, rolling * 60 / (2 * std::numbers::pi),
+       kUncheckedHint);
 }
 
 }  // namespace

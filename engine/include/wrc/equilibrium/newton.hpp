@@ -34,8 +34,8 @@ namespace wrc {
 
 // What an equilibrium is asked for.
 struct EquilibriumCase {
-  double y = 0;    // lateral position of the centre (m), within +-0.1
-  double yaw = 0;  // rad, within +-0.3
+  double y = 0;    // lateral position of the centre (m), within +-kMaxLateral (geometry/pose.hpp)
+  double yaw = 0;  // rad, within +-kMaxYaw
   double Q = 0;    // vertical load at the centre (N), in ]0, kMaxLoad]
   // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range;
   // `plausible`: also for a Q no railway wheelset carries (kWheelsetLoad, wheelset/plausibility.hpp).

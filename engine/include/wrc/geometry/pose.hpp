@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include <string_view>
+
 namespace wrc {
 
 // Wheelset pose in the track frame: lateral y (m), vertical z (m, z < 0 pressed into the rails), roll phi
@@ -10,6 +12,16 @@ namespace wrc {
 struct Pose {
   double y = 0, z = 0, roll = 0, yaw = 0;
 };
+
+// The lateral displacement and yaw every solver, table and sweep accepts. Far beyond a wheelset on its rails (the
+// flanges leave ~10 mm of play; a wheelset yaws by a few mrad, some tens in the tightest curves), they hold what the
+// geometry can still compute and refuse the usual slips of unit: y = 8 for 8 mm, yaw = 1 for one degree.
+inline constexpr double kMaxLateral = 0.1;  // m: |y| <= this
+inline constexpr double kMaxYaw = 0.3;      // rad (17 deg): |yaw| <= this
+// Throw wrc::Error "<context>: y = <y> m must be finite and within +-0.1 m (...)" (yaw alike, in rad) unless the
+// value is finite and within its limit.
+void check_lateral(double y, std::string_view context);
+void check_yaw(double yaw, std::string_view context);
 
 // A = Rz(yaw) Rx(roll) (dimensionless), with the pose's translation; the form every line-cone test uses.
 struct PoseFrame {

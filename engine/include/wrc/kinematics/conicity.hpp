@@ -22,7 +22,7 @@
 // Δr: EN 15302's infinite wavelength), with a note in the result.
 //
 // Bad input is an error naming it: fewer than 3 points, y not strictly increasing, a value that is not finite,
-// values out of any plausible range (y beyond +-0.1 m, |Δr| beyond 0.05 m: probably millimetres), Δr without a
+// values out of any plausible range (y beyond +-kMaxLateral = 0.1 m, |Δr| beyond 0.05 m: probably millimetres), Δr without a
 // rising zero (never changes sign, or falls through zero: not self-centring, or r_right - r_left), an amplitude
 // whose motion leaves the table, a motion of amplitude yhat that is not one oscillation about y0 (Δr has other
 // zeros inside it), or flange contact inside the motion (where the Δr table marks it): the standard's method is

@@ -21,8 +21,12 @@ namespace wrc {
 // measured outside 10 .. 25 mm below the rails' tops (gauge_depth; EN 13848-1: 14 mm).
 void check_setup(const Track& track);
 
+// How a refusal of these checks says to turn them off, in no one front end's words: Lua's false, Python's False,
+// MATLAB's false and the C API's option text check_setup=false all set the same option of the wheelset.
+inline constexpr const char* kUncheckedHint = "set the wheelset's option check_setup to false to accept it";
+
 // The magnitudes a railway wheelset's inputs have (SI units). A value outside was almost surely given in another unit
-// (kN for N, GPa for Pa, mm for m, km/h for m/s): refused with the unit in the message, unless check_setup = false.
+// (kN for N, GPa for Pa, mm for m, km/h for m/s): refused with the unit in the message, unless the wheelset's check_setup is false.
 // The options' validate() functions call check_plausible, so that Lua and C callers get the same checks.
 struct Plausible {
   const char* what;  // "a wheelset load"
