@@ -569,7 +569,7 @@ end
 -- o = {step = m (the largest wheel depth of the step), smooth = m (the smoothing's standard deviation), wear = {...}
 -- (the wear model's keys), method =, rolling_tolerance = (the exact solver's; default M.ROLLING_TOLERANCE), spin =
 -- "nominal" (default: omega = V / r0) | "free" (each case with kinematics rolls at the omega that balances its axle
--- torque, free_rolling; its search still fails on some worn flanges: docs/guide/wear.md), cases with prescribed
+-- torque, free_rolling: docs/guide/wear.md), cases with prescribed
 -- creepages keep them either way,
 -- threads =, chain =, rail_passes = (passages of the wheelset over a rail
 -- section per km it runs; 0: the rails are not worn), km_end = km (a step ends there at the latest), scheme =

@@ -178,3 +178,41 @@ do
   check.fails(function() roll(ws, e, {free_rolling = true, sensitivity = true}) end, "not with sensitivity",
               "free_rolling with sensitivity")
 end
+
+-- 7. Worn treads, started within the solver's noise of the root (as the wear loop starts each case from its spin on
+-- the profiles before): both wheels 0.3 mm hollow, the loop's 40 tangent cases (y = -4.5 .. 4.5 mm) in chains of 8 at
+-- its rolling_tolerance 1e-4, then again 0.1 um further, each from its own first solve. The first solve left the
+-- torque within the solver's noise (about 1 N m at 1e-4) but above the tolerance on some cases, the second's first
+-- step (1e-7 of omega r0 / V) returned it unchanged, and a search that took that for the wrong way ran off to the
+-- span's end: cases at y = -4.27, -4.04, -2.42, 1.50, 1.96, 3.35, 4.50 mm failed so. Each must converge, the spin
+-- checked independently with omega given, at the default (100 times finer) solver tolerance: the torque at omega
+-- (1 -+ 1e-6) of opposite signs (the root within a creepage of 1e-6), and |T(omega)| within 1e-4 sum mu N r (2.7 N
+-- m, the noise of the loop's solver tolerance: the search itself stops at 1e-5 of it as the solver returns it).
+do
+  local wh = wrc.wheelset{wheel = hollow(wheel, 0.3e-3), rail = rail, grid = 0.5e-3}
+  local ys = {}
+  for i = 0, 39 do ys[#ys + 1] = 1.5e-3 * (-3 + 6 * i / 39) end
+  local keys = {y = ys, yaw = {0}, Q = 200e3, V = V, mu = mu, free_rolling = true, rolling_tolerance = 1e-4,
+                wear = {}, contact_starts = true, threads = 1, chain = 8, progress = false}
+  local first = wh:sweep(keys)
+  local z, rl, contact, y2 = {}, {}, {}, {}
+  for k = 1, #ys do
+    check.ok(first[k].converged, ("worn, y = %.4f mm: first solve"):format(ys[k] * 1e3))
+    z[k], rl[k], contact[k], y2[k] = first[k].z, first[k].roll, first[k].contact_start, ys[k] + 1e-7
+  end
+  keys.y, keys.starts = y2, {z = z, roll = rl, contact = contact}
+  local again = wh:sweep(keys)
+  for k = 1, #ys do
+    local r, name = again[k], ("worn, y = %.4f mm"):format(y2[k] * 1e3)
+    check.ok(r.converged, name .. ": from its start within the noise: " .. tostring(r.error))
+    if r.converged then
+      local e = {y = y2[k], z = r.z, roll = r.roll, yaw = 0}
+      local t, scale = torque(roll(wh, e, {omega = r.omega}), e)
+      local tb = torque(roll(wh, e, {omega = r.omega * (1 - 1e-6)}), e)
+      local ta = torque(roll(wh, e, {omega = r.omega * (1 + 1e-6)}), e)
+      check.ok(tb > 0 and ta < 0, ("%s: the torque changes sign across omega (1 -+ 1e-6): %.4g, %.4g N m"):format(
+               name, tb, ta))
+      check.ok(math.abs(t) <= 1e-4 * scale, ("%s: |T(omega)| = %.3g N m <= 1e-4 sum mu N r"):format(name, t))
+    end
+  end
+end

@@ -29,7 +29,7 @@ constexpr double kSlopeBase = 1e-7;  // the shortest secant the slope is taken f
 // The secant's step past its predicted root, so that the bracket closes where the torque is known only to the exact
 // solver's noise (a secant from one side stalled at -0.68 N m, 1.6e-7 short of the root, on a flange at 1e-4).
 constexpr double kOvershoot = 1.2;
-constexpr int kGrowSteps = 16;      // 1e-4 x 4^7 already spans kFreeRollingSpan
+constexpr int kGrowSteps = 24;      // 1e-7 x 4^12 already spans kFreeRollingSpan; secant steps come before
 constexpr int kRootSteps = 40;      // regula falsi (Illinois) within the bracket
 
 // The torque of all areas sliding at their rolling radii (the search's scale).
@@ -62,7 +62,7 @@ void solve_free_rolling(const ContactModel& model, ContactResult& result, const 
     at = s;
     return t;
   };
-  const double tol = kFreeRollingTolerance * sliding_torque(result, request);
+  const double sliding = sliding_torque(result, request), tol = kFreeRollingTolerance * sliding;
   const double lo = 1 - kFreeRollingSpan, hi = 1 + kFreeRollingSpan;
   const bool started = ws.spin && ws.spin->ratio > lo && ws.spin->ratio < hi;
   double a = started ? ws.spin->ratio : 1.0;
@@ -76,11 +76,16 @@ void solve_free_rolling(const ContactModel& model, ContactResult& result, const 
     result.spin_evaluations = evaluations;
   };
   if (std::abs(fa) <= tol) return finish(a);
-  // The first step: Newton's with the slope the last search ended with, else a probe of kFirstStep.
-  double dir = (fa > 0) == (falls < 0) ? 1.0 : -1.0, b = a, fb = fa;
+  // The first step: Newton's with the slope the last search ended with, else a probe of kFirstStep. The direction is
+  // the torque's sign, never turned: the torque is monotone in omega (each area's Fx is in its xi, the normal problems
+  // are fixed), so a step whose torque does not fall is one within the exact solver's noise (started from the solution
+  // a step of 1e-7 before, it returns that one unchanged) or on a saturated plateau, and the root lies further on.
+  // (Turning there sent the search away from a root it started within the noise of, to the span's end.)
+  const double dir = (fa > 0) == (falls < 0) ? 1.0 : -1.0;
+  double b = a, fb = fa;
   double h = known != 0 ? std::clamp(std::abs(fa / known), kSlopeBase, kNewtonStep) : kFirstStep;
   std::string seen = fmt::format("{:.4g} N m at omega r0 / V = {:.6f}", fa, a);
-  bool turned = false, bracketed = false;
+  bool bracketed = false;
   for (int step = 0; step < kGrowSteps && !bracketed; ++step) {
     b = std::clamp(a + dir * h, lo, hi);
     fb = torque(b);
@@ -88,20 +93,23 @@ void solve_free_rolling(const ContactModel& model, ContactResult& result, const 
     if (std::abs(fb) <= tol) return finish(b);
     if ((fb > 0) != (fa > 0)) {
       bracketed = true;
-    } else if (std::abs(fb) >= std::abs(fa) && !turned && step == 0) {  // the wrong way: from a the other way
-      dir = -dir;
-      turned = true;
     } else {
       if (b == lo || b == hi) break;
-      const double ahead = -fb * (b - a) / (fb - fa) * dir;  // the secant's distance to the root, along dir
+      // The secant's distance to the root along dir where the torque fell; 4 times the step where it did not.
+      const double ahead = std::abs(fb) < std::abs(fa) ? fb * (b - a) / (fa - fb) * dir : 0.0;
       h = ahead > 0 ? std::clamp(kOvershoot * ahead, kSlopeBase, 4 * h) : 4 * h;
       a = b;
       fa = fb;
     }
   }
-  if (!bracketed)
+  if (!bracketed && (b == lo || b == hi))
     fail("free_rolling: no omega within {:g} .. {:g} times V / r0 = {:.6g} rad/s balances the axle torque of the creep "
-         "forces (it does not change sign: {}); give omega instead", lo, hi, V / r0, seen);
+         "forces: at the span's end it is {:.4g} N m, {:.3g} of the areas' torque all sliding (sum mu N r = {:.4g} N m), "
+         "and it does not change sign ({}); give omega instead", lo, hi, V / r0, fb, std::abs(fb) / sliding, sliding,
+         seen);
+  if (!bracketed)
+    fail("free_rolling: the axle torque did not change sign within {} steps from omega r0 / V = {:.8f} ({}); give omega "
+         "instead", kGrowSteps, a, seen);
   bool ok = false;
   const double s = bracketed_root(torque, a, b, fa, fb, tol, kRootSteps, ok, kFreeRollingResolution);
   if (!ok)

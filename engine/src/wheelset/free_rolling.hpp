@@ -26,10 +26,12 @@ inline constexpr double kFreeRollingResolution = 1e-9;
 // regula falsi (Illinois) on the axle torque against omega r0 / V, from the workspace's last free-rolling spin (or 1,
 // pure rolling at r0), its bracket grown until the torque changes sign: first by Newton's step with the slope that
 // search ended with (or by 1e-4 without one; at most 1e-3), then by the secant's prediction (1.2 times it, at least
-// 1e-7, at most 4 times the step before), which lands on the root or across it. A neighbouring case's spin and slope make it 2 to 3 solves where the torque
+// 1e-7, at most 4 times the step before; 4 times it where the torque did not fall: a step within the solver's noise or
+// on a saturated plateau), always the way the torque's sign points (it is monotone in omega). A neighbouring case's spin and slope make it 2 to 3 solves where the torque
 // is nearly linear in omega. The result holds the areas' solution at the spin it returns (result.omega,
-// result.spin_evaluations). It stops at kFreeRollingTolerance or kFreeRollingResolution. Throws wrc::Error when no spin within 1 +- kFreeRollingSpan changes the torque's sign or
-// the search does not converge in its iterations, naming the torques it saw.
+// result.spin_evaluations). It stops at kFreeRollingTolerance or kFreeRollingResolution. Throws wrc::Error when no spin within 1 +- kFreeRollingSpan changes the torque's sign (naming
+// the torque at the span's end against the areas' all sliding) or the search does not converge in its steps, naming
+// the torques it saw.
 void solve_free_rolling(const ContactModel& model, ContactResult& result, const RollingRequest& request,
                         ContactWorkspace& workspace);
 
