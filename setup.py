@@ -3,6 +3,7 @@ plugins only, then puts into the wheel the package (python/wrc, the generated st
 (scripts, profiles, plugins) under wrc/share/wrc and wrc/lib/wrc/plugins, where the module finds them."""
 import os
 import pathlib
+import shlex
 import shutil
 import subprocess
 import sys
@@ -21,8 +22,10 @@ class CMakeBuild(build_ext):
         build = pathlib.Path(self.build_temp).resolve() / "cmake"
         package = pathlib.Path(self.get_ext_fullpath(ext.name)).resolve().parent
         jobs = os.environ.get("WRC_BUILD_JOBS", "2")
+        # CMAKE_ARGS (the environment variable conda-build and scikit-build also read): more configure arguments.
+        extra = shlex.split(os.environ.get("CMAKE_ARGS", ""))
         subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-                        "-DWRC_BUILD_TESTS=OFF", f"-DWRC_PYTHON_EXECUTABLE={sys.executable}"], check=True)
+                        "-DWRC_BUILD_TESTS=OFF", f"-DWRC_PYTHON_EXECUTABLE={sys.executable}", *extra], check=True)
         subprocess.run(["cmake", "--build", str(build), "-j", jobs, "--target", "wrc_python", "wrc_plugins"],
                        check=True)
         built = build / "python" / "wrc"

@@ -15,6 +15,9 @@ work.mkdir(parents=True)
 env = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS", "PYTHONPATH")}
 env["WRC_SETUP_BUILD"] = str(work / "setup")
 env["PIP_NO_INDEX"] = "1"
+# What is checked is the packaging, not the optimiser: the module unoptimised (-O0) compiles in 0.63 of the CPU time
+# of Release's -O3 (259 s against 413 s on 2 cores), and the check's one equilibrium runs in a second either way.
+env["CMAKE_ARGS"] = "-DCMAKE_CXX_FLAGS_RELEASE=-O0 -DCMAKE_C_FLAGS_RELEASE=-O0"
 subprocess.run([sys.executable, "-m", "pip", "wheel", str(source), "--no-build-isolation", "--no-deps", "-w",
                 str(work / "wheel")], check=True, env=env)
 wheels = list((work / "wheel").glob("wrc-*.whl"))
