@@ -45,9 +45,11 @@ bool digit(char c) { return c >= '0' && c <= '9'; }
 std::string reason() { return std::strerror(errno); }
 
 // The tracked temporaries. A slot goes free -> claimed (by one thread's compare-exchange) -> ready once its path is
-// copied, and back to free; remove_tracked_temporaries reads only ready slots, so a signal arriving in the middle of
-// a copy never sees half a path. 256 slots of PATH_MAX bytes: 1 MiB of zero pages, touched only as far as used.
-enum : int { kFree = 0, kClaimed = 1, kReady = 2 };
+// copied, and back to free; a search by name holds a ready slot as compared while it reads the path.
+// remove_tracked_temporaries reads ready and compared slots, whose paths are whole: a signal arriving in the middle
+// of a copy never sees half a path, nor one in the middle of a search misses a file. 256 slots of PATH_MAX bytes:
+// 1 MiB of zero pages, touched only as far as used.
+enum : int { kFree = 0, kClaimed = 1, kReady = 2, kCompared = 3 };
 struct TrackedSlot {
   std::atomic<int> state{kFree};
   char path[PATH_MAX];
@@ -71,13 +73,16 @@ int track_temporary(const std::string& path) {
 }
 
 void untrack_temporary(int slot) {
-  if (slot >= 0 && slot < kMaxTracked) g_tracked[slot].state.store(kFree);
+  if (slot < 0 || slot >= kMaxTracked) return;
+  // Ready -> free; while another thread's search by name holds the slot, wait for it to hand the slot back.
+  for (int expected = kReady; !g_tracked[slot].state.compare_exchange_weak(expected, kFree); expected = kReady)
+    if (expected != kReady && expected != kCompared) return;  // freed by a search for its name
 }
 
 bool untrack_temporary(const std::string& path) {
   for (TrackedSlot& s : g_tracked) {
     int expected = kReady;
-    if (!s.state.compare_exchange_strong(expected, kClaimed)) continue;
+    if (!s.state.compare_exchange_strong(expected, kCompared)) continue;
     const bool same = path == s.path;
     s.state.store(same ? kFree : kReady);
     if (same) return true;
@@ -87,7 +92,7 @@ bool untrack_temporary(const std::string& path) {
 
 void remove_tracked_temporaries() noexcept {
   for (TrackedSlot& s : g_tracked)
-    if (s.state.load() == kReady) ::unlink(s.path);
+    if (const int state = s.state.load(); state == kReady || state == kCompared) ::unlink(s.path);
 }
 
 std::string temporary_path(const std::string& path) {
