@@ -190,9 +190,13 @@ end
 local function gnuplot(file, script)
   local base = file:gsub("%.[^./]+$", "")
   M.text(base .. ".gp", (script:gsub("@OUTPUT@", function() return gp_path(leaf(file)) end)))
-  -- Temporary names of wrc's own pattern (wrc.fs.is_temporary): a killed run's are recognised and removed.
+  -- Temporary names of wrc's own pattern (wrc.fs.is_temporary): a killed run's are recognised and removed, an
+  -- interrupted run removes them itself until they are forgotten (once removed or renamed, or on an error).
   local tmp_png, tmp_gp, tmp_log = wrc.fs.temporary_name(file), wrc.fs.temporary_name(base .. ".gp"),
                                    wrc.fs.temporary_name(base .. ".log")
+  local _ <close> = setmetatable({}, {__close = function()
+    for _, name in ipairs{tmp_png, tmp_gp, tmp_log} do wrc.fs.forget_temporary(name) end
+  end})
   local f = assert(io.open(tmp_gp, "w"))
   f:write((script:gsub("@OUTPUT@", function() return gp_path(leaf(tmp_png)) end)))
   f:close()

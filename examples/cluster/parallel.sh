@@ -12,7 +12,8 @@
 #
 # Environment: WRC, the wrc executable (default: `wrc` on the PATH, else build/wrc of the source tree this script is
 # in, as the README builds it). A shard that was stopped is simply run again:
-# it resumes after its last finished block. Exit status: that of the merge (0, or 3 when cases failed).
+# it resumes after its last finished block. Exit status: that of the merge (0, or 3 when cases failed); 130 (Ctrl-C) or
+# 143 (SIGTERM) when interrupted, with no merge.
 set -euo pipefail
 
 shards=4 jobs="" hosts=""
@@ -47,6 +48,15 @@ export WRC_SHARD_WORDS
 opts=(--will-cite --halt never --line-buffer --tagstring "shard {}/$shards")
 [ -n "$jobs" ] && opts+=(--jobs "$jobs")
 [ -n "$hosts" ] && opts+=(--sshlogin "$hosts" --workdir "$PWD" --env WRC_SHARD_WORDS)
+
+# Ctrl-C (or SIGTERM to this script) stops the study without a merge: GNU parallel stops the shards, which remove the
+# files they were writing (a shard run again resumes). Bash runs the trap once the command in progress has returned.
+stopped() {
+  echo "parallel.sh: interrupted by SIG$1: the shards stopped, no merge (run the command again to resume)" >&2
+  exit "$2"
+}
+trap 'stopped INT 130' INT
+trap 'stopped TERM 143' TERM
 
 start=$(date +%s%N)
 # -q: the words of the command are quoted for the shell (on remote hosts too); its only replacement string is the

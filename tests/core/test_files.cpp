@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -64,6 +65,44 @@ TEST_CASE("files: an atomic file appears whole at commit, and a discarded one le
   CHECK_THROWS_WITH_AS(g.write("x"), doctest::Contains("already committed"), Error);
   CHECK(read(target).empty());
   CHECK_THROWS_WITH_AS(AtomicFile((dir / "no_such_folder" / "x.csv").string()), doctest::Contains("no_such_folder"), Error);
+}
+
+TEST_CASE("files: an interrupted run removes the temporaries being written, and only those") {
+  const fs::path dir = fresh_folder("tracked");
+  const std::string target = (dir / "table.csv").string();
+  write_file_atomic(target, "old\n");
+  AtomicFile open_one(target);  // being written: tracked
+  open_one.write("half");
+  {
+    AtomicFile committed((dir / "done.csv").string());  // committed: untracked, renamed into place
+    committed.write("done\n");
+    committed.commit();
+  }
+  const std::string own = temporary_path(target);  // a script's own temporary, tracked by name
+  track_temporary(own);
+  std::ofstream(own) << "own";
+  const std::string forgotten = temporary_path(target);  // tracked, then forgotten: not removed
+  track_temporary(forgotten);
+  std::ofstream(forgotten) << "kept";
+  CHECK(untrack_temporary(forgotten));
+  CHECK_FALSE(untrack_temporary(forgotten));
+  REQUIRE(list_folder(dir.string()).size() == 5);
+  remove_tracked_temporaries();  // what the signal handler does
+  const std::string kept = fs::path(forgotten).filename().string();
+  CHECK(list_folder(dir.string()) == std::vector<std::string>{kept, "done.csv", "table.csv"});
+  CHECK(read(target) == "old\n");
+  CHECK(read((dir / "done.csv").string()) == "done\n");
+  CHECK(untrack_temporary(own));
+  open_one.discard();  // its file is gone already: nothing to remove, and its slot is freed
+  fs::remove(forgotten);
+  // The table is finite: a path beyond it, or longer than the system takes, is refused before any file exists.
+  std::vector<int> slots;
+  for (int i = 0; i < kMaxTracked; ++i) slots.push_back(track_temporary((dir / "x").string() + std::to_string(i)));
+  CHECK_THROWS_WITH_AS(AtomicFile((dir / "one_more.csv").string()), doctest::Contains("being written at once"), Error);
+  for (int slot : slots) untrack_temporary(slot);
+  CHECK_THROWS_WITH_AS(track_temporary(std::string(5000, 'a')), doctest::Contains("longer than the system takes"),
+                       Error);
+  CHECK(list_folder(dir.string()) == std::vector<std::string>{"done.csv", "table.csv"});
 }
 
 TEST_CASE("files: temporary names, sorted listings, writable folders") {

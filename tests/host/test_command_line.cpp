@@ -61,6 +61,20 @@ TEST_CASE("host flags: a flag or an option given twice, and --fresh with --merge
   CHECK(flags_of({"a=1", "b=1", "word", "word"}).shards == 1);  // other words may repeat (a plain script's arg[i])
 }
 
+TEST_CASE("host flags: a key=value word needs a key that is a Lua name, and one '='") {
+  for (const char* ok : {"y_mm=3", "_x=1", "K2=", "out=a=b", "label=x y"}) CHECK_NOTHROW(flags_of({ok}));
+  CHECK(flags_of({"plain", "words"}).shards == 1);  // no '=': positional, arg[1], arg[2]
+  CHECK_THROWS_WITH_AS(flags_of({"=3"}), doctest::Contains("argument '=3' has no key before '='"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"="}), doctest::Contains("argument '=' has no key before '='"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"k==v"}), doctest::Contains("argument 'k==v': '=' is doubled"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"k==v"}), doctest::Contains("write k=v"), Error);
+  CHECK_THROWS_WITH_AS(flags_of({"k=="}), doctest::Contains("'=' is doubled"), Error);
+  for (const char* bad : {"y-mm=3", "1a=2", "a.b=1", " k=1", "k k=1", "\xc3\xa9=1"})
+    CHECK_THROWS_WITH_AS(flags_of({bad}), doctest::Contains("is not a name"), Error);
+  std::vector<std::string> merge_args{"=3"};
+  CHECK_THROWS_WITH_AS(wrc::host::take_merge_flags(merge_args), doctest::Contains("no key before '='"), Error);
+}
+
 TEST_CASE("host flags: wrc merge STUDY.lua takes options and --help, no --shard, --merge or --fresh") {
   std::vector<std::string> args{"out=x", "plots=false"};
   const RunFlags f = wrc::host::take_merge_flags(args);

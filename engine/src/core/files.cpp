@@ -7,10 +7,12 @@
 #include <atomic>
 #include <random>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
+#include <utility>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -42,7 +44,56 @@ bool digit(char c) { return c >= '0' && c <= '9'; }
 
 std::string reason() { return std::strerror(errno); }
 
+// The tracked temporaries. A slot goes free -> claimed (by one thread's compare-exchange) -> ready once its path is
+// copied, and back to free; a search by name holds a ready slot as compared while it reads the path.
+// remove_tracked_temporaries reads ready and compared slots, whose paths are whole: a signal arriving in the middle
+// of a copy never sees half a path, nor one in the middle of a search misses a file. 256 slots of PATH_MAX bytes:
+// 1 MiB of zero pages, touched only as far as used.
+enum : int { kFree = 0, kClaimed = 1, kReady = 2, kCompared = 3 };
+struct TrackedSlot {
+  std::atomic<int> state{kFree};
+  char path[PATH_MAX];
+};
+static_assert(std::atomic<int>::is_always_lock_free, "a signal handler reads the slots' states");
+TrackedSlot g_tracked[kMaxTracked];
+
 }  // namespace
+
+int track_temporary(const std::string& path) {
+  if (path.size() >= PATH_MAX) fail("cannot write '{}': the path is longer than the system takes", path);
+  for (int i = 0; i < kMaxTracked; ++i) {
+    int expected = kFree;
+    if (!g_tracked[i].state.compare_exchange_strong(expected, kClaimed)) continue;
+    std::memcpy(g_tracked[i].path, path.c_str(), path.size() + 1);
+    g_tracked[i].state.store(kReady);
+    return i;
+  }
+  fail("cannot write '{}': {} files are being written at once, the most wrc tracks (to remove them when a run is "
+       "interrupted)", path, kMaxTracked);
+}
+
+void untrack_temporary(int slot) {
+  if (slot < 0 || slot >= kMaxTracked) return;
+  // Ready -> free; while another thread's search by name holds the slot, wait for it to hand the slot back.
+  for (int expected = kReady; !g_tracked[slot].state.compare_exchange_weak(expected, kFree); expected = kReady)
+    if (expected != kReady && expected != kCompared) return;  // freed by a search for its name
+}
+
+bool untrack_temporary(const std::string& path) {
+  for (TrackedSlot& s : g_tracked) {
+    int expected = kReady;
+    if (!s.state.compare_exchange_strong(expected, kCompared)) continue;
+    const bool same = path == s.path;
+    s.state.store(same ? kFree : kReady);
+    if (same) return true;
+  }
+  return false;
+}
+
+void remove_tracked_temporaries() noexcept {
+  for (TrackedSlot& s : g_tracked)
+    if (const int state = s.state.load(); state == kReady || state == kCompared) ::unlink(s.path);
+}
 
 std::string temporary_path(const std::string& path) {
   static std::atomic<unsigned> counter{0};
@@ -66,8 +117,13 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (path_.empty() || std::filesystem::path(path_).filename().empty())
     fail("cannot write '{}': not a file name", path_);
   temp_ = temporary_path(path_);
+  tracked_ = track_temporary(temp_);  // before the file exists: an interrupted run never leaves it untracked
   file_ = std::fopen(temp_.c_str(), "wb");
-  if (file_ == nullptr) fail("cannot write '{}': {}", path_, reason());
+  if (file_ == nullptr) {
+    const std::string why = reason();
+    untrack_temporary(std::exchange(tracked_, -1));
+    fail("cannot write '{}': {}", path_, why);
+  }
 }
 
 AtomicFile::~AtomicFile() { discard(); }
@@ -88,14 +144,18 @@ void AtomicFile::commit() {
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
   if (!ok || !closed) {
+    const std::string r = ok ? reason() : why;
     std::remove(temp_.c_str());
-    fail("cannot write '{}': {}", path_, ok ? reason() : why);
+    untrack_temporary(std::exchange(tracked_, -1));
+    fail("cannot write '{}': {}", path_, r);
   }
   if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
     const std::string r = reason();
     std::remove(temp_.c_str());
+    untrack_temporary(std::exchange(tracked_, -1));
     fail("cannot write '{}': {}", path_, r);
   }
+  untrack_temporary(std::exchange(tracked_, -1));  // after the rename: the temporary name is gone
 }
 
 void AtomicFile::discard() {
@@ -103,6 +163,7 @@ void AtomicFile::discard() {
   std::fclose(file_);
   file_ = nullptr;
   std::remove(temp_.c_str());
+  untrack_temporary(std::exchange(tracked_, -1));
 }
 
 void write_file_atomic(const std::string& path, std::string_view content) {
@@ -136,12 +197,18 @@ void check_writable(const std::string& folder) {
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) fail("output folder '{}' does not exist or is not a folder", folder);
   const std::string probe = temporary_path((std::filesystem::path(folder) / "wrc-writable").string());
+  const int slot = track_temporary(probe);
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
-  if (fd < 0) fail("output folder '{}' is not writable: {}", folder, reason());
+  if (fd < 0) {
+    const std::string why = reason();
+    untrack_temporary(slot);
+    fail("output folder '{}' is not writable: {}", folder, why);
+  }
   const bool ok = ::write(fd, "x", 1) == 1;
   const std::string why = ok ? std::string() : reason();
   ::close(fd);
   ::unlink(probe.c_str());
+  untrack_temporary(slot);
   if (!ok) fail("output folder '{}' is not writable: {}", folder, why);
 }
 

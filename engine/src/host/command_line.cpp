@@ -60,6 +60,25 @@ void shard_from_slurm(const std::function<const char*(const char*)>& env, RunFla
   f.shard_from = fmt::format("SLURM_ARRAY_TASK_ID={} of the array {}-{} ({} tasks)", id, *min, *min + (n - 1) * step, n);
 }
 
+// A word with '=' is an option key=value, read by the script as arg.key: the key must be a Lua name (a letter or '_',
+// then letters, digits, '_'), and a value that starts with '=' is a doubled '=' ("k==v"), not a value.
+void check_option_word(const std::string& word, std::size_t eq) {
+  const std::string key = word.substr(0, eq);
+  if (key.empty())
+    fail("argument '{}' has no key before '=': options are key=value (e.g. y_mm=3), read by the script as arg.key",
+         word);
+  const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  const bool name = letter(key[0]) && std::all_of(key.begin(), key.end(), [&](char c) {
+                      return letter(c) || (c >= '0' && c <= '9');
+                    });
+  if (!name)
+    fail("argument '{}': the key '{}' is not a name (a letter or '_', then letters, digits and '_'): options are "
+         "key=value, read by the script as arg.key", word, key);
+  if (eq + 1 < word.size() && word[eq + 1] == '=')
+    fail("argument '{}': '=' is doubled (the value would start with '='): write {}={}", word, key,
+         word.substr(std::min(word.find_first_not_of('=', eq), word.size())));
+}
+
 // The flags of a command line taken out of `args`; each flag and each key=value key at most once.
 RunFlags parse_flags(std::vector<std::string>& args) {
   RunFlags f;
@@ -73,7 +92,8 @@ RunFlags parse_flags(std::vector<std::string>& args) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) != 0 && a != "-h") {
       const auto eq = a.find('=');
-      if (eq != std::string::npos && eq > 0) {
+      if (eq != std::string::npos) {
+        check_option_word(a, eq);
         const auto [it, fresh] = keys.emplace(a.substr(0, eq), a);
         if (!fresh) fail("option {} is given twice ({} and {}): give it once", it->first, it->second, a);
       }

@@ -2,6 +2,7 @@
 #include "wrc/core/build.hpp"
 #include "wrc/core/config.hpp"
 #include "wrc/host/command_line.hpp"
+#include "wrc/host/interrupt.hpp"
 #include "wrc/lua/host.hpp"
 
 #include <cstdio>
@@ -31,7 +32,8 @@ void usage(std::FILE* out) {
       "  --fresh       discard the parts of an earlier run and start over (a run resumes otherwise)\n"
       "wrc merge STUDY.lua assembles them with the options the shards ran with (read from DIR/parts, where\n"
       "DIR is out=, or the study's default), if the parts came from this script (its content hash).\n"
-      "Exit status: 0 done, 1 error, 2 usage, 3 done with failed cases (listed in DIR/failures.csv).\n"
+      "Exit status: 0 done, 1 error, 2 usage, 3 done with failed cases (listed in DIR/failures.csv);\n"
+      "interrupted (Ctrl-C, SIGTERM, SIGHUP): 130, 143, 129, the files being written removed.\n"
       "\n"
       "environment: WRC_HOME (folder with scripts/ and profiles/), WRC_PLUGIN_PATH (extra plugin\n"
       "folders, ':'-separated)\n",
@@ -41,6 +43,7 @@ void usage(std::FILE* out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  wrc::host::remove_temporaries_when_interrupted();  // first: no thread runs yet
   if (argc < 2) {
     usage(stderr);
     return 2;

@@ -183,10 +183,19 @@ int lock_index(lua_State* L) {
   return 1;
 }
 
-// wrc.fs.temporary_name(path) -> a fresh temporary path next to `path` (the pattern fs.is_temporary recognises).
+// wrc.fs.temporary_name(path) -> a fresh temporary path next to `path` (the pattern fs.is_temporary recognises),
+// tracked: an interrupted run removes it (track_temporary) until wrc.fs.forget_temporary(name) says it is gone.
 int fs_temporary_name(lua_State* L) {
-  lua_pushstring(L, temporary_path(check_path(L, 1, "wrc.fs.temporary_name")).c_str());
+  const std::string name = temporary_path(check_path(L, 1, "wrc.fs.temporary_name"));
+  track_temporary(name);
+  lua_pushstring(L, name.c_str());
   return 1;
+}
+
+// wrc.fs.forget_temporary(name): a name of wrc.fs.temporary_name that was removed or renamed; nothing otherwise.
+int fs_forget_temporary(lua_State* L) {
+  untrack_temporary(check_path(L, 1, "wrc.fs.forget_temporary"));
+  return 0;
 }
 
 // wrc.fs.digest(path [, bytes]) -> the hash of the first `bytes` bytes (all by default), bytes read, line breaks.
@@ -313,6 +322,7 @@ void open_fs(lua_State* L) {
                           {"remove_tree_inside", guarded<fs_remove_tree_inside>},
                           {"lock", guarded<fs_lock>},
                           {"temporary_name", guarded<fs_temporary_name>},
+                          {"forget_temporary", guarded<fs_forget_temporary>},
                           {nullptr, nullptr}};
   luaL_newlib(L, fns);
   lua_setfield(L, -2, "fs");

@@ -155,7 +155,7 @@ void push_args(lua_State* L, const std::string& script, const std::vector<std::s
   lua_Integer positional = 0;
   for (const std::string& a : args) {
     const auto eq = a.find('=');
-    if (eq == std::string::npos || eq == 0) {
+    if (eq == std::string::npos) {  // a key=value word has a key (host/command_line checked it)
       lua_pushstring(L, a.c_str());
       lua_rawseti(L, -2, ++positional);
       continue;

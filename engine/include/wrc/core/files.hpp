@@ -30,6 +30,7 @@ class AtomicFile {
  private:
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
+  int tracked_ = -1;  // its slot among the tracked temporaries
 };
 
 // Throws wrc::Error "<context>: the path '...' holds a NUL character ..." when `path` does: the system reads a path up
@@ -44,6 +45,19 @@ void write_file_atomic(const std::string& path, std::string_view content);
 // random: unique across the processes and hosts writing into one shared folder, and a pattern that a user's file
 // does not match by chance (".notes.tmp.txt" does not).
 std::string temporary_path(const std::string& path);
+
+// ---- The temporary files of this process that exist or are about to: a fixed table a signal handler may read, so
+// that a run stopped by SIGINT or SIGTERM removes them before it ends (the wrc executable, host/interrupt.hpp).
+// AtomicFile tracks its own; a script that writes a temporary itself tracks it through wrc.fs.temporary_name.
+
+// Enters `path` (as given: relative to the working directory, which the host never changes) and returns its slot.
+// Throws wrc::Error when kMaxTracked paths are tracked already, or the path is longer than the system takes.
+inline constexpr int kMaxTracked = 256;
+int track_temporary(const std::string& path);
+void untrack_temporary(int slot);                // a slot track_temporary gave; -1 does nothing
+bool untrack_temporary(const std::string& path);  // false when that path is not tracked
+// unlink()s every tracked path; only async-signal-safe calls (atomic loads of lock-free atomics, unlink).
+void remove_tracked_temporaries() noexcept;
 
 // True for a name that temporary_path gives, exactly (a run killed before commit() leaves such files behind).
 bool is_temporary_name(std::string_view name);

@@ -24,12 +24,13 @@ struct RunFlags {
 // a SLURM array job (SLURM_ARRAY_TASK_ID set), the split comes from SLURM: shard = (ID - MIN) / STEP + 1 of
 // SLURM_ARRAY_TASK_COUNT (or (MAX - MIN) / STEP + 1); --shard wins over SLURM (a note says so), and --merge
 // ignores SLURM. `env` reads an environment variable (nullptr when unset). Throws wrc::Error naming a malformed
-// flag, a flag or a key=value option given twice, --merge with --shard or --fresh, or an array whose task ids do
+// flag, a key=value word whose key is empty or not a Lua name or whose '=' is doubled ("=3", "y-mm=3", "k==v"), a
+// flag or a key=value option given twice, --merge with --shard or --fresh, or an array whose task ids do
 // not number the shards (a list with gaps).
 RunFlags take_run_flags(std::vector<std::string>& args, const std::function<const char*(const char*)>& env);
 
 // The flags of `wrc merge STUDY.lua [key=value ...]`: merge and from_parts set, --help allowed; --shard, --merge and
-// --fresh are errors, and so is a key given twice.
+// --fresh are errors, and so are a malformed key=value word and a key given twice.
 RunFlags take_merge_flags(std::vector<std::string>& args);
 
 }  // namespace wrc::host
