@@ -8,6 +8,10 @@ set -uo pipefail
 WRC=${WRC:?} SRC=${SRC:?} TMPBASE=${TMPBASE:?}
 script=$SRC/tests/data/host/interrupted.lua
 dir=$TMPBASE/interrupt
+pid=""
+# A check failing before the signal (or a signal that does not stop the run) must not leave the endless loop running.
+cleanup() { [ -n "$pid" ] && kill -s KILL "$pid" 2> /dev/null; }
+trap cleanup EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 set -m  # job control: a background job gets SIGINT's default action (without it, a script's jobs ignore SIGINT)
 
@@ -17,7 +21,7 @@ interrupt() {  # interrupt SIGNAL MODE STATUS
   rm -rf "$dir" && mkdir -p "$dir" || fail "cannot make $dir"
   printf 'previous content, complete\n' > "$dir/out.txt"
   "$WRC" run "$script" out="$dir/out.txt" mode="$mode" > "$dir/stdout" 2> "$dir/stderr" &
-  local pid=$!
+  pid=$!
   for _ in $(seq 600); do  # at most 60 s for the run to start: a safety, not a measure
     grep -q computing "$dir/stdout" && break
     sleep 0.1
@@ -26,8 +30,11 @@ interrupt() {  # interrupt SIGNAL MODE STATUS
     [ "$(ls -A "$dir" | grep -c 'wrc-tmp-')" = 2 ] || fail "$mode: the run is not writing its two temporaries: $(ls -A "$dir")"
   fi
   kill -s "$sig" "$pid"
+  for _ in $(seq 300); do kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done  # 30 s: a safety, not a measure
+  kill -0 "$pid" 2> /dev/null && fail "$mode, SIG$sig: the run is still going 30 s after the signal"
   wait "$pid"
   local status=$?
+  pid=""
   [ "$status" = "$want" ] || fail "$mode, SIG$sig: exit status $status, expected $want; stderr: $(cat "$dir/stderr")"
   [ "$(wc -l < "$dir/stderr")" = 1 ] && grep -q "^wrc: interrupted by SIG$sig" "$dir/stderr" ||
     fail "$mode, SIG$sig: stderr is not the one line saying so: $(cat "$dir/stderr")"
