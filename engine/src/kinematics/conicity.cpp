@@ -71,10 +71,10 @@ class Table {
   double integral(double a, double b) const {
     double sum = 0, p = a;
     for (double k : knots(a, b)) {
-      sum += 0.5 * (dr(p) + dr(k)) * (k - p);
+      sum += piece(p, k);
       p = k;
     }
-    return sum + 0.5 * (dr(p) + dr(b)) * (b - p);
+    return sum + piece(p, b);
   }
   // The integral of Δr from a over a signed offset delta, exact for offsets below the rounding of a + delta.
   double integral_by(double a, double delta) const {
@@ -86,11 +86,11 @@ class Table {
   }
   // Knots strictly inside ]a, b[ (panel breaks: Δr has kinks there).
   std::vector<double> knots(double a, double b) const {
-    std::vector<double> k;
-    for (double v : y_)
-      if (v > a && v < b) k.push_back(v);
-    return k;
+    if (!(b > a)) return {};
+    return {std::upper_bound(y_.begin(), y_.end(), a), std::lower_bound(y_.begin(), y_.end(), b)};
   }
+  // The integral of Δr from the knot k to x within one linear piece (exact: the trapezoid of a straight line).
+  double piece(double k, double x) const { return 0.5 * (dr(k) + dr(x)) * (x - k); }
   // Where G may peak inside ]a, b[: the knots and the points where Δr falls through zero.
   std::vector<double> peaks(double a, double b) const {
     std::vector<double> p = knots(a, b);
@@ -206,17 +206,28 @@ void integral_method(const Table& t, double yhat, double& y1, double& y2, double
   const double level = std::max(g1, g2), margin = 1e-9 * L;  // knots on a turning point are turning points
   for (double k : t.peaks(y1 + margin, y2 - margin))
     if (t.G(k) >= level) not_one();
-  // y = turn + len u^2, u in [0, 1] (len signed); G(turn) - G(y) = -integral of Δr from the turning point.
+  // y = turn + len u^2, u in [0, 1] (len signed); G(turn) - G(y) = -integral of Δr from the turning point, one panel
+  // per piece of the table, the integral up to the panel's first knot carried from panel to panel (summed piece by
+  // piece as Table::integral does, so linear in the table's length).
   auto half = [&](double turn, double len) {
-    std::vector<double> breaks;
-    for (double k : t.knots(std::min(turn, y0), std::max(turn, y0))) {
-      const double u = std::sqrt((k - turn) / len);
-      if (u > 1e-6) breaks.push_back(u);  // a knot on the turning point itself is no kink of the integrand
+    std::vector<double> edges{turn};
+    std::vector<double> k = t.knots(std::min(turn, turn + len), std::max(turn, turn + len));
+    if (len < 0) std::reverse(k.begin(), k.end());  // from the turning point toward the centre
+    for (double v : k)
+      if (std::sqrt((v - turn) / len) > 1e-6) edges.push_back(v);  // a knot on the turning point is no kink
+    edges.push_back(turn + len);
+    double sum = 0, carried = 0;  // carried: the integral of Δr from the turning point to edges[j]
+    for (std::size_t j = 0; j + 1 < edges.size(); ++j) {
+      const double from = edges[j], ua = j == 0 ? 0.0 : std::sqrt((from - turn) / len);
+      const double ub = j + 2 == edges.size() ? 1.0 : std::sqrt((edges[j + 1] - turn) / len);
+      sum += gauss([&](double u) {
+        const double y = turn + len * u * u;
+        const double dG = -(j == 0 ? t.integral_by(turn, len * u * u) : carried + t.piece(from, y));
+        return 2 * std::abs(len) * u / std::sqrt(std::max(dG, 1e-300));
+      }, ua, ub, {});
+      carried = j == 0 ? t.integral_by(turn, edges[1] - turn) : carried + t.piece(from, edges[j + 1]);
     }
-    return gauss([&](double u) {
-      const double dG = -t.integral_by(turn, len * u * u);
-      return 2 * std::abs(len) * u / std::sqrt(std::max(dG, 1e-300));
-    }, 0.0, 1.0, breaks);
+    return sum;
   };
   const double I = half(y1, y0 - y1) + half(y2, y0 - y2);
   tan_gamma = std::numbers::pi * std::numbers::pi / (I * I);
