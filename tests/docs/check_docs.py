@@ -398,6 +398,20 @@ def check_readme(root):
         report(readme, 1, "the paper-to-code table differs from the one of docs/paper.md (or is missing)")
 
 
+def check_fs_reference(root):
+    """Every function of wrc.fs (the luaL_Reg table of its binding) has its line in the Lua API page."""
+    binding = read_or_report(root, "engine/src/lua/fs_binding.cpp")
+    table = re.search(r"const luaL_Reg fns\[\] = \{(.*?)\{nullptr, nullptr\}", binding, flags=re.S)
+    page = os.path.join(root, "docs/reference/lua-api.md")
+    text = read_or_report(root, "docs/reference/lua-api.md")
+    if not table:
+        report(os.path.join(root, "engine/src/lua/fs_binding.cpp"), 1, "no luaL_Reg fns[] table of wrc.fs found")
+        return
+    for name in re.findall(r'\{"(\w+)",', table.group(1)):
+        if f"`wrc.fs.{name}(" not in text:
+            report(page, 1, f"wrc.fs.{name} (engine/src/lua/fs_binding.cpp) is not in the table of wrc.fs")
+
+
 # ---- what the sources cite ------------------------------------------------------------------------------------
 
 def clean_citation(title):
@@ -478,6 +492,7 @@ def main():
         pages = [os.path.join(root, "README.md")] + sorted(glob.glob(os.path.join(root, "docs/**/*.md"),
                                                                      recursive=True))
         check_readme(root)
+        check_fs_reference(root)
     else:
         pages = [os.path.abspath(p) for p in args.pages]
     for page in pages:
