@@ -447,7 +447,7 @@ TEST_CASE("cases and options are validated by the solvers themselves") {
   wheel.limits.max_evaluations = 0;
   fails([&] { solve_wheel(model, {kLeft, 0, 0, 0, 1e5}, ws, wheel); }, "max_evaluations = 0 must be in [1, 1048576]");
   fails([&] { solve_wheel(model, {2, 0, 0, 0, 1e5}, ws); }, "wheel: side = 2 must be 0 (left) or 1 (right)");
-  fails([&] { solve_wheel(model, {kRight, 0, 0, 0.5, 1e5}, ws); }, "roll = 0.5 rad must be finite and within +-0.3 rad");
+  fails([&] { solve_wheel(model, {kRight, 0, 0, 0.5, 1e5}, ws); }, "roll = 0.5 rad must be finite and within +-0.1 rad");
 
   ContactRequest request;
   request.tolerance = 0.5;

@@ -68,6 +68,6 @@ check.ok(lead, "flange contact leads with positive yaw")
 -- Bad input.
 check.fails(function() ws:locate{y = 0, z = 0, pitch = 1} end, "unknown key 'pitch'", "unknown pose key")
 check.fails(function() ws:locate{y = 0 / 0} end, "'y' must be finite", "NaN pose")
-check.fails(function() ws:locate{yaw = 1} end, "0.5 rad", "too much yaw")
+check.fails(function() ws:locate{yaw = 1} end, "yaw = 1 rad must be finite and within +-0.3 rad", "too much yaw")
 check.fails(function() ws:locate{search = "fastest"} end, "'search' must be one of", "unknown search")
 check.fails(function() ws:cones("middle") end, "side must be", "bad side")

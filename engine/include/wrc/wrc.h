@@ -122,8 +122,8 @@ wrc_status wrc_wheelset_free(wrc_wheelset* wheelset);
 /* ---- solves; each makes a result the caller owns (*out), also when it returns WRC_NOT_CONVERGED ---- */
 
 /* Contact at a prescribed pose (m, rad). WRC_ERROR for a pose far too deep: a wheel and its rail inter-penetrating
- * deeper than max_penetration (m, default 1e-3; an option), or |y|, |z| beyond the wheel radius, |roll|, |yaw| beyond
- * 0.5 rad. Options: grids (keep pressure and h grids, default true), sensitivity (each wheel's Jacobian: paths
+ * deeper than max_penetration (m, default 1e-3; an option), |z| beyond the wheel radius, or |y| beyond 0.1 m, |yaw|
+ * beyond 0.3 rad, |roll| beyond 0.1 rad (mm or degrees given; the limits of every call, wrc/geometry/pose.hpp). Options: grids (keep pressure and h grids, default true), sensitivity (each wheel's Jacobian: paths
  * left.jacobian.xi, .eta, .phi, .y, .z, .roll, .yaw, 6 numbers each, d(Fx, Fy, Fz, Mx, My, Mz) in the track frame,
  * moments about the wheelset centre; N per unit creepage, N m per 1/m of spin, N/m, N m/m, N/rad, N m/rad;
  * docs/guide/sensitivity.md; and sensitivity.z, sensitivity.roll of both wheels), max_penetration; with

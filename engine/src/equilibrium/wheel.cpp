@@ -397,8 +397,7 @@ void WheelCase::validate(std::string_view context, bool plausible) const {
     fail("{}: side = {} must be {} (left) or {} (right)", context, side, +kLeft, +kRight);
   check_lateral(y, context);
   check_yaw(yaw, context);
-  if (!std::isfinite(roll) || std::abs(roll) > 0.3)
-    fail("{}: roll = {} rad must be finite and within +-0.3 rad", context, roll);
+  check_roll(roll, context);
   pose_solve::check_load("Fz", Fz, context);
   if (plausible) check_plausible(context, "Fz", Fz, kWheelLoad);
 }

@@ -1,4 +1,4 @@
-// The pose's rotation A = Rz(yaw) Rx(roll) and its translation, the limits of y and yaw (pose.hpp).
+// The pose's rotation A = Rz(yaw) Rx(roll) and its translation, the limits of y, yaw and roll (pose.hpp).
 #include "wrc/geometry/pose.hpp"
 
 #include "wrc/core/error.hpp"
@@ -16,6 +16,11 @@ void check_lateral(double y, std::string_view context) {
 void check_yaw(double yaw, std::string_view context) {
   if (!std::isfinite(yaw) || std::abs(yaw) > kMaxYaw)
     fail("{}: yaw = {} rad must be finite and within +-{:g} rad (degrees given?)", context, yaw, kMaxYaw);
+}
+
+void check_roll(double roll, std::string_view context) {
+  if (!std::isfinite(roll) || std::abs(roll) > kMaxRoll)
+    fail("{}: roll = {} rad must be finite and within +-{:g} rad (degrees given?)", context, roll, kMaxRoll);
 }
 
 PoseFrame::PoseFrame(const Pose& p) : y(p.y), z(p.z) {

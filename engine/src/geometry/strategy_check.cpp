@@ -95,7 +95,7 @@ struct Draw {
 std::vector<Draw> draw_poses(const StrategyCheckOptions& o) {
   check_range(o.y, "y", -kMaxLateral, kMaxLateral);
   check_range(o.yaw, "yaw", -kMaxYaw, kMaxYaw);
-  check_range(o.roll, "roll", -0.1, 0.1);
+  check_range(o.roll, "roll", -kMaxRoll, kMaxRoll);
   check_range(o.depth, "depth", 1e-9, 0.01);
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> U(0.0, 1.0);

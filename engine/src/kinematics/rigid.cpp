@@ -23,8 +23,7 @@ void check_case(double y, double yaw, const RigidOptions& o) {
   check_lateral(y, "rigid contact");
   check_yaw(yaw, "rigid contact");
   if (!std::isfinite(o.Q) || !(o.Q > 0)) fail("rigid contact: Q = {} N must be a positive number", o.Q);
-  if (!std::isfinite(o.roll) || std::abs(o.roll) > 0.1)
-    fail("rigid contact: roll = {} rad must be finite and within +-0.1 rad", o.roll);
+  check_roll(o.roll, "rigid contact");
   if (!(o.two_point_tolerance >= 0) || !(o.two_point_tolerance <= 1e-3))
     fail("rigid contact: two_point_tolerance = {} m must lie in [0, 1e-3]", o.two_point_tolerance);
   if (!std::isfinite(o.hertz_load) || !(o.hertz_load > 0))

@@ -84,6 +84,9 @@ Pose read_pose(OptionReader& r) {
   p.z = r.number("z", {"m", "height of the wheelset centre (0: the centred wheelset touches; < 0 presses in)"}, p.z);
   p.roll = r.number("roll", {"rad", "roll angle of the wheelset"}, p.roll);
   p.yaw = r.number("yaw", {"rad", "yaw angle of the wheelset"}, p.yaw);
+  check_lateral(p.y, r.context());
+  check_yaw(p.yaw, r.context());
+  check_roll(p.roll, r.context());
   return p;
 }
 

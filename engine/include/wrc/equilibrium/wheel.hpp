@@ -18,7 +18,7 @@ struct WheelCase {
   int side = kLeft;  // kLeft or kRight
   double y = 0;      // lateral position of the wheelset centre (m), within +-kMaxLateral (geometry/pose.hpp)
   double yaw = 0;    // rad, within +-kMaxYaw
-  double roll = 0;   // rad, within +-0.3
+  double roll = 0;   // rad, within +-kMaxRoll
   double Fz = 0;     // the wheel's vertical force (N), in ]0, kMaxLoad]
   // Throws wrc::Error "<context>: <key> = <value> <unit> must be ..." for the first value out of its range;
   // `plausible`: also for an Fz no railway wheel carries (kWheelLoad, wheelset/plausibility.hpp).

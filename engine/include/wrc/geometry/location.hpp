@@ -183,7 +183,8 @@ class LocationState {
 
 // Throws wrc::Error naming the value if `pose` is no pose of a wheelset on its track: not finite, |roll| or |yaw| above
 // 0.5 rad, or |y| or |z| more than the wheels' largest radius (m) -- a wheelset lowered that far has passed through its
-// rails, where no rail line crosses the wheel any more and the location would find nothing.
+// rails, where no rail line crosses the wheel any more and the location would find nothing. The geometry's own guard,
+// for any caller; the calls refuse a pose beyond the tighter limits of geometry/pose.hpp before (kMaxRoll, ...).
 void check_pose(const GeometryModel& model, const Pose& pose);
 
 // Locates the contact at `pose`: runs `search` on both sides, then forms segments and patches in `state`.

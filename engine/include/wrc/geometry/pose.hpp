@@ -13,15 +13,18 @@ struct Pose {
   double y = 0, z = 0, roll = 0, yaw = 0;
 };
 
-// The lateral displacement and yaw every solver, table and sweep accepts. Far beyond a wheelset on its rails (the
-// flanges leave ~10 mm of play; a wheelset yaws by a few mrad, some tens in the tightest curves), they hold what the
-// geometry can still compute and refuse the usual slips of unit: y = 8 for 8 mm, yaw = 1 for one degree.
+// The lateral displacement, yaw and roll every call that takes a pose accepts. Far beyond a wheelset on its rails (the
+// flanges leave ~10 mm of play; a wheelset yaws by a few mrad, some tens in the tightest curves; it rolls by a few
+// mrad, 0.01 rad lifting a wheel 7.5 mm), they hold what the geometry can still compute and refuse the usual slips of
+// unit: y = 8 for 8 mm, yaw = 1 or roll = 1 for one degree.
 inline constexpr double kMaxLateral = 0.1;  // m: |y| <= this
 inline constexpr double kMaxYaw = 0.3;      // rad (17 deg): |yaw| <= this
-// Throw wrc::Error "<context>: y = <y> m must be finite and within +-0.1 m (...)" (yaw alike, in rad) unless the
-// value is finite and within its limit.
+inline constexpr double kMaxRoll = 0.1;     // rad (5.7 deg): |roll| <= this
+// Throw wrc::Error "<context>: y = <y> m must be finite and within +-0.1 m (...)" (yaw and roll alike, in rad) unless
+// the value is finite and within its limit.
 void check_lateral(double y, std::string_view context);
 void check_yaw(double yaw, std::string_view context);
+void check_roll(double roll, std::string_view context);
 
 // A = Rz(yaw) Rx(roll) (dimensionless), with the pose's translation; the form every line-cone test uses.
 struct PoseFrame {
