@@ -139,23 +139,13 @@ void AtomicFile::write(std::string_view text) {
 
 void AtomicFile::commit() {
   if (file_ == nullptr) fail("cannot write '{}': the file is already committed or discarded", path_);
-  const bool ok = std::fflush(file_) == 0 && fsync(fileno(file_)) == 0;
-  const std::string why = ok ? std::string() : reason();
-  const bool closed = std::fclose(file_) == 0;
-  file_ = nullptr;
-  if (!ok || !closed) {
-    const std::string r = ok ? reason() : why;
-    std::remove(temp_.c_str());
-    untrack_temporary(std::exchange(tracked_, -1));
-    fail("cannot write '{}': {}", path_, r);
-  }
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
-    const std::string r = reason();
-    std::remove(temp_.c_str());
-    untrack_temporary(std::exchange(tracked_, -1));
-    fail("cannot write '{}': {}", path_, r);
-  }
-  untrack_temporary(std::exchange(tracked_, -1));  // after the rename: the temporary name is gone
+  std::string why;  // the first failure's reason; empty: renamed
+  if (std::fflush(file_) != 0 || fsync(fileno(file_)) != 0) why = reason();
+  if (std::fclose(std::exchange(file_, nullptr)) != 0 && why.empty()) why = reason();
+  if (why.empty() && std::rename(temp_.c_str(), path_.c_str()) != 0) why = reason();
+  if (!why.empty()) std::remove(temp_.c_str());
+  untrack_temporary(std::exchange(tracked_, -1));  // the temporary name is gone: renamed or removed
+  if (!why.empty()) fail("cannot write '{}': {}", path_, why);
 }
 
 void AtomicFile::discard() {
