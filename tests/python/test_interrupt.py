@@ -1,4 +1,5 @@
-"""Ctrl-C (SIGINT) during the calls that run on worker threads: ws.sweep and a batch from Python, a sweep of `wrc run`.
+"""Ctrl-C (SIGINT) during the calls that run on worker threads: ws.sweep, a batch, ws.geometry_table, ws.conicity and
+the strategy check of wrc.wheelset(check_strategy=N) from Python, a sweep of `wrc run`.
 
 Each runs in a child process, is sent SIGINT once its progress line shows a case or element solved (the marker that
 it is under way), and must end long before the whole call would have: the reference is the call's own length, the
@@ -12,6 +13,8 @@ import subprocess
 import sys
 import textwrap
 import time
+
+import pytest
 
 from conftest import BUILD, SOURCE
 
@@ -98,6 +101,43 @@ def test_ctrl_c_stops_a_batch_on_every_core_and_leaves_no_thread():
     words = out.split()
     assert "result None" in out and words[2] == words[4], out
     assert stopped < 5.0, stopped  # the whole batch: elements / cores x ~5 ms, over 20 s on two cores
+
+
+def test_ctrl_c_stops_a_geometry_table_and_writes_no_file(tmp_path):
+    csv = tmp_path / "table.csv"
+    rows = 50000  # at yaw 10 mrad (the 3-D search) ~1.5 ms a row: over a minute on two cores
+    script = PROLOGUE + textwrap.dedent(f"""\
+        try:
+            got = ws.geometry_table(y=np.linspace(-8e-3, 8e-3, {rows}), yaw=0.01, threads={THREADS}, progress=True,
+                                    csv="{csv}")
+        """) + EPILOGUE
+    started, stopped, code, out, err = interrupt([sys.executable, "-c", script], b"geometry table: 1 / ",
+                                                 python_env())
+    assert code == -signal.SIGINT and "KeyboardInterrupt" in err, (code, err)
+    words = out.split()
+    assert "result None" in out and words[2] == words[4], out
+    assert not csv.exists() and not list(tmp_path.iterdir()), list(tmp_path.iterdir())
+    assert stopped < 5.0, stopped
+
+
+@pytest.mark.parametrize("call", ["wheelset", "conicity"])
+def test_ctrl_c_stops_a_wheelset_check_and_a_conicity(call):
+    # No progress line marks these: the marker is printed just before the call, the signal comes while it runs.
+    if call == "wheelset":  # a million poses against brute force: hours
+        run = f"""got = wrc.wheelset(wheel=wrc.profile.load("{SOURCE}/profiles/s1002.lua"),
+                                rail=wrc.profile.load("{SOURCE}/profiles/60e1.lua"), check_strategy=1000000)"""
+    else:  # the conicity's own table: 10 mm either side every 0.4 um at yaw 10 mrad, ~1 ms a row
+        run = "got = ws.conicity(yhat=[3e-3], y=np.arange(-10e-3, 10e-3, 4e-7), yaw=0.01)"
+    script = PROLOGUE + textwrap.dedent(f"""\
+        try:
+            print("calling", flush=True, file=__import__("sys").stderr)
+            {run}
+        """) + EPILOGUE
+    started, stopped, code, out, err = interrupt([sys.executable, "-c", script], b"calling", python_env())
+    assert code == -signal.SIGINT and "KeyboardInterrupt" in err, (code, err)
+    words = out.split()
+    assert "result None" in out and words[2] == words[4], out
+    assert stopped < 5.0, stopped
 
 
 def test_ctrl_c_ends_a_lua_sweep_and_leaves_no_output(tmp_path):

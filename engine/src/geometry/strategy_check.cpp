@@ -133,7 +133,9 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   for (Worker& w : workers) w.search = make_search();  // on the calling thread: a strategy may need it
   ProgressCount progress(o.progress, n);
   // A pose that differs throws: the error is the first such pose in drawing order, on any number of threads.
+  std::atomic<int> checked{0};
   parallel_for(n, threads, [&](int worker, int i) {
+    if (o.stop != nullptr && o.stop->load(std::memory_order_relaxed)) return;
     Worker& w = workers[static_cast<std::size_t>(worker)];
     const Pose p = pose_of(g, draws[static_cast<std::size_t>(i)]);
     auto differs = [&](const std::string& what) {
@@ -155,8 +157,10 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
     }
     if (!w.ref.patches(kLeft).empty() || !w.ref.patches(kRight).empty()) ++w.counts.contact_poses;
     if (!what.empty()) differs(what);
+    ++checked;
     progress.add();
   });
+  if (checked < n) fail("check_strategy: stopped after {} of {} poses: the strategy is not checked", checked.load(), n);
   StrategyCheckResult r;
   r.poses = n;
   r.threads = threads;

@@ -84,8 +84,10 @@ PyWheelset* make_wheelset(const py::kwargs& given) {
     return 0;
   });
   auto w = std::make_unique<PyWheelset>();
-  py::gil_scoped_release release;
-  w->model = build_wheelset(profiles, params, native_strategy(params.strategy, strategy_options));
+  // Ctrl-C: the strategy check of check_strategy = N begins no pose after it; KeyboardInterrupt, no wheelset.
+  run_interruptible([&](const std::atomic<bool>& stop) {
+    w->model = build_wheelset(profiles, params, native_strategy(params.strategy, strategy_options), &stop);
+  });
   return w.release();
 }
 
@@ -202,23 +204,23 @@ py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
   auto call = read_call<api::GeometryTableCall>(kw, ctx);
   if (call.progress.on(false)) call.options.progress = host::progress_line("geometry table", "rows");
   call.options.notice = host::note_printer("geometry table");
-  FieldRecord tree;
-  {
-    py::gil_scoped_release release;
+  FieldRecord tree;  // Ctrl-C: no row begins after it, KeyboardInterrupt is raised, no file written
+  run_interruptible([&](const std::atomic<bool>& stop) {
+    call.options.stop = &stop;
     tree = record_fields(call.run(*model));
-  }
+  });
   return results("rows_frame")(to_python(std::move(tree)), "rows");
 }
 
 py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
   const char* ctx = "Wheelset.conicity";
   const auto model = self.get(ctx);
-  const auto call = read_call<api::WheelsetConicityCall>(kw, ctx);
-  FieldRecord tree;
-  {
-    py::gil_scoped_release release;
+  auto call = read_call<api::WheelsetConicityCall>(kw, ctx);
+  FieldRecord tree;  // Ctrl-C: its geometry table begins no row after it; KeyboardInterrupt
+  run_interruptible([&](const std::atomic<bool>& stop) {
+    call.options.table.stop = &stop;
     tree = record_fields(call.run(*model));
-  }
+  });
   return to_python(std::move(tree));
 }
 

@@ -140,7 +140,7 @@ void check_grid_cap(const ContactModel& model) {
 }  // namespace
 
 Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
-                   std::shared_ptr<const LocationStrategy> strategy)
+                   std::shared_ptr<const LocationStrategy> strategy, const std::atomic<bool>* stop)
     : params_(params), strategy_(std::move(strategy)) {
   if (!strategy_) fail("wheelset: no location strategy");
   if (params.check_setup) check_plausible(params.track, params.material);  // radius and E in their units
@@ -161,6 +161,7 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
   if (params.check_strategy > 0) {
     StrategyCheckOptions o;
     o.poses = params.check_strategy;
+    o.stop = stop;
     if (!strategy_->info().portable) o.threads = 1;  // bound to the building thread
     strategy_check_ = check_strategy(*geometry_, o, [this] { return strategy_->make_search(); });
   }
@@ -175,8 +176,9 @@ std::unique_ptr<ContactWorkspace> Wheelset::make_workspace_with(PoseSearch& sear
 }
 
 std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
-                                               std::shared_ptr<const LocationStrategy> strategy) {
-  return std::make_shared<const Wheelset>(profiles, params, std::move(strategy));
+                                               std::shared_ptr<const LocationStrategy> strategy,
+                                               const std::atomic<bool>* stop) {
+  return std::make_shared<const Wheelset>(profiles, params, std::move(strategy), stop);
 }
 
 std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params) {

@@ -11,6 +11,7 @@
 #include "wrc/geometry/model.hpp"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -27,6 +28,9 @@ struct StrategyCheckOptions {
   std::uint64_t seed = 1;
   int threads = 0;                            // worker threads (0: all cores); 1 for a strategy bound to one thread
   Progress progress;                          // (poses done, total, 0) after each pose, serialised
+  // The front end's stop (Ctrl-C): once it turns true no pose begins, and the check throws "stopped" (a check cut
+  // short has not checked the strategy).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct StrategyCheckResult {

@@ -12,6 +12,7 @@
 #include "wrc/kinematics/conicity.hpp"
 #include "wrc/kinematics/rigid.hpp"
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct GeometryTableOptions {
   Progress progress;                 // (rows done, rows, rows without a solution): from the workers, serialised
   std::string csv, file;             // when not empty: write the CSV / the multibody table there
   std::function<void(const std::string&)> notice;  // once, when fewer threads run than `threads` asked for
+  // The front end's stop (Ctrl-C): once it turns true no row begins, and the table throws "stopped" before it writes
+  // any file (an output keeps its previous content).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // A jump of one wheel's touching point between y_before and y_after (bisected to 1e-8 m).

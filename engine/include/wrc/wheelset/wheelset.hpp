@@ -15,6 +15,7 @@
 #include "wrc/geometry/strategy_check.hpp"
 
 #include <array>
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -61,8 +62,9 @@ Pose read_pose(OptionReader& options);
 
 class Wheelset {
  public:
+  // `stop`: the front end's (Ctrl-C), for the strategy check of params.check_strategy (StrategyCheckOptions::stop).
   Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
-           std::shared_ptr<const LocationStrategy> strategy);
+           std::shared_ptr<const LocationStrategy> strategy, const std::atomic<bool>* stop = nullptr);
   const WheelsetParams& params() const { return params_; }
   const Track& track() const { return *track_; }
   const GeometryModel& geometry() const { return *geometry_; }
@@ -89,7 +91,8 @@ class Wheelset {
 // Places the profiles, discretises them with `strategy` and builds the contact model. Throws wrc::Error naming
 // what is wrong (a parameter out of range, a profile of the wrong kind, profiles that do not meet, ...).
 std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params,
-                                               std::shared_ptr<const LocationStrategy> strategy);
+                                               std::shared_ptr<const LocationStrategy> strategy,
+                                               const std::atomic<bool>* stop = nullptr);
 // The same with the built-in strategy params.strategy names (native_strategy).
 std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params = {});
 
