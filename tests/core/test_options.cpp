@@ -291,3 +291,11 @@ TEST_CASE("closest name: a key in another case is the one meant, before a key on
   CHECK(closest_name("yhta", {"yhat", "y"}) == "yhat");  // edits as before
   CHECK(closest_name("xyz", {"Q"}).empty());
 }
+
+TEST_CASE("closest name: a short word is not 'meant' by a name that shares none of its letters in place") {
+  // Two edits are a typo's allowance, but for a two-letter word they replace it whole.
+  CHECK(closest_name("ab", {"mu", "V", "Q"}).empty());
+  CHECK(closest_name("x", {"y", "V"}).empty());
+  CHECK(closest_name("mv", {"mu", "V"}) == "mu");  // one letter kept
+  CHECK(closest_name("yy", {"y", "yaw"}) == "y");
+}

@@ -240,6 +240,7 @@ std::string closest_name(std::string_view key, const std::vector<std::string>& k
   std::size_t best_d = std::max<std::size_t>(2, key.size() / 3) + 1;  // more edits than that: not a typo
   for (const auto& k : known) {
     const std::size_t d = distance(key, k);
+    if (d >= std::max(key.size(), k.size())) continue;  // every letter changed ('ab' and 'mu'): no likeness at all
     if (d < best_d) {
       best_d = d;
       best = k;
