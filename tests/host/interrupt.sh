@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `wrc run` stopped by SIGINT (Ctrl-C) and by SIGTERM (SLURM's time limit, GNU parallel's --timeout) while it writes
-# an output and a temporary of its own, and while a Lua loop computes and writes nothing: the run ends by the signal
+# an output and a temporary of its own, and while a Lua loop computes and writes nothing, and by Ctrl-C (SIGINT to its
+# whole process group, as a terminal sends it) while gnuplot draws a figure: the run ends by the signal
 # (status 130 or 143 in the shell, as a process killed by it), says so on stderr in one line, leaves no temporary file
 # (.<name>.wrc-tmp-...) in the folder, and the output keeps its previous content, whole. The references are the
 # signals' numbers (128 + 2, 128 + 15) and the previous content, written here.
@@ -16,11 +17,13 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 set -m  # job control: a background job gets SIGINT's default action (without it, a script's jobs ignore SIGINT)
 
 # Starts the run in the background, waits until it computes (its temporaries written, in mode write), signals it.
-interrupt() {  # interrupt SIGNAL MODE STATUS
-  local sig=$1 mode=$2 want=$3
+interrupt() {  # interrupt SIGNAL MODE STATUS [TARGET]: TARGET "group" signals the run's process group (Ctrl-C)
+  local sig=$1 mode=$2 want=$3 target=${4:-}
   rm -rf "$dir" && mkdir -p "$dir" || fail "cannot make $dir"
   printf 'previous content, complete\n' > "$dir/out.txt"
-  "$WRC" run "$script" out="$dir/out.txt" mode="$mode" > "$dir/stdout" 2> "$dir/stderr" &
+  local path=$PATH
+  [ "$mode" = plot ] && path="$SRC/tests/data/host/fake_gnuplot:$PATH"  # gnuplot: the stand-in that waits
+  PATH="$path" "$WRC" run "$script" out="$dir/out.txt" mode="$mode" > "$dir/stdout" 2> "$dir/stderr" &
   pid=$!
   for _ in $(seq 600); do  # at most 60 s for the run to start: a safety, not a measure
     grep -q computing "$dir/stdout" && break
@@ -29,7 +32,7 @@ interrupt() {  # interrupt SIGNAL MODE STATUS
   if [ "$mode" = write ]; then
     [ "$(ls -A "$dir" | grep -c 'wrc-tmp-')" = 2 ] || fail "$mode: the run is not writing its two temporaries: $(ls -A "$dir")"
   fi
-  kill -s "$sig" "$pid"
+  if [ "$target" = group ]; then kill -s "$sig" -- "-$pid"; else kill -s "$sig" "$pid"; fi
   for _ in $(seq 300); do kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done  # 30 s: a safety, not a measure
   kill -0 "$pid" 2> /dev/null && fail "$mode, SIG$sig: the run is still going 30 s after the signal"
   wait "$pid"
@@ -47,3 +50,6 @@ interrupt INT write 130
 interrupt TERM write 143
 interrupt INT loop 130
 interrupt TERM loop 143
+# gnuplot runs under os.execute, whose system() ignores SIGINT in wrc while it runs: Ctrl-C ends gnuplot, and the run
+# must end by it too rather than report a failed figure (status 1).
+interrupt INT plot 130 group

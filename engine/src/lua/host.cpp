@@ -7,6 +7,7 @@
 #include "wrc/core/error.hpp"
 #include "wrc/core/paths.hpp"
 
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <initializer_list>
@@ -118,8 +119,34 @@ void install_searcher(lua_State* L) {
   lua_pop(L, 2);
 }
 
+// os.execute as Lua's, except that a command Ctrl-C ended ends this process too. Under os.execute, system() ignores
+// SIGINT and SIGQUIT in the caller while the command runs (POSIX), so the terminal's Ctrl-C reached only the command
+// (gnuplot for a figure) and the run went on to report the command's failure (exit status 1, not 130). Raised here,
+// the signal takes the way of any other: `wrc run`'s handler removes the temporaries and the run ends by it.
+int execute_passing_interrupts(lua_State* L) {
+  const int args = lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, args, LUA_MULTRET);
+  const int results = lua_gettop(L);
+  if (results == 3 && lua_type(L, 2) == LUA_TSTRING && std::strcmp(lua_tostring(L, 2), "signal") == 0) {
+    const auto sig = static_cast<int>(lua_tointeger(L, 3));
+    if (sig == SIGINT || sig == SIGQUIT) std::raise(sig);
+  }
+  return results;
+}
+
+void wrap_execute(lua_State* L) {
+  lua_getglobal(L, "os");
+  lua_getfield(L, -1, "execute");
+  lua_pushcclosure(L, execute_passing_interrupts, 1);
+  lua_setfield(L, -2, "execute");
+  lua_pop(L, 1);
+}
+
 int open_state(lua_State* L) {
   luaL_openlibs(L);
+  wrap_execute(L);
   luaL_getsubtable(L, LUA_REGISTRYINDEX, LUA_PRELOAD_TABLE);
   lua_pushcfunction(L, luaopen_wrc);
   lua_setfield(L, -2, "wrc");
