@@ -1,6 +1,9 @@
 """Bad input from Python: wrong types, NaN, misspelt keys, objects used after close(), missing files. Each is an
 exception of the right class carrying the engine's message (the key, the value, what was expected)."""
+import collections.abc
+import gc
 import math
+import numbers
 
 import numpy as np
 import pytest
@@ -188,3 +191,35 @@ def test_a_path_holding_nul_is_refused(tmp_path, s1002):
     with pytest.raises(wrc.ProfileError, match=r"cut.txt\\0junk' holds a NUL character"):
         wrc.profile.load(str(cut) + "\0junk", kind="rail")
     assert len(wrc.profile.load(cut, kind="rail")) == 3
+
+
+def test_an_error_inside_an_isinstance_check_propagates(ws):
+    # Whether a value is a number or a mapping is asked of the numbers and collections.abc ABCs, whose checks run
+    # Python code: a pending Ctrl-C raises KeyboardInterrupt there. Here ABCs below numbers.Real and Mapping raise in
+    # their subclass hooks, which isinstance(x, Real or Mapping) consults for a type it has not seen (the same path);
+    # the error must reach the caller, not turn into "expected a number ..., got Probe" (the interrupt lost).
+    import pandas  # noqa: F401 -- imported before the hostile classes exist (its import checks types of its own)
+
+    def hostile(base):
+        class Hostile(base):
+            @classmethod
+            def __subclasshook__(cls, other):
+                raise RuntimeError("raised inside the isinstance check")
+        return Hostile
+
+    class Probe:
+        pass
+
+    hostiles = [hostile(numbers.Real), hostile(collections.abc.Mapping)]
+    try:
+        with pytest.raises(RuntimeError, match="raised inside the isinstance check"):
+            ws.rigid(y=Probe())  # the options' conversion
+        with pytest.raises(RuntimeError, match="raised inside the isinstance check"):
+            wrc.conicity(Probe(), yhat=[3e-3])  # the table's check
+    finally:
+        del hostiles
+        gc.collect()  # the ABCs forget their subclasses (weak references): later checks are plain again
+    with pytest.raises(TypeError, match="expected a number"):
+        ws.rigid(y=Probe())
+    with pytest.raises(TypeError, match="the table must be a mapping"):
+        wrc.conicity(Probe(), yhat=[3e-3])

@@ -22,7 +22,13 @@ const py::object& abc(const char* name) {
   return std::string_view(name) == "Mapping" ? mapping : std::string_view(name) == "Sequence" ? sequence : real;
 }
 
-bool is_instance(py::handle v, const py::object& cls) { return PyObject_IsInstance(v.ptr(), cls.ptr()) == 1; }
+// An ABC's isinstance runs Python code (ABCMeta.__instancecheck__), where a pending Ctrl-C raises KeyboardInterrupt:
+// an error propagates (taken for "no", it became "expected a number ..., got float" and the interrupt was lost).
+bool is_instance(py::handle v, const py::object& cls) {
+  const int r = PyObject_IsInstance(v.ptr(), cls.ptr());
+  if (r < 0) throw py::error_already_set();
+  return r == 1;
+}
 
 // A Python real as a double; an int beyond a double's range (10**400) is named, where the cast said only "Unable to
 // cast Python instance to C++ type".
