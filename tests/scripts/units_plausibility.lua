@@ -162,8 +162,28 @@ check.ok(wrc.wheelset{wheel = wheel, rail = rail, radius = 0.625, grid = 2e-3}, 
 local c = ws:contact{y = 0, z = -0.05e-3, V = 300 / 3.6, mu = 0.3}
 check.ok(c.left.force.z > 0, "V = 83.3 m/s")
 
+-- The conicity's wavelength scales r0 and contact_distance change nothing else, so nothing else would catch a radius in
+-- mm, a diameter for the radius or a distance in mm. wrc.conicity has no wheelset, hence no check_setup to name.
+local cone = {y = {-5e-3, 0, 5e-3}, dr = {-1e-3, 0, 1e-3}}  -- a cone pair of slope 0.1
+for _, c in ipairs{{"r0", 450, "r0 in mm"}, {"r0", 0.92, "r0 given as the diameter"},
+                   {"contact_distance", 1500, "contact_distance in mm"}} do
+  local err = check.fails(function() wrc.conicity(cone, {yhat = 3e-3, [c[1]] = c[2]}) end,
+                          ("wrc.conicity: %s = %s m is implausible"):format(c[1], c[2]), "wrc.conicity, " .. c[3])
+  check.ok(err:find("is it in another unit?", 1, true) and not err:find("check_setup", 1, true), err)
+end
+refused(function() ws:conicity{yhat = 3e-3, r0 = 450} end, "r0", "450", "m", "ws:conicity, r0 in mm")
+refused(function() ws:conicity{yhat = 3e-3, contact_distance = 1500} end, "contact_distance", "1500", "m",
+        "ws:conicity, contact_distance in mm")
+check.ok(free:conicity{yhat = 3e-3, r0 = 450}, "check_setup = false: ws:conicity takes r0 = 450")
+-- Plausible values pass, and give Klingel's wavelength 2 pi sqrt(e r0 / tan): 0.75 m, 0.46 m, tan 0.1 on a metre
+-- gauge's 2e = 1.06 m and on the Iberian 1.75 m likewise.
+for _, e2 in ipairs{1.06, 1.5, 1.75} do
+  local _, d = wrc.conicity(cone, {yhat = 3e-3, r0 = 0.46, contact_distance = e2})
+  check.rel(d.wavelength[1], 2 * math.pi * math.sqrt(e2 / 2 * 0.46 / 0.1), 1e-7, "wavelength with 2e = " .. e2)
+end
+
 -- check_setup = false: the values reach the engine (a test body, a scale model).
 local e = free:equilibrium{y = 0, Q = 200, on_failure = "return"}
 check.ok(not (e.error or ""):find("implausible", 1, true), "check_setup = false: Q = 200 N reaches the solver")
 check.ok(wrc.wheelset{wheel = wheel, rail = rail, E = 210, grid = 2e-3, check_setup = false}, "and E = 210 Pa builds")
-print("units: implausible loads, moduli, radii, speeds and kinematics refused with their unit")
+print("units: implausible loads, moduli, radii, speeds, kinematics and wavelength scales refused with their unit")

@@ -147,7 +147,18 @@ WheelsetConicityCall WheelsetConicityCall::read(OptionReader& r) {
   return c;
 }
 
+namespace {
+// r0 and contact_distance only scale the wavelength, where nothing else would catch a radius in mm (450), given as the
+// diameter (0.92) or a distance in mm (1500): the wavelength would look like one. 0 is the wheelset's (ws:conicity).
+void check_wavelength_scales(const ConicityOptions& o, std::string_view context, std::string_view off) {
+  if (o.r0 != 0) check_plausible(context, "r0", o.r0, kWheelRadius, off);
+  if (o.contact_distance != 0) check_plausible(context, "contact_distance", o.contact_distance, kContactDistance, off);
+}
+}  // namespace
+
 WheelsetConicity WheelsetConicityCall::run(const Wheelset& wheelset) const {
+  if (wheelset.contact_model().options().check_magnitudes)
+    check_wavelength_scales(options.conicity, "wheelset conicity", kUncheckedHint);
   return wheelset_conicity(wheelset.geometry(), options);
 }
 
@@ -155,6 +166,7 @@ ConicityCall ConicityCall::read(OptionReader& table, OptionReader& options) {
   ConicityCall c;
   c.dr = read_delta_r(table);
   c.options = read_conicity_options(options, c.options);
+  check_wavelength_scales(c.options, options.context(), "");  // no wheelset, no check_setup: always
   return c;
 }
 

@@ -177,11 +177,12 @@ void check_gauge_depth(const Track& t) {
 
 }  // namespace
 
-void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& r) {
+void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& r,
+                     std::string_view off) {
   if (!std::isfinite(value) || (std::abs(value) >= r.lo && std::abs(value) <= r.hi)) return;  // NaN: the range checks
   const std::string unit = *r.unit ? fmt::format(" {}", r.unit) : "";  // a friction coefficient has none
-  fail("{}: {} = {:.6g}{} is implausible for {} ({:.3g} .. {:.3g}{}): is it in another unit? wrc takes SI units ({}); "
-       "{}", context, key, value, unit, r.what, r.lo, r.hi, unit, r.hint, kUncheckedHint);
+  fail("{}: {} = {:.6g}{} is implausible for {} ({:.3g} .. {:.3g}{}): is it in another unit? wrc takes SI units ({}){}{}",
+       context, key, value, unit, r.what, r.lo, r.hi, unit, r.hint, off.empty() ? "" : "; ", off);
 }
 
 void check_plausible(const TrackParams& track, const halfspace::Material& material) {

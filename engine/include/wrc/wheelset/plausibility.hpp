@@ -43,6 +43,10 @@ inline constexpr Plausible kSteelModulus{"Young's modulus of wheel and rail stee
 // above 0.65 m is a diameter given as the radius (0.92 m: a worn freight-wagon wheel's diameter).
 inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 0.65,
                                         "450 mm is radius = 0.45; the radius, not the diameter"};
+// The distance 2e between a wheelset's contact points: about the gauge plus a rail head's width, 0.66 m on a 600 mm
+// gauge to 1.75 m on the Iberian 1668 mm. 1500 is millimetres.
+inline constexpr Plausible kContactDistance{"the distance between a wheelset's contact points", "m", 0.5, 2.5,
+                                            "1500 mm is contact_distance = 1.5"};
 inline constexpr Plausible kTrainSpeed{"a train's speed", "m/s", 0, 160, "300 km/h is V = 83.3"};
 // A wheelset yaws at V / R in a curve (0.33 rad/s: a tram at 5 m/s in a 15 m curve) and by a few mrad at a few Hz
 // when hunting (5 mrad at 8 Hz: 0.25 rad/s); 10 is deg/s. Its lateral velocity when hunting: 10 mm at 8 Hz, 0.5 m/s.
@@ -71,7 +75,10 @@ inline constexpr Plausible kSpinCreepage{"a spin creepage", "1/m", 0, 10, "a fla
 // Wheel on rail: 0.02-0.1 with leaves or a greased gauge face, 0.3-0.6 dry or sanded; 30 is a percentage. The
 // no-slip limit (a huge coefficient: Kalker's linear theory) needs check_setup = false.
 inline constexpr Plausible kFrictionCoefficient{"a wheel-rail friction coefficient", "", 0.01, 1.0, "30 % is mu = 0.3"};
-void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range);
+// Throws "<context>: <key> = <value> <unit> is implausible for <what> ...: is it in another unit? ...; <off>" for a
+// finite value outside the range. `off` says how to accept it; empty for a call without the option (wrc.conicity).
+void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range,
+                     std::string_view off = kUncheckedHint);
 
 // The wheelset's parameters (wrc.wheelset{}): radius and E, and a cant that tilts the rails outward (< 0).
 void check_plausible(const TrackParams& track, const halfspace::Material& material);
