@@ -119,7 +119,7 @@ BatchRun run_batch(const Wheelset& wheelset, const BatchInput& input,
     for (auto& w : workspaces) w = workspace ? workspace() : wheelset.make_workspace();
   std::atomic<bool> halted{false};  // options.done said so
   parallel_for(count, tc.threads, [&](int worker, int task) {
-    if ((options.stop && options.stop->load()) || halted.load()) return;  // skipped
+    if (stop_requested(options.stop) || halted.load()) return;  // skipped
     BatchElement& e = run.elements[static_cast<std::size_t>(task)];
     ContactWorkspace* ws = workspaces[static_cast<std::size_t>(worker)].get();
     try {

@@ -83,7 +83,7 @@ class SweepRun {
     const bool has_lead = chunk.solve.size() > chunk.report.size();
     EquilibriumResult lead;  // the first case when the chunk does not report it (the centre of a series)
     for (std::size_t k = 0; k < chunk.solve.size(); ++k) {
-      if (opt_.stop && opt_.stop->load()) {  // stopped: the rest of the chunk is not begun
+      if (stop_requested(opt_.stop)) {  // stopped: the rest of the chunk is not begun
         cut_ = true;
         return;
       }

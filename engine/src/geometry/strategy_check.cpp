@@ -135,7 +135,7 @@ StrategyCheckResult check_strategy(const GeometryModel& g, const StrategyCheckOp
   // A pose that differs throws: the error is the first such pose in drawing order, on any number of threads.
   std::atomic<int> checked{0};
   parallel_for(n, threads, [&](int worker, int i) {
-    if (o.stop != nullptr && o.stop->load(std::memory_order_relaxed)) return;
+    if (stop_requested(o.stop)) return;
     Worker& w = workers[static_cast<std::size_t>(worker)];
     const Pose p = pose_of(g, draws[static_cast<std::size_t>(i)]);
     auto differs = [&](const std::string& what) {

@@ -38,14 +38,12 @@ std::optional<Eigen::Vector2d> predict(const std::vector<RigidResult>& rows, con
   return std::nullopt;
 }
 
-bool stopped(const GeometryTableOptions& o) { return o.stop != nullptr && o.stop->load(std::memory_order_relaxed); }
-
 // Solves the rows [first, last) in order, each from its predecessors.
 void solve_chunk(const GeometryModel& g, const GeometryTableOptions& o, std::size_t first, std::size_t last,
                  std::vector<RigidResult>& rows, ProgressCount& progress) {
   RigidOptions ro = o.rigid;
   for (std::size_t i = first; i < last; ++i) {
-    if (stopped(o)) return;
+    if (stop_requested(o.stop)) return;
     ro.start = predict(rows, o.y, i, first);
     rows[i] = solve_rigid(g, o.y[i], o.yaw, ro);
     progress.add(!rows[i].converged);
@@ -84,7 +82,7 @@ void find_jump(const GeometryModel& g, const GeometryTableOptions& o, int side, 
 }
 
 void find_jumps(const GeometryModel& g, const GeometryTableOptions& o, GeometryTable& t) {
-  for (std::size_t i = 1; i < t.rows.size() && !stopped(o); ++i)
+  for (std::size_t i = 1; i < t.rows.size() && !stop_requested(o.stop); ++i)
     for (int s : {kLeft, kRight}) {
       const RigidResult &a = t.rows[i - 1], &b = t.rows[i];
       if (!a.converged || !b.converged || a.wheel[s].contacts.empty() || b.wheel[s].contacts.empty()) continue;
@@ -120,7 +118,8 @@ GeometryTable run_geometry_table(const GeometryModel& g, const GeometryTableOpti
     solve_chunk(g, o, n * c / chunks, n * (c + 1) / chunks, t.rows, progress);
   });
   find_jumps(g, o, t);
-  if (stopped(o)) fail("geometry table: stopped before its {} rows and their jumps were solved: nothing written", n);
+  if (stop_requested(o.stop))
+    fail("geometry table: stopped before its {} rows and their jumps were solved: nothing written", n);
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!o.csv.empty()) write_geometry_csv(t, o.csv);
   if (!o.file.empty()) write_geometry_text(t, g, o.file);

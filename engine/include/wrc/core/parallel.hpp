@@ -1,11 +1,13 @@
 // Work on worker threads, written once for the sweeps, the geometry tables and the strategy checks: how many threads
-// run (thread_count), one loop over numbered tasks (parallel_for) and the progress it reports (ProgressCount).
+// run (thread_count), one loop over numbered tasks (parallel_for), the progress it reports (ProgressCount) and the
+// front end's stop flag (stop_requested).
 //
 // Results must not depend on the number of threads: a task writes only its own outputs and keeps its state in the
 // workspace of the worker running it (the worker index says which), so the same tasks give the same bytes on 1, 2 or
 // 8 threads. parallel_for hands the tasks out in increasing order, and a failure is the lowest-numbered task's.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <mutex>
 #include <string>
@@ -39,6 +41,13 @@ int read_threads(OptionReader& r, int fallback);
 // lowest-numbered one that threw are not begun, and its exception is rethrown on the calling thread once every
 // worker has stopped: the same error on any number of workers, when whether a task throws depends on the task alone.
 void parallel_for(int count, int workers, const std::function<void(int worker, int task)>& body);
+
+// The stop flag a front end hands a long call (Ctrl-C in Python: SweepOptions, BatchOptions, GeometryTableOptions,
+// StrategyCheckOptions): true once it is set; a call without one (nullptr) is never stopped. A task checks it before
+// it begins, so the tasks under way finish.
+inline bool stop_requested(const std::atomic<bool>* stop) {
+  return stop != nullptr && stop->load(std::memory_order_relaxed);
+}
 
 // Progress of work counted in units (cases, rows, poses): units done, units in all, units of those done that failed.
 using Progress = std::function<void(int done, int total, int failed)>;
