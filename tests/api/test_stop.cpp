@@ -116,15 +116,11 @@ TEST_CASE("a strategy check stopped after 3 poses checks no other pose and says 
 }
 
 TEST_CASE("a wheelset whose check_strategy is stopped is not built") {
-  WheelsetProfiles p;
-  const Profile wheel = test::synthetic_wheel(0.5e-3), rail = test::synthetic_rail(0.5e-3);
-  p.wheel = {wheel, wheel};
-  p.rail = {rail, rail};
-  WheelsetParams params;
-  params.contact.element = 0.5e-3;
-  params.check_setup = false;
+  WheelsetParams params = test::synthetic_params();
   params.check_strategy = 1'000'000;  // hours of work, were it not stopped
   std::atomic<bool> stop{true};
-  const std::string why = error_of([&] { build_wheelset(p, params, native_strategy(params.strategy), &stop); });
+  const std::string why = error_of([&] {
+    build_wheelset(test::synthetic_profiles(), params, native_strategy(params.strategy), &stop);
+  });
   CHECK(why == "check_strategy: stopped after 0 of 1000000 poses: the strategy is not checked");
 }

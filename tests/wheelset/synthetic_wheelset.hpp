@@ -9,15 +9,23 @@
 
 namespace wrc::test {
 
-inline std::shared_ptr<const Wheelset> synthetic_wheelset() {
+inline WheelsetProfiles synthetic_profiles() {
   WheelsetProfiles p;
   const Profile wheel = synthetic_wheel(0.5e-3), rail = synthetic_rail(0.5e-3);
   p.wheel = {wheel, wheel};
   p.rail = {rail, rail};
+  return p;
+}
+
+inline WheelsetParams synthetic_params() {
   WheelsetParams params;
   params.contact.element = 0.5e-3;  // coarse: fast tests
   params.check_setup = false;       // a synthetic pair
-  return build_wheelset(p, params);
+  return params;
+}
+
+inline std::shared_ptr<const Wheelset> synthetic_wheelset() {
+  return build_wheelset(synthetic_profiles(), synthetic_params());
 }
 
 }  // namespace wrc::test

@@ -91,7 +91,7 @@ OptionValue to_option(py::handle v, const std::string& context, int depth) {
     return array_option(v, context, depth);
   }
   if (is_instance(v, abc("Real"))) return OptionValue::of(real_number(v, context));
-  if (is_instance(v, abc("Mapping"))) return OptionValue::of(mapping_options(v, context, depth + 1));
+  if (is_mapping(v)) return OptionValue::of(mapping_options(v, context, depth + 1));
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::hasattr(v, "__array__")) {
     if (py::hasattr(v, "__array__")) return array_option(v, context, depth);  // a pandas Series
     std::vector<OptionValue> out;
@@ -101,6 +101,8 @@ OptionValue to_option(py::handle v, const std::string& context, int depth) {
   }
   type_error(context, v, "expected a number, bool, str, sequence, numpy array, mapping or wrc.Profile");
 }
+
+bool is_mapping(py::handle value) { return is_instance(value, abc("Mapping")); }
 
 OptionTable mapping_options(py::handle mapping, const std::string& context, int depth) {
   OptionTable t;

@@ -16,6 +16,8 @@ namespace wrc::python {
 OptionTable to_options(const py::kwargs& kwargs, const std::string& context);
 // One value (a mapping's entries become a table).
 OptionValue to_option(py::handle value, const std::string& context, int depth = 0);
+// isinstance(value, collections.abc.Mapping); an error of the ABC's check (KeyboardInterrupt) propagates.
+bool is_mapping(py::handle value);
 // A mapping (dict, wrc.Result, pandas.DataFrame: its columns) as a table.
 OptionTable mapping_options(py::handle mapping, const std::string& context, int depth = 0);
 

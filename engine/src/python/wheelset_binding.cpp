@@ -231,9 +231,7 @@ py::object conicity(py::object table, const py::kwargs& kw) {
   const OptionTable options = to_options(kw, ctx);
   OptionTable dr_table;
   if (!table.is_none()) {
-    const int mapping = PyObject_IsInstance(table.ptr(), py::module_::import("collections.abc").attr("Mapping").ptr());
-    if (mapping < 0) throw py::error_already_set();  // KeyboardInterrupt in the ABC's check, say
-    if (mapping != 1)
+    if (!is_mapping(table))
       throw py::type_error(fmt::format("{}: the table must be a mapping (y=, dr=, flange=) or a pandas.DataFrame, got {}",
                                        ctx, py::str(py::type::of(table).attr("__name__")).cast<std::string>()));
     dr_table = mapping_options(table, std::string(ctx) + ": table");
