@@ -26,6 +26,23 @@ refused(function() ws:equilibrium{y = 0, Q = 200e6} end, "Q", "2e+08", "N", "Q i
 -- Modulus in GPa, radius in mm.
 refused(function() wrc.wheelset{wheel = wheel, rail = rail, E = 210} end, "E", "210", "Pa", "E in GPa")
 refused(function() wrc.wheelset{wheel = wheel, rail = rail, radius = 450} end, "radius", "450", "m", "radius in mm")
+-- Poisson's ratio as a percentage; without the check, a ratio no elastic body has is still refused, named as the
+-- call that was given it (not the normal solver that would have refused it later).
+local e_nu = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, nu = 28} end,
+                         "nu = 28 is implausible for Poisson's ratio of wheel and rail steel", "nu in per cent")
+check.ok(e_nu:find("28 % is nu = 0.28", 1, true) and e_nu:find(unchecked_hint, 1, true), e_nu)
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, nu = 0.6, check_setup = false} end,
+            "wrc.wheelset: Poisson's ratio nu = 0.6 must be in ]-1, 0.5[", "nu = 0.6 unchecked")
+-- Track lengths in mm and the cant as 40 (for 1:40) are out of range whatever check_setup says; the message says
+-- what was meant.
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1435, check_setup = false} end,
+            "'gauge' = 1435 is out of range: it must lie strictly between 0.3 and 3 (m); wrc takes metres: 1435 mm is "
+            .. "gauge = 1.435", "gauge in mm")
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge_depth = 14} end,
+            "14 mm is gauge_depth = 0.014", "gauge_depth in mm")
+check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, cant = 40} end,
+            "'cant' = 40 is out of range (|cant| < 0.5): it is the rails' inclination as a slope: 1:40 is cant = 0.025",
+            "cant as 40 for 1:40")
 -- Speed in km/h.
 refused(function() ws:contact{y = 0, z = -0.05e-3, V = 300, mu = 0.3} end, "V", "300", "m/s", "ws:contact, V in km/h")
 refused(function() ws:wheel{side = "left", y = 0, Fz = 100e3, V = -300, mu = 0.3} end, "V", "-300", "m/s",

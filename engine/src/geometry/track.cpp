@@ -2,6 +2,8 @@
 
 #include "wrc/core/error.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,15 +21,19 @@ namespace {
 
 void check_params(const TrackParams& p) {
   auto positive = [](double v, const char* key, double lo, double hi) {
-    if (!(v > lo && v < hi) || !std::isfinite(v))
-      fail("wrc.wheelset: '{}' = {} is out of range: it must lie strictly between {} and {} (m)", key, v, lo, hi);
+    if (v > lo && v < hi && std::isfinite(v)) return;
+    const bool mm = v / 1e3 > lo && v / 1e3 < hi;  // a length in millimetres: 1435 for the gauge
+    fail("wrc.wheelset: '{}' = {} is out of range: it must lie strictly between {} and {} (m){}", key, v, lo, hi,
+         mm ? fmt::format("; wrc takes metres: {} mm is {} = {:.6g}", v, key, v / 1e3) : "");
   };
   positive(p.radius, "radius", 0.05, 5.0);
   positive(p.back_to_back, "back_to_back", 0.3, 3.0);
   positive(p.gauge, "gauge", 0.3, 3.0);
   positive(p.gauge_depth, "gauge_depth", 0.0, 0.1);
   positive(p.tape_offset, "tape_offset", 0.0, 0.5);
-  if (!(std::abs(p.cant) < 0.5) || !std::isfinite(p.cant)) fail("wrc.wheelset: 'cant' = {} is out of range (|cant| < 0.5)", p.cant);
+  if (!(std::abs(p.cant) < 0.5) || !std::isfinite(p.cant))
+    fail("wrc.wheelset: 'cant' = {} is out of range (|cant| < 0.5): it is the rails' inclination as a slope: 1:40 is "
+         "cant = 0.025 (2.5 %; not 40, nor an angle in degrees)", p.cant);
 }
 
 // The first point of y that lies below the one before it (y.size() when none).

@@ -188,6 +188,7 @@ void check_plausible(std::string_view context, std::string_view key, double valu
 void check_plausible(const TrackParams& track, const halfspace::Material& material) {
   check_plausible("wrc.wheelset", "radius", track.radius, kWheelRadius);
   check_plausible("wrc.wheelset", "E", material.E, kSteelModulus);
+  check_plausible("wrc.wheelset", "nu", material.nu, kSteelPoisson);
   if (track.cant < 0)
     fail("wrc.wheelset: cant = {:.6g} tilts the rails' heads outward, toward the field side; rails are inclined toward "
          "the track centre, cant > 0 (1:40 is cant = 0.025, 1:20 cant = 0.05), and a rail already canted in its file "

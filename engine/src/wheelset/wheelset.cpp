@@ -143,7 +143,8 @@ Wheelset::Wheelset(const WheelsetProfiles& profiles, const WheelsetParams& param
                    std::shared_ptr<const LocationStrategy> strategy, const std::atomic<bool>* stop)
     : params_(params), strategy_(std::move(strategy)) {
   if (!strategy_) fail("wheelset: no location strategy");
-  if (params.check_setup) check_plausible(params.track, params.material);  // radius and E in their units
+  if (params.check_setup) check_plausible(params.track, params.material);  // radius, E and nu in their units
+  halfspace::validate(params.material, "wrc.wheelset");  // named as the call, not the solver that would refuse it
   track_ = std::make_shared<const Track>(assemble_track(profiles.wheel, profiles.rail, params.track));
   if (params.check_setup) check_setup(*track_);  // sizes and shapes for their kind, flanges against the gauge
   std::array<SideDiscretisation, 2> sides;

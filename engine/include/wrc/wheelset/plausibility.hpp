@@ -39,6 +39,9 @@ inline constexpr Plausible kWheelLoad{"a wheel load", "N", 1e3, 1e6, "100 kN is 
 inline constexpr Plausible kContactLoad{"a contact point's normal load", "N", 1e3, 1e6, "100 kN is hertz_load = 100e3"};
 inline constexpr Plausible kSteelModulus{"Young's modulus of wheel and rail steel", "Pa", 5e10, 5e11,
                                          "210 GPa is E = 2.1e11"};
+// Poisson's ratio of wheel and rail steels: 0.27-0.30. Outside 0.2 .. 0.35 is no steel: 28 is a percentage.
+inline constexpr Plausible kSteelPoisson{"Poisson's ratio of wheel and rail steel", "", 0.2, 0.35,
+                                         "28 % is nu = 0.28; steel's is 0.27 .. 0.30"};
 // Wheels in service: 0.33 m (diameter 0.66 m, tram and low-floor wagons) to 1.25 m diameter (locomotives). A radius
 // above 0.65 m is a diameter given as the radius (0.92 m: a worn freight-wagon wheel's diameter).
 inline constexpr Plausible kWheelRadius{"a railway wheel's radius", "m", 0.15, 0.65,
@@ -80,7 +83,7 @@ inline constexpr Plausible kFrictionCoefficient{"a wheel-rail friction coefficie
 void check_plausible(std::string_view context, std::string_view key, double value, const Plausible& range,
                      std::string_view off = kUncheckedHint);
 
-// The wheelset's parameters (wrc.wheelset{}): radius and E, and a cant that tilts the rails outward (< 0).
+// The wheelset's parameters (wrc.wheelset{}): radius, E and nu, and a cant that tilts the rails outward (< 0).
 void check_plausible(const TrackParams& track, const halfspace::Material& material);
 
 }  // namespace wrc
