@@ -284,6 +284,17 @@ TEST_CASE("option types in the words of the front end that built the options, po
   CHECK(reading_error(m, true, "outer").find("'inner' must be a struct, got logical") != std::string::npos);
 }
 
+TEST_CASE("a table given as another type: the message shows the table's shape from the key's help") {
+  OptionTable t;
+  t.set("profile", OptionValue::of(std::vector<OptionValue>{OptionValue::of(0.0), OptionValue::of(0.3)}));
+  t.set("bare", OptionValue::of(1.0));
+  t.dialect = OptionDialect::python;
+  OptionReader r(t, "call");
+  CHECK_THROWS_WITH_AS(r.table("profile", {"-", "mu across the rail: {y =, mu =}"}),
+                       "call: 'profile' must be a dict, got list (profile: mu across the rail: {y =, mu =})", Error);
+  CHECK_THROWS_WITH_AS(r.table("bare"), "call: 'bare' must be a dict, got number", Error);  // no help: as before
+}
+
 TEST_CASE("closest name: a key in another case is the one meant, before a key one edit away") {
   // 'q' is one edit from 'y' and from 'Q' alike; only the case tells which was meant.
   CHECK(closest_name("q", {"y", "yaw", "Q"}) == "Q");

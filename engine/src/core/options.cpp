@@ -480,7 +480,10 @@ std::optional<OptionReader> OptionReader::table(std::string_view key, OptionDoc 
   }
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
-  if (v->type != OptionValue::Type::table) type_error(key, *v, words().a_table);
+  if (v->type != OptionValue::Type::table) {  // the help shows the table's shape: {y =, mu =} for a list of pairs
+    if (!*doc.help) type_error(key, *v, words().a_table);
+    fail("{}: '{}' must be {}, got {} ({}: {})", context_, key, words().a_table, type_name(*v), key, doc.help);
+  }
   return nested(*v->table, fmt::format("{}: '{}'", context_, key));
 }
 
