@@ -311,8 +311,10 @@ void OptionReader::allow(std::initializer_list<std::string_view> keys) {
   for (auto k : keys) value(k);
 }
 
-void OptionReader::type_error(std::string_view key, const OptionValue& v, std::string_view expected) const {
-  fail("{}: '{}' must be {}, got {}", context_, key, expected, type_name(v));
+void OptionReader::type_error(std::string_view key, const OptionValue& v, std::string_view expected,
+                              std::string_view help) const {
+  fail("{}: '{}' must be {}, got {}{}", context_, key, expected, type_name(v),
+       help.empty() ? std::string() : fmt::format(" ({}: {})", key, help));
 }
 
 std::optional<double> OptionReader::number(std::string_view key, OptionDoc doc) {
@@ -480,10 +482,8 @@ std::optional<OptionReader> OptionReader::table(std::string_view key, OptionDoc 
   }
   const OptionValue* v = value(key);
   if (!v) return std::nullopt;
-  if (v->type != OptionValue::Type::table) {  // the help shows the table's shape: {y =, mu =} for a list of pairs
-    if (!*doc.help) type_error(key, *v, words().a_table);
-    fail("{}: '{}' must be {}, got {} ({}: {})", context_, key, words().a_table, type_name(*v), key, doc.help);
-  }
+  // The help shows the table's shape: {y =, mu =} for a list of pairs.
+  if (v->type != OptionValue::Type::table) type_error(key, *v, words().a_table, doc.help);
   return nested(*v->table, fmt::format("{}: '{}'", context_, key));
 }
 

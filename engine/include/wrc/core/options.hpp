@@ -172,7 +172,9 @@ class OptionReader {
   void finish() const;
 
  private:
-  [[noreturn]] void type_error(std::string_view key, const OptionValue& v, std::string_view expected) const;
+  // "<context>: '<key>' must be <expected>, got <type>", then " (<key>: <help>)" when a help is given.
+  [[noreturn]] void type_error(std::string_view key, const OptionValue& v, std::string_view expected,
+                               std::string_view help = {}) const;
   // While documenting: records the key (once; a later call fills what an earlier one left empty).
   void note(std::string_view key, std::string_view type, OptionDoc doc, std::string fallback = {},
             bool required = false, std::vector<std::string> choices = {});
