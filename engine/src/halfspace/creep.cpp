@@ -11,7 +11,7 @@
 namespace wrc::halfspace {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Kalker (1990), Table E.3: rows a/b = 0.1, 0.2, .., 1.0, then b/a = 0.9, 0.8, .., 0.1; in each row C11, C22, C23,
 // C33, each for nu = 0, 1/4, 1/2.

@@ -12,7 +12,7 @@
 namespace wrc::halfspace {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // An element of a contact region counts toward its equivalent ellipse by the weight w = s^2 (3 - 2 s), s = min(1, p /
 // (kEdgeWeight pmax)), pmax the region's largest pressure: an element entering the contact (p rising from 0 with the

@@ -13,7 +13,7 @@ namespace {
 //   G = X asinh(Y/|X|) + Y asinh(X/|Y|).
 // Love's logarithms ln(Y + r) differ from asinh(Y/|X|) by ln|X|, which cancels between corners that
 // share X; the asinh form has no log of a difference, hence no cancellation near edges.
-double corner(double X, double Y) {
+double love_corner(double X, double Y) {
   double g = 0;
   if (X != 0) g += X * std::asinh(Y / std::abs(X));
   if (Y != 0) g += Y * std::asinh(X / std::abs(Y));
@@ -54,7 +54,7 @@ TangentialDisplacement rectangle_shear_displacement(const Material& m, double x,
 double rectangle_potential(double x, double y, double a, double b) {
   // Source point s - field point (x, y) runs over [-a - x, a - x] x [-b - y, b - y].
   const double x1 = -a - x, x2 = a - x, y1 = -b - y, y2 = b - y;
-  return corner(x2, y2) - corner(x1, y2) - corner(x2, y1) + corner(x1, y1);
+  return love_corner(x2, y2) - love_corner(x1, y2) - love_corner(x2, y1) + love_corner(x1, y1);
 }
 
 double rectangle_displacement(const Material& material, double x, double y, double a, double b, double p) {
@@ -70,7 +70,7 @@ InfluenceTable::InfluenceTable(double dx, double dy, int mx, int my) : dx_(dx), 
   const int cx = mx + 1, cy = my + 1;
   std::vector<double> g(static_cast<std::size_t>(cx) * cy);
   for (int l = 0; l < cy; ++l)
-    for (int k = 0; k < cx; ++k) g[k + cx * l] = corner((k - 0.5) * dx, (l - 0.5) * dy);
+    for (int k = 0; k < cx; ++k) g[k + cx * l] = love_corner((k - 0.5) * dx, (l - 0.5) * dy);
   values_.resize(static_cast<std::size_t>(mx) * my);
   for (int n = 0; n < my; ++n)
     for (int m = 0; m < mx; ++m)

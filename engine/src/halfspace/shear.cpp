@@ -71,8 +71,8 @@ bool ShearSpectrum::serves(const Grid& grid) const {
 namespace {
 
 // One two-component round trip: windows of (sx, sy) -> spectra -> the 2 x 2 symbol -> windows of (dx_, dy_).
-void round_trip(const ShearSpectrum& s, const Grid& grid, const double* sx, const double* sy, double* ox, double* oy,
-                ShearWorkspace& ws) {
+void shear_round_trip(const ShearSpectrum& s, const Grid& grid, const double* sx, const double* sy, double* ox,
+                      double* oy, ShearWorkspace& ws) {
   if (!s.serves(grid))
     fail("shear_convolve: spectrum {} x {} of {} x {} m elements does not serve a {} x {} grid of {} x {} m",
          s.fft().Mx(), s.fft().My(), s.dx(), s.dy(), grid.nx, grid.ny, grid.dx, grid.dy);
@@ -110,13 +110,13 @@ void round_trip(const ShearSpectrum& s, const Grid& grid, const double* sx, cons
 void shear_convolve(const ShearSpectrum& s, const Grid& grid, const double* qx, const double* qy, double* ux,
                     double* uy, ShearWorkspace& ws) {
   if (s.kind() != ShearSpectrum::Kind::linear) fail("shear_convolve: needs a linear spectrum");
-  round_trip(s, grid, qx, qy, ux, uy, ws);
+  shear_round_trip(s, grid, qx, qy, ux, uy, ws);
 }
 
 void shear_deconvolve(const ShearSpectrum& s, const Grid& grid, const double* ux, const double* uy, double* qx,
                       double* qy, ShearWorkspace& ws) {
   if (s.kind() != ShearSpectrum::Kind::periodic) fail("shear_deconvolve: needs a periodic spectrum");
-  round_trip(s, grid, ux, uy, qx, qy, ws);
+  shear_round_trip(s, grid, ux, uy, qx, qy, ws);
 }
 
 ShearCache::ShearCache(const Material& material, FftPlanning planning, std::size_t max_entries)

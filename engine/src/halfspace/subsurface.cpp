@@ -43,7 +43,7 @@ Components cerruti_corner(double X, double Y, double z, double rho, double T, do
 }
 
 // The corner functions of the three unit loads at (X, Y, z), z > 0 (Pa per Pa).
-std::array<Components, kLoads> corner(double X, double Y, double z, double nu) {
+std::array<Components, kLoads> stress_corners(double X, double Y, double z, double nu) {
   const double X2 = X * X, Y2 = Y * Y, Xz = X2 + z * z, Yz = Y2 + z * z;
   const double rho = std::sqrt(X2 + Y2 + z * z), rz = rho + z;
   const double T = std::atan(X * Y / (z * rho));  // the solid-angle term
@@ -96,7 +96,7 @@ void Kernels::build(const Grid& grid, double z, double nu, const std::array<bool
     }
   for (int l = 0; l < ny; ++l)
     for (int k = 0; k < nx; ++k) {
-      const auto g = corner((k + 0.5) * grid.dx, (l + 0.5) * grid.dy, z, nu);
+      const auto g = stress_corners((k + 0.5) * grid.dx, (l + 0.5) * grid.dy, z, nu);
       for (int L = 0; L < kLoads; ++L)
         if (active[L])
           for (int c = 0; c < kComponents; ++c) G[L][c][k + static_cast<std::size_t>(nx) * l] = g[L][c];
@@ -387,7 +387,7 @@ Stress rectangle_stress(double nu, double x, double y, double z, double a, doubl
   for (int ia = 0; ia < 2; ++ia)
     for (int ib = 0; ib < 2; ++ib) {
       const double sign = (ia == 0 ? 1 : -1) * (ib == 0 ? 1 : -1);  // + at the lower bounds of xi and eta
-      const auto g = corner(x - (ia == 0 ? -a : a), y - (ib == 0 ? -b : b), z, nu);
+      const auto g = stress_corners(x - (ia == 0 ? -a : a), y - (ib == 0 ? -b : b), z, nu);
       for (int L = 0; L < kLoads; ++L)
         for (int c = 0; c < kComponents; ++c) sum[c] += sign * w[L] * g[L][c];
     }

@@ -17,10 +17,10 @@ namespace {
 using damage::Polyline;
 
 // The call's table and its reader (finish() after the last key: unknown keys named).
-struct Args {
+struct KernelArgs {
   OptionTable table;
   OptionReader r;
-  Args(lua_State* L, const char* ctx) : table(table_options(L, 1, ctx)), r(table, ctx) {}
+  KernelArgs(lua_State* L, const char* ctx) : table(table_options(L, 1, ctx)), r(table, ctx) {}
   std::vector<double> need(const char* key, const char* unit, const char* help) {
     auto v = r.numbers(key, OptionDoc{unit, help});
     if (!v) fail("{}: '{}' is required (an array of numbers, {})", r.context(), key, unit);
@@ -42,7 +42,7 @@ int push(lua_State* L, const T&... v) {
 
 // wrc.wear.arc_length{y =, z =} -> arc (m)
 int arc_length(lua_State* L) {
-  Args a(L, "wrc.wear.arc_length");
+  KernelArgs a(L, "wrc.wear.arc_length");
   const auto y = a.need("y", "m", "points"), z = a.need("z", "m", "points");
   a.r.finish();
   return push(L, damage::arc_length(y, z));
@@ -50,7 +50,7 @@ int arc_length(lua_State* L) {
 
 // wrc.wear.cells{arc =} -> the points' cell lengths (m)
 int cells(lua_State* L) {
-  Args a(L, "wrc.wear.cells");
+  KernelArgs a(L, "wrc.wear.cells");
   const auto arc = a.need("arc", "m", "arc length of the points");
   a.r.finish();
   return push(L, damage::cell_lengths(arc));
@@ -58,7 +58,7 @@ int cells(lua_State* L) {
 
 // wrc.wear.project{y =, z =, points_y =, points_z =} -> arc, distance (m) of the nearest polyline points
 int project(lua_State* L) {
-  Args a(L, "wrc.wear.project");
+  KernelArgs a(L, "wrc.wear.project");
   const auto y = a.need("y", "m", "polyline"), z = a.need("z", "m", "polyline");
   const auto py = a.need("points_y", "m", "points"), pz = a.need("points_z", "m", "points");
   a.r.finish();
@@ -68,7 +68,7 @@ int project(lua_State* L) {
 
 // wrc.wear.deposit{arc =, centre =, width =, area =} -> depth per point (m), the area beyond the ends
 int deposit(lua_State* L) {
-  Args a(L, "wrc.wear.deposit");
+  KernelArgs a(L, "wrc.wear.deposit");
   const auto arc = a.need("arc", "m", "arc length of the points");
   const auto c = a.need("centre", "m", "strip centres (arc)"), w = a.need("width", "m", "strip widths");
   const auto area = a.need("area", "m^2", "strip areas");
@@ -79,7 +79,7 @@ int deposit(lua_State* L) {
 
 // wrc.wear.smooth{arc =, depth =, length =} -> depth per point (m), the area sum kept
 int smooth(lua_State* L) {
-  Args a(L, "wrc.wear.smooth");
+  KernelArgs a(L, "wrc.wear.smooth");
   const auto arc = a.need("arc", "m", "arc length of the points"), d = a.need("depth", "m", "depth per point");
   const double length = a.r.need_number("length", OptionDoc{"m", "standard deviation of the Gaussian"});
   a.r.finish();
@@ -88,7 +88,7 @@ int smooth(lua_State* L) {
 
 // wrc.wear.normals{y =, z =, kind =} -> ny, nz: unit normals into the body
 int normals(lua_State* L) {
-  Args a(L, "wrc.wear.normals");
+  KernelArgs a(L, "wrc.wear.normals");
   const auto y = a.need("y", "m", "points"), z = a.need("z", "m", "points");
   const ProfileKind kind = a.kind();
   a.r.finish();
@@ -98,7 +98,7 @@ int normals(lua_State* L) {
 
 // wrc.wear.move{y =, z =, depth =, kind =} -> y, z moved by depth into the body
 int move(lua_State* L) {
-  Args a(L, "wrc.wear.move");
+  KernelArgs a(L, "wrc.wear.move");
   const auto y = a.need("y", "m", "points"), z = a.need("z", "m", "points");
   const auto d = a.need("depth", "m", "depth per point");
   const ProfileKind kind = a.kind();
@@ -109,7 +109,7 @@ int move(lua_State* L) {
 
 // wrc.wear.area_between{y =, z =, y2 =, z2 =} -> the area between two polylines of as many points (m^2)
 int area_between(lua_State* L) {
-  Args a(L, "wrc.wear.area_between");
+  KernelArgs a(L, "wrc.wear.area_between");
   const auto y = a.need("y", "m", "first polyline"), z = a.need("z", "m", "first polyline");
   const auto y2 = a.need("y2", "m", "second polyline"), z2 = a.need("z2", "m", "second polyline");
   a.r.finish();

@@ -31,10 +31,10 @@ ContactWorkspace& workspace(lua_State* L, LuaWheelset& w) {
 }
 
 // The options table of a method (argument 2) and its reader; the reader's keys are checked by finish().
-struct Args {
+struct MethodArgs {
   OptionTable table;
   OptionReader reader;
-  Args(lua_State* L, const char* ctx) : table(table_options(L, 2, ctx)), reader(table, ctx) {}
+  MethodArgs(lua_State* L, const char* ctx) : table(table_options(L, 2, ctx)), reader(table, ctx) {}
 };
 
 // The request of a method from its options table (argument 2); unknown keys are errors.
@@ -68,7 +68,7 @@ int wheelset_new(lua_State* L) {
 int wheelset_locate(lua_State* L) {
   const char* ctx = "wheelset:locate";
   LuaWheelset& w = self(L, ctx);
-  Args a(L, ctx);
+  MethodArgs a(L, ctx);
   const Pose pose = read_pose(a.reader);
   const bool brute = a.reader.choice("search", {"strategy", "brute"}).value_or("strategy") == "brute";
   a.reader.finish();
@@ -243,7 +243,7 @@ int sweep_job_wait(lua_State* L) {
 int wheelset_sweep_plan(lua_State* L) {
   const char* ctx = "wheelset:sweep_plan";
   self(L, ctx);
-  Args a(L, ctx);
+  MethodArgs a(L, ctx);
   const SweepPlan plan = api::read_sweep_plan(a.reader);
   a.reader.finish();
   lua_createtable(L, 0, 2);

@@ -44,6 +44,9 @@ auto reading(F&& f) {
   }
 }
 
+// The exception class wrc._errors.<name> (python/wrc/_errors.py: Error, OptionError, ProfileError, NotConverged).
+py::object error_class(const char* name);
+
 // Raises wrc.NotConverged(message, result).
 [[noreturn]] void raise_not_converged(const std::string& message, py::object result);
 

@@ -15,13 +15,13 @@ std::string without_traceback(std::string message) {
   return message;
 }
 
-py::object error_class(const char* name) { return py::module_::import("wrc._errors").attr(name); }
-
 void set_error(const char* cls, const char* message) {
   PyErr_SetObject(error_class(cls).ptr(), py::str(without_traceback(message)).ptr());
 }
 
 }  // namespace
+
+py::object error_class(const char* name) { return py::module_::import("wrc._errors").attr(name); }
 
 void raise_not_converged(const std::string& message, py::object result) {
   PyErr_SetObject(error_class("NotConverged").ptr(), py::make_tuple(message, std::move(result)).ptr());

@@ -51,7 +51,8 @@ struct PyTrajectory {
   }
 };
 
-py::object results(const char* name) { return py::module_::import("wrc._results").attr(name); }
+// A function of wrc._results (python/wrc/_results.py) that wraps a result tree.
+py::object results_function(const char* name) { return py::module_::import("wrc._results").attr(name); }
 
 // A list of names ("coarse", "topology") is the strategy "coarse+topology", as Lua's list form.
 py::kwargs strategy_as_name(const py::kwargs& kw) {
@@ -195,7 +196,7 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
     t.integer("failed", failed, {"-", "cases that did not converge"});
     tree = t.take();
   }
-  return results("with_table")(to_python(std::move(tree)), "rows");
+  return results_function("with_table")(to_python(std::move(tree)), "rows");
 }
 
 py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
@@ -209,7 +210,7 @@ py::object geometry_table(PyWheelset& self, const py::kwargs& kw) {
     call.options.stop = &stop;
     tree = record_fields(call.run(*model));
   });
-  return results("rows_frame")(to_python(std::move(tree)), "rows");
+  return results_function("rows_frame")(to_python(std::move(tree)), "rows");
 }
 
 py::object wheelset_conicity(PyWheelset& self, const py::kwargs& kw) {
