@@ -25,11 +25,6 @@ using namespace wrc;
 
 namespace {
 
-const Wheelset& synthetic_wheelset() {
-  static const std::shared_ptr<const Wheelset> ws = test::synthetic_wheelset();
-  return *ws;
-}
-
 // Records a described result as text, every number by its bits: two results are the same bytes when their texts are.
 class Trace final : public FieldSink {
  public:
@@ -64,7 +59,7 @@ class Trace final : public FieldSink {
 
 // The same call made alone, as the Lua binding makes it: read, run in a fresh workspace, described.
 std::string alone(const api::BatchInput& in, std::size_t i) {
-  const Wheelset& ws = synthetic_wheelset();
+  const Wheelset& ws = test::shared_synthetic_wheelset();
   const OptionTable t = in.element(i);
   auto workspace = ws.make_workspace();
   Trace out;
@@ -88,7 +83,7 @@ struct Traced {
 Traced batch(const api::BatchInput& in, int threads, const std::atomic<bool>* stop = nullptr) {
   std::deque<Trace> sinks(in.count);
   Traced t;
-  t.run = api::run_batch(synthetic_wheelset(), in, [&](std::size_t i) -> FieldSink& { return sinks[i]; },
+  t.run = api::run_batch(test::shared_synthetic_wheelset(), in, [&](std::size_t i) -> FieldSink& { return sinks[i]; },
                          {threads, stop, {}});
   for (const Trace& s : sinks) t.text.push_back(s.text);
   return t;
@@ -229,7 +224,7 @@ TEST_CASE("batch: the stop flag skips the elements not begun") {
   std::atomic<bool> stop{false};
   std::deque<Trace> sinks(in.count);
   const api::BatchRun run = api::run_batch(
-      synthetic_wheelset(), in,
+      test::shared_synthetic_wheelset(), in,
       [&](std::size_t i) -> FieldSink& {
         stop = true;  // while element 0 runs (one thread: in order)
         return sinks[i];
@@ -244,7 +239,7 @@ TEST_CASE("batch: done() is told of every element run, and false skips the eleme
   std::deque<Trace> sinks(in.count);
   std::vector<std::size_t> told;
   const api::BatchRun run = api::run_batch(
-      synthetic_wheelset(), in, [&](std::size_t i) -> FieldSink& { return sinks[i]; },
+      test::shared_synthetic_wheelset(), in, [&](std::size_t i) -> FieldSink& { return sinks[i]; },
       {1, nullptr, [&](std::size_t i) {
          told.push_back(i);
          CHECK(!sinks[i].text.empty());  // after the element was described

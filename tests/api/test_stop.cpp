@@ -20,11 +20,6 @@ using namespace wrc;
 
 namespace {
 
-const Wheelset& synthetic_wheelset() {
-  static const std::shared_ptr<const Wheelset> ws = test::synthetic_wheelset();
-  return *ws;
-}
-
 std::string temp_file(const char* name) {
   const char* dir = std::getenv("WRC_TEST_TMP");
   return std::string(dir != nullptr ? dir : "/tmp") + "/" + name;
@@ -69,7 +64,7 @@ TEST_CASE("a geometry table stopped after 7 rows begins no other row, throws and
     reported = done;
     if (done == 7) stop = true;
   };
-  const std::string why = error_of([&] { run_geometry_table(synthetic_wheelset().geometry(), o); });
+  const std::string why = error_of([&] { run_geometry_table(test::shared_synthetic_wheelset().geometry(), o); });
   CHECK(why.find("geometry table: stopped") != std::string::npos);
   CHECK(reported == 7);
   CHECK(read_text(csv) == "the previous content\n");
@@ -79,7 +74,7 @@ TEST_CASE("a geometry table stopped after 7 rows begins no other row, throws and
   std::atomic<bool> never{false};
   o.stop = &never;
   o.progress = [&](int done, int, int) { reported = done; };
-  const GeometryTable t = run_geometry_table(synthetic_wheelset().geometry(), o);
+  const GeometryTable t = run_geometry_table(test::shared_synthetic_wheelset().geometry(), o);
   CHECK(reported == 200);
   CHECK(t.rows.size() == 200);
   CHECK(std::filesystem::exists(csv));
@@ -92,7 +87,7 @@ TEST_CASE("ws:conicity's geometry table stops likewise") {
   o.conicity.yhat = {2e-3};
   o.table.threads = 1;
   o.table.stop = &stop;
-  const std::string why = error_of([&] { wheelset_conicity(synthetic_wheelset().geometry(), o); });
+  const std::string why = error_of([&] { wheelset_conicity(test::shared_synthetic_wheelset().geometry(), o); });
   CHECK(why.find("geometry table: stopped") != std::string::npos);
 }
 
@@ -107,7 +102,7 @@ TEST_CASE("a strategy check stopped after 3 poses checks no other pose and says 
     reported = done;
     if (done == 3) stop = true;
   };
-  const Wheelset& ws = synthetic_wheelset();
+  const Wheelset& ws = test::shared_synthetic_wheelset();
   const std::string why = error_of([&] {
     check_strategy(ws.geometry(), o, [&] { return ws.geometry().strategy.make_search(); });
   });

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     if (s == "fast") with_fast = true;
   }
   const double A = 1 / (2 * 0.45), B = 3 * A, delta = 15e-6;
-  const HertzContact hz = hertz_from_approach(A, B, steel.combined_modulus(), delta);
+  const HertzReference hz = hertz_from_approach(A, B, steel.combined_modulus(), delta);
   fmt::print("bench_dense: solve_normal_dense on Hertz cases B/A = 3, delta = {} um, E = {} Pa (CPU ms, one core)\n",
              delta * 1e6, steel.E);
   fmt::print("m0 = elements of {{h > 0}} (the cold start's first block), block MB = 8 m0^2 / 1e6, it = active-set "

@@ -228,7 +228,7 @@ void hertz_convergence(bool quick) {
   NormalWorkspace ws;
   const double A = 1 / (2 * 0.45), delta = 15e-6;
   for (double q : {1.0, 5.0, 10.0}) {
-    const HertzContact hz = hertz_from_approach(A, q * A, steel.combined_modulus(), delta);
+    const HertzReference hz = hertz_from_approach(A, q * A, steel.combined_modulus(), delta);
     for (int per_b : {4, 8, 16, 32, 64}) {
       if (quick && per_b > 16) continue;
       const double element = std::min(hz.a, hz.b) / per_b * 1.013;

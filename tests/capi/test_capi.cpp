@@ -441,7 +441,7 @@ TEST_CASE("the contact ellipses and Kalker's coefficients read by path: rigid po
   const auto at = [&](const wrc_result* r, const std::string& p) { return number(r, p.c_str()); };
   const double kx = std::cos(at(g, std::string(c) + "angle")) / at(g, std::string(c) + "rolling_radius");
   const double ky = at(g, std::string(c) + "wheel_curvature") + at(g, std::string(c) + "rail_curvature");
-  const wrc::test::HertzContact ref = wrc::test::hertz_from_force(kx / 2, ky / 2, Es, 80e3);
+  const wrc::test::HertzReference ref = wrc::test::hertz_from_force(kx / 2, ky / 2, Es, 80e3);
   CHECK(at(g, std::string(c) + "hertz.a") == within_rel(ref.a, 1e-6));
   CHECK(at(g, std::string(c) + "hertz.b") == within_rel(ref.b, 1e-6));
   CHECK(at(g, std::string(c) + "hertz.load") == 80e3);

@@ -30,10 +30,10 @@ namespace {
 
 // Step k of a hunting-like motion at 1 kHz (y = 3 mm sin(2 pi 1.5 Hz t), the yaw following the path at V), its
 // case and rolling request.
-constexpr double kV = 30, kMu = 0.3, kFz = 90e3;
+constexpr double kV = 30, kMu = 0.3, kTrajectoryFz = 90e3;
 WheelCase step_case(int k) {
   const double w = 2 * std::numbers::pi * 1.5, t = 0.02 + 1e-3 * k;
-  return {kLeft, 3e-3 * std::sin(w * t), -3e-3 * w * std::cos(w * t) / kV, 0.0, kFz};
+  return {kLeft, 3e-3 * std::sin(w * t), -3e-3 * w * std::cos(w * t) / kV, 0.0, kTrajectoryFz};
 }
 RollingRequest step_rolling(int k, RollingMethod method) {
   const double w = 2 * std::numbers::pi * 1.5, t = 0.02 + 1e-3 * k;
@@ -90,13 +90,13 @@ TEST_CASE("trajectory with rolling contact: each warm step equals a cold solve o
       const WheelResult cold = solve_wheel(ws->contact_model(), c, *fresh, cold_options, std::nullopt, rolling);
       REQUIRE(warm.converged);
       REQUIRE(cold.converged);
-      CHECK(std::abs(warm.wheel.force.z() - kFz) <= 1e-6 * kFz);
-      CHECK(std::abs(cold.wheel.force.z() - kFz) <= 1e-6 * kFz);
+      CHECK(std::abs(warm.wheel.force.z() - kTrajectoryFz) <= 1e-6 * kTrajectoryFz);
+      CHECK(std::abs(cold.wheel.force.z() - kTrajectoryFz) <= 1e-6 * kTrajectoryFz);
       REQUIRE(warm.wheel.patches.size() == cold.wheel.patches.size());
       REQUIRE(warm.wheel.creep.solved);
       // The creep force in the contact plane (N) against the wheel's creep force scale mu Fz.
       const Eigen::Vector3d dF = warm.wheel.creep.force - cold.wheel.creep.force;
-      worst_force = std::max(worst_force, dF.norm() / (kMu * kFz));
+      worst_force = std::max(worst_force, dF.norm() / (kMu * kTrajectoryFz));
       for (std::size_t p = 0; p < warm.wheel.patches.size(); ++p) {
         const TractionDifference d = compare(warm.wheel.patches[p], cold.wheel.patches[p]);
         worst_traction = std::max(worst_traction, d.max);
@@ -110,7 +110,7 @@ TEST_CASE("trajectory with rolling contact: each warm step equals a cold solve o
       req.rolling = rolling;
       auto fresh_pose = ws->make_workspace();
       const ContactResult at = evaluate_contact(ws->contact_model(), {c.y, warm.z, c.roll, c.yaw}, *fresh_pose, req);
-      worst_pose = std::max(worst_pose, (at.wheel[kLeft].force - warm.wheel.force).norm() / kFz);
+      worst_pose = std::max(worst_pose, (at.wheel[kLeft].force - warm.wheel.force).norm() / kTrajectoryFz);
       REQUIRE(at.wheel[kLeft].patches.size() == warm.wheel.patches.size());
       for (std::size_t p = 0; p < warm.wheel.patches.size(); ++p)
         worst_pose_traction = std::max(worst_pose_traction, compare(warm.wheel.patches[p], at.wheel[kLeft].patches[p]).max);
@@ -161,7 +161,7 @@ TEST_CASE("trajectory with rolling contact: prescribed poses warm equal their co
     const ContactResult cold = evaluate_contact(ws->contact_model(), pose, *cold_ws, req);
     const WheelContact &w = warm.wheel[kLeft], &cw = cold.wheel[kLeft];
     REQUIRE(w.patches.size() == cw.patches.size());
-    worst_force = std::max(worst_force, (w.force - cw.force).norm() / kFz);
+    worst_force = std::max(worst_force, (w.force - cw.force).norm() / kTrajectoryFz);
     for (std::size_t p = 0; p < w.patches.size(); ++p) {
       worst_traction = std::max(worst_traction, compare(w.patches[p], cw.patches[p]).max);
       if (k > 0) {

@@ -41,7 +41,7 @@ inline EllipticKE elliptic_ke(double kp) {
   return {K, K * (1 - sum)};
 }
 
-struct HertzContact {
+struct HertzReference {
   double a = 0, b = 0;  // semi-axes along x and y (m)
   double p0 = 0;        // peak pressure (Pa)
   double force = 0;     // N
@@ -65,12 +65,12 @@ inline double hertz_axis_ratio(double q) {
 }
 
 // Hertz contact for h = delta - A x^2 - B y^2 at the approach delta (m), combined modulus Estar (Pa).
-inline HertzContact hertz_from_approach(double A, double B, double Estar, double delta) {
+inline HertzReference hertz_from_approach(double A, double B, double Estar, double delta) {
   if (!(A > 0 && B > 0 && Estar > 0 && delta > 0)) throw std::invalid_argument("hertz_from_approach: bad input");
   const bool swap = A > B;  // work with Amin along the major axis, then put the axes back
   const double Amin = swap ? B : A, Bmax = swap ? A : B;
   const double kp = hertz_axis_ratio(Bmax / Amin);
-  HertzContact h;
+  HertzReference h;
   h.delta = delta;
   double major, minor;
   if (kp == 1) {  // circle: a^2 = R delta with 1/R = 2 A, p0 = 2 a E* / (pi R)
@@ -90,9 +90,9 @@ inline HertzContact hertz_from_approach(double A, double B, double Estar, double
 }
 
 // Hertz contact carrying the normal force F (N): F grows like delta^(3/2) at a fixed shape.
-inline HertzContact hertz_from_force(double A, double B, double Estar, double F) {
+inline HertzReference hertz_from_force(double A, double B, double Estar, double F) {
   if (!(F > 0)) throw std::invalid_argument("hertz_from_force: F must be positive");
-  const HertzContact unit = hertz_from_approach(A, B, Estar, 1e-6);
+  const HertzReference unit = hertz_from_approach(A, B, Estar, 1e-6);
   return hertz_from_approach(A, B, Estar, 1e-6 * std::pow(F / unit.force, 2.0 / 3.0));
 }
 

@@ -7,6 +7,7 @@
 #include "approx.hpp"
 #include "hertz_reference.hpp"
 #include "normal_cases.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,7 +20,7 @@ using namespace wrc::halfspace;
 
 namespace {
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 // Kalker's coefficient within the rounding of his table (3 significant digits): half a unit of the last digit.
 bool within_table(double value, double table) {
@@ -41,7 +42,7 @@ TEST_CASE("hertz_contact: semi-axes, peak pressure and approach equal the tests'
       CAPTURE(F);
       const auto h = hertz_contact(k[0], k[1], F, steel);
       REQUIRE(h);
-      const wrc::test::HertzContact ref = wrc::test::hertz_from_force(k[0] / 2, k[1] / 2, Es, F);
+      const wrc::test::HertzReference ref = wrc::test::hertz_from_force(k[0] / 2, k[1] / 2, Es, F);
       CHECK(h->a == within_rel(ref.a, 1e-7));
       CHECK(h->b == within_rel(ref.b, 1e-7));
       CHECK(h->p0 == within_rel(ref.p0, 1e-7));

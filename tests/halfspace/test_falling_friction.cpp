@@ -7,6 +7,7 @@
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -21,14 +22,14 @@ using wrc::test::rolling_problem;
 
 namespace {
 
-const Material kSteel{2.1e11, 0.28};
+using wrc::test::rolling_steel;
 
 // Polach's law written out here (not through Friction::at).
 double polach(double mu0, double A, double B, double w) { return mu0 * ((1 - A) * std::exp(-B * w) + A); }
 
 TangentialSolution solve(bool exact, const TangentialProblem& pb) {
-  static const RollingSolver solver(kSteel);
-  return exact ? solver.solve(pb) : solve_fastsim(kSteel, pb);
+  static const RollingSolver solver(rolling_steel);
+  return exact ? solver.solve(pb) : solve_fastsim(rolling_steel, pb);
 }
 
 }  // namespace
@@ -100,7 +101,7 @@ TEST_CASE("falling friction, exact solver: the traction of every slip element is
         pb.speed = V;
         const TangentialSolution s = solve(true, pb);
         std::vector<double> sx, sy;
-        direct_slip(kSteel, pb, s, sx, sy);
+        direct_slip(rolling_steel, pb, s, sx, sy);
         const double wscale = std::max({std::abs(c.xi), std::abs(c.eta), std::abs(c.phi) * 6e-3});
         int slip = 0, adhesion = 0;
         double lowest = 1;  // the lowest mu met in slip / mu0: the law is exercised

@@ -5,6 +5,7 @@
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -20,19 +21,19 @@ using wrc::test::hertz_patch;
 using wrc::test::rolling_problem;
 
 namespace {
-const Material kSteel{2.1e11, 0.28};
+using wrc::test::rolling_steel;
 }
 
 TEST_CASE("FASTSIM in the linear limit: Kalker's Fx, Fy (eta and phi) by construction of the flexibilities") {
   for (auto [a, b] : {std::pair{4e-3, 4e-3}, {6e-3, 2e-3}, {2e-3, 6e-3}}) {
     const wrc::test::HertzPatch h = hertz_patch(a, b, 1e9, 24);
     const double e = 1e-7, c = std::sqrt(a * b);
-    const CreepForce kx = linear_creep_force(a, b, kSteel, {e, 0, 0});
-    const CreepForce ky = linear_creep_force(a, b, kSteel, {0, e, 0});
-    const CreepForce ks = linear_creep_force(a, b, kSteel, {0, 0, e / c});
-    const TangentialSolution x = solve_fastsim(kSteel, rolling_problem(h, {e, 0, 0}, 0.3));
-    const TangentialSolution y = solve_fastsim(kSteel, rolling_problem(h, {0, e, 0}, 0.3));
-    const TangentialSolution s = solve_fastsim(kSteel, rolling_problem(h, {0, 0, e / c}, 0.3));
+    const CreepForce kx = linear_creep_force(a, b, rolling_steel, {e, 0, 0});
+    const CreepForce ky = linear_creep_force(a, b, rolling_steel, {0, e, 0});
+    const CreepForce ks = linear_creep_force(a, b, rolling_steel, {0, 0, e / c});
+    const TangentialSolution x = solve_fastsim(rolling_steel, rolling_problem(h, {e, 0, 0}, 0.3));
+    const TangentialSolution y = solve_fastsim(rolling_steel, rolling_problem(h, {0, e, 0}, 0.3));
+    const TangentialSolution s = solve_fastsim(rolling_steel, rolling_problem(h, {0, 0, e / c}, 0.3));
     CAPTURE(a);
     CAPTURE(b);
     CHECK(x.adhesion_fraction() > 0.995);  // the trailing edge's sampled pressure can be tiny
@@ -64,7 +65,7 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
   pb.pressure = p;
   pb.creepages = {1e-8, 0, 0};
   pb.friction = Friction::coulomb(0.3);
-  const TangentialSolution s = solve_fastsim(kSteel, pb);
+  const TangentialSolution s = solve_fastsim(rolling_steel, pb);
   // The two regions' extents and areas, counted here, give their ellipses and L1.
   double expected = 0;
   for (int region = 0; region < 2; ++region) {
@@ -83,7 +84,7 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
     }
     const double aspect = (xmax - xmin + e) / (ymax - ymin + e), area = count * e * e;
     const Flexibilities L = kalker_flexibilities(std::sqrt(area * aspect / std::numbers::pi),
-                                                 std::sqrt(area / (std::numbers::pi * aspect)), kSteel);
+                                                 std::sqrt(area / (std::numbers::pi * aspect)), rolling_steel);
     expected += -1e-8 * strips / L.x;
   }
   CHECK(s.fx == within_rel(expected, 1e-9));
@@ -93,11 +94,11 @@ TEST_CASE("FASTSIM on a non-elliptic patch: every strip starts at its own leadin
     for (int i = 0; i < g.nx; ++i)
       if (g.x(i) < -2e-3) disc[g.index(i, j)] = 0;
   pb.pressure = disc;
-  const double fd = solve_fastsim(kSteel, pb).fx;
+  const double fd = solve_fastsim(rolling_steel, pb).fx;
   std::vector<double> square = p;
   for (int k = 0; k < g.size(); ++k) square[k] -= disc[k];
   pb.pressure = square;
-  CHECK(fd + solve_fastsim(kSteel, pb).fx == within_rel(s.fx, 1e-12));
+  CHECK(fd + solve_fastsim(rolling_steel, pb).fx == within_rel(s.fx, 1e-12));
 }
 
 TEST_CASE("FASTSIM with the regions given: their ellipses and labels are the layers it marches") {
@@ -142,29 +143,30 @@ TEST_CASE("FASTSIM with the regions given: their ellipses and labels are the lay
   pb.region_label = label;
   const auto expected = [&] {
     double f = 0;
-    for (int r = 0; r < 2; ++r) f += -1e-8 * strips[r] / kalker_flexibilities(regions[r].a, regions[r].b, kSteel).x;
+    for (int r = 0; r < 2; ++r)
+      f += -1e-8 * strips[r] / kalker_flexibilities(regions[r].a, regions[r].b, rolling_steel).x;
     return f;
   };
-  const TangentialSolution given = solve_fastsim(kSteel, pb);
+  const TangentialSolution given = solve_fastsim(rolling_steel, pb);
   CHECK(given.fx == within_rel(expected(), 1e-9));
   // found by FASTSIM itself: the same ellipses (uniform pressure: no edge weights), the same traction everywhere
   pb.regions = {}, pb.region_label = {};
-  const TangentialSolution found = solve_fastsim(kSteel, pb);
+  const TangentialSolution found = solve_fastsim(rolling_steel, pb);
   CHECK(found.fx == within_rel(expected(), 1e-9));
   for (int k = 0; k < g.size(); ++k) CHECK(given.px[k] == within_rel(found.px[k], 1e-12));
   regions[0].a *= 2, regions[0].b /= 2;  // the square's area, twice its length
   pb.regions = regions, pb.region_label = label;
-  const double longer = solve_fastsim(kSteel, pb).fx;
+  const double longer = solve_fastsim(rolling_steel, pb).fx;
   CHECK(longer == within_rel(expected(), 1e-9));
   CHECK(std::abs(longer) < std::abs(given.fx));
   // refused: a contact element naming no region, labels without regions or of the wrong size
   label[g.index(60, 45)] = 2;
   CHECK(p[g.index(60, 45)] > 0);
-  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb), doctest::Contains("region label 2"), wrc::Error);
+  CHECK_THROWS_WITH_AS(solve_fastsim(rolling_steel, pb), doctest::Contains("region label 2"), wrc::Error);
   pb.regions = {};
-  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb), doctest::Contains("both or neither"), wrc::Error);
+  CHECK_THROWS_WITH_AS(solve_fastsim(rolling_steel, pb), doctest::Contains("both or neither"), wrc::Error);
   pb.regions = regions, pb.region_label = std::span<const int>(label).first(label.size() - 1);
-  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb), doctest::Contains("both or neither"), wrc::Error);
+  CHECK_THROWS_WITH_AS(solve_fastsim(rolling_steel, pb), doctest::Contains("both or neither"), wrc::Error);
 }
 
 TEST_CASE("FASTSIM checking the sizes alone: a rigid slip that is not finite still throws, naming the element") {
@@ -172,17 +174,19 @@ TEST_CASE("FASTSIM checking the sizes alone: a rigid slip that is not finite sti
   TangentialProblem pb = rolling_problem(h, {1e-3, 0, 0}, 0.3);
   std::vector<double> ex(h.pressure.size(), 0.0), ey = ex;
   pb.extra_x = ex, pb.extra_y = ey;
-  const TangentialSolution all = solve_fastsim(kSteel, pb), sizes = solve_fastsim(kSteel, pb, ProblemCheck::sizes);
+  const TangentialSolution all = solve_fastsim(rolling_steel, pb),
+                           sizes = solve_fastsim(rolling_steel, pb, ProblemCheck::sizes);
   CHECK(sizes.fx == all.fx);
   const auto k = static_cast<std::size_t>(h.grid.index(h.grid.nx / 2, h.grid.ny / 2));
   CHECK(h.pressure[k] > 0);
   ey[k] = NAN;
   const std::string named = "not finite at element " + std::to_string(k);
-  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb, ProblemCheck::sizes), doctest::Contains(named.c_str()), wrc::Error);
+  CHECK_THROWS_WITH_AS(solve_fastsim(rolling_steel, pb, ProblemCheck::sizes), doctest::Contains(named.c_str()),
+                       wrc::Error);
   ey[k] = 0;
   ex.pop_back();  // sizes are still checked
   pb.extra_x = ex;
-  CHECK_THROWS_WITH_AS(solve_fastsim(kSteel, pb, ProblemCheck::sizes), doctest::Contains("extra rigid slip"),
+  CHECK_THROWS_WITH_AS(solve_fastsim(rolling_steel, pb, ProblemCheck::sizes), doctest::Contains("extra rigid slip"),
                        wrc::Error);
 }
 
@@ -191,7 +195,7 @@ TEST_CASE("FASTSIM in partial slip: every slipping element's traction opposes it
   // antiparallel: Coulomb's law for the layer, whatever the anisotropy of Kalker's flexibilities (a/b = 0.3, 3).
   for (auto [a, b] : {std::pair{3e-3, 10e-3}, {9e-3, 3e-3}}) {
     const wrc::test::HertzPatch h = hertz_patch(a, b, 1e9, 12);
-    const TangentialSolution s = solve_fastsim(kSteel, rolling_problem(h, {0.6e-3, -0.9e-3, 0.8}, 0.3));
+    const TangentialSolution s = solve_fastsim(rolling_steel, rolling_problem(h, {0.6e-3, -0.9e-3, 0.8}, 0.3));
     int slipping = 0;
     for (int k = 0; k < h.grid.size(); ++k) {
       if (s.state[k] != kSlip) continue;
@@ -210,7 +214,7 @@ TEST_CASE("FASTSIM in full sliding: |F| = mu_k N opposite to the slip, power nev
   for (double angle : {0.0, 0.6, 1.9, -2.8}) {
     TangentialProblem pb = rolling_problem(h, {0.1 * std::cos(angle), 0.1 * std::sin(angle), 0}, 0.25);
     pb.friction.static_coefficient = 0.3;
-    const TangentialSolution s = solve_fastsim(kSteel, pb);
+    const TangentialSolution s = solve_fastsim(rolling_steel, pb);
     const double F = std::hypot(s.fx, s.fy);
     CAPTURE(angle);
     CHECK(F == within_rel(0.25 * h.force, 0.02));
@@ -222,16 +226,16 @@ TEST_CASE("FASTSIM in full sliding: |F| = mu_k N opposite to the slip, power nev
 
 TEST_CASE("FASTSIM against the exact solver on a Hertzian patch: equal in the linear limit, close along saturation") {
   const wrc::test::HertzPatch h = hertz_patch(5e-3, 4e-3, 1e9, 16);
-  const RollingSolver exact(kSteel);
+  const RollingSolver exact(rolling_steel);
   const double mu = 0.3, N = h.force;
   // The creepage of saturation of the linear law, 3 mu N / (G c^2 C11).
-  const double xi_s = 3 * mu * N / linear_creep_force(h.a, h.b, kSteel, {-1, 0, 0}).fx;
+  const double xi_s = 3 * mu * N / linear_creep_force(h.a, h.b, rolling_steel, {-1, 0, 0}).fx;
   std::ostringstream table;
   table << "xi/xi_s, Fx/muN exact, FASTSIM, difference (of mu N):\n";
   double worst = 0;
   for (double r : {0.01, 0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 3.0}) {
     const TangentialProblem pb = rolling_problem(h, {r * xi_s, 0, 0}, mu);
-    const double fe = exact.solve(pb).fx / (mu * N), ff = solve_fastsim(kSteel, pb).fx / (mu * N);
+    const double fe = exact.solve(pb).fx / (mu * N), ff = solve_fastsim(rolling_steel, pb).fx / (mu * N);
     table << "  " << r << " " << -fe << " " << -ff << " " << (fe - ff) << "\n";
     worst = std::max(worst, std::abs(fe - ff));
     if (r <= 0.01) CHECK(ff == within_rel(fe, 0.03));  // both the linear theory
@@ -278,12 +282,12 @@ double strip_reference_fx(const wrc::test::HertzPatch& h, double p0, double L, d
 TEST_CASE("FASTSIM with mu_s > mu_k: the simplified theory's continuum solution, strip by strip") {
   const wrc::test::HertzPatch h = hertz_patch(5e-3, 4e-3, 1e9, 16);
   const double N = h.force, mus = 0.4, muk = 0.1;
-  const Flexibilities L = kalker_flexibilities(h.a, h.b, kSteel);
-  const double xi_s = 3 * muk * N / linear_creep_force(h.a, h.b, kSteel, {-1, 0, 0}).fx;  // saturation at mu_k
+  const Flexibilities L = kalker_flexibilities(h.a, h.b, rolling_steel);
+  const double xi_s = 3 * muk * N / linear_creep_force(h.a, h.b, rolling_steel, {-1, 0, 0}).fx;  // saturation at mu_k
   for (double r : {0.3, 1.0, 2.0, 4.0, 8.0}) {
     TangentialProblem pb = rolling_problem(h, {r * xi_s, 0, 0}, muk);
     pb.friction.static_coefficient = mus;
-    const TangentialSolution s = solve_fastsim(kSteel, pb);
+    const TangentialSolution s = solve_fastsim(rolling_steel, pb);
     const double ref = strip_reference_fx(h, 1e9, L.x, r * xi_s, mus, muk);
     CAPTURE(r);
     CHECK(s.fx / N == doctest::Approx(ref / N).scale(1).epsilon(0.005));
@@ -325,7 +329,7 @@ TEST_CASE("FASTSIM's rows are independent strips: empty rows added below the pat
           return pb;
         };
         std::vector<double> p0, p;
-        const TangentialSolution ref = solve_fastsim(kSteel, problem(0, p0));
+        const TangentialSolution ref = solve_fastsim(rolling_steel, problem(0, p0));
         int slipping = 0;
         for (unsigned char st : ref.state) slipping += st == kSlip;
         CAPTURE(n);
@@ -335,7 +339,7 @@ TEST_CASE("FASTSIM's rows are independent strips: empty rows added below the pat
         CHECK(slipping > 5);
         CHECK(ref.adhesion_fraction() > 0.1);
         for (int m = 1; m <= 3; ++m) {
-          const TangentialSolution s = solve_fastsim(kSteel, problem(m, p));
+          const TangentialSolution s = solve_fastsim(rolling_steel, problem(m, p));
           CAPTURE(m);
           const double tol = 1e-12 * 0.4 * 1e9;  // Pa: rounding (the rows' y now y0 - m dy + (j + m) dy)
           const auto shift = static_cast<std::size_t>(m * h.grid.nx);
@@ -365,7 +369,7 @@ TEST_CASE("FASTSIM into a used solution: stale grids of another problem change n
     for (bool falling : {false, true}) {
       TangentialProblem pb = rolling_problem(h, {0.4e-3, -0.5e-3, 0.6}, 0.3, direction);
       if (falling) pb.friction = Friction::polach(0.4, 0.4, 0.6), pb.speed = 30;
-      const TangentialSolution ref = solve_fastsim(kSteel, pb);
+      const TangentialSolution ref = solve_fastsim(rolling_steel, pb);
       const std::size_t n = ref.px.size();
       int slipping = 0;
       for (unsigned char st : ref.state) slipping += st == kSlip;
@@ -378,7 +382,7 @@ TEST_CASE("FASTSIM into a used solution: stale grids of another problem change n
         for (auto* v : {&s.px, &s.py, &s.sx, &s.sy}) v->assign(stale, std::nan(""));
         s.state.assign(stale, kSlip);
         s.fx = s.fy = s.mz = 1e9;
-        solve_fastsim(kSteel, pb, s);
+        solve_fastsim(rolling_steel, pb, s);
         CAPTURE(stale);
         REQUIRE(s.px.size() == n);
         REQUIRE(s.state.size() == n);
@@ -423,17 +427,17 @@ TEST_CASE("FASTSIM's linearisation for a pressure change: the flexibilities foll
   for (const Creepages c : {Creepages{0.5e-3, -0.3e-3, 0.5}, Creepages{2e-3, 1.5e-3, 0.5}}) {
     CAPTURE(c.xi);
     TangentialProblem pb = rolling_problem(h, c, 0.3);
-    const TangentialSolution s = solve_fastsim(kSteel, pb);
+    const TangentialSolution s = solve_fastsim(rolling_steel, pb);
     TangentialChange ch;
     ch.pressure = dp;
-    const TangentialDerivative d = linearise_fastsim(kSteel, pb, s, std::vector<TangentialChange>{ch})[0];
+    const TangentialDerivative d = linearise_fastsim(rolling_steel, pb, s, std::vector<TangentialChange>{ch})[0];
     const double t = 1e-6;
     const auto at = [&](double sign) {
       std::vector<double> p = h.pressure;
       for (std::size_t k = 0; k < dp.size(); ++k) p[k] += sign * t * dp[k];
       TangentialProblem q = pb;
       q.pressure = p;
-      return solve_fastsim(kSteel, q);
+      return solve_fastsim(rolling_steel, q);
     };
     const TangentialSolution up = at(1), down = at(-1);
     const double scale = std::hypot(s.fx, s.fy);

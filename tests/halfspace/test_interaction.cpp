@@ -4,6 +4,7 @@
 #include "wrc/halfspace/normal.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -17,7 +18,7 @@ using namespace wrc::test;
 
 namespace {
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 struct Bump {
   double R, delta, x;  // radius of relative curvature (m), depth (m), centre (m)

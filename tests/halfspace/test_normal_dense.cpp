@@ -7,6 +7,7 @@
 #include "wrc/halfspace/influence.hpp"
 #include "wrc/halfspace/normal.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -25,7 +26,7 @@ using namespace wrc::test;
 
 namespace {
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 // 2 D between grid elements k and l (m/Pa), from the closed form.
 double influence(const Grid& g, int k, int l) {

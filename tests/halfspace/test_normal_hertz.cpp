@@ -3,6 +3,7 @@
 #include "halfspace/normal_cases.hpp"
 #include "wrc/halfspace/normal.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -21,7 +22,7 @@ struct HertzErrors {
 };
 
 // Compares a solution of paraboloid_case(A, B, ...) with the Hertz contact hz.
-HertzErrors compare(const NormalCase& c, const NormalSolution& s, const HertzContact& hz) {
+HertzErrors compare(const NormalCase& c, const NormalSolution& s, const HertzReference& hz) {
   const Grid& g = c.grid;
   double amax = 0, bmax = 0, num = 0, den = 0;
   for (int j = 0; j < g.ny; ++j)
@@ -40,11 +41,11 @@ HertzErrors compare(const NormalCase& c, const NormalSolution& s, const HertzCon
           std::sqrt(num / den)};
 }
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 // Approach that makes the minor semi-axis `elements` elements of size `element`.
 double approach_for(double A, double B, double element, double elements) {
-  const HertzContact unit = hertz_from_approach(A, B, steel.combined_modulus(), 1e-6);
+  const HertzReference unit = hertz_from_approach(A, B, steel.combined_modulus(), 1e-6);
   return 1e-6 * std::pow(elements * element / std::min(unit.a, unit.b), 2);
 }
 
@@ -92,7 +93,7 @@ TEST_CASE("Hertz: force, peak pressure and semi-axes for curvature ratios 1 to 1
     for (bool along_y : {false, true}) {  // the long axis along x, then along y
       const double Ax = along_y ? q * A : A, By = along_y ? A : q * A;
       const double delta = approach_for(Ax, By, element, 8);
-      const HertzContact hz = hertz_from_approach(Ax, By, steel.combined_modulus(), delta);
+      const HertzReference hz = hertz_from_approach(Ax, By, steel.combined_modulus(), delta);
       const NormalCase c = paraboloid_case(Ax, By, delta, element);
       CAPTURE(q);
       CAPTURE(along_y);
@@ -119,7 +120,7 @@ TEST_CASE("Hertz: force, peak pressure and semi-axes for curvature ratios 1 to 1
 TEST_CASE("Hertz: the dense reference solver too") {
   const double element = 0.2e-3, A = 1 / (2 * 0.45);
   const double delta = approach_for(A, 3 * A, element, 5);
-  const HertzContact hz = hertz_from_approach(A, 3 * A, steel.combined_modulus(), delta);
+  const HertzReference hz = hertz_from_approach(A, 3 * A, steel.combined_modulus(), delta);
   const NormalCase c = paraboloid_case(A, 3 * A, delta, element, 1);
   REQUIRE(c.grid.size() < 800);
   const NormalSolution s = solve_normal_dense(steel, c.grid, c.h, NormalLoad::penetration());
@@ -139,7 +140,7 @@ TEST_CASE("Hertz: the dense solver on three sizes, against Hertz and the fast so
   for (double semi_axis : {4.0, 7.0, 10.0}) {  // elements on the minor semi-axis
     CAPTURE(semi_axis);
     const double delta = approach_for(A, 3 * A, element, semi_axis);
-    const HertzContact hz = hertz_from_approach(A, 3 * A, steel.combined_modulus(), delta);
+    const HertzReference hz = hertz_from_approach(A, 3 * A, steel.combined_modulus(), delta);
     const NormalCase c = paraboloid_case(A, 3 * A, delta, element);
     const NormalSolution d = solve_normal_dense(steel, c.grid, c.h, NormalLoad::penetration());
     const HertzErrors e = compare(c, d, hz);
@@ -168,7 +169,7 @@ TEST_CASE("Hertz: the error shrinks as the grid is refined") {
   NormalWorkspace ws;
   const double A = 1 / (2 * 0.45), delta = 15e-6;
   for (double q : {1.0, 5.0}) {
-    const HertzContact hz = hertz_from_approach(A, q * A, steel.combined_modulus(), delta);
+    const HertzReference hz = hertz_from_approach(A, q * A, steel.combined_modulus(), delta);
     HertzErrors previous{};
     std::string table = fmt::format("Hertz B/A = {}: elements on b, grid, force err %, p0 err %, a err (el), "
                                     "b err (el), L2 pressure err %\n",

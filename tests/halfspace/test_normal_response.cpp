@@ -4,6 +4,7 @@
 #include "halfspace/normal_cases.hpp"
 #include "wrc/halfspace/normal.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -16,7 +17,7 @@ using namespace wrc::test;
 
 namespace {
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 struct Field {
   const char* name;

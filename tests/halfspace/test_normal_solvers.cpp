@@ -5,6 +5,7 @@
 #include "wrc/halfspace/normal.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -21,7 +22,7 @@ using namespace wrc::test;
 
 namespace {
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 // Deformed gap recomputed independently: g = sum_l I(x_k - x_l) p_l / (pi E*) - h - approach, with the
 // closed form of influence.hpp evaluated directly (no table, no FFT).

@@ -7,6 +7,7 @@
 #include "wrc/halfspace/rolling.hpp"
 #include "wrc/core/error.hpp"
 #include "approx.hpp"
+#include "materials.hpp"
 
 #include <doctest/doctest.h>
 
@@ -24,7 +25,7 @@ using wrc::test::rolling_problem;
 
 namespace {
 
-const Material kSteel{2.1e11, 0.28};
+using wrc::test::rolling_steel;
 
 double total(const std::vector<double>& v, const Grid& g) {
   double s = 0;
@@ -36,7 +37,7 @@ double total(const std::vector<double>& v, const Grid& g) {
 
 TEST_CASE("the solution satisfies Coulomb's law, checked with slip recomputed by direct sums") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 6e-3, 900e6, 7, 0.3, -0.2);
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   for (int dir : {1, -1})
     for (const Creepages c : {Creepages{1e-3, 0, 0}, Creepages{-0.4e-3, 0.8e-3, 0.3}, Creepages{0, 0, -1.5}}) {
       CAPTURE(dir);
@@ -47,7 +48,7 @@ TEST_CASE("the solution satisfies Coulomb's law, checked with slip recomputed by
       pb.friction.static_coefficient = 0.33;  // static above kinetic
       const TangentialSolution s = solver.solve(pb);
       std::vector<double> sx, sy;
-      direct_slip(kSteel, pb, s, sx, sy);
+      direct_slip(rolling_steel, pb, s, sx, sy);
       const double wscale = std::max({std::abs(c.xi), std::abs(c.eta), std::abs(c.phi) * 6e-3});
       int slip = 0, adhesion = 0;
       for (int k = 0; k < h.grid.size(); ++k) {
@@ -98,11 +99,11 @@ TEST_CASE("Carter's two-dimensional solution: traction distribution and force-cr
       const double q = 1 - g.x(i) * g.x(i) / (a * a);
       p[g.index(i, j)] = q > 0 ? p0 * std::sqrt(q) : 0.0;
     }
-  const double Estar = kSteel.shear_modulus() / (1 - kSteel.nu), xi_s = 2 * mu * p0 / Estar;
+  const double Estar = rolling_steel.shear_modulus() / (1 - rolling_steel.nu), xi_s = 2 * mu * p0 / Estar;
   const int mid = g.ny / 2;
   double Nrow = 0;
   for (int i = 0; i < g.nx; ++i) Nrow += p[g.index(i, mid)] * g.dx;
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   for (double ratio : {0.1, 0.25, 0.5, 0.75, 0.95, 1.5}) {
     CAPTURE(ratio);
     TangentialProblem pb;
@@ -195,7 +196,7 @@ TEST_CASE("Kalker's linear theory: C11, C22, C23, C33 from the exact solver with
 
 TEST_CASE("full sliding: |F| = mu_k N opposite to the slip, the power is mu_k N |slip| V") {
   const wrc::test::HertzPatch h = hertz_patch(5e-3, 3e-3, 1e9, 8);
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   for (double angle : {0.0, 0.7, 2.0, -2.5}) {
     const double w = 0.05;  // ten times the saturation creepage of this patch
     TangentialProblem pb = rolling_problem(h, {w * std::cos(angle), w * std::sin(angle), 0}, 0.25);
@@ -215,7 +216,7 @@ TEST_CASE("dissipated power: never negative, and at most the macroscopic -(xi Fx
   // In steady rolling of quasi-identical bodies the work of the traction against the rigid slip is dissipated
   // (the elastic energy does not change); the upwind difference adds a little numerical dissipation on top of the
   // micro-slip's, of the sign that keeps the micro-slip power below the macroscopic one.
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> U(-1, 1);
   for (int t = 0; t < 12; ++t) {
@@ -253,7 +254,7 @@ TEST_CASE("dissipated power: never negative, and at most the macroscopic -(xi Fx
 
 TEST_CASE("symmetries: odd in the creepages, mirror in y, reversed rolling direction") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 1e9, 8);  // symmetric about both axes
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   const Creepages c{0.6e-3, -0.9e-3, 0.4};
   const TangentialSolution s = solver.solve(rolling_problem(h, c, 0.3));
   // -w: every traction flips.
@@ -293,7 +294,7 @@ TEST_CASE("symmetries: odd in the creepages, mirror in y, reversed rolling direc
 
 TEST_CASE("no rigid slip gives no traction, a warm start the same solution, threads share one solver") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 4e-3, 1e9, 10);
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   const TangentialSolution zero = solver.solve(rolling_problem(h, {}, 0.3));
   CHECK(zero.fx == 0);
   CHECK(zero.adhesion_fraction() == 1);
@@ -356,7 +357,7 @@ void shifted(const TangentialSolution& s, int shift, std::vector<double>& px, st
 
 TEST_CASE("warm starts along a trajectory: each equals a cold solve, at a fraction of its products") {
   const MovingPatch m;
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   RollingWorkspace ws;
   constexpr double kMu = 0.3;
   const double bound = kMu * 900e6;
@@ -407,7 +408,7 @@ TEST_CASE("warm starts along a trajectory: each equals a cold solve, at a fracti
 
 TEST_CASE("a workspace sums the iterations and products of every solve made with it") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 900e6, 8);
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   RollingWorkspace ws, other;
   const TangentialSolution a = solver.solve(rolling_problem(h, {0.8e-3, 0.3e-3, 0.4}, 0.3), ws);
   const TangentialSolution none = solver.solve(rolling_problem(h, {0, 0, 0}, 0.3), ws);  // no rigid slip: no work
@@ -429,7 +430,7 @@ TEST_CASE("a workspace sums the iterations and products of every solve made with
 
 TEST_CASE("a settled warm start costs one product more than its GMRES iterations, whatever its Newton steps") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 5e-3, 900e6, 8);
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   const TangentialSolution near = solver.solve(rolling_problem(h, {0.8e-3, 0.3e-3, 0.4}, 0.3));
   const TangentialProblem pb = rolling_problem(h, {0.8e-3 * (1 + 1e-4), 0.3e-3, 0.4}, 0.3);
   TangentialOptions opt;
@@ -445,7 +446,7 @@ TEST_CASE("a settled warm start costs one product more than its GMRES iterations
   CHECK(w.products == w.linear_iterations + 1);
   // Still the solution: Coulomb's law with the slip recomputed by direct sums.
   std::vector<double> sx, sy;
-  direct_slip(kSteel, pb, w, sx, sy);
+  direct_slip(rolling_steel, pb, w, sx, sy);
   const double wscale = 0.4 * 5e-3;
   for (int k = 0; k < h.grid.size(); ++k) {
     if (w.state[k] == kAdhesion) CHECK(std::hypot(sx[k], sy[k]) < 2e-6 * wscale);
@@ -459,11 +460,11 @@ TEST_CASE("a settled warm start costs one product more than its GMRES iterations
 
 TEST_CASE("bad input is refused with a message") {
   const wrc::test::HertzPatch h = hertz_patch(4e-3, 4e-3, 1e9, 4);
-  const RollingSolver solver(kSteel);
+  const RollingSolver solver(rolling_steel);
   const auto refused = [&](TangentialProblem pb, const char* what) {
     CAPTURE(what);
     CHECK_THROWS_WITH_AS(solver.solve(pb), doctest::Contains(what), wrc::Error);
-    CHECK_THROWS_AS(solve_fastsim(kSteel, pb), wrc::Error);
+    CHECK_THROWS_AS(solve_fastsim(rolling_steel, pb), wrc::Error);
   };
   TangentialProblem pb = rolling_problem(h, {1e-3, 0, 0}, 0.3);
   pb.friction = Friction::coulomb(0);

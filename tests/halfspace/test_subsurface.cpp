@@ -6,6 +6,7 @@
 #include "approx.hpp"
 #include "field_recorder.hpp"
 #include "halfspace/hamilton_reference.hpp"
+#include "halfspace/materials.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <doctest/doctest.h>
@@ -118,8 +119,10 @@ Stress integrate_rectangle(const std::function<Stress(double, double)>& point, d
 
 // Johnson eq. 3.45, on the axis at depth z: sigma_z and sigma_r (= sigma_theta), in p0.
 Stress to_stress(const wrc::test::HamiltonStress& h) { return {h.xx, h.yy, h.zz, h.xy, h.xz, h.yz}; }
-Stress hamilton_normal(double nu, double x, double y, double z) { return to_stress(wrc::test::hamilton_normal(nu, x, y, z)); }
-Stress hamilton_tangential(double nu, double x, double y, double z) {
+Stress hamilton_normal_stress(double nu, double x, double y, double z) {
+  return to_stress(wrc::test::hamilton_normal(nu, x, y, z));
+}
+Stress hamilton_tangential_stress(double nu, double x, double y, double z) {
   return to_stress(wrc::test::hamilton_tangential(nu, x, y, z));
 }
 using wrc::test::axis_srr;
@@ -161,7 +164,7 @@ std::pair<double, double> golden_max(const std::function<double(double)>& f, dou
   return {z, f(z)};
 }
 
-const Material steel{2.1e11, 0.3};
+using wrc::test::steel;
 
 }  // namespace
 
@@ -415,14 +418,15 @@ TEST_CASE("sliding Hertz contact: the maximum von Mises stress and its place aga
       for (int j = 0; j < g.ny; ++j)
         for (int i = 0; i < g.nx; ++i) {
           const double x = g.x(i) / a, y = g.y(j) / a;
-          const double vm = von_mises(p0 * hamilton_normal(nu, x, y, z / a) + mu * p0 * hamilton_tangential(nu, x, y, z / a));
+          const double vm = von_mises(p0 * hamilton_normal_stress(nu, x, y, z / a) +
+                                      mu * p0 * hamilton_tangential_stress(nu, x, y, z / a));
           if (vm > h.value) h = {vm, g.x(i), g.y(j), z};
         }
     // Hamilton's own maximum, off the samples (plane y = 0, x and z every 0.0025 a).
     StressMaximum c;
     for (double z = 0.0025; z <= 1.0; z += 0.0025)
       for (double x = -1.25 + 0.00125; x < 1.25; x += 0.0025) {
-        const double vm = von_mises(hamilton_normal(nu, x, 0, z) + mu * hamilton_tangential(nu, x, 0, z));
+        const double vm = von_mises(hamilton_normal_stress(nu, x, 0, z) + mu * hamilton_tangential_stress(nu, x, 0, z));
         if (vm > c.value) c = {vm, x, 0, z};
       }
     const double error = r.von_mises_max.value / h.value - 1;

@@ -5,6 +5,7 @@
 #include "wrc/profile/reader.hpp"
 #include "wrc/reader.h"
 #include "approx.hpp"
+#include "scratch.hpp"
 
 #include <doctest/doctest.h>
 
@@ -24,10 +25,7 @@ namespace {
 
 std::string variant(const std::string& v) { return std::string(WRC_TEST_PLUGIN_ROOT) + "/" + v + "/test_" + v + ".so"; }
 
-std::string tmp_path(const std::string& name) {
-  const char* t = std::getenv("WRC_TEST_TMP");
-  return std::string(t && *t ? t : "/tmp") + "/plugin_host_" + name;
-}
+using test::tmp_path;
 
 }  // namespace
 

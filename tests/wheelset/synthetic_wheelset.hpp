@@ -28,4 +28,10 @@ inline std::shared_ptr<const Wheelset> synthetic_wheelset() {
   return build_wheelset(synthetic_profiles(), synthetic_params());
 }
 
+// One wheelset of synthetic_wheelset() for the whole process (built on first use): the suites that only read it.
+inline const Wheelset& shared_synthetic_wheelset() {
+  static const std::shared_ptr<const Wheelset> ws = synthetic_wheelset();
+  return *ws;
+}
+
 }  // namespace wrc::test

@@ -39,13 +39,13 @@ using namespace wrc;
 
 namespace {
 
-constexpr double kR = 1e-3, kdR = 10e-6, kStep = 5e-6;
-constexpr double kDeg = 180 / std::numbers::pi;
+constexpr double kR = 1e-3, kdR = 10e-6, kArcStep = 5e-6;
+constexpr double kRadToDeg = 180 / std::numbers::pi;
 
 // A circular arc of radius R between the angles a0 and a1 from its lowest point, as a profile (z up from it).
 Profile arc_profile(ProfileKind kind, double R, double a0, double a1, double dz = 0) {
   std::vector<double> y, z;
-  const int n = static_cast<int>(std::lround(R * (a1 - a0) / kStep));
+  const int n = static_cast<int>(std::lround(R * (a1 - a0) / kArcStep));
   for (int k = 0; k <= n; ++k) {
     const double a = a0 + (a1 - a0) * k / n;
     y.push_back(R * std::sin(a));
@@ -58,7 +58,7 @@ Profile arc_profile(ProfileKind kind, double R, double a0, double a1, double dz 
 // right rail far below, out of reach. The seat's bottom under the crown: its gauge point (level top - depth, walking
 // from the higher field-side rim) is placed where the pin's crown, y = 0.75 m, lies + R2 / 2.
 std::shared_ptr<const Wheelset> pin_in_seat(double element, ContactSurface surface) {
-  const double R2 = kR + kdR, deg = 1 / kDeg;
+  const double R2 = kR + kdR, deg = 1 / kRadToDeg;
   WheelsetProfiles pr;
   const Profile pin = arc_profile(ProfileKind::wheel, kR, -85 * deg, 85 * deg);
   pr.wheel = {pin, pin};
@@ -120,7 +120,7 @@ Strip strip(const PatchContact& pc, const std::vector<double>& pressure) {
 
 TEST_CASE("Persson's solution: the reference's small-angle limit is Hertz") {
   for (double load : {0.002, 0.005}) {
-    const auto ref = test::persson_solve(load, 120, 20 / kDeg);
+    const auto ref = test::persson_solve(load, 120, 20 / kRadToDeg);
     CHECK(ref.alpha == within_rel(test::persson_hertz_alpha(load), 0.01));
   }
 }
@@ -164,19 +164,20 @@ TEST_CASE("conformal contact against Persson's pin in a hole (semi-angle and pre
     REQUIRE(std::isfinite(cor.alpha));
     const auto ref_st = persson(st), ref_cor = persson(cor), ref_pl = persson(pl);
     const double dp_st = deviation(st, ref_st), dp_cor = deviation(cor, ref_cor);
-    fmt::print("{:5.2f} | {:8.4f} {:8.2f} {:8.2f} | {:8.4f} {:8.2f} {:8.2f} | {:8.4f} {:8.2f} {:8.2f} | {:6.2f} | {:6.4f} "
-               "{:6.4f} {:6.4f} | {:5.1f}% {:5.1f}%\n",
-               d, st.P / (Es * kdR), st.alpha * kDeg, ref_st.alpha * kDeg, cor.P / (Es * kdR), cor.alpha * kDeg,
-               ref_cor.alpha * kDeg, pl.P / (Es * kdR), pl.alpha * kDeg, ref_pl.alpha * kDeg,
-               test::persson_hertz_alpha(cor.P / (Es * kdR)) * kDeg, st.p0 / unit, cor.p0 / unit, ref_cor.p.front(),
-               100 * dp_st, 100 * dp_cor);
+    fmt::print(
+        "{:5.2f} | {:8.4f} {:8.2f} {:8.2f} | {:8.4f} {:8.2f} {:8.2f} | {:8.4f} {:8.2f} {:8.2f} | {:6.2f} | {:6.4f} "
+        "{:6.4f} {:6.4f} | {:5.1f}% {:5.1f}%\n",
+        d, st.P / (Es * kdR), st.alpha * kRadToDeg, ref_st.alpha * kRadToDeg, cor.P / (Es * kdR), cor.alpha * kRadToDeg,
+        ref_cor.alpha * kRadToDeg, pl.P / (Es * kdR), pl.alpha * kRadToDeg, ref_pl.alpha * kRadToDeg,
+        test::persson_hertz_alpha(cor.P / (Es * kdR)) * kRadToDeg, st.p0 / unit, cor.p0 / unit, ref_cor.p.front(),
+        100 * dp_st, 100 * dp_cor);
     CAPTURE(d);
     // The geometry, with the coefficients corrected: Persson's contact.
     CHECK(cor.alpha == within_rel(ref_cor.alpha, 0.06));
     CHECK(cor.p0 / unit == within_rel(ref_cor.p.front(), 0.05));
     CHECK(dp_cor < 0.05);
     // The standard coefficients: Persson's in the Hertz range, narrower beyond.
-    if (ref_st.alpha < 15 / kDeg) {
+    if (ref_st.alpha < 15 / kRadToDeg) {
       CHECK(st.alpha == within_rel(ref_st.alpha, 0.05));
       CHECK(dp_st < 0.05);
     } else {
