@@ -33,6 +33,11 @@ local e_nu = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, nu 
 check.ok(e_nu:find("28 % is nu = 0.28", 1, true) and e_nu:find(unchecked_hint, 1, true), e_nu)
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, nu = 0.6, check_setup = false} end,
             "wrc.wheelset: Poisson's ratio nu = 0.6 must be in ]-1, 0.5[", "nu = 0.6 unchecked")
+-- A negative ratio passes the range of |nu| and the half-space's ]-1, 0.5[: refused as a sign slip, accepted unchecked.
+local e_neg = check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, nu = -0.28} end,
+                          "wrc.wheelset: nu = -0.28 is negative; steel's Poisson's ratio is 0.27 .. 0.30", "nu < 0")
+check.ok(e_neg:find(unchecked_hint, 1, true), e_neg)
+check.ok(wrc.wheelset{wheel = wheel, rail = rail, nu = -0.28, check_setup = false}, "nu < 0 unchecked")
 -- Track lengths in mm and the cant as 40 (for 1:40) are out of range whatever check_setup says; the message says
 -- what was meant.
 check.fails(function() wrc.wheelset{wheel = wheel, rail = rail, gauge = 1435, check_setup = false} end,

@@ -189,6 +189,11 @@ void check_plausible(const TrackParams& track, const halfspace::Material& materi
   check_plausible("wrc.wheelset", "radius", track.radius, kWheelRadius);
   check_plausible("wrc.wheelset", "E", material.E, kSteelModulus);
   check_plausible("wrc.wheelset", "nu", material.nu, kSteelPoisson);
+  // The range above is of |nu| (a percentage is refused either sign): a negative ratio, which the half-space allows
+  // (> -1), is a sign slip for steel.
+  if (material.nu < 0)
+    fail("wrc.wheelset: nu = {:.6g} is negative; steel's Poisson's ratio is 0.27 .. 0.30 (nu = 0.28); {}", material.nu,
+         kUncheckedHint);
   if (track.cant < 0)
     fail("wrc.wheelset: cant = {:.6g} tilts the rails' heads outward, toward the field side; rails are inclined toward "
          "the track centre, cant > 0 (1:40 is cant = 0.025, 1:20 cant = 0.05), and a rail already canted in its file "
