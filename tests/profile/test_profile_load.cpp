@@ -28,6 +28,7 @@ using namespace wrc;
 namespace {
 
 using test::tmp_path;
+using test::write_tmp;
 
 // A rail head every millimetre from -20 to 20 mm: z = -y^2 / 600 mm (a parabola of 300 mm radius at the top).
 struct Head {
@@ -80,7 +81,7 @@ std::string error_of(const std::string& name, const std::string& options, const 
 }  // namespace
 
 TEST_CASE("load_profile: a .lua definition runs through the loader given, with every option as its arguments") {
-  const std::string path = test::write_tmp("head.lua", "error('the fake loader never runs this')\n");
+  const std::string path = write_tmp("head.lua", "error('the fake loader never runs this')\n");
   FakeDefinitions fake;
   const DefinitionLoader loader = fake.loader();
   const Profile p = load_profile(path, parse_option_text("mirror_y=true shift.z=0.002 step=0.5e-3", "test"), &loader);
@@ -104,7 +105,7 @@ TEST_CASE("load_profile: a .lua definition runs through the loader given, with e
 
 TEST_CASE("load_profile: a file never reaches the definition loader, nor does a .lua given to a reader") {
   const Head h;
-  const std::string txt = test::write_tmp("head.txt", h.text());
+  const std::string txt = write_tmp("head.txt", h.text());
   FakeDefinitions fake;
   const DefinitionLoader loader = fake.loader();
   const Profile p = load_profile(txt, parse_option_text("kind=rail", "test"), &loader);
@@ -116,7 +117,7 @@ TEST_CASE("load_profile: a file never reaches the definition loader, nor does a 
   }
   CHECK(p.transforms.at(0) == "read by 'text'");
   // The same points in a file named .lua, given to the text reader: read, not run.
-  const std::string lua = test::write_tmp("points.lua", h.text());
+  const std::string lua = write_tmp("points.lua", h.text());
   const Profile q = load_profile(lua, parse_option_text("kind=rail reader=text", "test"), &loader);
   CHECK(fake.paths.empty());
   CHECK(q.y == p.y);
@@ -124,7 +125,7 @@ TEST_CASE("load_profile: a file never reaches the definition loader, nor does a 
 }
 
 TEST_CASE("load_profile: without a definition loader a definition is refused, and units never apply to one") {
-  const std::string path = test::write_tmp("refused.lua", "return nil\n");
+  const std::string path = write_tmp("refused.lua", "return nil\n");
   CHECK(error_of(path, "", nullptr) ==
         "wrc.profile.load: " + path + ": a Lua profile definition, and this program loads no Lua (only files that a "
         "reader reads)");
@@ -140,7 +141,7 @@ TEST_CASE("load_profile: without a definition loader a definition is refused, an
 
 TEST_CASE("load_profile: the readers given are looked up before the plugins, by extension and by id") {
   const Head h;
-  const std::string txt = test::write_tmp("mine.txt", h.text());
+  const std::string txt = write_tmp("mine.txt", h.text());
   ReaderRegistry mine;
   Reader r;
   r.id = "mine";

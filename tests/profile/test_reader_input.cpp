@@ -32,6 +32,7 @@ const ReaderRegistry& built_plugins() {
 }
 
 using test::tmp_path;
+using test::write_tmp;
 
 std::string error_of(const std::string& path, LoadOptions o = {}) {
   try {
@@ -44,7 +45,7 @@ std::string error_of(const std::string& path, LoadOptions o = {}) {
 
 // `expected` must appear in the message, and the message must start with "path:line: " when line > 0.
 void check_error(const std::string& name, const std::string& text, int line, const std::string& expected, LoadOptions o = {}) {
-  const std::string path = test::write_tmp(name, text);
+  const std::string path = write_tmp(name, text);
   const std::string msg = error_of(path, o);
   INFO(name << ": " << msg);
   const std::string prefix = line > 0 ? path + ":" + std::to_string(line) + ": " : path + ": ";
@@ -121,8 +122,8 @@ TEST_CASE("text reader: bad input") {
   LoadOptions m = rail;
   m.metres_per_unit = 1.0;
   m.units_text = "m";
-  CHECK(error_of(test::write_tmp("metres.txt", arc_rows(" ", 1e-3)), m) == "(no error)");
-  CHECK(error_of(test::write_tmp("good.txt", arc_rows("\t")), rail) == "(no error)");
+  CHECK(error_of(write_tmp("metres.txt", arc_rows(" ", 1e-3)), m) == "(no error)");
+  CHECK(error_of(write_tmp("good.txt", arc_rows("\t")), rail) == "(no error)");
   LoadOptions cols = rail;
   cols.reader_options = {{"columns", "3,1"}};
   check_error("columns.txt", "0 0\n1 0\n", 1, "option columns asks for column 3", cols);
@@ -150,7 +151,7 @@ TEST_CASE("Simpack reader: bad input") {
   check_error("stray.prr", "hello\n", 1, "expected header.begin or spline.begin");
   check_error("mirror.prr", "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n mirror.y = 2\n point.begin\n" + arc_rows(" ") +
               " point.end\nspline.end\n", 6, "mirror.y must be 0 or 1");
-  CHECK(error_of(test::write_tmp("good.prr", simpack(arc_rows("  ")))) == "(no error)");
+  CHECK(error_of(write_tmp("good.prr", simpack(arc_rows("  ")))) == "(no error)");
 }
 
 TEST_CASE("Simpack reader: processing steps in their numbered order") {
@@ -162,7 +163,7 @@ TEST_CASE("Simpack reader: processing steps in their numbered order") {
   for (int i = 0; i <= 50; ++i) pts += fmt::format("{} {}\n", i - 10, 0.01 * (i - 25) * (i - 25));
   const std::string text = "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n" + keys + " point.begin\n" + pts +
                            " point.end\nspline.end\n";
-  const Profile p = load_profile_file(test::write_tmp("steps.prr", text), {}, {&built_plugins()});
+  const Profile p = load_profile_file(write_tmp("steps.prr", text), {}, {&built_plugins()});
   // Shifted y = i, kept 5..45 by the y bounds (z bounds off: min > max), mirrored: y = -i mm.
   REQUIRE(p.size() == 41);
   CHECK(p.y.front() == within_rel(-0.045, 1e-5));
@@ -194,15 +195,15 @@ TEST_CASE("MiniProf reader: bad input") {
   LoadOptions bad_axis;
   bad_axis.reader_options = {{"y_axis", "sideways"}};
   check_error("axis.ban", miniprof(arc_rows("\t"), 31), 0, "y_axis must be \"standard\" or \"reversed\"", bad_axis);
-  CHECK(error_of(test::write_tmp("good.ban", miniprof(arc_rows("\t"), 31))) == "(no error)");
-  CHECK(error_of(test::write_tmp("good_nocount.ban", "MINIPROF\nColumnDef=X,A,Y\n\n" + arc_rows("\t0\t", 1.0))) ==
+  CHECK(error_of(write_tmp("good.ban", miniprof(arc_rows("\t"), 31))) == "(no error)");
+  CHECK(error_of(write_tmp("good_nocount.ban", "MINIPROF\nColumnDef=X,A,Y\n\n" + arc_rows("\t0\t", 1.0))) ==
         "(no error)");
 }
 
 namespace {
 
 Profile load(const std::string& name, const std::string& text, LoadOptions o = {}) {
-  return load_profile_file(test::write_tmp(name, text), o, {&built_plugins()});
+  return load_profile_file(write_tmp(name, text), o, {&built_plugins()});
 }
 
 bool has_transform(const Profile& p, const std::string& part) {
@@ -303,8 +304,8 @@ TEST_CASE("every reader: decimal commas are named as such") {
   check_error("decimal_key.prr", simpack(arc_rows(" "), "1000,0"), 6,
               "units.len.f must be a number, got '1000,0': a decimal comma? wrc reads a decimal point ('1000.0')");
   // Commas as separators with blanks after them are no decimal commas.
-  CHECK(error_of(test::write_tmp("comma_blank.csv", arc_rows(", ")), rail) == "(no error)");
-  CHECK(error_of(test::write_tmp("integers.csv", "0, 0\n10, -1\n20, -4\n30, -9\n"), rail) == "(no error)");
+  CHECK(error_of(write_tmp("comma_blank.csv", arc_rows(", ")), rail) == "(no error)");
+  CHECK(error_of(write_tmp("integers.csv", "0, 0\n10, -1\n20, -4\n30, -9\n"), rail) == "(no error)");
 }
 
 TEST_CASE("every reader: a number beyond the doubles, an underflow read as 0 and an overflow out of range") {
@@ -340,7 +341,7 @@ TEST_CASE("every reader: a number beyond the doubles, an underflow read as 0 and
     const int line = c.first_row + 15;
     check_error(std::string("overflow") + c.ext, c.file(with_middle("1e400")), line, "= '1e400' is out of range", c.options);
     check_error(std::string("overflow_neg") + c.ext, c.file(with_middle("-2e308")), line, "= '-2e308' is out of range", c.options);
-    CHECK(error_of(test::write_tmp(std::string("overflow") + c.ext, c.file(with_middle("1e400"))), c.options)
+    CHECK(error_of(write_tmp(std::string("overflow") + c.ext, c.file(with_middle("1e400"))), c.options)
               .find("must be a number") == std::string::npos);
   }
   // A denormal is itself: 1e-310 mm, the text's z = 1e-313 m, not 0.
@@ -393,11 +394,11 @@ TEST_CASE("Simpack reader: a processing key that leaves no profile is named with
     INFO(shift);
     const std::string text = keys_then + " shift.y = " + shift + "\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n";
     check_error("far_shift.prr", text, 7, fmt::format("shift.y = '{}' is out of range", shift));
-    CHECK(error_of(test::write_tmp("far_shift.prr", text)).find("metres?") == std::string::npos);
+    CHECK(error_of(write_tmp("far_shift.prr", text)).find("metres?") == std::string::npos);
   }
   // A shift within the bound (999 m) is a shift.
   const std::string km = keys_then + " shift.z = 999000\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n";
-  CHECK(error_of(test::write_tmp("km_shift.prr", km)) == "(no error)");
+  CHECK(error_of(write_tmp("km_shift.prr", km)) == "(no error)");
   // The arc's rows are 1 mm apart in y (-15 .. 15): a minimum distance of 100 mm keeps the first only; bounds
   // 0 .. 1 mm keep 2.
   check_error("sparse.prr", keys_then + " point.dist.min = 100\n point.begin\n" + arc_rows(" ") + " point.end\nspline.end\n", 7,
@@ -423,7 +424,7 @@ TEST_CASE("every reader given a Lua profile definition says that it is one, and 
   // A rule of dashes under a title is no Lua comment.
   LoadOptions rail;
   rail.kind = ProfileKind::rail;
-  CHECK(error_of(test::write_tmp("ruled.txt", "----------\n" + arc_rows(" ")), rail).find("Lua") == std::string::npos);
+  CHECK(error_of(write_tmp("ruled.txt", "----------\n" + arc_rows(" ")), rail).find("Lua") == std::string::npos);
 }
 
 TEST_CASE("MiniProf reader: rows of numbers without the MiniProf header are refused, naming the text reader") {
@@ -444,7 +445,7 @@ TEST_CASE("MiniProf reader: rows of numbers without the MiniProf header are refu
   CHECK(p.y.front() == within_rel(-0.015, 1e-9));
   CHECK(p.z[15] == within_abs(0.0, 1e-12));
   // With the header, the same rows are a MiniProf rail.
-  CHECK(error_of(test::write_tmp("with_header.ban", "ColumnDef=X,Y\n\n" + arc_rows(" "))) == "(no error)");
+  CHECK(error_of(write_tmp("with_header.ban", "ColumnDef=X,Y\n\n" + arc_rows(" "))) == "(no error)");
 }
 
 TEST_CASE("Simpack reader: a rotate that turns the profile past vertical is named with its angle and unit") {
@@ -479,7 +480,7 @@ TEST_CASE("Simpack reader: a rotate that turns the profile past vertical is name
   check_error("rotate88.prr", file("88", true), 7,
               fmt::format("rotate = '88' turns the profile by 88 degrees (units.ang.f = 57.29577951308232 per radian, "
                           "line 8): its points, monotone in y before the rotation, fold back after it at line {}", line88));
-  CHECK(error_of(test::write_tmp("rotate86.prr", file("86", true))).find("fold") == std::string::npos);
+  CHECK(error_of(write_tmp("rotate86.prr", file("86", true))).find("fold") == std::string::npos);
   CHECK(turn_line(86) == 0);
   // In radians without units.ang.f: 1.6 rad is 91.67 degrees.
   check_error("rotate_rad.prr", file("1.6", false), 7, "rotate = '1.6' turns the profile by 91.6732 degrees (radians: no "
@@ -532,7 +533,7 @@ TEST_CASE("every reader: a file cut short within its last row is named as trunca
   CHECK(without.y == with.y);
   CHECK(without.z == with.z);
   // Numbers typed by hand (fewer than 3 decimals) may end a file shorter: no truncation is claimed.
-  CHECK(error_of(test::write_tmp("typed.txt", "0 0.25\n5 0.10\n10 0.04\n15 0.01\n20 0.00\n25 0.01\n30 0.1"), rail) ==
+  CHECK(error_of(write_tmp("typed.txt", "0 0.25\n5 0.10\n10 0.04\n15 0.01\n20 0.00\n25 0.01\n30 0.1"), rail) ==
         "(no error)");
 }
 
@@ -564,7 +565,7 @@ TEST_CASE("a single mistyped point is named with its line: far from the rest (no
   const std::string far = rows_to(rows, 9) + fmt::format("{:.6f} {:.6f}\n", 100 * y10, 100 * z10) + rows.substr(rows_to(rows, 10).size());
   check_error("far_point.txt", far, 10, "the point y = -600, z = ", rail);
   check_error("far_point.txt", far, 10, "a mistyped point?", rail);
-  CHECK(error_of(test::write_tmp("far_point.txt", far), rail).find("units are probably wrong") == std::string::npos);
+  CHECK(error_of(write_tmp("far_point.txt", far), rail).find("units are probably wrong") == std::string::npos);
   // The same row 50 mm below the arc, between neighbours 2 mm apart: a spike (slope 25 both ways), named with how far
   // it sticks out beyond the lower neighbour (row 9, y = -7 mm; rows 9 and 11 are the arc at y = -7 and -5 mm).
   const auto written = [](double v) { return std::round(v * 1e6) / 1e6; };  // as the file holds it, 6 decimals
@@ -573,7 +574,7 @@ TEST_CASE("a single mistyped point is named with its line: far from the rest (no
   check_error("spike.txt", spike, 10, fmt::format("sticks out {:.6g} mm below its neighbours", z9 - low), rail);
   // 30 mm below (slope 15): a steep dip, not refused as a spike.
   const std::string dip = rows_to(rows, 9) + fmt::format("{:.6f} {:.6f}\n", y10, z10 - 30) + rows.substr(rows_to(rows, 10).size());
-  CHECK(error_of(test::write_tmp("dip.txt", dip), rail).find("spike") == std::string::npos);
+  CHECK(error_of(write_tmp("dip.txt", dip), rail).find("spike") == std::string::npos);
   // A unit still named as one, its lines in increasing order when the file reverses its points (inversion = 1).
   const std::string inverted = "header.begin\n version = 1\n type = 0\nheader.end\nspline.begin\n inversion = 1\n point.begin\n" +
                                arc_rows(" ", 1e-3) + " point.end\nspline.end\n";
