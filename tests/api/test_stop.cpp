@@ -2,6 +2,7 @@
 // geometry table (and ws:conicity, which builds one), the strategy check and the wheelset's own strategy check of
 // check_strategy = N. Set from the progress report after k units on one thread, no unit begins after it (the report
 // is called k times, not more), the call throws "stopped", and a table writes no file.
+#include "scratch.hpp"
 #include "wheelset/synthetic_wheelset.hpp"
 #include "wrc/core/error.hpp"
 #include "wrc/geometry/strategy_check.hpp"
@@ -11,7 +12,6 @@
 
 #include <atomic>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -19,11 +19,6 @@
 using namespace wrc;
 
 namespace {
-
-std::string temp_file(const char* name) {
-  const char* dir = std::getenv("WRC_TEST_TMP");
-  return std::string(dir != nullptr ? dir : "/tmp") + "/" + name;
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream f(path);
@@ -51,7 +46,7 @@ GeometryTableOptions table_options(int rows) {
 }  // namespace
 
 TEST_CASE("a geometry table stopped after 7 rows begins no other row, throws and leaves its files as they were") {
-  const std::string csv = temp_file("stopped_table.csv");
+  const std::string csv = test::tmp_path("stopped_table.csv");
   {
     std::ofstream(csv) << "the previous content\n";
   }

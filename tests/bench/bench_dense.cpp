@@ -8,6 +8,7 @@
 // `fast` also times the fast solver.
 #include "bench/timing.hpp"
 #include "halfspace/hertz_reference.hpp"
+#include "halfspace/materials.hpp"
 #include "halfspace/normal_cases.hpp"
 #include "wrc/halfspace/normal.hpp"
 #include "wrc/core/error.hpp"
@@ -26,8 +27,6 @@ using namespace wrc::test;
 using wrc::bench::cpu_ms;
 
 namespace {
-
-const Material steel{2.1e11, 0.3};
 
 double peak_rss_mb() {
   rusage u{};

@@ -4,6 +4,7 @@
 // best of several repetitions (the machine is shared); `quick` as first argument runs a shorter version.
 #include "bench/timing.hpp"
 #include "halfspace/hertz_reference.hpp"
+#include "halfspace/materials.hpp"
 #include "halfspace/normal_cases.hpp"
 #include "wrc/halfspace/convolution.hpp"
 #include "wrc/halfspace/normal.hpp"
@@ -42,8 +43,6 @@ double best_ms(const std::function<void()>& f, int reps, double min_ms = 50) {
   }
   return best;
 }
-
-const Material steel{2.1e11, 0.3};
 
 // A potential contact area of about n elements (0.2 mm squares) as the bridge from a patch builds it: the
 // inter-penetration area plus a 2-element margin. kind 0: Hertz-like ellipse (B/A = 2.25); kind 1:

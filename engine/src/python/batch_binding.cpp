@@ -37,6 +37,7 @@ constexpr std::size_t kBatchProbe = 8;
        count * per_element / 1e9, count, per_element / 1e3, basis, kBatchMaxBytes / 1e9, most,
        with_grids ? " (or grids = False: no grids kept)" : "");
 }
+
 // Whether a value may make the call a batch: a list, a tuple, an array of one dimension or more, or a mapping (a
 // nested table such as creepage) holding one. The common one-by-one call is decided here without importing numpy.
 bool maybe_array(py::handle v, int depth = 0) {
