@@ -5,6 +5,7 @@
 #include "wrc/core/paths.hpp"
 #include "wrc/profile/orientation.hpp"
 #include "wrc/profile/reader.hpp"
+#include "wrc/profile/scatter.hpp"
 #include "wrc/profile/spline.hpp"
 #include "wrc/profile/units.hpp"
 
@@ -305,6 +306,19 @@ Profile default_spline(Profile p) {
   }
 }
 
+namespace {
+
+// What looks wrong in a loaded profile but is accepted: its orientation, and points scattered as noise when it
+// follows them (no smoothing length).
+std::vector<std::string> load_warnings(const Profile& p, const Reversals& reversed, const LoadOptions& o) {
+  std::vector<std::string> out = orientation_warnings(p, reversed);
+  if (!o.smooth)
+    if (auto scatter = scatter_warning(p)) out.push_back(std::move(*scatter));
+  return out;
+}
+
+}  // namespace
+
 Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& source, const std::string& reader_id) {
   if (raw.y.size() != raw.z.size()) fail("{}: reader '{}' gave {} y values but {} z values", source, reader_id, raw.y.size(), raw.z.size());
   if (!raw.lines.empty() && raw.lines.size() != raw.y.size())
@@ -374,7 +388,7 @@ Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& 
     p = smooth_profile(p, *o.smooth);
   else if (!o.polyline)
     p = default_spline(std::move(p));
-  p.warnings = orientation_warnings(p, reversals(std::move(raw.reversed), o));
+  p.warnings = load_warnings(p, reversals(std::move(raw.reversed), o), o);
   return p;
 }
 
@@ -388,7 +402,7 @@ bool has_geometric_options(const LoadOptions& o) {
 Profile finish_definition(Profile made, const LoadOptions& o, const std::string& path) {
   made.source = path;
   if (has_geometric_options(o)) made = transform_profile(made, o);
-  made.warnings = orientation_warnings(made, reversals({}, o));
+  made.warnings = load_warnings(made, reversals({}, o), o);
   return made;
 }
 
@@ -435,7 +449,10 @@ Profile transform_profile(const Profile& p, const LoadOptions& o) {
   if (p.spline)  // the same smooth curve, mirrored and shifted as the points (a crop keeps the curve)
     r.spline = std::make_shared<const ProfileSpline>(
         mapped_spline(*p.spline, o.mirror_y ? -1.0 : 1.0, o.shift_y, o.mirror_z ? -1.0 : 1.0, o.shift_z));
-  if (o.smooth) r = smooth_profile(r, *o.smooth);
+  if (o.smooth) {
+    r = smooth_profile(r, *o.smooth);
+    if (const auto scatter = scatter_warning(p)) std::erase(r.warnings, *scatter);  // the smoothing removed it
+  }
   return r;
 }
 
