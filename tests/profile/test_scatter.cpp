@@ -17,8 +17,9 @@ using wrc::test::within_rel;
 
 namespace {
 
-// z = B (sqrt(1 - y^2 / A^2) - 1) for |y| <= 30 mm, A = 40 mm, B = 15 mm (radius of curvature 107 .. 40 mm; slopes up to
-// 0.43, where z's scatter is 0.92 normal to the curve), sampled every h along y, Gaussian scatter s added to z.
+// z = B (sqrt(1 - y^2 / A^2) - 1) for |y| <= 30 mm, A = 40 mm, B = 15 mm (radius of curvature 107 .. 40 mm;
+// slopes up to 0.43, where z's scatter is 0.92 normal to the curve), sampled every h along y, Gaussian scatter s
+// added to z.
 struct Curve {
   std::vector<double> y, z;
 };
