@@ -8,7 +8,9 @@
 // stays locked (mexLock) while a handle lives, so that `clear functions` cannot forget live handles.
 //
 // Errors: every failure is a C++ exception (Failure) caught in mexFunction, which calls mexErrMsgIdAndTxt only after
-// every C API resource of the call was released (by the destructors on the way out).
+// every C API resource of the call was released (by the destructors on the way out). A loaded profile's warnings
+// (wrc_profile_warning: what looks wrong but was accepted) become MATLAB warnings (id wrc:profileWarning) the same way,
+// after the call: the MATLAB desktop does not show the library's stderr, and a warning made an error does not return.
 #include "mex.h"
 
 #include <wrc/wrc.h>
@@ -46,6 +48,9 @@ struct Failure {
 void check(wrc_status s) {
   if (s != WRC_OK) fail_status(s);
 }
+
+// The warnings of this call, raised by mexFunction once the call is done.
+std::vector<std::string> g_warnings;
 
 // ---- handles ----
 
@@ -547,6 +552,13 @@ void profile_load(const Call& c) {
   wrc_profile* p = nullptr;
   check(wrc_profile_load(path.c_str(), option_text(a).c_str(), &p));
   c.plhs[0] = add_handle(Kind::profile, p);
+  size_t n = 0;
+  check(wrc_profile_warnings(p, &n));
+  for (size_t i = 0; i < n; ++i) {
+    const char* text = nullptr;
+    check(wrc_profile_warning(p, i, &text));
+    g_warnings.emplace_back(text);
+  }
 }
 
 constexpr const char* kPointsKeys[] = {"kind", "y", "z", "name"};
@@ -772,7 +784,9 @@ void dispatch(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   std::string id, message;
   try {
+    g_warnings.clear();
     dispatch(nlhs, plhs, nrhs, prhs);
+    for (const std::string& w : g_warnings) mexWarnMsgIdAndTxt("wrc:profileWarning", "%s", w.c_str());
     return;
   } catch (const Failure& f) {
     id = f.id;

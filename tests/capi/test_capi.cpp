@@ -714,6 +714,28 @@ TEST_CASE("wrc_profile_write: each format read back by wrc_profile_load gives th
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("wrc_profile_warnings: a loaded profile's warnings (those printed on stderr), bad calls a status") {
+  Fixture f;
+  std::size_t n = 99;
+  REQUIRE(wrc_profile_warnings(f.wheel, &n) == WRC_OK);
+  CHECK(n == 0);  // the sample S1002, the right way round, its points on the curve
+  // The same file read mirrored: its flange on the field side, which the orientation check names.
+  wrc_profile* mirrored = nullptr;
+  REQUIRE_MESSAGE(wrc_profile_load(WRC_SAMPLES "/s1002.prw", "mirror_y=true", &mirrored) == WRC_OK, last());
+  REQUIRE(wrc_profile_warnings(mirrored, &n) == WRC_OK);
+  REQUIRE(n == 1);
+  const char* text = nullptr;
+  REQUIRE(wrc_profile_warning(mirrored, 0, &text) == WRC_OK);
+  CHECK_MESSAGE(std::string(text).find("the wheel profile looks mirrored") != std::string::npos, text);
+  CHECK(wrc_profile_warning(mirrored, 1, &text) == WRC_INVALID_ARGUMENT);
+  CHECK_MESSAGE(last().find("index 1 is past the profile's 1 warnings") != std::string::npos, last());
+  CHECK(wrc_profile_warning(mirrored, 0, nullptr) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_profile_warnings(mirrored, nullptr) == WRC_INVALID_ARGUMENT);
+  CHECK(wrc_profile_warnings(nullptr, &n) == WRC_INVALID_ARGUMENT);
+  wrc_profile_free(mirrored);
+  CHECK(wrc_profile_warnings(mirrored, &n) == WRC_INVALID_ARGUMENT);  // freed
+}
+
 TEST_CASE("the C API reads its arguments and options as one request: search, arguments given twice, on_failure") {
   Fixture f;
   wrc_result *a = nullptr, *b = nullptr;

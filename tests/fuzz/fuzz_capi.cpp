@@ -14,7 +14,7 @@
 //   T t w ; options            wrc_trajectory_new
 //   t t y z roll yaw ; options wrc_trajectory_contact_with   h t side y yaw roll Fz ; options  ..._wheel_with
 //   X t                        wrc_trajectory_reset          M p ; options          wrc_profile_flange_measures
-//   N p cap                    wrc_profile_points
+//   N p cap                    wrc_profile_points            A p index              wrc_profile_warnings/warning
 //   Q r cap index ; path       wrc_result_number/count/numbers/string/field on `path`
 //   V r                        every field of a result read back: all numbers finite
 //   D kind id                  free a profile (0), wheelset (1), result (2), trajectory (3)
@@ -253,6 +253,18 @@ void run(Handles& h, const Line& l, int& solves) {
       y.resize(cap);
       z.resize(cap);
       check(wrc_profile_points(h.pick(h.profile, l.id(0)), cap ? y.data() : nullptr, cap ? z.data() : nullptr, cap, &n));
+      return;
+    }
+    case 'A': {  // a profile's warnings: each one a non-empty string while the profile lives
+      const wrc_profile* p = h.pick(h.profile, l.id(0));
+      std::size_t n = 0;
+      if (check(wrc_profile_warnings(p, &n)) != WRC_OK) return;
+      const char* text = nullptr;
+      const std::size_t index = l.size(1);
+      if (check(wrc_profile_warning(p, index, &text)) == WRC_OK)
+        require(index < n && text && *text);
+      else
+        require(index >= n);
       return;
     }
     case 'W': {

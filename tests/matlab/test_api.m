@@ -24,6 +24,24 @@ back = wrc.profile_load(file, 'kind', 'wheel');
 [by, bz] = back.points();
 expect_true(numel(by) == numel(y) && max(abs(by - y)) < 1e-9 && max(abs(bz - z)) < 1e-9, 'write, load: the points back');
 
+% A loaded profile's warnings are MATLAB warnings (wrc:profileWarning): S1002 with 2 um of scatter added to z, written
+% in mm, is loaded with the scatter's warning (docs/guide/profiles.md); the clean points are not.
+randn('state', 1);
+noisy = fullfile(getenv('WRC_TEST_TMP'), 'matlab_scattered.txt');
+f = fopen(noisy, 'w');
+fprintf(f, '%.6f %.6f\n', [y0 (z0 + 2e-6 * randn(size(z0)))]' * 1e3);
+fclose(f);
+lastwarn('', '');
+wrc.profile_load(noisy, 'kind', 'wheel');
+[msg, id] = lastwarn();
+expect_true(strcmp(id, 'wrc:profileWarning') && ~isempty(strfind(msg, 'smooth = 0.5e-3')), ...
+            ['a scattered profile: a MATLAB warning naming the remedy, got ''' msg '''']);
+lastwarn('', '');
+wrc.profile_load(noisy, 'kind', 'wheel', 'smooth', 0.5e-3);
+wrc.profile_load(file, 'kind', 'wheel');
+[msg, id] = lastwarn();
+expect_true(isempty(id) && isempty(msg), ['smoothed, and clean points: no warning, got ''' msg '''']);
+
 % Flange measures: the function and the method; S1002's nominal Sh 28 mm, Sd 32.5 mm (EN 15313).
 m = wrc.flange_measures(s1002);
 expect_true(isequal(m, s1002.flange_measures()), 'flange_measures: function = method');

@@ -95,6 +95,12 @@ wrc_status wrc_profile_from_points(const char* kind, const double* y, const doub
 /* Copies the points into caller-owned arrays of `capacity` values; *n = the number of points (WRC_TOO_SMALL when
  * capacity < *n; y and z may be NULL with capacity 0 to ask for the size). */
 wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, size_t capacity, size_t* n);
+/* The profile's warnings: what looks wrong in it but was accepted when it was loaded (an orientation that looks
+ * reversed, points that scatter as measurement noise; docs/guide/profiles.md), each of which wrc_profile_load also
+ * prints on stderr as "wrc.profile.load: warning: ...". *n = their number; *text = warning `index` (0-based), a string
+ * owned by the profile and valid until it is freed. For a caller whose users do not see stderr (the MATLAB desktop). */
+wrc_status wrc_profile_warnings(const wrc_profile* profile, size_t* n);
+wrc_status wrc_profile_warning(const wrc_profile* profile, size_t index, const char** text);
 /* Writes the profile to `path` in a format a reader plugin reads back (docs/guide/profiles.md "Writing profiles"),
  * whole or not at all: a failure leaves no file (or the old one). Options: those of p:write (format = "text", "csv",
  * "simpack", "miniprof" or "vampire", default from the extension; tape_offset, flange_back, gauge, gauge_depth). The

@@ -391,6 +391,26 @@ wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, 
   });
 }
 
+wrc_status wrc_profile_warnings(const wrc_profile* profile, size_t* n) {
+  return guard("wrc_profile_warnings", [&] {
+    need_output(n, "n");
+    *n = registry().get(profile, "profile")->profile->warnings.size();
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_profile_warning(const wrc_profile* profile, size_t index, const char** text) {
+  return guard("wrc_profile_warning", [&] {
+    need_output(text, "text");
+    const auto p = registry().get(profile, "profile");
+    const std::vector<std::string>& warnings = p->profile->warnings;  // the handle keeps them: the text outlives p
+    if (index >= warnings.size())
+      invalid(fmt::format("index {} is past the profile's {} warnings", index, warnings.size()));
+    *text = warnings[index].c_str();
+    return WRC_OK;
+  });
+}
+
 wrc_status wrc_profile_write(const wrc_profile* profile, const char* path, const char* options) {
   return guard("wrc_profile_write", [&] {
     const auto p = registry().get(profile, "profile");
