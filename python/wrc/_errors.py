@@ -24,3 +24,9 @@ class NotConverged(Error):
 
     def __str__(self):
         return self.args[0] if self.args else ""
+
+
+class ProfileWarning(UserWarning):
+    """What looks wrong in a loaded profile but was accepted: an orientation that looks reversed, points that scatter
+    as measurement noise (the remedy named in the text). ``wrc.profile.load`` issues one per warning (also kept in
+    ``p.warnings``); ``warnings.simplefilter("ignore", wrc.ProfileWarning)`` silences them."""

@@ -1,6 +1,7 @@
 """wrc.profile and wrc.Profile: loading, attributes, points as numpy, EN 15313 flange measures, writing, errors."""
 import math
 import os
+import warnings
 
 import numpy as np
 import pytest
@@ -58,6 +59,25 @@ def test_write_and_read_back(s1002, tmp_path):
     assert len(again) == len(s1002)
     np.testing.assert_allclose(again.y, s1002.y, atol=1e-9)
     np.testing.assert_allclose(again.z, s1002.z, atol=1e-9)
+
+
+def test_load_warnings_are_python_warnings(s1002, tmp_path):
+    """A loaded profile's warnings are wrc.ProfileWarning (a notebook shows them; stderr it does not): S1002 with
+    2 um of scatter added to z, written in mm, warns of the scatter and names the remedy; smoothed it does not; a
+    filter can make the warning an error."""
+    y, z = s1002.points()
+    z = z + 2e-6 * np.random.default_rng(1).standard_normal(len(z))
+    path = tmp_path / "scattered.txt"
+    np.savetxt(path, np.column_stack([y, z]) * 1e3, fmt="%.6f")
+    with pytest.warns(wrc.ProfileWarning, match="smooth = 0.5e-3") as record:
+        p = wrc.profile.load(path, kind="wheel")
+    assert [str(w.message) for w in record] == p.warnings and len(p.warnings) == 1
+    assert record[0].filename == __file__  # attributed to the caller's line
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert wrc.profile.load(path, kind="wheel", smooth=0.5e-3).warnings == []
+        with pytest.raises(wrc.ProfileWarning, match="scatter"):
+            wrc.profile.load(path, kind="wheel")
 
 
 def test_load_errors(tmp_path):

@@ -13,7 +13,6 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <cstdio>
 
 namespace wrc::python {
 
@@ -38,8 +37,12 @@ std::string path_text(py::handle path) {
 }
 
 // Shows a loaded profile's warnings, as every front end does (the engine prints nothing); p.warnings keeps them.
-void print_warnings(const Profile& p) {
-  for (const std::string& w : p.warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+// Python's own warnings (wrc.ProfileWarning), not stderr: a notebook shows those, and a filter may silence them or
+// make them errors.
+void warn(const Profile& p) {
+  const py::object category = error_class("ProfileWarning");
+  for (const std::string& w : p.warnings)
+    if (PyErr_WarnEx(category.ptr(), w.c_str(), 1) < 0) throw py::error_already_set();
 }
 
 PyProfile load(py::handle path, const py::kwargs& kwargs) {
@@ -55,7 +58,7 @@ PyProfile load(py::handle path, const py::kwargs& kwargs) {
       throw ProfileFailure(e.what());
     }
   }
-  print_warnings(*p);
+  warn(*p);
   return PyProfile{std::move(p)};
 }
 
