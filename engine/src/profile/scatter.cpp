@@ -38,6 +38,7 @@ PointScatter point_scatter(const std::vector<double>& y, const std::vector<doubl
   s.spacing = median(std::move(gaps));
 
   const std::vector<double> d = sagittas(y, z);
+  if (d.size() + 2 < kMinScatterPoints) return s;  // (no fold-back and no duplicates: every chord is there)
   std::vector<double> e(d.size() - 1);
   for (std::size_t i = 0; i + 1 < d.size(); ++i) e[i] = d[i + 1] - d[i];
   const double centre = median(e);
