@@ -93,6 +93,8 @@ TEST_CASE("a profile that follows scattered points is warned of, naming its file
   CHECK(w->find("measured.txt:") == 0);
   CHECK(w->find("smooth = 0.5e-3") != std::string::npos);
   CHECK(w->find("a polyline through them") != std::string::npos);  // make_profile gives no spline
+  CHECK(is_scatter_warning(*w));
+  CHECK_FALSE(is_scatter_warning("measured.txt: the wheel profile looks mirrored: its flange ..."));
 
   CHECK_FALSE(scatter_warning(profile(ellipse(0.1e-3, 0))));
   CHECK_FALSE(scatter_warning(profile(ellipse(0.1e-3, 0.1e-6))));  // below kScatterWarning

@@ -43,6 +43,9 @@ check.rel(um, 1.0, 0.2, "the warning's scatter (um) against the 1 um added")
 check.ok(#smoothed.warnings == 0, "smooth = 0.5e-3: no warning")
 check.ok(#noisy:transform{smooth = 0.5e-3}.warnings == 0, "smoothed by transform: the warning goes")
 check.ok(#noisy:transform{shift = {z = 1e-3}}.warnings == 1, "moved by transform: the warning stays")
+local cropped = noisy:transform{crop = {y = {-0.05, 0.05}}}
+check.ok(#cropped.warnings == 1 and #cropped:transform{smooth = 0.5e-3}.warnings == 0,
+         "cropped, the warning stays; then smoothed, it goes")
 
 local function pmax(wheel, y)
   local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3}

@@ -451,7 +451,7 @@ Profile transform_profile(const Profile& p, const LoadOptions& o) {
         mapped_spline(*p.spline, o.mirror_y ? -1.0 : 1.0, o.shift_y, o.mirror_z ? -1.0 : 1.0, o.shift_z));
   if (o.smooth) {
     r = smooth_profile(r, *o.smooth);
-    if (const auto scatter = scatter_warning(p)) std::erase(r.warnings, *scatter);  // the smoothing removed it
+    std::erase_if(r.warnings, is_scatter_warning);  // the smoothing removed the scatter
   }
   return r;
 }

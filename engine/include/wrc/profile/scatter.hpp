@@ -31,6 +31,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace wrc {
@@ -57,5 +58,7 @@ PointScatter point_scatter(const std::vector<double>& y, const std::vector<doubl
 // The warning for a profile whose points scatter as noise by kScatterWarning or more, naming p.source and the
 // remedy (a smoothing length); nothing otherwise. For profiles that follow their points: loaded without `smooth`.
 std::optional<std::string> scatter_warning(const Profile& p);
+// Whether a warning is one of scatter_warning's (a profile smoothed afterwards drops it, whatever points it was of).
+bool is_scatter_warning(std::string_view warning);
 
 }  // namespace wrc
