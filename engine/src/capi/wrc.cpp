@@ -312,6 +312,13 @@ void need_output(T* p, const char* what) {
   if (!p) invalid(fmt::format("the output pointer {} is NULL", what));
 }
 
+// Entry `index` of a handle's list of strings (a result's field paths, a profile's warnings), owned by the handle:
+// "index 3 is past the result's 2 fields" when there is none. `owner` and `items` name them in that message.
+const char* entry(const std::vector<std::string>& list, std::size_t index, const char* owner, const char* items) {
+  if (index >= list.size()) invalid(fmt::format("index {} is past the {}'s {} {}", index, owner, list.size(), items));
+  return list[index].c_str();
+}
+
 }  // namespace
 
 extern "C" {
@@ -402,11 +409,7 @@ wrc_status wrc_profile_warnings(const wrc_profile* profile, size_t* n) {
 wrc_status wrc_profile_warning(const wrc_profile* profile, size_t index, const char** text) {
   return guard("wrc_profile_warning", [&] {
     need_output(text, "text");
-    const auto p = registry().get(profile, "profile");
-    const std::vector<std::string>& warnings = p->profile->warnings;  // the handle keeps them: the text outlives p
-    if (index >= warnings.size())
-      invalid(fmt::format("index {} is past the profile's {} warnings", index, warnings.size()));
-    *text = warnings[index].c_str();
+    *text = entry(registry().get(profile, "profile")->profile->warnings, index, "profile", "warnings");
     return WRC_OK;
   });
 }
@@ -726,9 +729,7 @@ wrc_status wrc_result_fields(const wrc_result* result, size_t* n) {
 wrc_status wrc_result_field(const wrc_result* result, size_t index, const char** path) {
   return guard("wrc_result_field", [&] {
     need_output(path, "path");
-    const auto r = registry().get(result, "result");
-    if (index >= r->order.size()) invalid(fmt::format("index {} is past the result's {} fields", index, r->order.size()));
-    *path = r->order[index].c_str();
+    *path = entry(registry().get(result, "result")->order, index, "result", "fields");
     return WRC_OK;
   });
 }
