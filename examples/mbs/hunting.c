@@ -690,11 +690,17 @@ static void print_run(const Sim* s, const Run* r) {
 
 static double simulated_critical(Sim* s, double lo, double hi, Run* stable, Run* unstable, int* error) {
   const Params* p = s->p;
-  *error = simulate(s, lo, p->y0, p->T, stable) || simulate(s, hi, p->y0, p->T, unstable);
-  if (*error) return NAN;
+  *unstable = (Run){.V = hi, .sigma = NAN};  /* not run yet: no points */
+  if ((*error = simulate(s, lo, p->y0, p->T, stable))) return NAN;
   print_run(s, stable);
+  if (!(stable->sigma < 0)) {  /* the critical speed lies below the bracket, whatever the upper speed does */
+    printf("  the bracket [%.3f, %.3f] m/s does not hold the critical speed: its lower speed does not decay (the "
+           "upper one is not run)\n", lo, hi);
+    return NAN;
+  }
+  if ((*error = simulate(s, hi, p->y0, p->T, unstable))) return NAN;
   print_run(s, unstable);
-  if (!(stable->sigma < 0 && unstable->sigma > 0)) {
+  if (!(unstable->sigma > 0)) {
     printf("  the bracket [%.3f, %.3f] m/s does not hold the critical speed\n", lo, hi);
     return NAN;
   }
