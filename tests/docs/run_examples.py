@@ -9,7 +9,7 @@
       digit (a build's rounding may move a solver's last bits, never a printed figure by more).
   python INTERPRETER PAGE ... --tmp DIR
       Every ```python block of the pages runs on its own, in a fresh folder, with INTERPRETER (PYTHONPATH from the
-      environment); each must exit 0.
+      environment); each must exit 0 and print a figure.
   keys ROOT
       Every key of a call in the ```lua blocks of README.md and docs/ (`ws:contact{y = ..., mu = ...}`,
       `wrc.wheelset{...}`, `tr:wheel{...}`) is a key the call takes: the engine's own list of each call's options,
@@ -100,6 +100,8 @@ def run_python(args):
             print(f"{page}:{line}:\n{run.stdout}{run.stderr}")
             if run.returncode != 0:
                 sys.exit(f"{page}:{line}: the Python example fails ({run.returncode})")
+            if not re.search(r"\d", run.stdout):
+                sys.exit(f"{page}:{line}: the Python example runs but prints no figure")
             count += 1
     print(f"{count} Python examples ran")
 
