@@ -223,6 +223,30 @@ std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& g, std::span<cons
   return ellipses(g, p, label, {}, nullptr);
 }
 
+std::vector<RegionSpan> region_spans(const Grid& g, std::span<const int> label, std::size_t regions) {
+  if (label.size() != static_cast<std::size_t>(g.size()))
+    fail("region_spans: {} labels for a grid of {} x {} elements", label.size(), g.nx, g.ny);
+  for (int l : label)
+    if (l >= static_cast<int>(regions)) fail("region_spans: an element of region {}, of {} regions", l, regions);
+  std::vector<RegionSpan> span(regions);
+  std::vector<int> count(regions);
+  auto line = [&](int n, auto element, int RegionSpan::*longest) {  // one row or column: each region's elements in it
+    std::fill(count.begin(), count.end(), 0);
+    for (int k = 0; k < n; ++k)
+      if (const int l = label[static_cast<std::size_t>(element(k))]; l >= 0) ++count[static_cast<std::size_t>(l)];
+    for (std::size_t r = 0; r < regions; ++r) span[r].*longest = std::max(span[r].*longest, count[r]);
+  };
+  for (int j = 0; j < g.ny; ++j) {
+    const auto in_row = [&](int i) { return g.index(i, j); };
+    line(g.nx, in_row, &RegionSpan::x);
+  }
+  for (int i = 0; i < g.nx; ++i) {
+    const auto in_column = [&](int j) { return g.index(i, j); };
+    line(g.ny, in_column, &RegionSpan::y);
+  }
+  return span;
+}
+
 std::vector<EllipseChange> ellipse_changes(const Grid& g, std::span<const double> p, std::span<const double> dp) {
   std::vector<int> label;
   std::vector<EllipseChange> changes;

@@ -125,15 +125,23 @@ struct Regions {
   std::optional<halfspace::EquivalentEllipse> largest;
   std::vector<halfspace::EquivalentEllipse> all;
   std::vector<int> label;
+  halfspace::RegionSpan span;  // the smallest of the counted regions' spans, each way (PatchContact::span_x, span_y)
 };
 Regions find_regions(const halfspace::NormalSolution& sol) {
   Regions r;
   if (sol.pressure.empty() || !(sol.force > 0)) return r;
   r.all = halfspace::equivalent_ellipses(sol.grid, sol.pressure, r.label);
-  for (const halfspace::EquivalentEllipse& e : r.all) {
-    r.count += e.force >= 1e-3 * sol.force;
+  const std::vector<halfspace::RegionSpan> spans = halfspace::region_spans(sol.grid, r.label, r.all.size());
+  r.span = {sol.grid.nx, sol.grid.ny};
+  for (std::size_t k = 0; k < r.all.size(); ++k) {
+    const halfspace::EquivalentEllipse& e = r.all[k];
+    if (e.force >= 1e-3 * sol.force) {
+      ++r.count;
+      r.span = {std::min(r.span.x, spans[k].x), std::min(r.span.y, spans[k].y)};
+    }
     if (!r.largest || e.force > r.largest->force) r.largest = e;
   }
+  if (r.count == 0) r.span = {};
   return r;
 }
 
@@ -179,6 +187,8 @@ PatchContact solve_area(const AreaInput& in, const AreaSolve& how, ContactWorksp
     pc.penetration = *std::max_element(pc.h.begin(), pc.h.end());
     Regions regions = find_regions(pc.solution);
     pc.regions = regions.count;
+    pc.span_x = regions.span.x;
+    pc.span_y = regions.span.y;
     pc.region_ellipses = std::move(regions.all);
     pc.region_label = std::move(regions.label);
     const double wheel_y = f.to_wheelset(pc.point).y();

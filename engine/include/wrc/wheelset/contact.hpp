@@ -136,6 +136,10 @@ struct PatchContact {
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
                                        // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
                                        // inter-penetration area holds
+  // How many elements the contact spans: of the regions `regions` counts, the smallest of each one's most elements
+  // in contact in one grid row (span_x, along t1) and in one grid column (span_y, along t2). Below kMinSpan in either
+  // the peak pressure and the area are not resolved by the grid (resolved(), resolution_note()).
+  int span_x = 0, span_y = 0;
   // What multibody tables carry (halfspace/ellipse.hpp): FASTSIM's equivalent ellipse of the region carrying the most
   // force; Hertz's ellipse for normal_force and the curvatures at the centre of pressure (the wheel's rolling radius
   // and profile curvature, the rail's profile curvature) with Kalker's coefficients for it, when both are convex.
@@ -154,6 +158,15 @@ struct PatchContact {
 // What the damage indices read of an area with a tangential solution and its grids (spans over its storage);
 // throws wrc::Error when it has neither.
 damage::AreaFields area_fields(const PatchContact& area);
+
+// The fewest elements a contact region may span along t1 or t2 for its peak pressure to be resolved. Measured on
+// Hertzian contacts (B/A = 1, 5, 20; elements of 0.2 to 2 minor semi-axes, the grid shifted against the contact; the
+// force prescribed; 510 grids, 90 of them in tests/wheelset/test_resolution.cpp), pmax against Hertz's p0 (and the
+// area, elements times their size) at worst: spanning 4-5 elements the narrower way, 3.3 % (52 %); 6-7, 1.8 % (17 %);
+// 8-9, 1.0 % (10 %); 1, 2 and 3 elements, 74, 57 and 26 %. S1002 on 60E1, a flange contact of 1 kN: 2 elements wide
+// at 0.5 mm, pmax 635 MPa against 1,143-1,181 MPa at 0.1-0.05 mm.
+inline constexpr int kMinSpan = 4;
+inline bool resolved(const PatchContact& area) { return area.span_x >= kMinSpan && area.span_y >= kMinSpan; }
 
 // Totals of the tangential solutions (when solved): creep forces, their moments, frictional power.
 struct CreepTotals {
@@ -179,6 +192,10 @@ struct WheelContact {
   CreepTotals creep;
 };
 
+// "" when every area of the wheel spans kMinSpan elements both ways; else what is not resolved, by how much, and the
+// grid that would resolve it, for the front ends to show (the engine prints nothing).
+std::string resolution_note(const WheelContact& wheel);
+
 struct ContactResult {
   Pose pose;
   std::array<WheelContact, 2> wheel;  // indexed by Side
@@ -189,6 +206,9 @@ struct ContactResult {
   std::optional<double> omega;  // rad/s: the axle's angular velocity the creep forces were solved at (kinematics)
   int spin_evaluations = 0;     // free rolling: the tangential solves of both wheels its search for omega took
 };
+
+// resolution_note of the first wheel that has one, "" when none has.
+std::string resolution_note(const ContactResult& result);
 
 // The immutable contact model: discretised geometry, material, normal solver (with its FFT caches) and options.
 class ContactModel {
@@ -368,10 +388,11 @@ void drop_grids(ContactResult& result, bool keep_rows = false);
 inline constexpr const char* kPatchType = "wrc.Patch";
 
 // The results as fields (the Lua tables, the C API's paths). A wheel: lifted, flange_climb (and
-// flange_climb_reason when true), force, moment, angle and rolling_radius (absent when lifted), patches; a patch: the located patch's fields (nominal point, segments, ...) then normal_force,
-// force, moment, point, normal, angle, nominal_angle, area, pmax, elements, regions, penetration, rolling_radius,
-// ellipse, hertz, kalker, iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution
-// also its fields (wheelset/tangential.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
+// flange_climb_reason when true), force, moment, angle and rolling_radius (absent when lifted), patches; a patch: the
+// located patch's fields (nominal point, segments, ...) then normal_force, force, moment, point, normal, angle,
+// nominal_angle, area, pmax, elements, regions, span, resolved, penetration, rolling_radius, ellipse, hertz, kalker,
+// iterations, complementarity, frame, grid, and the pressure and h grids when kept; with a tangential solution also its
+// fields (wheelset/tangential.hpp) and, for a wheel and the result, creep_force, creep_moment, power.
 void describe(const PatchContact& area, FieldSink& out);
 void describe(const WheelContact& wheel, FieldSink& out);
 // With `sensitivity`, also d(force, moment)/d(z, roll) as {z = {6 values}, roll = {6 values}}.
