@@ -9,13 +9,13 @@ Every call takes the keys of its Lua twin as keyword arguments (SI units); help(
 help(wrc.Wheelset.contact), ... list them with unit, default and meaning (from the engine's one description of its
 options, also in wrc.operations()). Results are wrc.Result objects with the Lua field names (lists 0-based), arrays
 and grids numpy arrays, tables pandas DataFrames. Errors: wrc.Error and its subclasses (wrc.OptionError,
-wrc.NotConverged, wrc.ProfileError); what looks wrong in a loaded profile is a wrc.ProfileWarning. docs/python.md is
-the guide.
+wrc.NotConverged, wrc.ProfileError); what looks wrong in a loaded profile is a wrc.ProfileWarning, a contact area
+too narrow for its grid a wrc.ResolutionWarning. docs/python.md is the guide.
 """
 
 import sys as _sys
 
-from wrc._errors import Error, NotConverged, OptionError, ProfileError, ProfileWarning
+from wrc._errors import Error, NotConverged, OptionError, ProfileError, ProfileWarning, ResolutionWarning
 from wrc._results import Result
 from wrc import _wrc
 from wrc._wrc import Profile, Trajectory, Wheelset, batch_keys, conicity as _conicity, operations, profile, wheelset
@@ -25,8 +25,8 @@ __version__ = _wrc.__version__
 _sys.modules[__name__ + ".profile"] = profile  # import wrc.profile works too
 
 __all__ = [
-    "Batch", "Error", "NotConverged", "OptionError", "ProfileError", "ProfileWarning", "Result", "Profile", "Trajectory",
-    "Wheelset",
+    "Batch", "Error", "NotConverged", "OptionError", "ProfileError", "ProfileWarning", "ResolutionWarning", "Result",
+    "Profile", "Trajectory", "Wheelset",
     "batch_keys", "conicity", "operations", "profile", "wheelset",
 ]
 

@@ -30,3 +30,9 @@ class ProfileWarning(UserWarning):
     """What looks wrong in a loaded profile but was accepted: an orientation that looks reversed, points that scatter
     as measurement noise (the remedy named in the text). ``wrc.profile.load`` issues one per warning (also kept in
     ``p.warnings``); ``warnings.simplefilter("ignore", wrc.ProfileWarning)`` silences them."""
+
+
+class ResolutionWarning(UserWarning):
+    """A contact area spans too few elements of the grid for its peak pressure and area: a coarse grid gives a
+    plausible-looking but wrong pmax (Hertzian contacts spanning 1-3 elements: up to 74 % off). Issued once per
+    wheelset, naming the area and the grid that resolves it; each area's ``resolved`` says it every time."""

@@ -1,6 +1,7 @@
 """wrc.wheelset and its calls against independent references: Hertz for a contact, the Lua API (the built wrc
 executable) for the same calls, symmetry, Coulomb's limit for full slip, the cone slope for conicity."""
 import math
+import warnings
 
 import numpy as np
 import pandas as pd
@@ -38,6 +39,31 @@ def test_contact_is_hertz_for_a_circular_contact():
         assert p.pmax == pytest.approx(p0, rel=2e-3)
         assert p.area == pytest.approx(math.pi * a * a, rel=0.03)
     assert c.force.z == pytest.approx(2 * F, rel=2e-3)
+
+
+def test_a_contact_too_narrow_for_its_grid_warns_once():
+    """The sphere on a plane of the test above on grids of 5 and 2.5 mm (the contact 9.5 mm across): on the first it
+    spans 3 elements each way, its pmax is 13 % above Hertz's p0, and wrc.ResolutionWarning says so once for the
+    wheelset (two calls and a trajectory's step), naming a grid that resolves it; on the second it spans 5, pmax is
+    within the 3.3 % such a span allows, and nothing is said."""
+    r0, delta = 0.45, 50e-6
+    Es = E / (2 * (1 - NU * NU))
+    F = 4 / 3 * Es * math.sqrt(r0) * delta ** 1.5
+    p0 = 3 * F / (2 * math.pi * r0 * delta)
+    with pytest.warns(wrc.ResolutionWarning, match=r"spans only 3 x 3 elements .* grid = 1\.2e-3 or finer") as record:
+        ws = hertz_pair(R=r0, r0=r0, grid=5e-3)
+        first, again = ws.contact(z=-delta), ws.contact(z=-delta)
+        ws.trajectory().contact(z=-delta)
+    assert len(record) == 1 and record[0].filename == __file__
+    for c in (first, again):
+        p = c.left.patches[0]
+        assert not p.resolved and (p.span.x, p.span.y) == (3, 3)
+        assert p.pmax / p0 - 1 > 0.1
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        p = hertz_pair(R=r0, r0=r0, grid=2.5e-3).contact(z=-delta).left.patches[0]
+    assert p.resolved and min(p.span.x, p.span.y) >= 4
+    assert p.pmax == pytest.approx(p0, rel=0.033)
 
 
 def test_pressure_grid_is_ny_by_nx_with_its_coordinates():

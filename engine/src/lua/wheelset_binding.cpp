@@ -30,6 +30,19 @@ ContactWorkspace& workspace(lua_State* L, LuaWheelset& w) {
   return *w.workspace;
 }
 
+// Shows on stderr a result's contact area that spans too few elements for its peak pressure (a coarse grid gives a
+// plausible-looking pmax; wheelset/contact.hpp, kMinSpan), once per wheelset: each patch's `resolved` says it every
+// time. `where` names the case of a sweep.
+template <class Result>  // ContactResult, WheelContact
+void show_resolution(bool& shown, const char* ctx, const Result& r, const std::string& where = "") {
+  if (shown) return;
+  const std::string note = resolution_note(r);
+  if (note.empty()) return;
+  shown = true;
+  host::note_printer(fmt::format("{}: warning", ctx))(
+      fmt::format("{}{} (shown once per wheelset; each area's `resolved` says it)", where, note));
+}
+
 // The options table of a method (argument 2) and its reader; the reader's keys are checked by finish().
 struct MethodArgs {
   OptionTable table;
@@ -85,7 +98,9 @@ int wheelset_contact(lua_State* L) {
   const char* ctx = "wheelset:contact";
   LuaWheelset& w = self(L, ctx);
   const auto call = read_call<api::ContactCall>(L, ctx);
-  push_result(L, call.run(*w.model, workspace(L, w)), call.request.sensitivity);
+  const ContactResult r = call.run(*w.model, workspace(L, w));
+  show_resolution(*w.resolution_shown, ctx, r);
+  push_result(L, r, call.request.sensitivity);
   return 1;
 }
 
@@ -97,6 +112,7 @@ int wheelset_equilibrium(lua_State* L) {
   const EquilibriumResult e = call.run(*w.model, workspace(L, w));
   if (!e.converged && !call.on_failure.returns)
     fail("{}: {} (on_failure = \"return\" gives the result)", ctx, failure_message(e));
+  show_resolution(*w.resolution_shown, ctx, e.contact);
   push_result(L, e);
   return 1;
 }
@@ -109,6 +125,7 @@ int wheelset_wheel(lua_State* L) {
   const auto call = read_call<api::WheelCall>(L, ctx);
   const WheelResult r = call.run(*w.model, workspace(L, w));
   if (!r.converged && !call.on_failure.returns) fail("{}: {}", ctx, failure_message(r));
+  show_resolution(*w.resolution_shown, ctx, r.wheel);
   push_result(L, r);
   return 1;
 }
@@ -144,7 +161,10 @@ int wheelset_conicity(lua_State* L) {
 
 // The table ws:sweep gives: one row per case (with its contact_start when asked for), then seconds, threads,
 // threads_note, failed.
-void push_sweep(lua_State* L, const SweepResult& r) {
+void push_sweep(lua_State* L, const SweepResult& r, bool& resolution_shown, const char* ctx) {
+  for (std::size_t i = 0; i < r.cases.size() && !resolution_shown; ++i)
+    show_resolution(resolution_shown, ctx, r.elastic[i].contact,
+                    fmt::format("at y = {:.4f} mm, yaw = {:.4g} rad: ", r.cases[i].y * 1e3, r.cases[i].yaw));
   int failed = 0;
   lua_createtable(L, static_cast<int>(r.cases.size()), 3);
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
@@ -192,7 +212,7 @@ int wheelset_sweep(lua_State* L) {
     if (!portable || so.threads == 1) return w.model->make_workspace_with(w.strategy->main_search(L));
     return w.model->make_workspace();  // a worker's own Lua state
   });
-  push_sweep(L, r);
+  push_sweep(L, r, *w.resolution_shown, ctx);
   return 1;
 }
 
@@ -201,6 +221,7 @@ int wheelset_sweep(lua_State* L) {
 struct SweepJob {
   static constexpr const char* kTypeName = "wrc.SweepJob";
   std::shared_ptr<const Wheelset> model;
+  std::shared_ptr<bool> resolution_shown;  // the wheelset's
   std::future<SweepResult> result;
   bool taken = false;
 };
@@ -215,6 +236,7 @@ int wheelset_sweep_start(lua_State* L) {
   call.validate();  // the errors of the keys here; the cases' own go into the rows
   auto job = std::make_shared<SweepJob>();
   job->model = w.model;
+  job->resolution_shown = w.resolution_shown;
   if (!w.model->strategy().info().portable) {
     call.options.single_thread = kInlineStrategy;
     std::promise<SweepResult> done;
@@ -234,7 +256,7 @@ int sweep_job_wait(lua_State* L) {
   SweepJob& job = *check_shared<SweepJob>(L, 1, SweepJob::kTypeName, ctx);
   if (job.taken) fail("{}: the job's result was taken by an earlier wait (it gives it once)", ctx);
   job.taken = true;
-  push_sweep(L, job.result.get());  // rethrows the sweep's error
+  push_sweep(L, job.result.get(), *job.resolution_shown, ctx);  // rethrows the sweep's error
   return 1;
 }
 
@@ -269,6 +291,7 @@ const char* const kTrajectoryType = "wrc.Trajectory";
 struct LuaTrajectory {
   std::unique_ptr<Trajectory> trajectory;
   std::shared_ptr<LuaStrategy> strategy;  // binds the building state's search to the calling coroutine
+  std::shared_ptr<bool> resolution_shown;  // the wheelset's
 };
 
 int wheelset_trajectory(lua_State* L) {
@@ -279,6 +302,7 @@ int wheelset_trajectory(lua_State* L) {
   auto lt = std::make_shared<LuaTrajectory>();
   lt->trajectory = call.run(w.model);
   lt->strategy = w.strategy;
+  lt->resolution_shown = w.resolution_shown;
   push_shared(L, std::move(lt), kTrajectoryType);
   return 1;
 }
@@ -293,7 +317,9 @@ LuaTrajectory& trajectory_self(lua_State* L, const char* ctx) {
 int trajectory_contact(lua_State* L) {
   const char* ctx = "trajectory:contact";
   LuaTrajectory& t = trajectory_self(L, ctx);
-  push_result(L, read_call<api::TrajectoryContactCall>(L, ctx).run(*t.trajectory));
+  const ContactResult r = read_call<api::TrajectoryContactCall>(L, ctx).run(*t.trajectory);
+  show_resolution(*t.resolution_shown, ctx, r);
+  push_result(L, r);
   return 1;
 }
 
@@ -303,6 +329,7 @@ int trajectory_wheel(lua_State* L) {
   LuaTrajectory& t = trajectory_self(L, ctx);
   const WheelResult r = read_call<api::TrajectoryWheelCall>(L, ctx).run(*t.trajectory);
   if (!r.converged) fail("{}: {}", ctx, failure_message(r));
+  show_resolution(*t.resolution_shown, ctx, r.wheel);
   push_result(L, r);
   return 1;
 }

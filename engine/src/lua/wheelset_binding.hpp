@@ -17,6 +17,8 @@ struct LuaWheelset {
   std::shared_ptr<LuaStrategy> strategy;        // the model's, as the binding sees it
   std::unique_ptr<ContactWorkspace> workspace;  // for calls from the building state (made on first use)
   std::array<long long, 2> last_tests{-1, -1};  // closed-form tests of the last ws:locate, per side
+  // Whether a result's under-resolved contact area was shown (once per wheelset, its trajectories and sweeps included)
+  std::shared_ptr<bool> resolution_shown = std::make_shared<bool>(false);
 };
 
 // The wheelset model of the wrc.Wheelset at stack index idx (an error naming `context` otherwise).

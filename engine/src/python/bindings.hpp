@@ -59,6 +59,8 @@ struct PyProfile {
 // A wheelset and its pool of workspaces (one taken per call: calls from several Python threads run at once).
 struct PyWheelset {
   std::shared_ptr<const Wheelset> model;
+  // Whether a result's under-resolved contact area was shown (once per wheelset, its trajectories and sweeps included)
+  std::shared_ptr<std::atomic<bool>> resolution_shown = std::make_shared<std::atomic<bool>>(false);
   std::mutex pool_mutex;
   std::vector<std::unique_ptr<ContactWorkspace>> pool;
   std::shared_ptr<const Wheelset> get(const char* context) const;  // wrc.Error after close()

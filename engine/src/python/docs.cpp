@@ -118,7 +118,7 @@ std::string stub() {
       "import numpy.typing\n"
       "import pandas\n\n"
       "from wrc._errors import Error as Error, NotConverged as NotConverged, OptionError as OptionError, "
-      "ProfileError as ProfileError, ProfileWarning as ProfileWarning\n"
+      "ProfileError as ProfileError, ProfileWarning as ProfileWarning, ResolutionWarning as ResolutionWarning\n"
       "from wrc._results import Result as Result\n"
       "from wrc.batch import Batch as Batch\n\n"
       "__version__: str\n\n";

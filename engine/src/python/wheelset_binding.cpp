@@ -45,11 +45,21 @@ namespace {
 struct PyTrajectory {
   std::unique_ptr<Trajectory> trajectory;
   std::mutex mutex;
+  std::shared_ptr<std::atomic<bool>> resolution_shown;  // the wheelset's
   Trajectory& get(const char* context) const {
     if (!trajectory) fail("{}: the wrc.Trajectory was closed (close() releases it)", context);
     return *trajectory;
   }
 };
+
+// A result's contact area that spans too few elements for its peak pressure (a coarse grid gives a plausible-looking
+// pmax; wheelset/contact.hpp, kMinSpan) as a wrc.ResolutionWarning, once per wheelset: each area's `resolved` says it
+// every time. `note` is resolution_note's (empty: none); with the GIL.
+void warn_resolution(std::atomic<bool>& shown, const char* ctx, const std::string& note) {
+  if (note.empty() || shown.exchange(true)) return;
+  const std::string text = fmt::format("{}: {} (shown once per wheelset; each area's `resolved` says it)", ctx, note);
+  if (PyErr_WarnEx(error_class("ResolutionWarning").ptr(), text.c_str(), 1) < 0) throw py::error_already_set();
+}
 
 // A function of wrc._results (python/wrc/_results.py) that wraps a result tree.
 py::object results_function(const char* name) { return py::module_::import("wrc._results").attr(name); }
@@ -103,11 +113,15 @@ py::object contact(PyWheelset& self, const py::kwargs& kw) {
   const auto model = self.get(ctx);
   const auto call = read_call<api::ContactCall>(kw, ctx);
   FieldRecord tree;
+  std::string note;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
-    tree = record_fields(call.run(*model, *ws), call.request.sensitivity);
+    const ContactResult r = call.run(*model, *ws);
+    note = resolution_note(r);
+    tree = record_fields(r, call.request.sensitivity);
   }
+  warn_resolution(*self.resolution_shown, ctx, note);
   return to_python(std::move(tree));
 }
 
@@ -117,14 +131,16 @@ py::object wheel(PyWheelset& self, const py::kwargs& kw) {
   const auto model = self.get(ctx);
   const auto call = read_call<api::WheelCall>(kw, ctx);
   FieldRecord tree;
-  std::string failure;
+  std::string failure, note;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
     const WheelResult r = call.run(*model, *ws);
     if (!r.converged) failure = failure_message(r);
+    note = resolution_note(r.wheel);
     tree = record_fields(r);
   }
+  warn_resolution(*self.resolution_shown, ctx, note);
   py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
     raise_not_converged(fmt::format("{}: {} (on_failure = \"return\" gives the result)", ctx, failure), result);
@@ -137,14 +153,16 @@ py::object equilibrium(PyWheelset& self, const py::kwargs& kw) {
   const auto model = self.get(ctx);
   const auto call = read_call<api::EquilibriumCall>(kw, ctx);
   FieldRecord tree;
-  std::string failure;
+  std::string failure, note;
   {
     py::gil_scoped_release release;
     Lease ws(self, model);
     const EquilibriumResult e = call.run(*model, *ws);
     if (!e.converged) failure = failure_message(e);
+    note = resolution_note(e.contact);
     tree = record_fields(e);
   }
+  warn_resolution(*self.resolution_shown, ctx, note);
   py::object result = to_python(std::move(tree));
   if (!failure.empty() && !call.on_failure.returns)
     raise_not_converged(fmt::format("{}: {} (on_failure = \"return\" gives the result)", ctx, failure), result);
@@ -196,6 +214,12 @@ py::object sweep(PyWheelset& self, const py::kwargs& kw) {
     t.integer("failed", failed, {"-", "cases that did not converge"});
     tree = t.take();
   }
+  for (std::size_t i = 0; i < r.cases.size(); ++i)
+    if (std::string note = resolution_note(r.elastic[i].contact); !note.empty()) {
+      warn_resolution(*self.resolution_shown, ctx,
+                      fmt::format("at y = {:.4f} mm, yaw = {:.4g} rad: {}", r.cases[i].y * 1e3, r.cases[i].yaw, note));
+      break;
+    }
   return results_function("with_table")(to_python(std::move(tree)), "rows");
 }
 
@@ -269,6 +293,7 @@ PyTrajectory* trajectory(PyWheelset& self, const py::kwargs& kw) {
   const auto call = read_call<api::TrajectoryCall>(kw, ctx);
   auto t = std::make_unique<PyTrajectory>();
   t->trajectory = call.run(model);
+  t->resolution_shown = self.resolution_shown;
   return t.release();
 }
 
@@ -277,11 +302,15 @@ py::object trajectory_contact(PyTrajectory& self, const py::kwargs& kw) {
   self.get(ctx);
   const auto call = read_call<api::TrajectoryContactCall>(kw, ctx);
   FieldRecord tree;
+  std::string note;
   {
     py::gil_scoped_release release;
     std::lock_guard lock(self.mutex);
-    tree = record_fields(call.run(self.get(ctx)));
+    const ContactResult r = call.run(self.get(ctx));
+    note = resolution_note(r);
+    tree = record_fields(r);
   }
+  warn_resolution(*self.resolution_shown, ctx, note);
   return to_python(std::move(tree));
 }
 
@@ -291,14 +320,16 @@ py::object trajectory_wheel(PyTrajectory& self, const py::kwargs& kw) {
   self.get(ctx);
   const auto call = read_call<api::TrajectoryWheelCall>(kw, ctx);
   FieldRecord tree;
-  std::string failure;
+  std::string failure, note;
   {
     py::gil_scoped_release release;
     std::lock_guard lock(self.mutex);
     const WheelResult r = call.run(self.get(ctx));
     if (!r.converged) failure = failure_message(r);
+    note = resolution_note(r.wheel);
     tree = record_fields(r);
   }
+  warn_resolution(*self.resolution_shown, ctx, note);
   py::object result = to_python(std::move(tree));
   if (!failure.empty()) raise_not_converged(fmt::format("{}: {}", ctx, failure), result);
   return result;
