@@ -688,11 +688,20 @@ static void print_run(const Sim* s, const Run* r) {
          r->frequency, creal(l), fabs(cimag(l)) / (2 * kPi));
 }
 
+/* Whether a run's decay rate could be measured; if not, says why (analyse() needs four peaks after the transient). */
+static int measured(const Run* r) {
+  if (isfinite(r->sigma)) return 1;
+  printf("  the run at %.3f m/s has fewer than four peaks of y after its first 0.15 s: no decay rate to bisect on "
+         "(T too short, or a motion that does not oscillate)\n", r->V);
+  return 0;
+}
+
 static double simulated_critical(Sim* s, double lo, double hi, Run* stable, Run* unstable, int* error) {
   const Params* p = s->p;
   *unstable = (Run){.V = hi, .sigma = NAN};  /* not run yet: no points */
   if ((*error = simulate(s, lo, p->y0, p->T, stable))) return NAN;
   print_run(s, stable);
+  if (!measured(stable)) return NAN;
   if (!(stable->sigma < 0)) {  /* the critical speed lies below the bracket, whatever the upper speed does */
     printf("  the bracket [%.3f, %.3f] m/s does not hold the critical speed: its lower speed does not decay (the "
            "upper one is not run)\n", lo, hi);
@@ -700,15 +709,16 @@ static double simulated_critical(Sim* s, double lo, double hi, Run* stable, Run*
   }
   if ((*error = simulate(s, hi, p->y0, p->T, unstable))) return NAN;
   print_run(s, unstable);
+  if (!measured(unstable)) return NAN;
   if (!(unstable->sigma > 0)) {
-    printf("  the bracket [%.3f, %.3f] m/s does not hold the critical speed\n", lo, hi);
+    printf("  the bracket [%.3f, %.3f] m/s does not hold the critical speed: its upper speed does not grow\n", lo, hi);
     return NAN;
   }
   for (int i = 0; i < p->bisections; ++i) {
     Run mid;
     if ((*error = simulate(s, (stable->V + unstable->V) / 2, p->y0, p->T, &mid))) return NAN;
     print_run(s, &mid);
-    if (!isfinite(mid.sigma)) {
+    if (!measured(&mid)) {
       free(mid.y);
       return NAN;
     }
