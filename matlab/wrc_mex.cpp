@@ -11,6 +11,8 @@
 // every C API resource of the call was released (by the destructors on the way out). A loaded profile's warnings
 // (wrc_profile_warning: what looks wrong but was accepted) become MATLAB warnings (id wrc:profileWarning) the same way,
 // after the call: the MATLAB desktop does not show the library's stderr, and a warning made an error does not return.
+// So does a result's contact area too narrow for the grid (a wheel's resolution_note; wrc:resolutionWarning), once per
+// wheelset and its trajectories.
 #include "mex.h"
 
 #include <wrc/wrc.h>
@@ -49,8 +51,8 @@ void check(wrc_status s) {
   if (s != WRC_OK) fail_status(s);
 }
 
-// The warnings of this call, raised by mexFunction once the call is done.
-std::vector<std::string> g_warnings;
+// The warnings of this call (identifier, text), raised by mexFunction once the call is done.
+std::vector<std::pair<std::string, std::string>> g_warnings;
 
 // ---- handles ----
 
@@ -63,6 +65,9 @@ const char* kind_name(Kind k) {
 struct Handle {
   Kind kind;
   void* object;
+  // A wheelset's, shared by its trajectories: whether a result's contact area too narrow for the grid was warned of
+  // (wrc:resolutionWarning, once per wheelset; each area's `resolved` says it every time).
+  std::shared_ptr<bool> resolution_warned;
 };
 
 // Live handles by id. An id is (session << 32) | serial: the session tells this loading of the MEX file from an
@@ -96,11 +101,11 @@ void start_session() {
   mexAtExit(release_all);
 }
 
-mxArray* add_handle(Kind kind, void* object) {
+mxArray* add_handle(Kind kind, void* object, std::shared_ptr<bool> resolution_warned = nullptr) {
   start_session();
   const std::uint64_t id = (session << 32) | ++serial;
   if (live.empty()) mexLock();
-  live[id] = Handle{kind, object};
+  live[id] = Handle{kind, object, std::move(resolution_warned)};
   mxArray* out = mxCreateNumericMatrix(1, 1, mxUINT64_CLASS, mxREAL);
   *static_cast<std::uint64_t*>(mxGetData(out)) = id;
   return out;
@@ -112,8 +117,8 @@ std::uint64_t id_of(const mxArray* a, const char* what) {
   return *static_cast<const std::uint64_t*>(mxGetData(a));
 }
 
-// The live object of id `a`, of kind `kind`; a freed id is "wrc:freed".
-void* object_of(const mxArray* a, Kind kind, const char* what) {
+// The live handle of id `a`, of kind `kind`; a freed id is "wrc:freed".
+Handle& handle_of(const mxArray* a, Kind kind, const char* what) {
   const std::uint64_t id = id_of(a, what);
   const auto it = live.find(id);
   if (it == live.end()) {
@@ -123,8 +128,10 @@ void* object_of(const mxArray* a, Kind kind, const char* what) {
   }
   if (it->second.kind != kind)
     fail("wrc:type", std::string(what) + " is a " + kind_name(it->second.kind) + ", not a " + kind_name(kind));
-  return it->second.object;
+  return it->second;
 }
+
+void* object_of(const mxArray* a, Kind kind, const char* what) { return handle_of(a, kind, what).object; }
 
 // Frees id `a`; quietly nothing for an id already freed when `quiet` (a handle object's destructor).
 void free_handle(const mxArray* a, bool quiet) {
@@ -503,6 +510,26 @@ mxArray* result_struct(const wrc_result* r) {
   return s;
 }
 
+// The first wheel's resolution_note of a result (a contact area too narrow for the grid: the engine's text), or "".
+std::string resolution_note(const wrc_result* r) {
+  const std::string name = ".resolution_note";  // the top level's (wrc.wheel) or a wheel's (left.resolution_note)
+  std::size_t n = 0;
+  check(wrc_result_fields(r, &n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const char* path = nullptr;
+    check(wrc_result_field(r, i, &path));
+    const std::string p = std::string(".") + path;
+    if (p.size() < name.size() || p.compare(p.size() - name.size(), name.size(), name) != 0) continue;
+    std::size_t length = 0;
+    check(wrc_result_string(r, path, nullptr, 0, &length));
+    std::string text(length + 1, '\0');
+    check(wrc_result_string(r, path, text.data(), text.size(), &length));
+    text.resize(length);
+    return text;
+  }
+  return "";
+}
+
 // ---- commands ----
 
 // A call of a command: its outputs, its arguments after the command name, and the function its messages name.
@@ -533,18 +560,32 @@ struct Call {
     plhs[0] = result_struct(res.r);
   }
   // A solve's outputs: its result struct; a solve that did not converge is an error unless the caller asked for the
-  // second output (ok = false then, the result holds converged = 0 and error).
+  // second output (ok = false then, the result holds converged = 0 and error). With the wheelset's `warned`, a
+  // contact area too narrow for the grid is a warning wrc:resolutionWarning, once per wheelset.
   template <class F>
-  void solved(F&& solve) const {
+  void solved(F&& solve, bool* warned = nullptr) const {
     Result res;
     const wrc_status s = solve(&res.r);
     if (s != WRC_OK && s != WRC_NOT_CONVERGED) fail_status(s);
     const std::string message = s == WRC_NOT_CONVERGED ? wrc_last_error() : "";
     if (s == WRC_NOT_CONVERGED && nlhs < 2) fail("wrc:notConverged", message);
+    if (warned && !*warned)
+      if (const std::string note = resolution_note(res.r); !note.empty()) {
+        *warned = true;
+        g_warnings.emplace_back(
+            "wrc:resolutionWarning",
+            std::string(function) + ": " + note + " (shown once per wheelset; each area's `resolved` says it)");
+      }
     plhs[0] = result_struct(res.r);
     if (nlhs >= 2) plhs[1] = mxCreateLogicalScalar(s == WRC_OK);
   }
 };
+
+// The once-per-wheelset flag of the call's wheelset or trajectory (its first argument, checked by the command).
+bool* warned(const Call& c) {
+  const auto it = live.find(id_of(c.at(0, "a wheelset"), c.function));
+  return it != live.end() && it->second.resolution_warned ? it->second.resolution_warned.get() : nullptr;
+}
 
 void profile_load(const Call& c) {
   const std::string path = text_of(c.at(0, "the profile's path"), std::string(c.function) + ": the path");
@@ -557,7 +598,7 @@ void profile_load(const Call& c) {
   for (size_t i = 0; i < n; ++i) {
     const char* text = nullptr;
     check(wrc_profile_warning(p, i, &text));
-    g_warnings.emplace_back(text);
+    g_warnings.emplace_back("wrc:profileWarning", text);
   }
 }
 
@@ -631,30 +672,32 @@ void wheelset(const Call& c) {
   wrc_wheelset* ws = nullptr;
   check(two ? wrc_wheelset_new(p[0], p[1], text.c_str(), &ws)
             : wrc_wheelset_new4(p[2], p[3], p[4], p[5], text.c_str(), &ws));
-  c.plhs[0] = add_handle(Kind::wheelset, ws);
+  c.plhs[0] = add_handle(Kind::wheelset, ws, std::make_shared<bool>(false));
 }
 
 void contact(const Call& c) {
   wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
   Arguments a = c.args(1);
   const auto [y, z, roll, yaw] = positional(a, "wrc_contact", {"y", "z", "roll", "yaw"});
-  c.solved([&](wrc_result** r) { return wrc_contact(ws, y, z, roll, yaw, option_text(a).c_str(), r); });
+  c.solved([&](wrc_result** r) { return wrc_contact(ws, y, z, roll, yaw, option_text(a).c_str(), r); }, warned(c));
 }
 
 void wheel(const Call& c) {
   wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
   Arguments a = c.args(1);
   const auto [side, y, yaw, roll, Fz] = positional(a, "wrc_wheel", {"side", "y", "yaw", "roll", "Fz"});
-  c.solved([&](wrc_result** r) {
-    return wrc_wheel(ws, static_cast<int>(side), y, yaw, roll, Fz, option_text(a).c_str(), r);
-  });
+  c.solved(
+      [&](wrc_result** r) {
+        return wrc_wheel(ws, static_cast<int>(side), y, yaw, roll, Fz, option_text(a).c_str(), r);
+      },
+      warned(c));
 }
 
 void equilibrium(const Call& c) {
   wrc_wheelset* ws = c.object<wrc_wheelset>(Kind::wheelset);
   Arguments a = c.args(1);
   const auto [y, yaw, Q] = positional(a, "wrc_equilibrium", {"y", "yaw", "Q"});
-  c.solved([&](wrc_result** r) { return wrc_equilibrium(ws, y, yaw, Q, option_text(a).c_str(), r); });
+  c.solved([&](wrc_result** r) { return wrc_equilibrium(ws, y, yaw, Q, option_text(a).c_str(), r); }, warned(c));
 }
 
 void rigid(const Call& c) {
@@ -699,23 +742,26 @@ void trajectory(const Call& c) {
   const Arguments a = c.args(1);
   wrc_trajectory* tr = nullptr;
   check(wrc_trajectory_new(ws, option_text(a).c_str(), &tr));
-  c.plhs[0] = add_handle(Kind::trajectory, tr);
+  c.plhs[0] = add_handle(Kind::trajectory, tr, handle_of(c.prhs[0], Kind::wheelset, c.function).resolution_warned);
 }
 
 void trajectory_contact(const Call& c) {
   wrc_trajectory* tr = c.object<wrc_trajectory>(Kind::trajectory);
   Arguments a = c.args(1);
   const auto [y, z, roll, yaw] = positional(a, "wrc_trajectory_contact_with", {"y", "z", "roll", "yaw"});
-  c.solved([&](wrc_result** r) { return wrc_trajectory_contact_with(tr, y, z, roll, yaw, option_text(a).c_str(), r); });
+  c.solved([&](wrc_result** r) { return wrc_trajectory_contact_with(tr, y, z, roll, yaw, option_text(a).c_str(), r); },
+           warned(c));
 }
 
 void trajectory_wheel(const Call& c) {
   wrc_trajectory* tr = c.object<wrc_trajectory>(Kind::trajectory);
   Arguments a = c.args(1);
   const auto [side, y, yaw, roll, Fz] = positional(a, "wrc_trajectory_wheel_with", {"side", "y", "yaw", "roll", "Fz"});
-  c.solved([&](wrc_result** r) {
-    return wrc_trajectory_wheel_with(tr, static_cast<int>(side), y, yaw, roll, Fz, option_text(a).c_str(), r);
-  });
+  c.solved(
+      [&](wrc_result** r) {
+        return wrc_trajectory_wheel_with(tr, static_cast<int>(side), y, yaw, roll, Fz, option_text(a).c_str(), r);
+      },
+      warned(c));
 }
 
 void trajectory_reset(const Call& c) { check(wrc_trajectory_reset(c.object<wrc_trajectory>(Kind::trajectory))); }
@@ -786,7 +832,7 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   try {
     g_warnings.clear();
     dispatch(nlhs, plhs, nrhs, prhs);
-    for (const std::string& w : g_warnings) mexWarnMsgIdAndTxt("wrc:profileWarning", "%s", w.c_str());
+    for (const auto& [id, text] : g_warnings) mexWarnMsgIdAndTxt(id.c_str(), "%s", text.c_str());
     return;
   } catch (const Failure& f) {
     id = f.id;

@@ -1,8 +1,8 @@
 // Writes docs/reference/fields.md, the result-field reference: representative results of every kind (S1002 on 60E1,
 // profiles/) described into a DocSink (wrc/core/field_reference.hpp), so that the page lists what the describe()
 // calls write, with the units and meanings they give. Optional fields (an error message, a flange-climb reason, a
-// threads note) are shown by setting them on a copy of a computed result: the paths come from the describe() code
-// either way.
+// resolution note, a threads note) are shown by setting them on a copy of a computed result: the paths come from the
+// describe() code either way.
 //
 //   field_reference ROOT OUT.md          write the page
 //   field_reference ROOT OUT.md --check  compare with OUT.md instead; exit 1 when it differs
@@ -85,6 +85,7 @@ std::vector<Section> sections(const std::string& root) {
     failed.converged = false;
     failed.message = "example";
     failed.wheel.flange_climb = "example";
+    failed.wheel.patches.front().span_y = 2;  // too few elements across: the resolution_note
     out.push_back({"Wheel", "`ws:wheel{...}`, `tr:wheel{...}`; `wrc_wheel`, `wrc_trajectory_wheel`",
                    "One wheel with its vertical force prescribed.",
                    {[=](FieldSink& s) { describe(exact, s); }, [=](FieldSink& s) { describe(fastsim, s); },
@@ -103,11 +104,16 @@ std::vector<Section> sections(const std::string& root) {
     const ContactResult plain = evaluate_contact(planar->contact_model(), pose, *pws);
     Trajectory tr(conformal);
     const ContactResult step = tr.contact(pose, rolling(RollingMethod::fastsim, false));
-    out.push_back({"Contact", "`ws:contact{...}`, `tr:contact{...}`; `wrc_contact`, `wrc_trajectory_contact`",
-                   "The contact at a prescribed pose; `sensitivity` only when asked for, the tangential fields only with "
-                   "rolling keys (kinematics or creepages).",
-                   {[=](FieldSink& s) { describe(kin, s, true); }, [=](FieldSink& s) { describe(creep, s, true); },
-                    [=](FieldSink& s) { describe(plain, s, false); }, [=](FieldSink& s) { describe(step, s); }}});
+    ContactResult narrow = plain;
+    narrow.wheel[kLeft].patches.front().span_y = 2;  // too few elements across: the resolution_note
+    out.push_back(
+        {"Contact",
+         "`ws:contact{...}`, `tr:contact{...}`; `wrc_contact`, `wrc_trajectory_contact`",
+         "The contact at a prescribed pose; `sensitivity` only when asked for, the tangential fields only with "
+         "rolling keys (kinematics or creepages).",
+         {[=](FieldSink& s) { describe(kin, s, true); }, [=](FieldSink& s) { describe(creep, s, true); },
+          [=](FieldSink& s) { describe(plain, s, false); }, [=](FieldSink& s) { describe(step, s); },
+          [=](FieldSink& s) { describe(narrow, s); }}});
   }
   // An equilibrium; failed and past flange climb.
   {
@@ -117,6 +123,7 @@ std::vector<Section> sections(const std::string& root) {
     failed.message = "example";
     failed.flange_climb = "example";
     failed.contact.wheel[kLeft].flange_climb = "example";
+    failed.contact.wheel[kLeft].patches.front().span_y = 2;
     out.push_back({"Equilibrium", "`ws:equilibrium{...}`; `wrc_equilibrium`",
                    "The elastic equilibrium of the wheelset under the vertical load Q (frictionless).",
                    {[=](FieldSink& s) { describe(e, s); }, [=](FieldSink& s) { describe(failed, s); }}});
@@ -131,6 +138,7 @@ std::vector<Section> sections(const std::string& root) {
     SweepResult r = run_sweep(cm, {0.0, 2e-3}, {0.0}, so, [&] { return conformal->make_workspace(); });
     r.elastic[1].message = "example";
     r.elastic[1].flange_climb = "example";
+    r.elastic[1].contact.wheel[kLeft].patches.front().span_y = 2;
     out.push_back({"Sweep case", "the entries of `ws:sweep{...}`",
                    "Each entry of a sweep is an equilibrium (above) with its case number and, with `rigid = true`, the "
                    "rigid reference; with rolling keys the creep forces at the equilibrium pose. Beside the entries "

@@ -38,4 +38,37 @@ for q = [1 5]
   printf('%sF %.4f %% and pmax %.4f %% off Hertz; half-axes %.3f / %.3f mm (Hertz %.3f / %.3f)\n', what, ...
          100 * (p.normal_force / F - 1), 100 * (p.pmax / ref.p0 - 1), along_x * 1e3, along_y * 1e3, ref.a * 1e3, ref.b * 1e3);
 end
+
+% A grid too coarse for the contact: the sphere on a plane (R = r0) on elements of 1.055 a spans 3 elements each way,
+% its pmax is far above Hertz's p0, and a MATLAB warning wrc:resolutionWarning says so once for the wheelset (two
+% calls and a trajectory's step), naming a grid that resolves it; on elements of a / 4 nothing is said.
+rail = wrc.profile_points('kind', 'rail', 'y', yr, 'z', sqrt(r0^2 - yr.^2) - r0);
+ref = hertz_reference(1 / (2 * r0), 1 / (2 * r0), Estar, F);
+yg = sqrt(r0^2 - (r0 - gauge_depth)^2);
+pair = {'wheel', wheel, 'rail', rail, 'radius', r0, 'cant', 0, 'gauge_depth', gauge_depth, 'gauge', 2 * (0.75 - yg), ...
+        'E', E, 'nu', nu, 'strategy', 'coarse+topology'};
+pose = {'y', 0, 'z', -ref.delta, 'roll', 0, 'yaw', 0};
+coarse = wrc.wheelset(pair{:}, 'grid', 1.055 * ref.a);
+lastwarn('', '');
+c = wrc.contact(coarse, pose{:});
+[msg, id] = lastwarn();
+expect_true(strcmp(id, 'wrc:resolutionWarning') && ~isempty(strfind(msg, 'spans only 3 x 3 elements')) && ...
+            ~isempty(strfind(msg, 'or finer spans it')), ['a contact 3 elements wide: the warning, got ''' msg '''']);
+p = c.left.patches(1);
+expect_true(~p.resolved && p.span.x == 3 && p.span.y == 3, 'a contact 3 elements wide: resolved false, span 3 x 3');
+expect_true(p.pmax / ref.p0 - 1 > 0.1, sprintf('a contact 3 elements wide: pmax %.1f %% off Hertz', 100 * (p.pmax / ref.p0 - 1)));
+lastwarn('', '');
+again = wrc.contact(coarse, pose{:});
+tr = coarse.trajectory();
+step = tr.contact(pose{:});
+[msg, id] = lastwarn();
+expect_true(isempty(id) && isempty(msg) && ~again.left.patches(1).resolved && ~step.left.patches(1).resolved, ...
+            ['once per wheelset, its trajectory included; got ''' msg '''']);
+fine = wrc.wheelset(pair{:}, 'grid', ref.a / 4);
+lastwarn('', '');
+c = wrc.contact(fine, pose{:});
+p = c.left.patches(1);
+[msg, id] = lastwarn();
+expect_true(isempty(id) && p.resolved, ['elements of a / 4: resolved, no warning; got ''' msg '''']);
+expect_rel(p.pmax, ref.p0, 0.033, 'elements of a / 4: pmax within 3.3 % of Hertz');
 disp('test_hertz: all checks hold');

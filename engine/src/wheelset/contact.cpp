@@ -511,6 +511,9 @@ void describe(const WheelContact& wc, FieldSink& out) {
     out.number("rolling_radius", wc.rolling_radius,
                {"m", "normal-force weighted mean of the areas' rolling radii (only when the wheel carries load)"});
   }
+  if (const std::string note = resolution_note(wc); !note.empty())
+    out.string("resolution_note", note,
+               {"", "what of the wheel's contact the grid does not resolve, and the grid that would (only then)"});
   describe(wc.creep, out);
   if (wc.jacobian) describe_jacobian("jacobian", *wc.jacobian, false, out);
   if (wc.jacobian_fz) describe_jacobian("jacobian_fz", *wc.jacobian_fz, true, out);

@@ -16,10 +16,12 @@ local function solve(grid)
   for _, r in ipairs{again, step} do
     check.ok(r.patches[1].resolved == first.patches[1].resolved, "each call says it")
   end
-  return first.patches[1]
+  return first.patches[1], first.resolution_note
 end
 
-local coarse, fine = solve(0.5e-3), solve(0.1e-3)
+local coarse, coarse_note = solve(0.5e-3)
+local fine, fine_note = solve(0.1e-3)
+check.ok(coarse_note and coarse_note:find("spans only") and fine_note == nil, "the wheel's resolution_note, only then")
 print(("0.5 mm: span %d x %d, pmax %.0f MPa; 0.1 mm: span %d x %d, pmax %.0f MPa"):format(
   coarse.span.x, coarse.span.y, coarse.pmax / 1e6, fine.span.x, fine.span.y, fine.pmax / 1e6))
 check.ok(not coarse.resolved and coarse.span.y < 4 and coarse.span.x >= 4, "0.5 mm: too few elements across t2")
