@@ -67,6 +67,7 @@ TEST_CASE("resolution: contacts spanning kMinSpan elements have Hertz's peak pre
         CHECK(spans[0].x == brute.x);
         CHECK(spans[0].y == brute.y);
         PatchContact pc;
+        pc.regions = 1;
         pc.span_x = spans[0].x;
         pc.span_y = spans[0].y;
         const double error = s.max_pressure / hz.p0 - 1;

@@ -125,20 +125,23 @@ struct Regions {
   std::optional<halfspace::EquivalentEllipse> largest;
   std::vector<halfspace::EquivalentEllipse> all;
   std::vector<int> label;
-  halfspace::RegionSpan span;  // the smallest of the counted regions' spans, each way (PatchContact::span_x, span_y)
+  halfspace::RegionSpan span;  // the smallest spans, each way, of the regions that matter (PatchContact::span_*)
 };
+// A region's pressure matters to the area's pmax and area when it holds the peak or carries this share of the force.
+constexpr double kSpanForceShare = 0.1;
 Regions find_regions(const halfspace::NormalSolution& sol) {
   Regions r;
   if (sol.pressure.empty() || !(sol.force > 0)) return r;
   r.all = halfspace::equivalent_ellipses(sol.grid, sol.pressure, r.label);
   const std::vector<halfspace::RegionSpan> spans = halfspace::region_spans(sol.grid, r.label, r.all.size());
+  const auto peak = std::max_element(sol.pressure.begin(), sol.pressure.end()) - sol.pressure.begin();
+  const int peak_region = r.label[static_cast<std::size_t>(peak)];
   r.span = {sol.grid.nx, sol.grid.ny};
   for (std::size_t k = 0; k < r.all.size(); ++k) {
     const halfspace::EquivalentEllipse& e = r.all[k];
-    if (e.force >= 1e-3 * sol.force) {
-      ++r.count;
+    r.count += e.force >= 1e-3 * sol.force;
+    if (static_cast<int>(k) == peak_region || e.force >= kSpanForceShare * sol.force)
       r.span = {std::min(r.span.x, spans[k].x), std::min(r.span.y, spans[k].y)};
-    }
     if (!r.largest || e.force > r.largest->force) r.largest = e;
   }
   if (r.count == 0) r.span = {};

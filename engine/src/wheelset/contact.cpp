@@ -394,13 +394,14 @@ void drop_grids(ContactResult& result, bool keep_rows) {
 std::string resolution_note(const WheelContact& wc) {
   for (std::size_t k = 0; k < wc.patches.size(); ++k) {
     const PatchContact& pc = wc.patches[k];
-    if (pc.regions == 0 || resolved(pc)) continue;
+    if (resolved(pc)) continue;
     const halfspace::Grid& g = pc.solution.grid;
     // m: its width the narrower way, at least (its outermost elements' centres lie inside it; one element: its size)
     const double wide = std::min(std::max(pc.span_x - 1, 1) * g.dx, std::max(pc.span_y - 1, 1) * g.dy);
     return fmt::format(
-        "the {} wheel's contact area {} spans only {} x {} elements (along t1 x t2, the narrowest of its "
-        "regions) of {:.3g} mm: its peak pressure ({:.0f} MPa) and area are not resolved by the grid "
+        "the {} wheel's contact area {} spans only {} x {} elements (along t1 x t2, of its regions that hold "
+        "its peak or 10 % of its force) of {:.3g} mm: its peak pressure ({:.0f} MPa) and area are not resolved by the "
+        "grid "
         "(Hertzian contacts spanning 1-3 elements: pmax up to 74 % off); grid = {:.2g}e-3 or finer "
         "spans it with about {} elements",
         side_name(pc.side), k + 1, pc.span_x, pc.span_y, g.dx * 1e3, pc.solution.max_pressure / 1e6,
@@ -456,14 +457,16 @@ void describe(const PatchContact& pc, FieldSink& out) {
   out.integer("elements", s.elements_in_contact, {"-", "elements in contact (p > 0)"});
   out.integer("regions", pc.regions,
               {"-", "separate contact regions of the area (p > 0, 8-connected, each >= 0.1 % of the force)"});
-  out.begin("span", {"", "how many elements the contact spans: the narrowest of its regions (those `regions` counts)"});
+  out.begin("span", {"",
+                     "how many elements the contact spans: the narrowest of its regions that hold the peak "
+                     "pressure or carry 10 % of the force"});
   out.integer("x", pc.span_x, {"-", "the most elements in contact in one grid row (along t1)"});
   out.integer("y", pc.span_y, {"-", "the most elements in contact in one grid column (along t2)"});
   out.end();
   out.boolean("resolved", resolved(pc),
               {"",
-               "span.x and span.y at least 4: pmax resolved by the grid (a Hertzian contact spanning 4-5 elements: "
-               "pmax within 3.3 %, its area within 52 %; 1-3 elements: pmax up to 74 % off)"});
+               "span.x and span.y at least 4 (or no pressure): pmax resolved by the grid (a Hertzian contact "
+               "spanning 4-5 elements: pmax within 3.3 %, its area within 52 %; 1-3 elements: pmax up to 74 % off)"});
   out.number("penetration", pc.penetration, {"m", "deepest undeformed inter-penetration of the area (max h)"});
   out.number("rolling_radius", pc.rolling_radius, {"m", "wheel radius at the centre of pressure"});
   out.number("nu", pc.nu, {"-", "Poisson's ratio of the bodies: what the stresses below the area take (p:subsurface)"});

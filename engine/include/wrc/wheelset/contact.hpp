@@ -136,9 +136,10 @@ struct PatchContact {
   int regions = 0;                     // separate contact regions in the area (p > 0, 8-connected, each with
                                        // >= 0.1 % of the force): 2 for a tread and flange-root contact that one
                                        // inter-penetration area holds
-  // How many elements the contact spans: of the regions `regions` counts, the smallest of each one's most elements
-  // in contact in one grid row (span_x, along t1) and in one grid column (span_y, along t2). Below kMinSpan in either
-  // the peak pressure and the area are not resolved by the grid (resolved(), resolution_note()).
+  // How many elements the contact spans: of the regions that hold its peak pressure or carry 10 % of its force, the
+  // smallest of each one's most elements in contact in one grid row (span_x, along t1) and in one grid column (span_y,
+  // along t2). Below kMinSpan in either the peak pressure and the area are not resolved by the grid (resolved(),
+  // resolution_note()).
   int span_x = 0, span_y = 0;
   // What multibody tables carry (halfspace/ellipse.hpp): FASTSIM's equivalent ellipse of the region carrying the most
   // force; Hertz's ellipse for normal_force and the curvatures at the centre of pressure (the wheel's rolling radius
@@ -166,7 +167,9 @@ damage::AreaFields area_fields(const PatchContact& area);
 // 8-9, 1.0 % (10 %); 1, 2 and 3 elements, 74, 57 and 26 %. S1002 on 60E1, a flange contact of 1 kN: 2 elements wide
 // at 0.5 mm, pmax 635 MPa against 1,143-1,181 MPa at 0.1-0.05 mm.
 inline constexpr int kMinSpan = 4;
-inline bool resolved(const PatchContact& area) { return area.span_x >= kMinSpan && area.span_y >= kMinSpan; }
+inline bool resolved(const PatchContact& area) {  // an area without pressure has nothing to resolve
+  return area.regions == 0 || (area.span_x >= kMinSpan && area.span_y >= kMinSpan);
+}
 
 // Totals of the tangential solutions (when solved): creep forces, their moments, frictional power.
 struct CreepTotals {
