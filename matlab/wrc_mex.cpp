@@ -587,12 +587,8 @@ bool* warned(const Call& c) {
   return it != live.end() && it->second.resolution_warned ? it->second.resolution_warned.get() : nullptr;
 }
 
-void profile_load(const Call& c) {
-  const std::string path = text_of(c.at(0, "the profile's path"), std::string(c.function) + ": the path");
-  const Arguments a = c.args(1);
-  wrc_profile* p = nullptr;
-  check(wrc_profile_load(path.c_str(), option_text(a).c_str(), &p));
-  c.plhs[0] = add_handle(Kind::profile, p);
+// A made profile's warnings (wrc_profile_warning), raised after the call.
+void collect_warnings(const wrc_profile* p) {
   size_t n = 0;
   check(wrc_profile_warnings(p, &n));
   for (size_t i = 0; i < n; ++i) {
@@ -600,6 +596,15 @@ void profile_load(const Call& c) {
     check(wrc_profile_warning(p, i, &text));
     g_warnings.emplace_back("wrc:profileWarning", text);
   }
+}
+
+void profile_load(const Call& c) {
+  const std::string path = text_of(c.at(0, "the profile's path"), std::string(c.function) + ": the path");
+  const Arguments a = c.args(1);
+  wrc_profile* p = nullptr;
+  check(wrc_profile_load(path.c_str(), option_text(a).c_str(), &p));
+  c.plhs[0] = add_handle(Kind::profile, p);
+  collect_warnings(p);
 }
 
 constexpr const char* kPointsKeys[] = {"kind", "y", "z", "name"};
@@ -624,6 +629,7 @@ void profile_points(const Call& c) {
   wrc_profile* p = nullptr;
   check(wrc_profile_from_points(k.c_str(), yv.data(), zv.data(), yv.size(), name ? nm.c_str() : nullptr, &p));
   c.plhs[0] = add_handle(Kind::profile, p);
+  collect_warnings(p);
 }
 
 void points(const Call& c) {

@@ -41,6 +41,11 @@ wrc.profile_load(noisy, 'kind', 'wheel', 'smooth', 0.5e-3);
 wrc.profile_load(file, 'kind', 'wheel');
 [msg, id] = lastwarn();
 expect_true(isempty(id) && isempty(msg), ['smoothed, and clean points: no warning, got ''' msg '''']);
+% The same scattered points given as arrays (wrc.profile_points, the polyline through them): the same warning.
+wrc.profile_points('kind', 'wheel', 'y', y0, 'z', z0 + 2e-6 * randn(size(z0)));
+[msg, id] = lastwarn();
+expect_true(strcmp(id, 'wrc:profileWarning') && ~isempty(strfind(msg, 'Make it with a smoothing length')), ...
+            ['scattered points given as arrays: the warning, got ''' msg '''']);
 
 % Flange measures: the function and the method; S1002's nominal Sh 28 mm, Sd 32.5 mm (EN 15313).
 m = wrc.flange_measures(s1002);

@@ -80,6 +80,24 @@ def test_load_warnings_are_python_warnings(s1002, tmp_path):
             wrc.profile.load(path, kind="wheel")
 
 
+def test_points_scatter_is_warned_of_too(s1002):
+    """Points given as arrays (wrc.profile.points, the polyline through them) are checked for scatter as a loaded
+    file's: S1002 with 2 um of scatter added to z warns, naming points' own remedy (smooth=), which removes it; the
+    clean points do not warn."""
+    y, z = s1002.points()
+    noisy = z + 2e-6 * np.random.default_rng(1).standard_normal(len(z))
+    with pytest.warns(wrc.ProfileWarning, match="Make it with a smoothing length, smooth = 0.5e-3") as record:
+        p = wrc.profile.points(kind="wheel", y=y, z=noisy)
+    assert len(record) == 1 and record[0].filename == __file__ and p.warnings == [str(record[0].message)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        smoothed = wrc.profile.points(kind="wheel", y=y, z=noisy, smooth=0.5e-3)
+        assert smoothed.warnings == [] and smoothed.smooth == 0.5e-3
+        assert wrc.profile.points(kind="wheel", y=y, z=z).warnings == []
+    with pytest.raises(wrc.Error, match="smooth = -1"):
+        wrc.profile.points(kind="wheel", y=y, z=z, smooth=-1)
+
+
 def test_load_errors(tmp_path):
     with pytest.raises(wrc.ProfileError, match="nope.txt"):
         wrc.profile.load(str(tmp_path / "nope.txt"))

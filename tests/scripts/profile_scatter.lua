@@ -4,7 +4,8 @@
 -- (wrc/profile/scatter.hpp). The reference is the analytic S1002 written with 1 nm resolution.
 --   - 1 um of Gaussian scatter added to z (every 0.1 mm): one warning, whose estimate is within 20 % of the 1 um;
 --     none with smooth = 0.5e-3, none after p:transform{smooth = 0.5e-3}, none for the clean file, none for it
---     every 2 mm; one for it written with 1 um resolution;
+--     every 2 mm; one for it written with 1 um resolution; the same for the points given as arrays
+--     (wrc.profile.points), whose remedy is its key smooth;
 --   - one wheel at Fz = 100 kN, y = 0, 3 and 6.5 mm, 0.5 mm grid: the scattered points' pmax more than 5 % above the
 --     clean profile's at some pose, the smoothed ones within 3 % at every pose.
 local check = require "wrc.check"
@@ -46,6 +47,26 @@ check.ok(#noisy:transform{shift = {z = 1e-3}}.warnings == 1, "moved by transform
 local cropped = noisy:transform{crop = {y = {-0.05, 0.05}}}
 check.ok(#cropped.warnings == 1 and #cropped:transform{smooth = 0.5e-3}.warnings == 0,
          "cropped, the warning stays; then smoothed, it goes")
+
+-- The same points given as arrays (wrc.profile.points, a polyline through them as given): the same warning, its
+-- remedy the key smooth of wrc.profile.points, which takes the warning away; the clean points are not warned of.
+local function read_points(path)
+  local y, z = {}, {}
+  for line in io.lines(path) do
+    local a, b = line:match("(%S+) (%S+)")
+    y[#y + 1], z[#z + 1] = tonumber(a) * 1e-3, tonumber(b) * 1e-3
+  end
+  return y, z
+end
+local ny, nz = read_points(noisy_file)
+local given = wrc.profile.points{kind = "wheel", y = ny, z = nz, name = "given"}
+check.ok(#given.warnings == 1 and given.warnings[1]:find("Make it with a smoothing length, smooth = 0.5e-3", 1, true),
+         "scattered points given as arrays: the warning, its remedy smooth: " .. tostring(given.warnings[1]))
+check.rel(tonumber(given.warnings[1]:match("scatter by about ([%d.]+) um")), um, 1e-9, "the file's estimate")
+local given_smooth = wrc.profile.points{kind = "wheel", y = ny, z = nz, smooth = 0.5e-3}
+check.ok(#given_smooth.warnings == 0 and given_smooth.smooth == 0.5e-3, "smooth = 0.5e-3: a spline, no warning")
+local cy, cz = read_points(clean_file)
+check.ok(#wrc.profile.points{kind = "wheel", y = cy, z = cz}.warnings == 0, "the clean points: no warning")
 
 local function pmax(wheel, y)
   local ws = wrc.wheelset{wheel = wheel, rail = rail, grid = 0.5e-3}

@@ -88,17 +88,20 @@ const char* wrc_closest_name(const char* word, const char* const* names, size_t 
  * wrc.profile.load (units, mirror_y, mirror_z, crop.y, crop.z, shift.y, shift.z, kind, name, reader, the reader's own
  * options; a Lua definition's own options such as step). The caller owns *out. */
 wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile** out);
-/* A profile from n points (m, left-side frame; docs/design.md section 2); kind is "wheel" or "rail"; name may be
- * NULL. The arrays are copied; n above 10,000,000 is WRC_INVALID_ARGUMENT. The caller owns *out. */
+/* A profile from n points (m, left-side frame; docs/design.md section 2): the polyline through them; kind is "wheel"
+ * or "rail"; name may be NULL. The arrays are copied; n above 10,000,000 is WRC_INVALID_ARGUMENT. Points that scatter
+ * as measurement noise are warned of as a loaded file's are (wrc_profile_warnings; printed on stderr as
+ * "wrc: warning: ..."). The caller owns *out. */
 wrc_status wrc_profile_from_points(const char* kind, const double* y, const double* z, size_t n, const char* name,
                                    wrc_profile** out);
 /* Copies the points into caller-owned arrays of `capacity` values; *n = the number of points (WRC_TOO_SMALL when
  * capacity < *n; y and z may be NULL with capacity 0 to ask for the size). */
 wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, size_t capacity, size_t* n);
-/* The profile's warnings: what looks wrong in it but was accepted when it was loaded (an orientation that looks
- * reversed, points that scatter as measurement noise; docs/guide/profiles.md), each of which wrc_profile_load also
- * prints on stderr as "wrc.profile.load: warning: ...". *n = their number; *text = warning `index` (0-based), a string
- * owned by the profile and valid until it is freed. For a caller whose users do not see stderr (the MATLAB desktop). */
+/* The profile's warnings: what looks wrong in it but was accepted when it was loaded or made (an orientation that
+ * looks reversed, points that scatter as measurement noise; docs/guide/profiles.md), each of which wrc_profile_load
+ * also prints on stderr as "wrc.profile.load: warning: ..." (wrc_profile_from_points as "wrc: warning: ..."). *n =
+ * their number; *text = warning `index` (0-based), a string owned by the profile and valid until it is freed. For a
+ * caller whose users do not see stderr (the MATLAB desktop). */
 wrc_status wrc_profile_warnings(const wrc_profile* profile, size_t* n);
 wrc_status wrc_profile_warning(const wrc_profile* profile, size_t index, const char** text);
 /* Writes the profile to `path` in a format a reader plugin reads back (docs/guide/profiles.md "Writing profiles"),

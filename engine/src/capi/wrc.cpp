@@ -377,9 +377,11 @@ wrc_status wrc_profile_from_points(const char* kind, const double* y, const doub
     if (n > 0 && (!y || !z)) invalid("the point arrays are NULL");
     const wrc::ProfileKind k = wrc::parse_profile_kind(kind, "wrc_profile_from_points");
     auto p = std::make_shared<wrc_profile>();
-    p->profile = std::make_shared<const wrc::Profile>(wrc::make_profile(
-        k, std::vector<double>(y, y + n), std::vector<double>(z, z + n), name ? name : wrc::to_string(k),
-        "wrc_profile_from_points"));
+    p->profile = std::make_shared<const wrc::Profile>(
+        wrc::points_profile(k, std::vector<double>(y, y + n), std::vector<double>(z, z + n),
+                            name ? name : wrc::to_string(k), "wrc_profile_from_points"));
+    for (const std::string& w : p->profile->warnings)
+      std::fprintf(stderr, "wrc: warning: %s\n", w.c_str());  // the text names wrc_profile_from_points
     *out = registry().add(std::move(p));
     return WRC_OK;
   });

@@ -51,14 +51,9 @@ int points(lua_State* L) {
   check_point_count(static_cast<double>(std::max(raw_length(L, 1, "y"), raw_length(L, 1, "z"))), ctx);
   const OptionTable t = table_options(L, 1, ctx);
   OptionReader r(t, ctx);
-  const auto kind_text = r.string("kind");
-  if (!kind_text) fail("{}: 'kind' is required (\"wheel\" or \"rail\")", ctx);
-  const ProfileKind kind = parse_profile_kind(*kind_text, ctx);
-  auto y = r.numbers("y").value_or(std::vector<double>{});
-  auto z = r.numbers("z").value_or(std::vector<double>{});
-  const std::string name = r.string("name").value_or(std::string(to_string(kind)));
-  r.finish();
-  push_profile(L, std::make_shared<const Profile>(make_profile(kind, std::move(y), std::move(z), name, ctx)));
+  auto p = std::make_shared<const Profile>(read_points_profile(r));
+  for (const std::string& w : p->warnings) std::fprintf(stderr, "wrc: warning: %s\n", w.c_str());  // names ctx
+  push_profile(L, std::move(p));
   return 1;
 }
 

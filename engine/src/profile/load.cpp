@@ -319,6 +319,32 @@ std::vector<std::string> load_warnings(const Profile& p, const Reversals& revers
 
 }  // namespace
 
+Profile points_profile(ProfileKind kind, std::vector<double> y, std::vector<double> z, std::string name,
+                       const std::string& source, std::optional<double> smooth) {
+  if (smooth && !(*smooth >= 0 && *smooth <= 1.0))
+    fail("{}: smooth = {} must be a smoothing length in metres, 0 .. 1 (0: interpolating cubic spline)", source,
+         *smooth);
+  Profile p = make_profile(kind, std::move(y), std::move(z), std::move(name), source);
+  if (smooth) return smooth_profile(p, *smooth);
+  if (auto scatter = scatter_warning(p, "Make it")) p.warnings.push_back(std::move(*scatter));
+  return p;
+}
+
+Profile read_points_profile(OptionReader& r) {
+  const auto kind_text = r.string("kind", {"", "\"wheel\" or \"rail\" (required)"});
+  if (!kind_text) fail("{}: 'kind' is required (\"wheel\" or \"rail\")", r.context());
+  const ProfileKind kind = parse_profile_kind(*kind_text, r.context());
+  auto y = r.numbers("y", {"m", "lateral coordinates of the points (required)"}).value_or(std::vector<double>{});
+  auto z = r.numbers("z", {"m", "vertical coordinates of the points (required)"}).value_or(std::vector<double>{});
+  const std::string name = r.string("name", {"", "the profile's name"}).value_or(std::string(to_string(kind)));
+  const OptionDoc smooth_doc{"m",
+                             "smoothing length of a spline through the points (0: interpolating; none: the "
+                             "polyline through them)"};
+  const auto smooth = r.number("smooth", smooth_doc);
+  r.finish();
+  return points_profile(kind, std::move(y), std::move(z), name, r.context(), smooth);
+}
+
 Profile finish_profile(RawProfile raw, const LoadOptions& o, const std::string& source, const std::string& reader_id) {
   if (raw.y.size() != raw.z.size()) fail("{}: reader '{}' gave {} y values but {} z values", source, reader_id, raw.y.size(), raw.z.size());
   if (!raw.lines.empty() && raw.lines.size() != raw.y.size())

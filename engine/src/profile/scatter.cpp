@@ -58,16 +58,16 @@ namespace {
 constexpr std::string_view kScatterWords = "about a smooth curve, from point to point as measurement noise";
 }
 
-std::optional<std::string> scatter_warning(const Profile& p) {
+std::optional<std::string> scatter_warning(const Profile& p, std::string_view remedy) {
   const PointScatter s = point_scatter(p.y, p.z);
   if (!s.noise || !(s.sigma >= kScatterWarning)) return std::nullopt;
   return fmt::format(
       "{}: the points scatter by about {:.2g} um {} or rounding does (points every {:.2g} mm; estimated from their "
       "third differences), and the profile follows them ({}): such scatter raises pmax and breaks up the contact "
-      "area (1 um raised S1002's pmax on 60E1 by 7-40 % on a 0.5 mm grid, by 40-94 % on a 0.2 mm grid). Load it "
+      "area (1 um raised S1002's pmax on 60E1 by 7-40 % on a 0.5 mm grid, by 40-94 % on a 0.2 mm grid). {} "
       "with a smoothing length, smooth = 0.5e-3 (m), which removes the scatter and keeps the profile's shape",
       p.source, s.sigma * 1e6, kScatterWords, s.spacing * 1e3,
-      p.spline ? "the interpolating spline through them" : "a polyline through them");
+      p.spline ? "the interpolating spline through them" : "a polyline through them", remedy);
 }
 
 bool is_scatter_warning(std::string_view warning) { return warning.find(kScatterWords) != std::string_view::npos; }

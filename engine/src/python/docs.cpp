@@ -173,7 +173,7 @@ std::string stub() {
   s += "class _ProfileModule:\n"
        "    max_points: int\n"
        "    def points(self, *, kind: Literal[\"wheel\", \"rail\"], y: Sequence[float], z: Sequence[float], "
-       "name: str = ...) -> Profile: ...\n";
+       "name: str = ..., smooth: float = ...) -> Profile: ...\n";
   s += entries_of("profile", "    ") + "\nprofile: _ProfileModule\n\n";
   s += entries_of("", "");
   s += "def operations() -> list[dict[str, Any]]: ...\n";

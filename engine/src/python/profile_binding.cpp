@@ -62,19 +62,16 @@ PyProfile load(py::handle path, const py::kwargs& kwargs) {
   return PyProfile{std::move(p)};
 }
 
-// wrc.profile.points(kind=, y=, z=, name=): metres, left-side frame.
+// wrc.profile.points(kind=, y=, z=, name=, smooth=): metres, left-side frame; scattered points warned of.
 PyProfile points(const py::kwargs& kwargs) {
   const char* ctx = "wrc.profile.points";
   const OptionTable t = to_options(kwargs, ctx);
-  return reading([&] {
+  PyProfile p = reading([&] {
     OptionReader r(t, ctx);
-    const ProfileKind kind = parse_profile_kind(r.string("kind").value_or(""), ctx);
-    auto y = r.numbers("y").value_or(std::vector<double>{});
-    auto z = r.numbers("z").value_or(std::vector<double>{});
-    const std::string name = r.string("name").value_or(std::string(to_string(kind)));
-    r.finish();
-    return PyProfile{std::make_shared<const Profile>(make_profile(kind, std::move(y), std::move(z), name, ctx))};
+    return PyProfile{std::make_shared<const Profile>(read_points_profile(r))};
   });
+  warn(*p.profile);
+  return p;
 }
 
 std::string repr(const PyProfile& self) {
@@ -172,7 +169,9 @@ void register_profile(py::module_& m) {
   py::module_ profile = m.def_submodule("profile", "wrc.profile: loading and making profiles");
   profile.def("load", load, py::arg("path"), docstring(python_entry("profile.load")).c_str());
   profile.def("points", points,
-              "A profile from points: kind= \"wheel\" or \"rail\", y=, z= (metres, left-side frame), name=.");
+              "A profile from points: kind= \"wheel\" or \"rail\", y=, z= (metres, left-side frame), name=, "
+              "smooth= (m: a smoothing spline through them; none: the polyline through them, whose scatter is a "
+              "wrc.ProfileWarning).");
   profile.attr("max_points") = kMaxProfilePoints;
 }
 

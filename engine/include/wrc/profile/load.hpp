@@ -108,6 +108,14 @@ Profile finish_profile(RawProfile raw, const LoadOptions& options, const std::st
 // spline is mirrored and shifted with it.
 Profile transform_profile(const Profile& p, const LoadOptions& options);
 
+// A profile from points a program gives (wrc.profile.points, wrc_profile_from_points): make_profile of them, with
+// `smooth` (m, 0 .. 1) its smoothing spline (0: interpolating); without, the polyline through them as given, whose
+// scatter is warned of as a loaded file's is (p.warnings; scatter.hpp).
+Profile points_profile(ProfileKind kind, std::vector<double> y, std::vector<double> z, std::string name,
+                       const std::string& source, std::optional<double> smooth = std::nullopt);
+// wrc.profile.points' keys (kind and y, z required; name, smooth) into points_profile; unknown keys are errors.
+Profile read_points_profile(OptionReader& r);
+
 // Where a profile name points, one rule for every caller (wrc.profile.load, wrc_profile_load, a definition loading
 // another; docs/guide/profiles.md "Where profiles are found"): a relative path whose first name is `profiles`
 // ("profiles/60e1.lua") is the shipped profile of that name in paths().profiles -- never a file of the working

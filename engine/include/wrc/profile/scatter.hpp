@@ -57,7 +57,8 @@ PointScatter point_scatter(const std::vector<double>& y, const std::vector<doubl
 
 // The warning for a profile whose points scatter as noise by kScatterWarning or more, naming p.source and the
 // remedy (a smoothing length); nothing otherwise. For profiles that follow their points: loaded without `smooth`.
-std::optional<std::string> scatter_warning(const Profile& p);
+// `remedy`: what to do about it, the sentence's start ("Load it" for a file, "Make it" for given points).
+std::optional<std::string> scatter_warning(const Profile& p, std::string_view remedy = "Load it");
 // Whether a warning is one of scatter_warning's (a profile smoothed afterwards drops it, whatever points it was of).
 bool is_scatter_warning(std::string_view warning);
 
