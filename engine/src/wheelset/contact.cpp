@@ -399,11 +399,10 @@ std::string resolution_note(const WheelContact& wc) {
     // m: its width the narrower way, at least (its outermost elements' centres lie inside it; one element: its size)
     const double wide = std::min(std::max(pc.span_x - 1, 1) * g.dx, std::max(pc.span_y - 1, 1) * g.dy);
     return fmt::format(
-        "the {} wheel's contact area {} spans only {} x {} elements (along t1 x t2, of its regions that hold "
-        "its peak or 10 % of its force) of {:.3g} mm: its peak pressure ({:.0f} MPa) and area are not resolved by the "
-        "grid "
-        "(Hertzian contacts spanning 1-3 elements: pmax up to 74 % off); grid = {:.2g}e-3 or finer "
-        "spans it with about {} elements",
+        "the {} wheel's contact area {} spans only {} x {} elements (along t1 x t2, of its regions that hold its "
+        "peak or 10 % of its force) of {:.3g} mm: its peak pressure ({:.0f} MPa) and area are not resolved by the "
+        "grid (Hertzian contacts spanning 1-3 elements: pmax up to 74 % off); grid = {:.2g}e-3 or finer spans it "
+        "with about {} elements",
         side_name(pc.side), k + 1, pc.span_x, pc.span_y, g.dx * 1e3, pc.solution.max_pressure / 1e6,
         wide / (2 * kMinSpan) * 1e3, 2 * kMinSpan);
   }
