@@ -319,6 +319,11 @@ const char* entry(const std::vector<std::string>& list, std::size_t index, const
   return list[index].c_str();
 }
 
+// A loaded or made profile's warnings on stderr, each prefixed by `who` (also given by wrc_profile_warning).
+void print_warnings(const wrc::Profile& p, const char* who) {
+  for (const std::string& w : p.warnings) std::fprintf(stderr, "%s: warning: %s\n", who, w.c_str());
+}
+
 }  // namespace
 
 extern "C" {
@@ -361,8 +366,7 @@ wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile**
     auto p = std::make_shared<wrc_profile>();
     p->profile = std::make_shared<const wrc::Profile>(
         wrc::load_profile(path, options_of(options, "wrc_profile_load: options"), &definitions));
-    for (const std::string& w : p->profile->warnings)
-      std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+    print_warnings(*p->profile, "wrc.profile.load");
     *out = registry().add(std::move(p));
     return WRC_OK;
   });
@@ -380,8 +384,7 @@ wrc_status wrc_profile_from_points(const char* kind, const double* y, const doub
     p->profile = std::make_shared<const wrc::Profile>(
         wrc::points_profile(k, std::vector<double>(y, y + n), std::vector<double>(z, z + n),
                             name ? name : wrc::to_string(k), "wrc_profile_from_points"));
-    for (const std::string& w : p->profile->warnings)
-      std::fprintf(stderr, "wrc: warning: %s\n", w.c_str());  // the text names wrc_profile_from_points
+    print_warnings(*p->profile, "wrc");  // the text names wrc_profile_from_points
     *out = registry().add(std::move(p));
     return WRC_OK;
   });

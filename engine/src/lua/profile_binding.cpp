@@ -46,9 +46,18 @@ struct CurrentState {
   ~CurrentState() { r.current = saved; }
 };
 
-// Shows a loaded profile's warnings, as every front end does (the engine prints nothing).
-void print_warnings(const Profile& p) {
-  for (const std::string& w : p.warnings) std::fprintf(stderr, "wrc.profile.load: warning: %s\n", w.c_str());
+// Shows a loaded or made profile's warnings, as every front end does (the engine prints nothing), each prefixed by
+// `who`: "wrc.profile.load" before a file's path, "wrc" before a text that names wrc.profile.points.
+void print_warnings(const Profile& p, const char* who = "wrc.profile.load") {
+  for (const std::string& w : p.warnings) std::fprintf(stderr, "%s: warning: %s\n", who, w.c_str());
+}
+
+// wrc.profile.points{...} (profile_api::points) with its warnings shown; a profile definition's sandbox calls
+// profile_api::points itself, and the loaded definition's profile is checked and shown by wrc.profile.load.
+int profile_points(lua_State* L) {
+  const int n = profile_api::points(L);
+  print_warnings(*check_profile(L, -1, "wrc.profile.points"), "wrc");
+  return n;
 }
 
 // ---- wrc.profile functions ----
@@ -210,7 +219,7 @@ void open_profile(lua_State* L) {
   register_profile_methods(L, methods);
 
   lua_newtable(L);  // wrc.profile
-  const luaL_Reg funcs[] = {{"points", guarded<profile_api::points>},
+  const luaL_Reg funcs[] = {{"points", guarded<profile_points>},
                             {"load", guarded<profile_load>},
                             {"register_reader", guarded<profile_register_reader>},
                             {"readers", guarded<profile_readers>},

@@ -51,9 +51,7 @@ int points(lua_State* L) {
   check_point_count(static_cast<double>(std::max(raw_length(L, 1, "y"), raw_length(L, 1, "z"))), ctx);
   const OptionTable t = table_options(L, 1, ctx);
   OptionReader r(t, ctx);
-  auto p = std::make_shared<const Profile>(read_points_profile(r));
-  for (const std::string& w : p->warnings) std::fprintf(stderr, "wrc: warning: %s\n", w.c_str());  // names ctx
-  push_profile(L, std::move(p));
+  push_profile(L, std::make_shared<const Profile>(read_points_profile(r)));  // its warnings: the caller's to show
   return 1;
 }
 
