@@ -824,6 +824,8 @@ void dispatch(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
                         std::to_string(WRC_ABI_VERSION));
   // The engine's messages about option types in MATLAB's words (struct, numeric array), on the thread that calls.
   check(wrc_set_option_dialect("matlab"));
+  // A profile's warnings are raised as MATLAB warnings (collect_warnings), not printed by the library as well.
+  check(wrc_set_profile_warnings_printed(0));
   if (nrhs < 1) fail("wrc:usage", "wrc_mex(command, ...): the +wrc package calls it (see docs/matlab.md)");
   const std::string name = text_of(prhs[0], "wrc_mex's command");
   for (const Command& cmd : commands)

@@ -719,9 +719,14 @@ TEST_CASE("wrc_profile_warnings: a loaded profile's warnings (those printed on s
   std::size_t n = 99;
   REQUIRE(wrc_profile_warnings(f.wheel, &n) == WRC_OK);
   CHECK(n == 0);  // the sample S1002, the right way round, its points on the curve
-  // The same file read mirrored: its flange on the field side, which the orientation check names.
+  // The same file read mirrored: its flange on the field side, which the orientation check names, on stderr too.
   wrc_profile* mirrored = nullptr;
-  REQUIRE_MESSAGE(wrc_profile_load(WRC_SAMPLES "/s1002.prw", "mirror_y=true", &mirrored) == WRC_OK, last());
+  const std::string printed = stderr_of([&] {
+    REQUIRE_MESSAGE(wrc_profile_load(WRC_SAMPLES "/s1002.prw", "mirror_y=true", &mirrored) == WRC_OK, last());
+  });
+  CHECK_MESSAGE(
+      (printed.rfind("wrc.profile.load: warning: ", 0) == 0 && printed.find("looks mirrored") != std::string::npos),
+      printed);
   REQUIRE(wrc_profile_warnings(mirrored, &n) == WRC_OK);
   REQUIRE(n == 1);
   const char* text = nullptr;
@@ -734,6 +739,52 @@ TEST_CASE("wrc_profile_warnings: a loaded profile's warnings (those printed on s
   CHECK(wrc_profile_warnings(nullptr, &n) == WRC_INVALID_ARGUMENT);
   wrc_profile_free(mirrored);
   CHECK(wrc_profile_warnings(mirrored, &n) == WRC_INVALID_ARGUMENT);  // freed
+}
+
+TEST_CASE("wrc_set_profile_warnings_printed: a caller that shows the warnings itself keeps them off stderr") {
+  wrc_profile* mirrored = nullptr;
+  REQUIRE(wrc_set_profile_warnings_printed(0) == WRC_OK);
+  const std::string quiet = stderr_of([&] {
+    REQUIRE_MESSAGE(wrc_profile_load(WRC_SAMPLES "/s1002.prw", "mirror_y=true", &mirrored) == WRC_OK, last());
+  });
+  CHECK_MESSAGE(quiet.empty(), quiet);
+  std::size_t n = 0;
+  REQUIRE(wrc_profile_warnings(mirrored, &n) == WRC_OK);
+  CHECK(n == 1);  // still in the profile
+  wrc_profile_free(mirrored);
+  // Points given as arrays that scatter as measurement noise (2 um on a circle of 0.5 m): kept off stderr too.
+  std::vector<double> y, z;
+  for (int i = 0; i <= 600; ++i) {
+    y.push_back(-30e-3 + 1e-4 * i);
+    z.push_back(0.5 - std::sqrt(0.25 - y.back() * y.back()) + 2e-6 * (i % 2 ? 1 : -1));
+  }
+  wrc_profile* points = nullptr;
+  const std::string quiet_points = stderr_of([&] {
+    REQUIRE_MESSAGE(wrc_profile_from_points("rail", y.data(), z.data(), y.size(), nullptr, &points) == WRC_OK, last());
+  });
+  CHECK_MESSAGE(quiet_points.empty(), quiet_points);
+  REQUIRE(wrc_profile_warnings(points, &n) == WRC_OK);
+  CHECK(n == 1);
+  wrc_profile_free(points);
+  // Per thread, as the option dialect: another thread still prints.
+  const std::string other = stderr_of([&] {
+    std::thread([&] {
+      wrc_profile* p = nullptr;
+      wrc_profile_load(WRC_SAMPLES "/s1002.prw", "mirror_y=true", &p);
+      wrc_profile_free(p);
+    }).join();
+  });
+  CHECK_MESSAGE(
+      (other.rfind("wrc.profile.load: warning: ", 0) == 0 && other.find("looks mirrored") != std::string::npos), other);
+  CHECK(wrc_set_profile_warnings_printed(2) == WRC_INVALID_ARGUMENT);
+  CHECK_MESSAGE(last().find("printed = 2 must be 0 or 1") != std::string::npos, last());
+  REQUIRE(wrc_set_profile_warnings_printed(1) == WRC_OK);
+  const std::string again = stderr_of([&] {
+    wrc_profile* p = nullptr;
+    REQUIRE(wrc_profile_from_points("rail", y.data(), z.data(), y.size(), nullptr, &p) == WRC_OK);
+    wrc_profile_free(p);
+  });
+  CHECK_MESSAGE(again.find("wrc: warning: ") != std::string::npos, again);
 }
 
 TEST_CASE("the C API reads its arguments and options as one request: search, arguments given twice, on_failure") {

@@ -70,6 +70,11 @@ const char* wrc_last_error(void);
  * for a table) or "matlab" (a numeric array, a struct: the MATLAB/Octave interface passes its name/value pairs and
  * structs as option text). Positions in arrays are named by ordinals ("the 2nd value of 'y'"), whoever asks. */
 wrc_status wrc_set_option_dialect(const char* front_end);
+/* Whether the calling thread's wrc_profile_load and wrc_profile_from_points print a profile's warnings on stderr: 1
+ * (the default) or 0, for a caller that shows wrc_profile_warnings in its own way (the MATLAB/Octave interface raises
+ * them as MATLAB warnings, and Octave in a terminal would show each twice). The warnings stay in the profile either
+ * way. Any other value is WRC_INVALID_ARGUMENT. */
+wrc_status wrc_set_profile_warnings_printed(int printed);
 /* The entry of names[0 .. count) that `word` is plausibly a misspelling of, by the rule of the option readers' "did
  * you mean" (same letters in another case first, else the fewest edits, at most max(2, length / 3)); NULL when none
  * is, or for a NULL word or names. The pointer is the caller's names[i]. For a front end that reads some names
@@ -91,7 +96,7 @@ wrc_status wrc_profile_load(const char* path, const char* options, wrc_profile**
 /* A profile from n points (m, left-side frame; docs/design.md section 2): the polyline through them; kind is "wheel"
  * or "rail"; name may be NULL. The arrays are copied; n above 10,000,000 is WRC_INVALID_ARGUMENT. Points that scatter
  * as measurement noise are warned of as a loaded file's are (wrc_profile_warnings; printed on stderr as
- * "wrc: warning: ..."). The caller owns *out. */
+ * "wrc: warning: ..." unless wrc_set_profile_warnings_printed(0)). The caller owns *out. */
 wrc_status wrc_profile_from_points(const char* kind, const double* y, const double* z, size_t n, const char* name,
                                    wrc_profile** out);
 /* Copies the points into caller-owned arrays of `capacity` values; *n = the number of points (WRC_TOO_SMALL when
@@ -99,9 +104,9 @@ wrc_status wrc_profile_from_points(const char* kind, const double* y, const doub
 wrc_status wrc_profile_points(const wrc_profile* profile, double* y, double* z, size_t capacity, size_t* n);
 /* The profile's warnings: what looks wrong in it but was accepted when it was loaded or made (an orientation that
  * looks reversed, points that scatter as measurement noise; docs/guide/profiles.md), each of which wrc_profile_load
- * also prints on stderr as "wrc.profile.load: warning: ..." (wrc_profile_from_points as "wrc: warning: ..."). *n =
- * their number; *text = warning `index` (0-based), a string owned by the profile and valid until it is freed. For a
- * caller whose users do not see stderr (the MATLAB desktop). */
+ * also prints on stderr as "wrc.profile.load: warning: ..." (wrc_profile_from_points as "wrc: warning: ...") unless
+ * the thread set wrc_set_profile_warnings_printed(0). *n = their number; *text = warning `index` (0-based), a string
+ * owned by the profile and valid until it is freed. For a caller whose users do not see stderr (the MATLAB desktop). */
 wrc_status wrc_profile_warnings(const wrc_profile* profile, size_t* n);
 wrc_status wrc_profile_warning(const wrc_profile* profile, size_t index, const char** text);
 /* Writes the profile to `path` in a format a reader plugin reads back (docs/guide/profiles.md "Writing profiles"),

@@ -57,6 +57,8 @@ namespace {
 thread_local std::string last_error;
 // The words of this thread's messages about option types (wrc_set_option_dialect).
 thread_local wrc::OptionDialect option_dialect = wrc::OptionDialect::c;
+// Whether this thread's profile loads print the profile's warnings on stderr (wrc_set_profile_warnings_printed).
+thread_local bool profile_warnings_printed = true;
 
 // A status with its message, thrown inside an entry point.
 struct Failure {
@@ -319,8 +321,10 @@ const char* entry(const std::vector<std::string>& list, std::size_t index, const
   return list[index].c_str();
 }
 
-// A loaded or made profile's warnings on stderr, each prefixed by `who` (also given by wrc_profile_warning).
+// A loaded or made profile's warnings on stderr, each prefixed by `who` (also given by wrc_profile_warning), unless
+// the thread turned that off (wrc_set_profile_warnings_printed).
 void print_warnings(const wrc::Profile& p, const char* who) {
+  if (!profile_warnings_printed) return;
   for (const std::string& w : p.warnings) std::fprintf(stderr, "%s: warning: %s\n", who, w.c_str());
 }
 
@@ -340,6 +344,14 @@ wrc_status wrc_set_option_dialect(const char* front_end) {
     if (f == "c") option_dialect = wrc::OptionDialect::c;
     else if (f == "matlab") option_dialect = wrc::OptionDialect::matlab;
     else invalid(fmt::format("front_end = \"{}\" must be \"c\" or \"matlab\"", f));
+    return WRC_OK;
+  });
+}
+
+wrc_status wrc_set_profile_warnings_printed(int printed) {
+  return guard("wrc_set_profile_warnings_printed", [&] {
+    if (printed != 0 && printed != 1) invalid(fmt::format("printed = {} must be 0 or 1", printed));
+    profile_warnings_printed = printed == 1;
     return WRC_OK;
   });
 }
