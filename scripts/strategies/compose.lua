@@ -99,7 +99,7 @@ local function expand(names, out, depth, alone)
   return out
 end
 
-local function build(names, user_opt)
+local function build(names, user_opt, element)
   local comps = expand(names, {}, 0, #names == 1)
   if #comps == 0 then error("empty strategy composition", 0) end
   -- Options: the components' defaults, then the user's (a key no component knows is an error: typos).
@@ -110,6 +110,9 @@ local function build(names, user_opt)
       known[k] = true
     end
   end
+  -- A default `step` no coarser than the wheelset's grid element (m): a finer grid resolves the kinks between cones
+  -- and lines, and pmax then grows with the refinement (docs/guide/normal.md); native_strategy does the same.
+  if element ~= nil and type(opt.step) == "number" and element < opt.step then opt.step = element end
   for k, v in pairs(user_opt) do
     if not known[k] then
       local list = {}
@@ -156,9 +159,10 @@ local function build(names, user_opt)
   return S
 end
 
-function M.resolve(spec)
+-- `element`: the wheelset's grid element (m), or nil (a strategy rebuilt from its options, which hold its step).
+function M.resolve(spec, element)
   if spec == nil then spec = wrc.defaults.wheelset.strategy end  -- the engine's one default
-  if type(spec) == "string" then return build({spec}, {}) end
+  if type(spec) == "string" then return build({spec}, {}, element) end
   if type(spec) ~= "table" then error("strategy must be a name, a list of names or a table, got " .. type(spec), 0) end
   if spec.locate ~= nil then  -- inline strategy
     if type(spec.locate) ~= "function" then error("inline strategy: locate must be a function", 0) end
@@ -177,7 +181,7 @@ function M.resolve(spec)
   end
   if spec.name ~= nil and #spec > 0 then error("a strategy table gives either name = ... or a list of names, not both", 0) end
   if #names == 0 then error("strategy table: give a list of names, name = ..., or locate = function", 0) end
-  return build(names, opt)
+  return build(names, opt, element)
 end
 
 return M

@@ -1,4 +1,5 @@
--- uniform: wheel and rail resampled along their arc at a fixed step (default 0.1 mm, the paper's sampling).
+-- uniform: wheel and rail resampled along their arc at a fixed step (default 0.1 mm, the paper's sampling, or the
+-- wheelset's grid element when finer: compose.lua).
 -- On its own it tests every line against every cone (compose it with coarse and/or topology to prune).
 return {
   description = "profiles resampled along the arc every `step` m; every line against every cone",

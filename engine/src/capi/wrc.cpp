@@ -467,7 +467,8 @@ wrc_status wrc_wheelset_new4(const wrc_profile* left_wheel, const wrc_profile* r
     }
     r.finish();
     auto w = std::make_shared<wrc_wheelset>();
-    w->model = wrc::build_wheelset(profiles, params, wrc::native_strategy(params.strategy, strategy_options));
+    w->model = wrc::build_wheelset(profiles, params,
+                                   wrc::native_strategy(params.strategy, strategy_options, params.contact.element));
     *out = registry().add(std::move(w));
     return WRC_OK;
   });

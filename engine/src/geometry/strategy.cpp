@@ -66,7 +66,7 @@ std::vector<std::string> split_plus(const std::string& name) {
 
 class NativeStrategy final : public LocationStrategy {
  public:
-  NativeStrategy(const std::string& name, const OptionTable& user) {
+  NativeStrategy(const std::string& name, const OptionTable& user, double element) {
     const std::vector<std::string> names = split_plus(name);
     expand(names, comps_, 0, names.size() == 1);
     info_.name = name;
@@ -76,7 +76,7 @@ class NativeStrategy final : public LocationStrategy {
     for (const Component* c : comps_) {
       for (const auto& [key, fallback] : c->defaults) {
         if (info_.options.count(key)) continue;
-        info_.options[key] = r.number(key, fallback);
+        info_.options[key] = r.number(key, key == "step" ? std::min(fallback, element) : fallback);
       }
       if (c->windows) plan_.coarse = true;
       if (c->scan != Scan::none) plan_.scan = c->scan == Scan::walk ? NativePlan::Scan::walk : NativePlan::Scan::test;
@@ -118,8 +118,9 @@ class NativeStrategy final : public LocationStrategy {
 
 }  // namespace
 
-std::shared_ptr<const LocationStrategy> native_strategy(const std::string& name, const OptionTable& options) {
-  return std::make_shared<const NativeStrategy>(name, options);
+std::shared_ptr<const LocationStrategy> native_strategy(const std::string& name, const OptionTable& options,
+                                                        double element) {
+  return std::make_shared<const NativeStrategy>(name, options, element);
 }
 
 }  // namespace wrc

@@ -8,6 +8,7 @@
 #include "lua/profile_binding.hpp"
 #include "wrc/core/conventions.hpp"
 
+#include <cmath>
 #include <string>
 #include <thread>
 
@@ -158,8 +159,9 @@ std::string pop_message(lua_State* L) {
   return msg;
 }
 
-// Calls require("wrc.strategies.compose").resolve(<value at idx>) and leaves the strategy table on the stack.
-void call_resolve(lua_State* L, int idx) {
+// Calls require("wrc.strategies.compose").resolve(<value at idx>, element) and leaves the strategy table on the
+// stack; element (m): the wheelset's grid element, NaN for none (a strategy rebuilt from its options).
+void call_resolve(lua_State* L, int idx, double element) {
   idx = lua_absindex(L, idx);
   lua_getglobal(L, "require");
   lua_pushstring(L, "wrc.strategies.compose");
@@ -167,7 +169,11 @@ void call_resolve(lua_State* L, int idx) {
   lua_getfield(L, -1, "resolve");
   lua_remove(L, -2);
   lua_pushvalue(L, idx);
-  if (pcall_plain_errors(L, 1, 1) != LUA_OK) fail("wrc.wheelset: strategy: {}", pop_message(L));
+  if (std::isnan(element))
+    lua_pushnil(L);
+  else
+    lua_pushnumber(L, element);
+  if (pcall_plain_errors(L, 2, 1) != LUA_OK) fail("wrc.wheelset: strategy: {}", pop_message(L));
   if (!lua_istable(L, -1)) {
     lua_pop(L, 1);
     fail("wrc.wheelset: the strategy composer did not return a table");
@@ -274,14 +280,14 @@ void push_strategy(lua_State* L, const StrategyInfo& info) {
     lua_setfield(L, -2, key.c_str());
   }
   const int spec = lua_gettop(L);
-  call_resolve(L, spec);
+  call_resolve(L, spec, NAN);
   lua_remove(L, spec);
 }
 
 }  // namespace
 
-LuaStrategy::LuaStrategy(lua_State* L, int idx) : L_(L) {
-  call_resolve(L, idx);
+LuaStrategy::LuaStrategy(lua_State* L, int idx, double element) : L_(L) {
+  call_resolve(L, idx, element);
   info_ = read_info(L);
   lua_pushvalue(L, -1);
   table_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);

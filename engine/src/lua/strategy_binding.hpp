@@ -38,8 +38,9 @@ class LuaSearch final : public PoseSearch {
 
 class LuaStrategy final : public LocationStrategy {
  public:
-  // Resolves the `strategy` value at stack index idx of L (the building state) with wrc.strategies.compose.
-  LuaStrategy(lua_State* L, int idx);
+  // Resolves the `strategy` value at stack index idx of L (the building state) with wrc.strategies.compose, for a
+  // wheelset whose grid element is `element` (m): a default `step` is no coarser (native_strategy's rule).
+  LuaStrategy(lua_State* L, int idx, double element);
   const StrategyInfo& info() const override { return info_; }
   // Runs the table's discretise in the building state (called while the wheelset is built, on its thread).
   SideDiscretisation discretise(int side, const Profile& wheel, const Profile& rail) const override;

@@ -70,7 +70,7 @@ int wheelset_new(lua_State* L) {
     lua_pushstring(L, params.strategy.c_str());  // the one default (WheelsetParams)
   }
   auto ws = std::make_shared<LuaWheelset>();
-  ws->strategy = std::make_shared<LuaStrategy>(L, -1);
+  ws->strategy = std::make_shared<LuaStrategy>(L, -1, params.contact.element);
   lua_pop(L, 1);
   ws->model = build_wheelset(profiles, params, ws->strategy);
   push_shared(L, std::move(ws), kWheelsetType);

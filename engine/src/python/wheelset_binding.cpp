@@ -97,7 +97,8 @@ PyWheelset* make_wheelset(const py::kwargs& given) {
   auto w = std::make_unique<PyWheelset>();
   // Ctrl-C: the strategy check of check_strategy = N begins no pose after it; KeyboardInterrupt, no wheelset.
   run_interruptible([&](const std::atomic<bool>& stop) {
-    w->model = build_wheelset(profiles, params, native_strategy(params.strategy, strategy_options), &stop);
+    w->model = build_wheelset(profiles, params,
+                              native_strategy(params.strategy, strategy_options, params.contact.element), &stop);
   });
   return w.release();
 }

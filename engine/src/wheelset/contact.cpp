@@ -43,6 +43,12 @@ double nearest_arc(const RailLines& rail, const std::vector<double>& S, const Ei
 
 }  // namespace
 
+void validate_element(double element, std::string_view context) {
+  if (!(element >= kElementMin && element <= kElementMax))
+    fail("{}: the element size grid = {:.6g} m must be in [{}, {}] m ({} um .. {} mm)", context, element, kElementMin,
+         kElementMax, kElementMin * 1e6, kElementMax * 1e3);
+}
+
 ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const halfspace::Material& material,
                            const ContactOptions& options)
     : geometry_(std::move(geometry)), options_(options), solver_(material), rolling_(material) {
@@ -61,9 +67,7 @@ ContactModel::ContactModel(std::shared_ptr<const GeometryModel> geometry, const 
       rail_lattice_[static_cast<std::size_t>(s)] = nearest_arc(rail, S, geometry_->track->place[s].rail(0.0, 0.0));
   }
   halfspace::validate(material, "contact model");
-  if (!(options.element >= kElementMin && options.element <= kElementMax))
-    fail("contact model: the element size grid = {:.6g} m must be in [{}, {}] m ({} um .. {} mm)", options.element,
-         kElementMin, kElementMax, kElementMin * 1e6, kElementMax * 1e3);
+  validate_element(options.element, "contact model");
   if (options.max_elements < 1) fail("contact model: max_elements = {} must be >= 1", options.max_elements);
   if (options.margin < 1 || options.margin > 100)
     fail("contact model: margin must be 1..100 elements, got {}", options.margin);

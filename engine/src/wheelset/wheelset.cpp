@@ -37,6 +37,7 @@ WheelsetParams read_wheelset_params(OptionReader& r) {
   p.material.nu = r.number("nu", {"-", "Poisson's ratio of wheel and rail"}, p.material.nu);
   ContactOptions& c = p.contact;
   c.element = r.number("grid", {"m", "element size of the potential contact areas"}, c.element);
+  validate_element(c.element, r.context());
   c.margin = r.integer("margin", 1, 100, {"-", "elements around the projected inter-penetration area"}, c.margin);
   c.max_elements = r.integer("max_elements", 1, 1 << 30, {"-", "largest potential contact area (elements)"},
                              c.max_elements);
@@ -183,7 +184,8 @@ std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles,
 }
 
 std::shared_ptr<const Wheelset> build_wheelset(const WheelsetProfiles& profiles, const WheelsetParams& params) {
-  return build_wheelset(profiles, params, native_strategy(params.strategy));
+  validate_element(params.contact.element, "build_wheelset");  // before the strategy's step follows it
+  return build_wheelset(profiles, params, native_strategy(params.strategy, {}, params.contact.element));
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include "wrc/geometry/location.hpp"
 #include "wrc/geometry/model.hpp"
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -30,7 +31,11 @@ class LocationStrategy {
 // "fast", or a composition "uniform+coarse+topology", with the options of their components (step, slope_step,
 // max_step, coarse_every, coarse_wheel_step). They discretise and search exactly as scripts/strategies/*.lua do
 // (the same engine primitives in the same order, so the same cones, lines and crossings bit for bit; a test
-// compares them). Throws wrc::Error naming an unknown strategy or option.
-std::shared_ptr<const LocationStrategy> native_strategy(const std::string& name, const OptionTable& options = {});
+// compares them). `element` (m): the grid element of the wheelset it is for; a `step` not given in `options` defaults
+// to its 0.1e-3 or to element when finer, as wrc.strategies.compose does: a grid finer than the discretisation
+// resolves the kinks between cones and lines, and pmax then grows with the refinement instead of converging
+// (docs/guide/normal.md). Throws wrc::Error naming an unknown strategy or option.
+std::shared_ptr<const LocationStrategy> native_strategy(const std::string& name, const OptionTable& options = {},
+                                                        double element = INFINITY);
 
 }  // namespace wrc

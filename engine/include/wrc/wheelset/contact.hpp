@@ -43,12 +43,16 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace wrc {
 
 // The element size's range (m): finer than 1 um no wheel-rail area fits any memory, coarser than 10 mm is no grid.
 inline constexpr double kElementMin = 1e-6, kElementMax = 0.01;
+// Throws wrc::Error naming `context` when the element size (m) is outside that range: checked when the wheelset's
+// options are read, before the strategy's default step follows it (native_strategy), and by the contact model.
+void validate_element(double element, std::string_view context);
 
 // The deepest inter-penetration of the undeformed profiles an evaluation accepts by default (m; ContactRequest and
 // SolveLimits::max_penetration). Wheel-rail contacts at realistic loads are 0.05-0.3 mm deep (S1002/60E1: 0.075
