@@ -32,6 +32,12 @@ f:close()
 local user = wrc.wheelset{wheel = wheel, rail = rail, strategy = path}
 check.ok(user.strategy.portable, "a strategy chosen by file is portable to worker threads")
 check.ok(user:coarse("left") ~= nil, "the user strategy built a coarse level")
+-- Its default step (1 mm) is coarser than the wheelset's grid (0.2 mm, the default): the step follows the grid, as
+-- the built-in strategies' does (docs/guide/location.md); a step given is kept.
+check.ok(user.strategy.options.step == 0.2e-3, "a default step coarser than the grid follows the grid")
+local given = wrc.wheelset{wheel = wheel, rail = rail, strategy = {name = path, step = 1e-3}}
+check.ok(given.strategy.options.step == 1e-3, "a step given is kept")
+check.ok(given:lines("left").count < user:lines("left").count, "the step given discretises more coarsely")
 
 -- Inline table: runs in this state only.
 local calls = 0
