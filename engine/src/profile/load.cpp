@@ -189,6 +189,13 @@ void apply_shift(std::vector<double>& y, std::vector<double>& z, const LoadOptio
 
 namespace {
 
+// A smoothing length (m) of wrc.profile.load and wrc.profile.points: 0 (the interpolating spline) .. 1.
+void check_smoothing_length(double smooth, std::string_view context) {
+  if (!(smooth >= 0 && smooth <= 1.0))
+    fail("{}: smooth = {} must be a smoothing length in metres, 0 .. 1 (0: interpolating cubic spline)", context,
+         smooth);
+}
+
 // A reader option as the text the reader receives.
 std::string option_text(const std::string& key, const OptionValue& v, const OptionReader& r) {
   switch (v.type) {
@@ -247,9 +254,7 @@ LoadOptions read_load_options(OptionReader& r, bool geometric_only) {
     o.polyline = true;  // smooth = false: keep the points as a polyline
   else
     o.smooth = r.number("smooth");
-  if (o.smooth && !(*o.smooth >= 0 && *o.smooth <= 1.0))
-    fail("{}: smooth = {} must be a smoothing length in metres, 0 .. 1 (0: interpolating cubic spline)", r.context(),
-         *o.smooth);
+  if (o.smooth) check_smoothing_length(*o.smooth, r.context());
   if (geometric_only) {
     r.finish();
     return o;
@@ -321,9 +326,7 @@ std::vector<std::string> load_warnings(const Profile& p, const Reversals& revers
 
 Profile points_profile(ProfileKind kind, std::vector<double> y, std::vector<double> z, std::string name,
                        const std::string& source, std::optional<double> smooth) {
-  if (smooth && !(*smooth >= 0 && *smooth <= 1.0))
-    fail("{}: smooth = {} must be a smoothing length in metres, 0 .. 1 (0: interpolating cubic spline)", source,
-         *smooth);
+  if (smooth) check_smoothing_length(*smooth, source);
   Profile p = make_profile(kind, std::move(y), std::move(z), std::move(name), source);
   if (smooth) return smooth_profile(p, *smooth);
   if (auto scatter = scatter_warning(p, "Make it")) p.warnings.push_back(std::move(*scatter));
